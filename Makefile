@@ -1,0 +1,66 @@
+# nspd — the commands a newcomer types. Each target installs what it needs
+# (scripts/deps.sh: Debian packages, as root) and builds with CMake.
+#
+#   make demo       set up, build, run the flagship case into out/
+#   make test       set up, build, run the whole test suite (ctest), < 10 min on 2 cores
+#   make bench      benchmarks (never part of make test); results in bench/results/
+#   make validate   full-resolution paper cases and their plots (long)
+#   make format     clang-format every C file;  make tidy: clang-tidy
+
+BUILD      ?= build
+BUILD_ASAN ?= build-asan
+JOBS       ?= $(shell nproc)
+CMAKE_ARGS ?=
+NSPD        = $(BUILD)/nspd
+
+.PHONY: all deps build test test-fast test-asan demo bench validate format format-check tidy clean
+
+all: build
+
+deps:
+	@scripts/deps.sh build
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The whole suite: the release build's tests, then the unit tests again under
+# AddressSanitizer + UBSan. Tests labelled "slow" belong to `make validate`.
+test: build test-asan
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE slow
+
+test-fast: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -L unit
+
+$(BUILD_ASAN)/CMakeCache.txt:
+	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DNSPD_SANITIZE=ON $(CMAKE_ARGS)
+
+test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
+	cmake --build $(BUILD_ASAN) -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L "unit|cli"
+
+demo: build
+	scripts/demo.sh $(NSPD)
+
+bench: build
+	@scripts/deps.sh build bench
+	bench/run_all.sh $(NSPD)
+
+validate: build
+	@scripts/deps.sh build validate
+	scripts/validate.sh $(NSPD) $(BUILD)
+
+format: $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) --target format
+
+format-check: $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) --target format-check
+
+tidy: $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) --target tidy
+
+clean:
+	rm -rf $(BUILD) $(BUILD_ASAN)

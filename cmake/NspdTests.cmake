@@ -1,0 +1,53 @@
+# Test registration. Adding a test is adding a file:
+#   tests/unit/<module>/test_<topic>.c    -> ctest name unit.<module>.<topic>, label "unit"
+#   tests/verify/<case>/test_<topic>.c    -> ctest name verify.<case>.<topic>, label "verify"
+#   tests/cli/test_<topic>.sh             -> ctest name cli.<topic>, label "cli"
+# A file whose first line contains "ctest-labels: a b" gets those labels too
+# ("slow" keeps a test out of `make test`; `make validate` runs it).
+pkg_check_modules(CMOCKA REQUIRED IMPORTED_TARGET cmocka)
+
+file(GLOB NSPD_TEST_SUPPORT CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/support/*.c)
+add_library(nspd_test_support STATIC ${NSPD_TEST_SUPPORT})
+target_include_directories(nspd_test_support PUBLIC ${PROJECT_SOURCE_DIR}/tests/support)
+target_link_libraries(nspd_test_support PUBLIC nspdlib PkgConfig::CMOCKA)
+target_compile_definitions(nspd_test_support PUBLIC
+    NSPD_SOURCE_DIR="${PROJECT_SOURCE_DIR}" NSPD_BINARY_DIR="${CMAKE_BINARY_DIR}")
+
+function(nspd_extra_labels file out)
+    file(STRINGS ${file} first LIMIT_COUNT 1)
+    set(labels "")
+    if(first MATCHES "ctest-labels:([a-z ]+)")
+        string(STRIP "${CMAKE_MATCH_1}" l)
+        string(REPLACE " " ";" labels "${l}")
+    endif()
+    set(${out} ${labels} PARENT_SCOPE)
+endfunction()
+
+foreach(kind unit verify)
+    file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/${kind}/*/test_*.c)
+    foreach(src ${tests})
+        get_filename_component(dir ${src} DIRECTORY)
+        get_filename_component(group ${dir} NAME)
+        get_filename_component(stem ${src} NAME_WE)
+        string(REGEX REPLACE "^test_" "" topic ${stem})
+        set(name ${kind}.${group}.${topic})
+        set(exe ${kind}_${group}_${topic})
+        add_executable(${exe} ${src})
+        target_link_libraries(${exe} PRIVATE nspd_test_support)
+        add_test(NAME ${name} COMMAND ${exe} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+        nspd_extra_labels(${src} extra)
+        set_tests_properties(${name} PROPERTIES LABELS "${kind};${extra}"
+            ENVIRONMENT "OMP_NUM_THREADS=2;OMP_PROC_BIND=false")
+    endforeach()
+endforeach()
+
+file(GLOB cli_tests CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/cli/test_*.sh)
+foreach(script ${cli_tests})
+    get_filename_component(stem ${script} NAME_WE)
+    string(REGEX REPLACE "^test_" "" topic ${stem})
+    add_test(NAME cli.${topic} COMMAND sh ${script} $<TARGET_FILE:nspd> ${PROJECT_SOURCE_DIR}
+        WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    nspd_extra_labels(${script} extra)
+    set_tests_properties(cli.${topic} PROPERTIES LABELS "cli;${extra}"
+        ENVIRONMENT "OMP_NUM_THREADS=2")
+endforeach()

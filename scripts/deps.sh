@@ -1,0 +1,39 @@
+#!/bin/sh
+# Installs the Debian packages a make target needs, and nothing else.
+#   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cmocka
+#   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
+#   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine
+# As root the missing packages are installed with apt-get; otherwise the exact
+# command is printed and the script fails, so nothing runs half set up.
+set -eu
+
+want="gcc make cmake pkg-config libyaml-dev libpng-dev libcmocka-dev"
+for group in "$@"; do
+    case "$group" in
+    build) ;;
+    validate) want="$want gnuplot-nox" ;;
+    bench) want="$want lammps hyperfine openfoam" ;;
+    *) echo "deps.sh: unknown group '$group' (expected build, validate or bench)" >&2; exit 2 ;;
+    esac
+done
+
+missing=""
+for pkg in $want; do
+    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+        missing="$missing $pkg"
+    fi
+done
+[ -z "$missing" ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+    echo "nspd needs these Debian packages:$missing" >&2
+    echo "install them with:  sudo apt-get install -y --no-install-recommends$missing" >&2
+    exit 1
+fi
+echo "installing:$missing" >&2
+export DEBIAN_FRONTEND=noninteractive
+# A fresh machine may have empty package lists; update only when needed.
+if ! apt-get install -y --no-install-recommends $missing >/dev/null 2>&1; then
+    apt-get update -qq
+    apt-get install -y --no-install-recommends $missing >/dev/null
+fi

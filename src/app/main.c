@@ -1,0 +1,46 @@
+/* The nspd command: dispatches to the subcommands. */
+#include "app/commands.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static void usage(FILE *out) {
+    fputs("usage: nspd <command> [options]\n"
+          "\n"
+          "commands:\n"
+          "  run CASE.yaml [-o DIR] [--force] [--set key=value ...] [--quiet]\n"
+          "                         run a case; results go to DIR (default out/<case name>)\n"
+          "  check CASE.yaml [--set key=value ...]\n"
+          "                         validate a case file; write nothing\n"
+          "  info CASE.yaml [--set key=value ...]\n"
+          "                         derived numbers: points, bonds, time step, memory, run time\n"
+          "  bench pd [--points N] [--threads T] [--steps S]\n"
+          "                         PD force + integration throughput, one JSON object\n"
+          "  version                print the version\n"
+          "\n"
+          "exit status: 0 success, 1 run-time failure, 2 bad input, 130 interrupted\n",
+          out);
+}
+
+int main(int argc, char **argv) {
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "run") == 0) return cmd_run(argc - 2, argv + 2);
+    if (strcmp(cmd, "check") == 0) return cmd_check(argc - 2, argv + 2);
+    if (strcmp(cmd, "info") == 0) return cmd_info(argc - 2, argv + 2);
+    if (strcmp(cmd, "bench") == 0) return cmd_bench(argc - 2, argv + 2);
+    if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
+        printf("nspd %s\n", NSPD_VERSION);
+        return 0;
+    }
+    if (strcmp(cmd, "help") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    fprintf(stderr, "nspd: unknown command '%s'\n\n", cmd);
+    usage(stderr);
+    return 2;
+}

@@ -1,0 +1,36 @@
+#include "core/interrupt.h"
+
+#include <signal.h>
+#include <string.h>
+
+static volatile sig_atomic_t requested;
+
+static void on_signal(int sig) {
+    if (requested) {
+        signal(sig, SIG_DFL);
+        raise(sig);
+        return;
+    }
+    requested = 1;
+}
+
+void interrupt_install(void) {
+    struct sigaction action;
+    memset(&action, 0, sizeof action);
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, NULL);
+    sigaction(SIGTERM, &action, NULL);
+}
+
+bool interrupt_requested(void) {
+    return requested != 0;
+}
+
+void interrupt_request(void) {
+    requested = 1;
+}
+
+void interrupt_clear(void) {
+    requested = 0;
+}

@@ -1,0 +1,45 @@
+#include "core/log.h"
+
+#include "core/status.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+
+static LogLevel console_level = LOG_INFO;
+static FILE *log_file;
+
+void nspd_log_set_console_level(LogLevel level) {
+    console_level = level;
+}
+
+int nspd_log_open(const char *path) {
+    nspd_log_close();
+    log_file = fopen(path, "w");
+    if (!log_file) return NSPD_FAIL(NSPD_ERR_IO, "cannot create log file '%s'", path);
+    return NSPD_OK;
+}
+
+void nspd_log_close(void) {
+    if (log_file) fclose(log_file);
+    log_file = NULL;
+}
+
+void nspd_log(LogLevel level, const char *fmt, ...) {
+    static const char *prefix[] = {"debug: ", "", "warning: ", "error: "};
+    va_list args;
+    if (level >= console_level) {
+        va_start(args, fmt);
+        fputs(prefix[level], stderr);
+        vfprintf(stderr, fmt, args);
+        fputc('\n', stderr);
+        va_end(args);
+    }
+    if (log_file) {
+        va_start(args, fmt);
+        fputs(prefix[level], log_file);
+        vfprintf(log_file, fmt, args);
+        fputc('\n', log_file);
+        va_end(args);
+        fflush(log_file);
+    }
+}

@@ -1,0 +1,15 @@
+/* Logging for drivers and operators (never kernels).
+ *
+ * Messages go to stderr at or above the console level, and to the run's log
+ * file (log.txt) at every level once nspd_log_open() has been called. */
+#ifndef NSPD_CORE_LOG_H
+#define NSPD_CORE_LOG_H
+
+typedef enum { LOG_DEBUG = 0, LOG_INFO = 1, LOG_WARN = 2, LOG_ERROR = 3, LOG_QUIET = 4 } LogLevel;
+
+void nspd_log_set_console_level(LogLevel level);
+int nspd_log_open(const char *path); /* NSPD_ERR_IO if the file cannot be created */
+void nspd_log_close(void);
+void nspd_log(LogLevel level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#endif

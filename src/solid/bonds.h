@@ -1,0 +1,15 @@
+/* Neighbour search: the bonds of every point within the horizon, as
+ * compressed rows (each point lists all its neighbours, ascending). */
+#ifndef NSPD_SOLID_BONDS_H
+#define NSPD_SOLID_BONDS_H
+
+#include <stdint.h>
+
+/* Finds, for each of the n points, all other points j with |x_j - x_i| <=
+ * horizon. Allocates *first (n + 1 offsets) and *nbr (first[n] indices).
+ * Uses a cell list of cell size `horizon`: O(n) work, parallel, and the
+ * result does not depend on the thread count. */
+int bonds_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
+               int32_t **nbr);
+
+#endif

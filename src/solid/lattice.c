@@ -1,0 +1,141 @@
+/* Lattice filling and Morton ordering.
+ *
+ * Candidate points cover the bounding box of the geometry; each is kept if
+ * the ShapeSet contains it. Morton (Z-order) sorting of the integer lattice
+ * indices keeps most of a point's horizon within a few kilobytes of it,
+ * which is what makes the gather in the force loop cheap. A Hilbert curve
+ * would be slightly better but measured no faster on the 2D plate. */
+#include "solid/lattice.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static uint64_t spread2(uint32_t v) {
+    uint64_t x = v;
+    x = (x | (x << 16)) & 0x0000FFFF0000FFFFull;
+    x = (x | (x << 8)) & 0x00FF00FF00FF00FFull;
+    x = (x | (x << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    x = (x | (x << 2)) & 0x3333333333333333ull;
+    x = (x | (x << 1)) & 0x5555555555555555ull;
+    return x;
+}
+
+static uint64_t spread3(uint32_t v) {
+    uint64_t x = v & 0x1FFFFF;
+    x = (x | (x << 32)) & 0x001F00000000FFFFull;
+    x = (x | (x << 16)) & 0x001F0000FF0000FFull;
+    x = (x | (x << 8)) & 0x100F00F00F00F00Full;
+    x = (x | (x << 4)) & 0x10C30C30C30C30C3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+}
+
+uint64_t morton_key(int dim, uint32_t i, uint32_t j, uint32_t k) {
+    if (dim == 2) return spread2(i) | (spread2(j) << 1);
+    return spread3(i) | (spread3(j) << 1) | (spread3(k) << 2);
+}
+
+typedef struct {
+    uint64_t key;
+    int64_t slot;
+} KeyedPoint;
+
+static int compare_keys(const void *a, const void *b) {
+    uint64_t ka = ((const KeyedPoint *)a)->key, kb = ((const KeyedPoint *)b)->key;
+    return (ka > kb) - (ka < kb);
+}
+
+int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
+                 const double origin[3]) {
+    lattice_free(lat);
+    double lo[3], hi[3];
+    if (!shapeset_bounds(geometry, dim, lo, hi))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the solid geometry adds no shape");
+    int64_t first[3] = {0, 0, 0}, count[3] = {1, 1, 1};
+    for (int d = 0; d < dim; d++) {
+        first[d] = (int64_t)ceil((lo[d] - origin[d]) / dx - 1e-9);
+        int64_t last = (int64_t)floor((hi[d] - origin[d]) / dx + 1e-9);
+        count[d] = last - first[d] + 1;
+        if (count[d] <= 0 || count[d] > (dim == 2 ? (1 << 30) : (1 << 20)))
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "the solid lattice has %lld points along axis %d; expected 1 to %d",
+                             (long long)count[d], d, dim == 2 ? (1 << 30) : (1 << 20));
+    }
+    int64_t candidates = count[0] * count[1] * count[2];
+
+    /* pass 1: which candidates are inside (one byte each) */
+    uint8_t *inside;
+    TRY(nspd_alloc(&inside, (size_t)candidates, 1));
+#pragma omp parallel for schedule(static)
+    for (int64_t c = 0; c < candidates; c++) {
+        int64_t i = c % count[0], j = (c / count[0]) % count[1], k = c / (count[0] * count[1]);
+        double p[3] = {origin[0] + (double)(first[0] + i) * dx,
+                       origin[1] + (double)(first[1] + j) * dx,
+                       dim == 3 ? origin[2] + (double)(first[2] + k) * dx : 0.0};
+        inside[c] = shapeset_contains(geometry, p);
+    }
+    int64_t n = 0;
+    for (int64_t c = 0; c < candidates; c++) n += inside[c];
+    if (n == 0) {
+        nspd_free(&inside);
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "no lattice point of spacing %g m falls inside the solid geometry", dx);
+    }
+    if (n > INT32_MAX) {
+        nspd_free(&inside);
+        return NSPD_FAIL(NSPD_ERR_INPUT, "%lld points exceed the 2^31 limit of one body",
+                         (long long)n);
+    }
+
+    /* pass 2: Morton keys, sorted */
+    KeyedPoint *keyed;
+    int status = nspd_alloc(&keyed, (size_t)n, sizeof *keyed);
+    if (status != NSPD_OK) {
+        nspd_free(&inside);
+        return status;
+    }
+    int64_t m = 0;
+    for (int64_t c = 0; c < candidates; c++) {
+        if (!inside[c]) continue;
+        uint32_t i = (uint32_t)(c % count[0]), j = (uint32_t)((c / count[0]) % count[1]),
+                 k = (uint32_t)(c / (count[0] * count[1]));
+        keyed[m].key = morton_key(dim, i, j, k);
+        keyed[m].slot = c;
+        m++;
+    }
+    nspd_free(&inside);
+    qsort(keyed, (size_t)n, sizeof *keyed, compare_keys);
+
+    lat->n = n;
+    for (int d = 0; d < 3 && status == NSPD_OK; d++) {
+        status = nspd_alloc(&lat->x[d], (size_t)n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&lat->index[d], (size_t)n, sizeof(int32_t));
+    }
+    if (status != NSPD_OK) {
+        nspd_free(&keyed);
+        lattice_free(lat);
+        return status;
+    }
+#pragma omp parallel for schedule(static)
+    for (int64_t p = 0; p < n; p++) {
+        int64_t c = keyed[p].slot;
+        int64_t idx[3] = {c % count[0], (c / count[0]) % count[1], c / (count[0] * count[1])};
+        for (int d = 0; d < 3; d++) {
+            lat->index[d][p] = (int32_t)(first[d] + idx[d]);
+            lat->x[d][p] = d < dim ? origin[d] + (double)(first[d] + idx[d]) * dx : 0.0;
+        }
+    }
+    nspd_free(&keyed);
+    return NSPD_OK;
+}
+
+void lattice_free(Lattice *lat) {
+    for (int d = 0; d < 3; d++) {
+        nspd_free(&lat->x[d]);
+        nspd_free(&lat->index[d]);
+    }
+    lat->n = 0;
+}

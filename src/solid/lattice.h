@@ -1,0 +1,25 @@
+/* Regular lattice of material points inside a ShapeSet, in Morton order. */
+#ifndef NSPD_SOLID_LATTICE_H
+#define NSPD_SOLID_LATTICE_H
+
+#include "core/shape.h"
+
+#include <stdint.h>
+
+typedef struct {
+    int64_t n;
+    double *x[3];       /* positions, m */
+    int32_t *index[3];  /* integer lattice coordinates */
+} Lattice;
+
+/* Points origin + k dx (k integer per axis) that lie inside `geometry`, sorted
+ * along the Morton curve of their lattice indices. `dim` is 2 or 3 (z = 0 in
+ * 2D). NSPD_ERR_INPUT if no point falls inside; NSPD_ERR_NOMEM. */
+int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
+                 const double origin[3]);
+void lattice_free(Lattice *lat);
+
+/* Morton key of non-negative lattice indices (2D: 32 bits per axis, 3D: 21). */
+uint64_t morton_key(int dim, uint32_t i, uint32_t j, uint32_t k);
+
+#endif

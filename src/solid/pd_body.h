@@ -1,0 +1,85 @@
+/* A bond-based peridynamic body: material points and their bonds.
+ *
+ * Points (struct of arrays, one array per component, 64-byte aligned):
+ *   x  reference position; u displacement; v velocity (all m, m/s)
+ *   force     PD internal force density sum_j f_ij V_j (N/m^3), Eq. 28
+ *   external  force density from outside (body force, region loads, the
+ *             fluid's surface traction), N/m^3; sum of the two drives Eq. 30
+ *   volume    point volume (m^3; 2D: dx^2 * thickness)
+ *   region    index of the boundary region holding the point, or -1
+ * Points are ordered along a Morton (Z-order) curve of their lattice indices
+ * so that a point's neighbours sit close to it in memory.
+ *
+ * Bonds are compressed rows: the bonds of point i are
+ * bond_nbr[bond_first[i] .. bond_first[i+1]). Each point owns the full list
+ * of its bonds, so bond i-j is stored (and evaluated) once from each end:
+ * the force loop writes only to point i and needs no atomics, and results do
+ * not depend on the thread count. Per bond, 8 bytes:
+ *   bond_nbr   int32 neighbour index
+ *   bond_coef  float32 dimensionless stiffness k_ij / coef_scale, where
+ *              k_ij = c beta_ij nu_ij V_j / |xi_ij| (micromodulus, surface and
+ *              volume corrections, neighbour volume, reference length), so the
+ *              pair force density is k_ij (|y| - |xi|) y/|y| (Eq. 29).
+ *              The sign carries the failure state: > 0 intact and breakable,
+ *              < 0 intact and unbreakable (outside the failure region, or
+ *              failure off), 0 broken. Both ends of a bond break together
+ *              because both evaluate bitwise the same stretch.
+ * The reference bond vector is recomputed from x (cheaper than storing it:
+ * the gather is in cache after Morton ordering). */
+#ifndef NSPD_SOLID_PD_BODY_H
+#define NSPD_SOLID_PD_BODY_H
+
+#include "solid/pd_config.h"
+
+#include <stdint.h>
+
+typedef struct {
+    PdConfig cfg; /* owned copy of the configuration (shapes included) */
+    int dim;
+    int64_t n;
+    double *x[3], *u[3], *v[3];
+    double *force[3];    /* PD internal force density, N/m^3 */
+    double *external[3]; /* external force density, N/m^3 */
+    double *volume;
+    int16_t *region;     /* boundary region index or -1 */
+    int32_t *lattice[3]; /* integer lattice coordinates (for images and symmetry checks) */
+
+    int64_t bond_count;
+    int64_t *bond_first; /* n + 1 */
+    int32_t *bond_nbr;
+    float *bond_coef;
+    double coef_scale;       /* k_ij = coef_scale * |bond_coef| */
+    double stretch_limit2;   /* (1 + s_c)^2: a bond breaks when |y|^2 > this |xi|^2 */
+    double micromodulus;     /* c of Eq. 15 */
+    double horizon;          /* delta, m */
+    double spacing;          /* dx, m */
+    double *initial_bond_volume; /* sum_j nu_ij V_j over all initial bonds (damage denominator) */
+
+    int64_t step;
+    double time;
+    bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
+} PdBody;
+
+/* Builds the body: lattice points inside the geometry, Morton ordering,
+ * bonds within the horizon, volume and surface corrections, pre-cracks,
+ * boundary regions and initial velocities. Takes ownership of *cfg (its
+ * shapes and arrays) and zeroes it. NSPD_ERR_INPUT if the geometry holds
+ * no point; NSPD_ERR_NOMEM. */
+int pd_body_create(PdBody *body, PdConfig *cfg);
+void pd_body_destroy(PdBody *body);
+
+/* Pair-wise geometry helpers shared by setup and diagnostics. */
+static inline double pd_volume_factor(double xi_len, double horizon, double spacing,
+                                      PdVolumeCorrection mode) {
+    /* Linear partial-volume correction: a neighbour whose cell is cut by the
+     * horizon sphere contributes the fraction of its cell inside it. */
+    if (mode == PD_VOLUME_NONE || xi_len <= horizon - 0.5 * spacing) return 1.0;
+    double f = (horizon + 0.5 * spacing - xi_len) / spacing;
+    return f > 0.0 ? f : 0.0;
+}
+
+/* Bytes of bond storage per bond (neighbour index + coefficient), and of
+ * row offsets per point. */
+enum { PD_BYTES_PER_BOND = (int)(sizeof(int32_t) + sizeof(float)) };
+
+#endif

@@ -1,0 +1,93 @@
+/* What a case file says about a peridynamic body: geometry, material,
+ * discretisation, pre-cracks, boundary regions and numerics. Filled by
+ * io/case_solid.c, consumed by pd_body_create(). Units are SI. */
+#ifndef NSPD_SOLID_PD_CONFIG_H
+#define NSPD_SOLID_PD_CONFIG_H
+
+#include "core/shape.h"
+
+#include <stdbool.h>
+
+typedef enum { PD_PLANE_STRESS, PD_PLANE_STRAIN, PD_3D, PD_MODEL_COUNT } PdModel;
+typedef enum { PD_EULER_CROMER, PD_VELOCITY_VERLET, PD_INTEGRATOR_COUNT } PdIntegrator;
+typedef enum { PD_VOLUME_NONE, PD_VOLUME_LINEAR, PD_VOLUME_COUNT } PdVolumeCorrection;
+typedef enum { PD_SURFACE_NONE, PD_SURFACE_ENERGY, PD_SURFACE_COUNT } PdSurfaceCorrection;
+
+extern const char *const PD_MODEL_NAMES[PD_MODEL_COUNT + 1];
+extern const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1];
+extern const char *const PD_VOLUME_NAMES[PD_VOLUME_COUNT + 1];
+extern const char *const PD_SURFACE_NAMES[PD_SURFACE_COUNT + 1];
+
+enum { PD_MAX_NAME = 64 };
+
+/* A region of points whose motion is prescribed or loaded. Components not
+ * in a mask are free. */
+typedef struct {
+    char name[PD_MAX_NAME];
+    ShapeSet region;
+    unsigned velocity_mask;     /* bit d: velocity component d prescribed */
+    double velocity[3];         /* m/s */
+    unsigned displacement_mask; /* bit d: displacement component d held at the value */
+    double displacement[3];     /* m */
+    double force_density[3];    /* N/m^3 added on the region's points */
+} PdBoundaryRegion;
+
+/* Bonds crossing it start broken. 2D: the segment a-b. 3D: the
+ * parallelogram a + s e1 + t e2, s, t in [0, 1]. */
+typedef struct {
+    double a[3], b[3];   /* 2D segment ends */
+    double e1[3], e2[3]; /* 3D edges from a */
+} PdPrecrack;
+
+typedef struct {
+    ShapeSet region;
+    double velocity[3];
+} PdInitialVelocity;
+
+typedef struct {
+    PdModel model;
+    int dim;               /* 2 or 3, from the model */
+    double thickness;      /* m, 2D only */
+    double spacing;        /* lattice spacing dx, m */
+    double horizon_factor; /* m: horizon delta = m dx */
+    double lattice_origin[3];
+    bool has_lattice_origin; /* else the lattice starts half a spacing inside the bounding box */
+
+    double density;          /* kg/m^3 */
+    double youngs_modulus;   /* Pa */
+    double critical_stretch; /* s_c; computed from fracture_energy when that is given */
+    double fracture_energy;  /* G_c, J/m^2; 0 when s_c is given directly */
+    bool failure;            /* bonds may break */
+    ShapeSet failure_region; /* empty: everywhere; else bonds whose midpoint lies inside */
+
+    ShapeSet geometry;
+    int precrack_count;
+    PdPrecrack *precracks;
+    int boundary_count;
+    PdBoundaryRegion *boundaries;
+    int initial_velocity_count;
+    PdInitialVelocity *initial_velocities;
+    double body_force[3]; /* N/m^3 on every point */
+
+    PdVolumeCorrection volume_correction;
+    PdSurfaceCorrection surface_correction;
+    PdIntegrator integrator;
+} PdConfig;
+
+/* Poisson's ratio that bond-based PD implies for the model (1/3 or 1/4). */
+double pd_model_poisson_ratio(PdModel model);
+/* Micromodulus c of Eq. 15 (N/m^6 in 3D; 2D includes 1/thickness). */
+double pd_micromodulus(const PdConfig *cfg);
+/* Critical stretch from G_c (paper 000 Eq. 18, with the model's bulk modulus). */
+double pd_critical_stretch_from_energy(const PdConfig *cfg, double fracture_energy);
+/* Classical strain energy density of a uniaxial strain `strain` (the
+ * reference for the surface correction), J/m^3. */
+double pd_classical_uniaxial_energy(const PdConfig *cfg, double strain);
+/* Wave speeds of the continuum the model represents, m/s. */
+double pd_bar_wave_speed(const PdConfig *cfg);      /* sqrt(E/rho) */
+double pd_shear_wave_speed(const PdConfig *cfg);    /* sqrt(G/rho) */
+double pd_rayleigh_wave_speed(const PdConfig *cfg); /* root of the Rayleigh equation */
+
+void pd_config_free(PdConfig *cfg);
+
+#endif

@@ -1,0 +1,106 @@
+/* Bond-based PD force.
+ *
+ * Eq. 29 gives the pair force density of bond i-j as
+ *     f_ij = c s_ij (y_ij / |y_ij|),   s_ij = (|y_ij| - |xi_ij|) / |xi_ij|,
+ * and Eq. 28 sums f_ij beta_ij nu_ij V_j over the family. Folding the
+ * constant factors into k_ij = c beta_ij nu_ij V_j / |xi_ij| gives
+ *     force_i = sum_j k_ij (|y| - |xi|) y / |y| = sum_j k_ij (1 - |xi|/|y|) y,
+ * and |xi|/|y| = sqrt(|xi|^2 / |y|^2) costs one division and one square root
+ * per bond. The failure test s >= s_c is |y|^2 >= (1 + s_c)^2 |xi|^2, with no
+ * root at all.
+ *
+ * The inner loop over a point's bonds is a SIMD reduction: the compiler
+ * gathers the neighbours' coordinates (AVX-512 / AVX2 gathers) and sums the
+ * lanes in a fixed order, so a point's force is the same whichever thread
+ * computes it. The store that breaks a bond is conditional: an
+ * unconditional one costs 25 % on the 2D plate (measured). */
+#include "solid/pd_force.h"
+
+#include <math.h>
+
+void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
+                        const double *restrict ux, const double *restrict uy,
+                        const int64_t *restrict first, const int32_t *restrict nbr,
+                        float *restrict coef, double scale, double limit2, double *restrict fx,
+                        double *restrict fy) {
+    for (int64_t i = lo; i < hi; i++) {
+        const double xi = x[i], yi = y[i], uxi = ux[i], uyi = uy[i];
+        double sx = 0.0, sy = 0.0;
+        const int64_t b0 = first[i], b1 = first[i + 1];
+#pragma omp simd reduction(+ : sx, sy)
+        for (int64_t b = b0; b < b1; b++) {
+            const int32_t j = nbr[b];
+            float k = coef[b];
+            const double ex = x[j] - xi, ey = y[j] - yi;
+            const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi);
+            const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
+            if ((k > 0.0f) & (r2 > limit2 * e2)) {
+                k = 0.0f;
+                coef[b] = 0.0f;
+            }
+            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
+            sx += f * rx;
+            sy += f * ry;
+        }
+        fx[i] = scale * sx;
+        fy[i] = scale * sy;
+    }
+}
+
+void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
+                        const double *restrict z, const double *restrict ux,
+                        const double *restrict uy, const double *restrict uz,
+                        const int64_t *restrict first, const int32_t *restrict nbr,
+                        float *restrict coef, double scale, double limit2, double *restrict fx,
+                        double *restrict fy, double *restrict fz) {
+    for (int64_t i = lo; i < hi; i++) {
+        const double xi = x[i], yi = y[i], zi = z[i], uxi = ux[i], uyi = uy[i], uzi = uz[i];
+        double sx = 0.0, sy = 0.0, sz = 0.0;
+        const int64_t b0 = first[i], b1 = first[i + 1];
+#pragma omp simd reduction(+ : sx, sy, sz)
+        for (int64_t b = b0; b < b1; b++) {
+            const int32_t j = nbr[b];
+            float k = coef[b];
+            const double ex = x[j] - xi, ey = y[j] - yi, ez = z[j] - zi;
+            const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi), rz = ez + (uz[j] - uzi);
+            const double e2 = ex * ex + ey * ey + ez * ez, r2 = rx * rx + ry * ry + rz * rz;
+            if ((k > 0.0f) & (r2 > limit2 * e2)) {
+                k = 0.0f;
+                coef[b] = 0.0f;
+            }
+            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
+            sx += f * rx;
+            sy += f * ry;
+            sz += f * rz;
+        }
+        fx[i] = scale * sx;
+        fy[i] = scale * sy;
+        fz[i] = scale * sz;
+    }
+}
+
+/* Rows per OpenMP chunk: large enough to amortise scheduling, small enough
+ * to balance two threads on a 10^4-point test body. */
+enum { FORCE_BLOCK = 1024 };
+
+void pd_force_compute(PdBody *body) {
+    const int64_t n = body->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
+    const double scale = body->coef_scale, limit2 = body->stretch_limit2;
+    if (body->dim == 2) {
+#pragma omp parallel for schedule(static)
+        for (int64_t blk = 0; blk < blocks; blk++) {
+            int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
+            pd_force_kernel_2d(lo, hi, body->x[0], body->x[1], body->u[0], body->u[1],
+                               body->bond_first, body->bond_nbr, body->bond_coef, scale, limit2,
+                               body->force[0], body->force[1]);
+        }
+    } else {
+#pragma omp parallel for schedule(static)
+        for (int64_t blk = 0; blk < blocks; blk++) {
+            int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
+            pd_force_kernel_3d(lo, hi, body->x[0], body->x[1], body->x[2], body->u[0], body->u[1],
+                               body->u[2], body->bond_first, body->bond_nbr, body->bond_coef,
+                               scale, limit2, body->force[0], body->force[1], body->force[2]);
+        }
+    }
+}
