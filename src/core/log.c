@@ -24,8 +24,20 @@ void nspd_log_close(void) {
     log_file = NULL;
 }
 
+static const char *const prefix[] = {"debug: ", "", "warning: ", "error: "};
+
+void nspd_log_file(LogLevel level, const char *fmt, ...) {
+    if (!log_file) return;
+    va_list args;
+    va_start(args, fmt);
+    fputs(prefix[level], log_file);
+    vfprintf(log_file, fmt, args);
+    fputc('\n', log_file);
+    va_end(args);
+    fflush(log_file);
+}
+
 void nspd_log(LogLevel level, const char *fmt, ...) {
-    static const char *prefix[] = {"debug: ", "", "warning: ", "error: "};
     va_list args;
     if (level >= console_level) {
         va_start(args, fmt);

@@ -11,5 +11,7 @@ void nspd_log_set_console_level(LogLevel level);
 int nspd_log_open(const char *path); /* NSPD_ERR_IO if the file cannot be created */
 void nspd_log_close(void);
 void nspd_log(LogLevel level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* To the log file only (no-op when none is open). */
+void nspd_log_file(LogLevel level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

@@ -65,6 +65,11 @@ int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
                              (long long)count[d], d, dim == 2 ? (1 << 30) : (1 << 20));
     }
     int64_t candidates = count[0] * count[1] * count[2];
+    double mid[3], centre[3];
+    for (int d = 0; d < 3; d++) {
+        mid[d] = (double)first[d] + 0.5 * (double)(count[d] - 1);
+        centre[d] = origin[d] + mid[d] * dx;
+    }
 
     /* pass 1: which candidates are inside (one byte each) */
     uint8_t *inside;
@@ -125,7 +130,7 @@ int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
         int64_t idx[3] = {c % count[0], (c / count[0]) % count[1], c / (count[0] * count[1])};
         for (int d = 0; d < 3; d++) {
             lat->index[d][p] = (int32_t)(first[d] + idx[d]);
-            lat->x[d][p] = d < dim ? origin[d] + (double)(first[d] + idx[d]) * dx : 0.0;
+            lat->x[d][p] = d < dim ? centre[d] + ((double)(first[d] + idx[d]) - mid[d]) * dx : 0.0;
         }
     }
     nspd_free(&keyed);

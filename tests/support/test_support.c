@@ -25,7 +25,7 @@ void test_assert_ok(int status, const char *expr, const char *file, int line) {
 const char *test_scratch_dir(const char *tag) {
     static char path[1024];
     snprintf(path, sizeof path, "%s/test_scratch/%s", NSPD_BINARY_DIR, tag);
-    char cmd[1200];
+    char cmd[2200];
     snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", path, path);
     if (system(cmd) != 0) fail_msg("cannot create %s", path);
     return path;

@@ -1,0 +1,119 @@
+/* nspd bench: throughput of the solvers' hot loops, one JSON object each. */
+#include "app/commands.h"
+#include "core/mem.h"
+#include "core/status.h"
+#include "core/timer.h"
+#include "io/json.h"
+#include "solid/pd_body.h"
+#include "solid/pd_integrate.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    long points, steps;
+    int threads;
+} BenchOptions;
+
+static bool parse(int argc, char **argv, BenchOptions *opt) {
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        long value = i + 1 < argc ? strtol(argv[i + 1], NULL, 10) : 0;
+        if ((strcmp(a, "--points") == 0 || strcmp(a, "--cells") == 0) && value > 0) {
+            opt->points = value;
+        } else if (strcmp(a, "--steps") == 0 && value > 0) {
+            opt->steps = value;
+        } else if (strcmp(a, "--threads") == 0 && value > 0) {
+            opt->threads = (int)value;
+        } else {
+            fprintf(stderr, "nspd bench: bad option '%s' (expected --points/--cells N, --steps S, "
+                            "--threads T with positive values)\n",
+                    a);
+            return false;
+        }
+        i++;
+    }
+    return true;
+}
+
+/* The PD plate of paper 000 Sec. 4.2 (square lattice, delta = 3.015 dx,
+ * failure test on every bond) under a small uniform strain, so that every
+ * bond does the full work; N points as the nearest square. */
+static int bench_pd(const BenchOptions *opt) {
+    int side = (int)lround(sqrt((double)opt->points));
+    if (side < 8) side = 8;
+    double dx = 1e-4, length = side * dx;
+    PdConfig cfg = {0};
+    cfg.model = PD_PLANE_STRESS;
+    cfg.dim = 2;
+    cfg.spacing = dx;
+    cfg.thickness = dx;
+    cfg.horizon_factor = 3.015;
+    cfg.density = 8000;
+    cfg.youngs_modulus = 192e9;
+    cfg.critical_stretch = 0.04472;
+    cfg.failure = true;
+    cfg.volume_correction = PD_VOLUME_LINEAR;
+    cfg.surface_correction = PD_SURFACE_ENERGY;
+    cfg.integrator = PD_EULER_CROMER;
+    TRY(nspd_alloc(&cfg.geometry.shapes, 1, sizeof(Shape)));
+    cfg.geometry.count = 1;
+    cfg.geometry.shapes[0] = (Shape){.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {length, length, 0}};
+
+    double t0 = nspd_wall_time();
+    PdBody body;
+    TRY(pd_body_create(&body, &cfg));
+    double setup_s = nspd_wall_time() - t0;
+    for (int64_t i = 0; i < body.n; i++) {
+        body.u[0][i] = 1e-4 * body.x[0][i];
+        body.u[1][i] = -3e-5 * body.x[1][i];
+    }
+    double dt = 0.8 * pd_stable_time_step(&body);
+    int status = NSPD_OK;
+    for (int s = 0; s < 3 && status == NSPD_OK; s++) status = pd_step(&body, dt); /* warm-up */
+    t0 = nspd_wall_time();
+    for (long s = 0; s < opt->steps && status == NSPD_OK; s++) status = pd_step(&body, dt);
+    double seconds = nspd_wall_time() - t0;
+    if (status == NSPD_OK) {
+        size_t bytes = nspd_mem_live_bytes();
+        double bond_bytes = (double)body.bond_count * PD_BYTES_PER_BOND;
+        JsonWriter w;
+        json_begin(&w, stdout);
+        json_string(&w, "bench", "pd");
+        json_int(&w, "points", body.n);
+        json_int(&w, "bonds", body.bond_count); /* once from each end, as LAMMPS counts */
+        json_int(&w, "steps", opt->steps);
+        json_int(&w, "threads", omp_get_max_threads());
+        json_number(&w, "seconds", seconds);
+        json_number(&w, "bond_updates_per_s", (double)body.bond_count * (double)opt->steps / seconds);
+        json_number(&w, "bytes_per_bond", PD_BYTES_PER_BOND);
+        json_number(&w, "bytes_per_point", ((double)bytes - bond_bytes) / (double)body.n);
+        json_number(&w, "setup_s", setup_s);
+        json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
+        json_end(&w);
+    }
+    pd_body_destroy(&body);
+    return status;
+}
+
+int cmd_bench(int argc, char **argv) {
+    if (argc < 1) {
+        fprintf(stderr, "usage: nspd bench pd [--points N] [--threads T] [--steps S]\n");
+        return EXIT_BAD_INPUT;
+    }
+    BenchOptions opt = {250000, 50, 0};
+    if (!parse(argc - 1, argv + 1, &opt)) return EXIT_BAD_INPUT;
+    if (opt.threads > 0) omp_set_num_threads(opt.threads);
+    int status;
+    if (strcmp(argv[0], "pd") == 0) {
+        status = bench_pd(&opt);
+    } else {
+        fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd)\n", argv[0]);
+        return EXIT_BAD_INPUT;
+    }
+    if (status != NSPD_OK) fprintf(stderr, "nspd bench: %s\n", nspd_error_message());
+    return exit_status_of(status);
+}

@@ -1,0 +1,222 @@
+/* nspd run | check | info: the commands that take a case file. */
+#include "app/commands.h"
+#include "app/options.h"
+#include "core/interrupt.h"
+#include "core/log.h"
+#include "core/mem.h"
+#include "core/progress.h"
+#include "core/status.h"
+#include "core/timer.h"
+#include "io/case_read.h"
+#include "sim/sim.h"
+#include "solid/pd_diagnostics.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <omp.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+int exit_status_of(int status) {
+    switch (status) {
+    case NSPD_OK: return 0;
+    case NSPD_ERR_INPUT: return EXIT_BAD_INPUT;
+    case NSPD_ERR_INTERRUPTED: return EXIT_INTERRUPTED;
+    default: return EXIT_RUN_FAILED;
+    }
+}
+
+/* Prints a failure: bad input as the bare "FILE:LINE:COL: what; expected"
+ * message (editors jump to it), anything else as "nspd: error: ...". The
+ * log file, if open, gets it too, with the C source location. */
+static int report(int status) {
+    if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED) return exit_status_of(status);
+    if (status == NSPD_ERR_INPUT)
+        fprintf(stderr, "%s\n", nspd_error_message());
+    else
+        fprintf(stderr, "nspd: error: %s\n", nspd_error_message());
+    nspd_log_file(LOG_ERROR, "%s (raised at %s)", nspd_error_message(), nspd_error_origin());
+    return exit_status_of(status);
+}
+
+/* Reads the case and builds the simulation. Any failure here is the user's
+ * input (an unreadable file included): exit status 2, nothing written. */
+static int load(const CaseOptions *opt, CfgDoc *doc, Sim *sim) {
+    SimConfig cfg;
+    int status = case_read(opt->case_path, opt->overrides, opt->override_count, doc, &cfg);
+    if (status == NSPD_ERR_IO) status = NSPD_ERR_INPUT;
+    if (status != NSPD_OK) return status;
+    status = sim_create(sim, &cfg);
+    if (status != NSPD_OK) {
+        sim_config_free(&cfg);
+        cfg_doc_free(doc);
+    }
+    return status;
+}
+
+int cmd_check(int argc, char **argv) {
+    CaseOptions opt;
+    if (!options_parse(argc, argv, false, "check", &opt)) return EXIT_BAD_INPUT;
+    CfgDoc doc;
+    Sim sim;
+    int status = load(&opt, &doc, &sim);
+    if (status != NSPD_OK) return report(status);
+    printf("%s: ok (case '%s': %lld points, %lld bonds, dt %.4g s, %lld steps)\n", opt.case_path,
+           sim.cfg.name, (long long)sim.solid.n, (long long)sim.solid.bond_count / 2, sim.dt,
+           (long long)sim.steps);
+    sim_destroy(&sim);
+    cfg_doc_free(&doc);
+    return 0;
+}
+
+int cmd_info(int argc, char **argv) {
+    CaseOptions opt;
+    if (!options_parse(argc, argv, false, "info", &opt)) return EXIT_BAD_INPUT;
+    CfgDoc doc;
+    Sim sim;
+    double t0 = nspd_wall_time();
+    int status = load(&opt, &doc, &sim);
+    if (status != NSPD_OK) return report(status);
+    double setup_s = nspd_wall_time() - t0;
+    const PdBody *b = &sim.solid;
+    size_t memory = nspd_mem_live_bytes();
+    /* time a few steps to estimate the run (outputs not included) */
+    int64_t probe_steps = sim.steps < 5 ? sim.steps : 5;
+    t0 = nspd_wall_time();
+    status = sim_advance(&sim, probe_steps);
+    double step_s = (nspd_wall_time() - t0) / (double)(probe_steps > 0 ? probe_steps : 1);
+    if (status != NSPD_OK) {
+        sim_destroy(&sim);
+        cfg_doc_free(&doc);
+        return report(status);
+    }
+    char eta[32];
+    progress_format_duration(step_s * (double)sim.steps, eta, sizeof eta);
+    printf("case                 %s\n", sim.cfg.name);
+    printf("model                %s, %dD\n", PD_MODEL_NAMES[b->cfg.model], b->dim);
+    printf("points               %lld\n", (long long)b->n);
+    printf("bonds                %lld (%.1f per point; %lld broken at start)\n",
+           (long long)b->bond_count / 2, (double)b->bond_count / (double)b->n,
+           (long long)pd_broken_bonds(b));
+    printf("spacing              %.6g m\n", b->spacing);
+    printf("horizon              %.6g m (%.4g x spacing)\n", b->horizon, b->cfg.horizon_factor);
+    printf("micromodulus         %.6g\n", b->micromodulus);
+    if (b->cfg.failure)
+        printf("critical stretch     %.6g\n", b->cfg.critical_stretch);
+    else
+        printf("critical stretch     (failure off)\n");
+    printf("bar wave speed       %.6g m/s (Rayleigh %.6g m/s)\n", pd_bar_wave_speed(&b->cfg),
+           pd_rayleigh_wave_speed(&b->cfg));
+    printf("stable time step     %.6g s\n", sim.stable_dt);
+    printf("time step            %.6g s (%s)\n", sim.dt,
+           sim.cfg.dt_given ? "given" : "safety factor x stable");
+    printf("steps                %lld to t = %.6g s\n", (long long)sim.steps,
+           (double)sim.steps * sim.dt);
+    printf("memory               %.1f MB in solver arrays (%d bytes per bond + %.0f per point)\n",
+           (double)memory / 1e6, PD_BYTES_PER_BOND,
+           ((double)memory - (double)b->bond_count * PD_BYTES_PER_BOND) / (double)b->n);
+    printf("threads              %d\n", omp_get_max_threads());
+    printf("setup                %.3g s\n", setup_s);
+    printf("estimated run time   %s (%.3g s per step, outputs excluded)\n", eta, step_s);
+    sim_destroy(&sim);
+    cfg_doc_free(&doc);
+    return 0;
+}
+
+/* Output files nspd writes, for --force to clear before a new run. */
+static bool is_output_file(const char *name) {
+    static const char *const exact[] = {"case.yaml", "log.txt", "history.csv", "summary.json",
+                                        "solid.pvd", NULL};
+    static const char *const prefix[] = {"solid_", "damage_", "line_", NULL};
+    for (int i = 0; exact[i]; i++)
+        if (strcmp(name, exact[i]) == 0) return true;
+    for (int i = 0; prefix[i]; i++)
+        if (strncmp(name, prefix[i], strlen(prefix[i])) == 0) return true;
+    return false;
+}
+
+static int make_dirs(const char *path) {
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/') continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return NSPD_FAIL(NSPD_ERR_IO, "cannot create directory '%s': %s", buf, strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot create directory '%s': %s", buf, strerror(errno));
+    return NSPD_OK;
+}
+
+static int prepare_dir(const char *dir, bool force) {
+    struct stat st;
+    if (stat(dir, &st) == 0) {
+        if (!S_ISDIR(st.st_mode))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' exists and is not a directory", dir);
+        if (!force)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "output directory '%s' exists; expected a new directory (use "
+                             "--force to replace its results, or -o DIR)",
+                             dir);
+        DIR *d = opendir(dir);
+        if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
+        struct dirent *e;
+        char path[8192];
+        while ((e = readdir(d)))
+            if (is_output_file(e->d_name)) {
+                snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+                remove(path);
+            }
+        closedir(d);
+        return NSPD_OK;
+    }
+    return make_dirs(dir);
+}
+
+int cmd_run(int argc, char **argv) {
+    CaseOptions opt;
+    if (!options_parse(argc, argv, true, "run", &opt)) return EXIT_BAD_INPUT;
+    CfgDoc doc;
+    Sim sim;
+    int status = load(&opt, &doc, &sim);
+    if (status != NSPD_OK) return report(status);
+    char dir[4096];
+    if (opt.out_dir)
+        snprintf(dir, sizeof dir, "%s", opt.out_dir);
+    else
+        snprintf(dir, sizeof dir, "out/%s", sim.cfg.name);
+    char path[8192];
+    status = prepare_dir(dir, opt.force);
+    if (status == NSPD_OK) {
+        snprintf(path, sizeof path, "%s/case.yaml", dir);
+        status = case_write_resolved(&doc, path);
+    }
+    if (status == NSPD_OK) {
+        snprintf(path, sizeof path, "%s/log.txt", dir);
+        status = nspd_log_open(path);
+    }
+    if (status == NSPD_OK) {
+        if (opt.quiet) nspd_log_set_console_level(LOG_WARN);
+        const PdBody *b = &sim.solid;
+        nspd_log(LOG_INFO, "nspd %s: case '%s' from %s -> %s", NSPD_VERSION, sim.cfg.name,
+                 opt.case_path, dir);
+        nspd_log(LOG_INFO, "solid: %lld points, %lld bonds, horizon %g m, dt %g s (stable %g s), "
+                           "%lld steps, %d threads",
+                 (long long)b->n, (long long)b->bond_count / 2, b->horizon, sim.dt, sim.stable_dt,
+                 (long long)sim.steps, omp_get_max_threads());
+        interrupt_install();
+        SimRunOptions ro = {dir, !opt.quiet};
+        status = sim_run(&sim, &ro);
+        if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED)
+            nspd_log(LOG_INFO, "done: %lld steps to t = %g s in %.2f s; results in %s/",
+                     (long long)sim.solid.step, sim.solid.time, sim.wall_s, dir);
+    }
+    int code = report(status);
+    nspd_log_close();
+    sim_destroy(&sim);
+    cfg_doc_free(&doc);
+    return code;
+}

@@ -1,0 +1,63 @@
+#include "app/options.h"
+
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+bool options_parse(int argc, char **argv, bool allow_output, const char *command,
+                   CaseOptions *opt) {
+    memset(opt, 0, sizeof *opt);
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        const char *value = NULL;
+        if (strcmp(a, "--set") == 0 || strcmp(a, "-s") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "nspd %s: --set needs key=value\n", command);
+                return false;
+            }
+            value = argv[++i];
+        } else if (strncmp(a, "--set=", 6) == 0) {
+            value = a + 6;
+        }
+        if (value) {
+            if (opt->override_count == MAX_OVERRIDES) {
+                fprintf(stderr, "nspd %s: more than %d --set options\n", command, MAX_OVERRIDES);
+                return false;
+            }
+            opt->overrides[opt->override_count++] = (char *)value;
+        } else if (allow_output && strcmp(a, "-o") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "nspd %s: -o needs a directory\n", command);
+                return false;
+            }
+            opt->out_dir = argv[++i];
+        } else if (allow_output && strcmp(a, "--force") == 0) {
+            opt->force = true;
+        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            opt->quiet = true;
+        } else if (strcmp(a, "--threads") == 0) {
+            if (i + 1 >= argc || atoi(argv[i + 1]) < 1) {
+                fprintf(stderr, "nspd %s: --threads needs a positive number\n", command);
+                return false;
+            }
+            opt->threads = atoi(argv[++i]);
+        } else if (a[0] == '-') {
+            fprintf(stderr, "nspd %s: unknown option '%s'\n", command, a);
+            return false;
+        } else if (!opt->case_path) {
+            opt->case_path = a;
+        } else {
+            fprintf(stderr, "nspd %s: one case file at a time ('%s' and '%s')\n", command,
+                    opt->case_path, a);
+            return false;
+        }
+    }
+    if (!opt->case_path) {
+        fprintf(stderr, "nspd %s: which case? usage: nspd %s CASE.yaml%s [--set key=value ...]\n",
+                command, command, allow_output ? " [-o DIR] [--force]" : "");
+        return false;
+    }
+    if (opt->threads > 0) omp_set_num_threads(opt->threads);
+    return true;
+}

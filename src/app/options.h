@@ -1,0 +1,23 @@
+/* Command-line options shared by run, check and info. */
+#ifndef NSPD_APP_OPTIONS_H
+#define NSPD_APP_OPTIONS_H
+
+#include <stdbool.h>
+
+enum { MAX_OVERRIDES = 128 };
+
+typedef struct {
+    const char *case_path;
+    const char *out_dir; /* -o */
+    bool force, quiet;
+    int threads; /* --threads, 0 = OpenMP default */
+    char *overrides[MAX_OVERRIDES];
+    int override_count;
+} CaseOptions;
+
+/* Parses argv; on a usage error prints it and returns false. `allow_output`
+ * enables -o/--force (run only). */
+bool options_parse(int argc, char **argv, bool allow_output, const char *command,
+                   CaseOptions *opt);
+
+#endif

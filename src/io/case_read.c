@@ -1,0 +1,153 @@
+#include "io/case_read.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "io/case_shapes.h"
+#include "io/case_solid.h"
+#include "io/cfg_read.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static int read_time(CfgNode *root, SimConfig *cfg) {
+    CfgNode *t;
+    TRY(cfg_req_map(root, "time", &t));
+    TRY(cfg_req_double(t, "end", &cfg->end_time));
+    TRY(cfg_check_positive(t, "end", cfg->end_time, "the simulated end time in s"));
+    TRY(cfg_maybe_double(t, "dt", &cfg->dt, &cfg->dt_given));
+    if (cfg->dt_given) TRY(cfg_check_positive(t, "dt", cfg->dt, "a time step in s"));
+    TRY(cfg_opt_double(t, "safety_factor", 0.8, &cfg->safety_factor));
+    TRY(cfg_check_range(t, "safety_factor", cfg->safety_factor, 1e-6, 1.0,
+                        "a fraction of the stable time step in (0, 1]"));
+    return cfg_end_map(t);
+}
+
+static const char *const SORT_AXES[] = {"x", "y", "z", NULL};
+
+static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
+    if (item->kind != CFG_MAP)
+        return cfg_fail(item, "not a probe; expected a map with 'type: crack_tip | point | line'");
+    int kind;
+    TRY(cfg_req_enum(item, "type", PROBE_KIND_NAMES, &kind));
+    p->kind = (ProbeKind)kind;
+    const char *name;
+    char fallback[32];
+    snprintf(fallback, sizeof fallback, kind == PROBE_CRACK_TIP ? "crack" : "probe%d", index);
+    TRY(cfg_opt_string(item, "name", fallback, &name));
+    for (const char *c = name; *c; c++)
+        if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
+              *c == '_'))
+            return cfg_fail_at(item, "name", "'%s' has characters other than letters, digits and _; "
+                                             "expected a name usable in file and column names",
+                               name);
+    snprintf(p->name, sizeof p->name, "%s", name);
+    switch (p->kind) {
+    case PROBE_CRACK_TIP: {
+        double ex[3] = {1, 0, 0}, len2 = 0;
+        TRY(cfg_opt_vec(item, "direction", dim, ex, p->direction));
+        for (int d = 0; d < dim; d++) len2 += p->direction[d] * p->direction[d];
+        if (len2 == 0) return cfg_fail_at(item, "direction", "zero vector; expected a direction");
+        TRY(cfg_opt_double(item, "damage_threshold", 0.35, &p->damage_threshold));
+        TRY(cfg_check_range(item, "damage_threshold", p->damage_threshold, 0.0, 1.0,
+                            "a damage value in [0, 1]"));
+        TRY(case_read_shapes(item, "region", dim, false, &p->region));
+        break;
+    }
+    case PROBE_POINT: TRY(cfg_req_vec(item, "at", dim, p->at)); break;
+    case PROBE_LINE: {
+        TRY(case_read_shapes(item, "region", dim, true, &p->region));
+        int axis;
+        TRY(cfg_opt_enum(item, "sort", SORT_AXES, 0, &axis));
+        if (axis >= dim) return cfg_fail_at(item, "sort", "no z axis in 2D; expected x or y");
+        p->sort_axis = axis;
+        break;
+    }
+    default: break;
+    }
+    return cfg_end_map(item);
+}
+
+static int read_output(CfgNode *root, SimConfig *cfg, int dim) {
+    CfgNode *o;
+    TRY(cfg_opt_map(root, "output", &o));
+    if (!o) { /* all defaults: give the resolved case an explicit section */
+        o = cfg_map_add_collection(root, "output", CFG_MAP, CFG_FROM_DEFAULT);
+        if (!o) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+        o->used = true;
+    }
+    OutputConfig *out = &cfg->output;
+    TRY(cfg_opt_double(o, "field_interval", cfg->end_time / 10, &out->field_interval));
+    TRY(cfg_check_positive(o, "field_interval", out->field_interval, "seconds between outputs"));
+    TRY(cfg_opt_double(o, "history_interval", cfg->end_time / 200, &out->history_interval));
+    TRY(cfg_check_positive(o, "history_interval", out->history_interval,
+                           "seconds between history rows"));
+    TRY(cfg_opt_bool(o, "vtk", true, &out->vtk));
+    TRY(cfg_opt_bool(o, "png", true, &out->png));
+    int64_t pixels;
+    TRY(cfg_opt_int(o, "png_max_pixels", 1000, &pixels));
+    TRY(cfg_check_range(o, "png_max_pixels", (double)pixels, 16, 8192,
+                        "the longest PNG side in pixels, 16 to 8192"));
+    out->png_max_pixels = (int)pixels;
+    CfgNode *seq;
+    TRY(cfg_opt_seq(o, "probes", &seq));
+    if (seq) {
+        TRY(nspd_alloc(&out->probes, (size_t)seq->count, sizeof(ProbeConfig)));
+        out->probe_count = seq->count;
+        for (int i = 0; i < seq->count; i++) {
+            TRY(read_probe(seq->child[i], dim, &out->probes[i], i));
+            for (int k = 0; k < i; k++)
+                if (strcmp(out->probes[k].name, out->probes[i].name) == 0)
+                    return cfg_fail(seq->child[i], "probe name '%s' used twice; expected unique "
+                                                   "names",
+                                    out->probes[i].name);
+        }
+    }
+    return cfg_end_map(o);
+}
+
+static int read_all(CfgDoc *doc, SimConfig *cfg) {
+    CfgNode *root = doc->root;
+    const char *name;
+    TRY(cfg_req_string(root, "name", &name));
+    if (!name[0] || strlen(name) >= SIM_MAX_NAME || strchr(name, '/'))
+        return cfg_fail_at(root, "name", "'%s' is not usable as a directory name; expected 1 to %d "
+                                         "characters without '/'",
+                           name, SIM_MAX_NAME - 1);
+    snprintf(cfg->name, sizeof cfg->name, "%s", name);
+    const char *description;
+    TRY(cfg_opt_string(root, "description", "", &description));
+    TRY(read_time(root, cfg));
+    CfgNode *solid;
+    TRY(cfg_req_map(root, "solid", &solid));
+    cfg->has_solid = true;
+    TRY(case_read_solid(solid, &cfg->solid));
+    TRY(read_output(root, cfg, cfg->solid.dim));
+    return cfg_end_map(root);
+}
+
+int case_read(const char *path, char *const *overrides, int override_count, CfgDoc *doc,
+              SimConfig *cfg) {
+    memset(cfg, 0, sizeof *cfg);
+    TRY(cfg_doc_load_file(doc, path));
+    int status = NSPD_OK;
+    for (int i = 0; i < override_count && status == NSPD_OK; i++)
+        status = cfg_doc_override(doc, overrides[i]);
+    if (status == NSPD_OK) status = read_all(doc, cfg);
+    if (status != NSPD_OK) {
+        sim_config_free(cfg);
+        cfg_doc_free(doc);
+    }
+    return status;
+}
+
+int case_write_resolved(const CfgDoc *doc, const char *path) {
+    FILE *f = fopen(path, "w");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    fprintf(f, "# The resolved case: the file %s with every --set override and every default\n"
+               "# written out. `nspd run` on this file repeats the run exactly.\n",
+            doc->file);
+    int status = cfg_doc_write(doc, f);
+    if (fclose(f) != 0 && status == NSPD_OK)
+        status = NSPD_FAIL(NSPD_ERR_IO, "cannot finish writing '%s'", path);
+    return status;
+}

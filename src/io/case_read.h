@@ -1,0 +1,19 @@
+/* Reading a whole case file into a SimConfig. */
+#ifndef NSPD_IO_CASE_READ_H
+#define NSPD_IO_CASE_READ_H
+
+#include "io/cfg_tree.h"
+#include "sim/sim_config.h"
+
+/* Loads `path`, applies the --set overrides in order, reads and checks
+ * every section. On success *doc holds the resolved tree (defaults filled
+ * in) for writing case.yaml, and *cfg the configuration; the caller frees
+ * both. On failure both are freed and the status is NSPD_ERR_INPUT (bad
+ * case) or NSPD_ERR_IO (unreadable file), with a FILE:LINE:COL message. */
+int case_read(const char *path, char *const *overrides, int override_count, CfgDoc *doc,
+              SimConfig *cfg);
+
+/* Writes the resolved case (with a header comment) to `path`. */
+int case_write_resolved(const CfgDoc *doc, const char *path);
+
+#endif

@@ -1,0 +1,104 @@
+#include "io/case_shapes.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "io/cfg_read.h"
+
+#include <math.h>
+#include <string.h>
+
+static const char *const OPS[] = {"add", "subtract", NULL};
+
+static int read_min_max(CfgNode *item, int n, Shape *s) {
+    TRY(cfg_req_vec(item, "min", n, s->lo));
+    TRY(cfg_req_vec(item, "max", n, s->hi));
+    for (int d = 0; d < n; d++)
+        if (!(s->hi[d] > s->lo[d]))
+            return cfg_fail_at(item, "max",
+                               "max[%d] = %g is not above min[%d] = %g; expected max > min on "
+                               "every axis",
+                               d, s->hi[d], d, s->lo[d]);
+    return NSPD_OK;
+}
+
+static int read_polygon(CfgNode *item, Shape *s) {
+    CfgNode *seq;
+    TRY(cfg_req_seq(item, "vertices", &seq));
+    if (seq->count < 3)
+        return cfg_fail(seq, "%d vertices; expected at least 3 [x, y] pairs", seq->count);
+    TRY(nspd_alloc(&s->vertices, (size_t)seq->count * 2, sizeof(double)));
+    s->vertex_count = seq->count;
+    for (int v = 0; v < seq->count; v++) {
+        CfgNode *pt = seq->child[v];
+        if (pt->kind != CFG_SEQ || pt->count != 2)
+            return cfg_fail(pt, "not a vertex; expected a pair [x, y]");
+        TRY(cfg_node_double(pt->child[0], &s->vertices[2 * v]));
+        TRY(cfg_node_double(pt->child[1], &s->vertices[2 * v + 1]));
+    }
+    if (fabs(polygon_signed_area(s->vertices, s->vertex_count)) == 0.0)
+        return cfg_fail(seq, "the polygon has zero area; expected vertices around an area");
+    return NSPD_OK;
+}
+
+static int read_shape(CfgNode *item, int dim, Shape *s) {
+    if (item->kind != CFG_MAP)
+        return cfg_fail(item, "not a shape; expected a map such as {shape: rectangle, min: [x, y], "
+                              "max: [x, y]}");
+    int kind, op;
+    TRY(cfg_req_enum(item, "shape", SHAPE_NAMES, &kind));
+    TRY(cfg_opt_enum(item, "op", OPS, 0, &op));
+    s->kind = (ShapeKind)kind;
+    s->subtract = op == 1;
+    if (shape_is_3d(s->kind) != (dim == 3))
+        return cfg_fail_at(item, "shape", "'%s' is a %dD shape in a %dD case; expected %s",
+                           SHAPE_NAMES[kind], shape_is_3d(s->kind) ? 3 : 2, dim,
+                           dim == 3 ? "box, sphere or cylinder"
+                                    : "rectangle, disc, annulus or polygon");
+    switch (s->kind) {
+    case SHAPE_RECTANGLE: TRY(read_min_max(item, 2, s)); break;
+    case SHAPE_BOX: TRY(read_min_max(item, 3, s)); break;
+    case SHAPE_DISC:
+    case SHAPE_SPHERE:
+        TRY(cfg_req_vec(item, "center", dim, s->center));
+        TRY(cfg_req_double(item, "radius", &s->radius));
+        TRY(cfg_check_positive(item, "radius", s->radius, "a radius in m"));
+        break;
+    case SHAPE_ANNULUS:
+        TRY(cfg_req_vec(item, "center", 2, s->center));
+        TRY(cfg_req_double(item, "inner_radius", &s->inner_radius));
+        TRY(cfg_req_double(item, "radius", &s->radius));
+        TRY(cfg_check_positive(item, "inner_radius", s->inner_radius, "a radius in m"));
+        if (!(s->radius > s->inner_radius))
+            return cfg_fail_at(item, "radius",
+                               "radius %g is not above inner_radius %g; expected the outer "
+                               "radius",
+                               s->radius, s->inner_radius);
+        break;
+    case SHAPE_CYLINDER:
+        TRY(cfg_req_vec(item, "center", 3, s->center));
+        TRY(cfg_req_double(item, "radius", &s->radius));
+        TRY(cfg_req_double(item, "length", &s->length));
+        TRY(cfg_check_positive(item, "radius", s->radius, "a radius in m"));
+        TRY(cfg_check_positive(item, "length", s->length, "a length along z in m"));
+        break;
+    case SHAPE_POLYGON: TRY(read_polygon(item, s)); break;
+    default: break;
+    }
+    return cfg_end_map(item);
+}
+
+int case_read_shapes(CfgNode *map, const char *key, int dim, bool required, ShapeSet *set) {
+    memset(set, 0, sizeof *set);
+    CfgNode *seq;
+    TRY(required ? cfg_req_seq(map, key, &seq) : cfg_opt_seq(map, key, &seq));
+    if (!seq) return NSPD_OK;
+    if (seq->count == 0)
+        return cfg_fail(seq, "an empty list; expected at least one shape");
+    TRY(nspd_alloc(&set->shapes, (size_t)seq->count, sizeof(Shape)));
+    set->count = seq->count;
+    for (int i = 0; i < seq->count; i++) TRY(read_shape(seq->child[i], dim, &set->shapes[i]));
+    if (set->shapes[0].subtract)
+        return cfg_fail(seq->child[0], "the first shape subtracts from nothing; expected 'op: add' "
+                                       "first");
+    return NSPD_OK;
+}

@@ -1,0 +1,66 @@
+#include "io/render.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "io/png.h"
+
+#include <math.h>
+
+int render_points_png(const char *path, int64_t n, const double *const pos[2],
+                      const double *values, double spacing, const RenderOptions *opt) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int64_t i = 0; i < n; i++)
+        for (int d = 0; d < 2; d++) {
+            lo[d] = fmin(lo[d], pos[d][i]);
+            hi[d] = fmax(hi[d], pos[d][i]);
+        }
+    if (!(hi[0] >= lo[0]) || !(hi[1] >= lo[1]))
+        return NSPD_FAIL(NSPD_ERR_NUMERIC, "cannot draw '%s': positions are not finite", path);
+    for (int d = 0; d < 2; d++) {
+        lo[d] -= 0.5 * spacing;
+        hi[d] += 0.5 * spacing;
+    }
+    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    double scale = opt->max_pixels / extent; /* pixels per metre */
+    int w = (int)ceil((hi[0] - lo[0]) * scale), h = (int)ceil((hi[1] - lo[1]) * scale);
+    int margin = 8, bar = 16, gap = 12;
+    int width = w + 2 * margin + gap + bar, height = h + 2 * margin;
+
+    /* per-pixel maximum of the normalised value; -1 = no point */
+    float *best;
+    TRY(nspd_alloc(&best, (size_t)w * (size_t)h, sizeof(float)));
+    for (int64_t p = 0; p < (int64_t)w * h; p++) best[p] = -1.0f;
+    double range = opt->vmax > opt->vmin ? opt->vmax - opt->vmin : 1.0;
+    for (int64_t i = 0; i < n; i++) {
+        /* the point's cell [x - dx/2, x + dx/2]^2, at least one pixel */
+        int x0 = (int)floor((pos[0][i] - 0.5 * spacing - lo[0]) * scale);
+        int x1 = (int)ceil((pos[0][i] + 0.5 * spacing - lo[0]) * scale);
+        int y0 = (int)floor((hi[1] - pos[1][i] - 0.5 * spacing) * scale);
+        int y1 = (int)ceil((hi[1] - pos[1][i] + 0.5 * spacing) * scale);
+        if (x1 <= x0) x1 = x0 + 1;
+        if (y1 <= y0) y1 = y0 + 1;
+        float t = (float)fmin(1.0, fmax(0.0, (values[i] - opt->vmin) / range));
+        for (int y = y0 < 0 ? 0 : y0; y < y1 && y < h; y++)
+            for (int x = x0 < 0 ? 0 : x0; x < x1 && x < w; x++)
+                if (t > best[(int64_t)y * w + x]) best[(int64_t)y * w + x] = t;
+    }
+    Image img;
+    const uint8_t white[3] = {255, 255, 255};
+    int status = image_create(&img, width, height, white);
+    if (status == NSPD_OK) {
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                float t = best[(int64_t)y * w + x];
+                if (t < 0) continue;
+                uint8_t rgb[3];
+                colormap_rgb(opt->colormap, t, rgb);
+                image_fill_rect(&img, margin + x, margin + y, margin + x + 1, margin + y + 1, rgb);
+            }
+        image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,
+                       margin + h);
+        status = image_write_png(&img, path);
+        image_destroy(&img);
+    }
+    nspd_free(&best);
+    return status;
+}

@@ -1,0 +1,174 @@
+#include "io/vtk.h"
+
+#include "core/status.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A data array in the appended block. */
+typedef struct {
+    const char *name;
+    const char *type; /* Float64, Int64, UInt8 */
+    int components;
+    int64_t count; /* tuples */
+    int elem_size;
+} ArrayInfo;
+
+static uint64_t block_bytes(const ArrayInfo *a) {
+    return (uint64_t)a->count * (uint64_t)a->components * (uint64_t)a->elem_size;
+}
+
+static void declare(FILE *f, const ArrayInfo *a, uint64_t *offset) {
+    fprintf(f, "        <DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" "
+               "format=\"appended\" offset=\"%llu\"/>\n",
+            a->type, a->name, a->components, (unsigned long long)*offset);
+    *offset += sizeof(uint64_t) + block_bytes(a);
+}
+
+enum { CHUNK = 4096 };
+
+/* Writes the block header and n tuples of a SoA double field, interleaving
+ * components through a small buffer. */
+static int write_soa(FILE *f, int64_t n, int components, const double *const data[3]) {
+    uint64_t bytes = (uint64_t)n * (uint64_t)components * sizeof(double);
+    if (fwrite(&bytes, sizeof bytes, 1, f) != 1) return -1;
+    double buf[CHUNK * 3];
+    for (int64_t lo = 0; lo < n; lo += CHUNK) {
+        int64_t hi = lo + CHUNK < n ? lo + CHUNK : n;
+        for (int64_t i = lo; i < hi; i++)
+            for (int c = 0; c < components; c++)
+                buf[(i - lo) * components + c] = data[c] ? data[c][i] : 0.0;
+        size_t count = (size_t)((hi - lo) * components);
+        if (fwrite(buf, sizeof(double), count, f) != count) return -1;
+    }
+    return 0;
+}
+
+static int finish(FILE *f, const char *path, int write_error) {
+    if (fclose(f) != 0 || write_error) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+    return NSPD_OK;
+}
+
+int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
+                     const VtkField *fields, int field_count) {
+    FILE *f = fopen(path, "wb");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    uint64_t offset = 0;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
+               "    <Piece NumberOfPoints=\"%lld\" NumberOfCells=\"%lld\">\n      <PointData>\n",
+            (long long)n, (long long)n);
+    for (int k = 0; k < field_count; k++) {
+        ArrayInfo a = {fields[k].name, "Float64", fields[k].components, n, 8};
+        declare(f, &a, &offset);
+    }
+    fprintf(f, "      </PointData>\n      <Points>\n");
+    ArrayInfo points = {"Points", "Float64", 3, n, 8};
+    declare(f, &points, &offset);
+    fprintf(f, "      </Points>\n      <Cells>\n");
+    ArrayInfo conn = {"connectivity", "Int64", 1, n, 8}, offs = {"offsets", "Int64", 1, n, 8},
+              types = {"types", "UInt8", 1, n, 1};
+    declare(f, &conn, &offset);
+    declare(f, &offs, &offset);
+    declare(f, &types, &offset);
+    fprintf(f, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n  <AppendedData "
+               "encoding=\"raw\">\n_");
+    int err = 0;
+    for (int k = 0; k < field_count && !err; k++)
+        err = write_soa(f, n, fields[k].components, fields[k].data);
+    if (!err) err = write_soa(f, n, 3, pos);
+    /* vertex cells: cell i is point i */
+    uint64_t bytes = (uint64_t)n * 8;
+    int64_t ibuf[CHUNK];
+    for (int pass = 0; pass < 2 && !err; pass++) {
+        err = fwrite(&bytes, sizeof bytes, 1, f) != 1;
+        for (int64_t lo = 0; lo < n && !err; lo += CHUNK) {
+            int64_t hi = lo + CHUNK < n ? lo + CHUNK : n;
+            for (int64_t i = lo; i < hi; i++) ibuf[i - lo] = pass == 0 ? i : i + 1;
+            err = fwrite(ibuf, sizeof(int64_t), (size_t)(hi - lo), f) != (size_t)(hi - lo);
+        }
+    }
+    uint64_t type_bytes = (uint64_t)n;
+    uint8_t tbuf[CHUNK];
+    memset(tbuf, 1, sizeof tbuf); /* VTK_VERTEX */
+    if (!err) err = fwrite(&type_bytes, sizeof type_bytes, 1, f) != 1;
+    for (int64_t lo = 0; lo < n && !err; lo += CHUNK) {
+        size_t count = (size_t)(lo + CHUNK < n ? CHUNK : n - lo);
+        err = fwrite(tbuf, 1, count, f) != count;
+    }
+    fprintf(f, "\n  </AppendedData>\n</VTKFile>\n");
+    return finish(f, path, err);
+}
+
+int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
+                          const double *yf, const double *zf, const VtkField *fields,
+                          int field_count) {
+    FILE *f = fopen(path, "wb");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    int64_t cells = (int64_t)nx * ny * nz;
+    uint64_t offset = 0;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"RectilinearGrid\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+               "  <RectilinearGrid WholeExtent=\"0 %d 0 %d 0 %d\">\n"
+               "    <Piece Extent=\"0 %d 0 %d 0 %d\">\n      <CellData>\n",
+            nx, ny, nz, nx, ny, nz);
+    for (int k = 0; k < field_count; k++) {
+        ArrayInfo a = {fields[k].name, "Float64", fields[k].components, cells, 8};
+        declare(f, &a, &offset);
+    }
+    fprintf(f, "      </CellData>\n      <Coordinates>\n");
+    ArrayInfo cx = {"x", "Float64", 1, nx + 1, 8}, cy = {"y", "Float64", 1, ny + 1, 8},
+              cz = {"z", "Float64", 1, nz + 1, 8};
+    declare(f, &cx, &offset);
+    declare(f, &cy, &offset);
+    declare(f, &cz, &offset);
+    fprintf(f, "      </Coordinates>\n    </Piece>\n  </RectilinearGrid>\n  <AppendedData "
+               "encoding=\"raw\">\n_");
+    int err = 0;
+    for (int k = 0; k < field_count && !err; k++)
+        err = write_soa(f, cells, fields[k].components, fields[k].data);
+    const double *axes[3] = {xf, yf, zf};
+    int counts[3] = {nx + 1, ny + 1, nz + 1};
+    for (int a = 0; a < 3 && !err; a++) {
+        const double *one[3] = {axes[a], NULL, NULL};
+        err = write_soa(f, counts[a], 1, one);
+    }
+    fprintf(f, "\n  </AppendedData>\n</VTKFile>\n");
+    return finish(f, path, err);
+}
+
+int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_name) {
+    if (s->count == s->cap) {
+        int cap = s->cap ? 2 * s->cap : 16;
+        double *times = realloc(s->times, (size_t)cap * sizeof *times);
+        if (!times) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+        s->times = times;
+        char **files = realloc(s->files, (size_t)cap * sizeof *files);
+        if (!files) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+        s->files = files;
+        s->cap = cap;
+    }
+    size_t len = strlen(file_name) + 1;
+    s->files[s->count] = malloc(len);
+    if (!s->files[s->count]) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+    memcpy(s->files[s->count], file_name, len);
+    s->times[s->count++] = time;
+
+    FILE *f = fopen(pvd_path, "w");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", pvd_path);
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\">\n  <Collection>\n");
+    for (int i = 0; i < s->count; i++)
+        fprintf(f, "    <DataSet timestep=\"%.12g\" part=\"0\" file=\"%s\"/>\n", s->times[i],
+                s->files[i]);
+    fprintf(f, "  </Collection>\n</VTKFile>\n");
+    return finish(f, pvd_path, 0);
+}
+
+void pvd_free(PvdSeries *s) {
+    for (int i = 0; i < s->count; i++) free(s->files[i]);
+    free(s->files);
+    free(s->times);
+    memset(s, 0, sizeof *s);
+}

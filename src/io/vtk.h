@@ -1,0 +1,42 @@
+/* VTK XML writers that ParaView and VTK's own readers open:
+ *   .vtu  material points (UnstructuredGrid of vertex cells) with point data
+ *   .vtr  a rectilinear grid with cell data
+ *   .pvd  a time series pointing at the files above
+ * Data are binary, appended raw (little-endian, UInt64 block headers): the
+ * fastest form to write and read, and exact (Float64). */
+#ifndef NSPD_IO_VTK_H
+#define NSPD_IO_VTK_H
+
+#include <stdint.h>
+
+/* A field given as one array per component (struct of arrays); `data[c]`
+ * holds n values. Components: 1 (scalar) or 3 (vector; NULL components are
+ * written as zeros, e.g. z in 2D). */
+typedef struct {
+    const char *name;
+    int components;
+    const double *data[3];
+} VtkField;
+
+/* n points at positions pos[0..2] (NULL component = 0). */
+int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
+                     const VtkField *fields, int field_count);
+
+/* Cells of a rectilinear grid with nx * ny * nz cells; face coordinates
+ * xf[0..nx], yf[0..ny], zf[0..nz]; fields hold nx*ny*nz values, x fastest. */
+int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
+                          const double *yf, const double *zf, const VtkField *fields,
+                          int field_count);
+
+/* A .pvd collection, rewritten whole after each addition so that it is
+ * valid even if the run stops early. */
+typedef struct {
+    int count, cap;
+    double *times;
+    char **files;
+} PvdSeries;
+
+int pvd_add(PvdSeries *series, const char *pvd_path, double time, const char *file_name);
+void pvd_free(PvdSeries *series);
+
+#endif

@@ -1,0 +1,203 @@
+#include "sim/probes.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const AXIS[] = {"x", "y", "z"};
+
+bool probes_need_damage(const OutputConfig *cfg) {
+    for (int i = 0; i < cfg->probe_count; i++)
+        if (cfg->probes[i].kind == PROBE_CRACK_TIP) return true;
+    return false;
+}
+
+typedef struct {
+    double key;
+    int64_t point;
+} Keyed;
+
+static int compare_keyed(const void *a, const void *b) {
+    double xa = ((const Keyed *)a)->key, xb = ((const Keyed *)b)->key;
+    return (xa > xb) - (xa < xb);
+}
+
+/* Sorts the line members by their coordinate along the probe's axis. */
+static int sort_members(ProbeState *p, const PdBody *body) {
+    Keyed *keyed;
+    TRY(nspd_alloc(&keyed, (size_t)p->member_count, sizeof *keyed));
+    for (int64_t m = 0; m < p->member_count; m++) {
+        keyed[m].point = p->members[m];
+        keyed[m].key = body->x[p->cfg->sort_axis][p->members[m]];
+    }
+    qsort(keyed, (size_t)p->member_count, sizeof *keyed, compare_keyed);
+    for (int64_t m = 0; m < p->member_count; m++) p->members[m] = keyed[m].point;
+    nspd_free(&keyed);
+    return NSPD_OK;
+}
+
+static int setup_one(ProbeState *p, const PdBody *body, int max_samples) {
+    const ProbeConfig *c = p->cfg;
+    if (c->kind == PROBE_POINT) {
+        double best = INFINITY;
+        for (int64_t i = 0; i < body->n; i++) {
+            double d2 = 0;
+            for (int d = 0; d < body->dim; d++) d2 += pow(body->x[d][i] - c->at[d], 2);
+            if (d2 < best) {
+                best = d2;
+                p->point = i;
+            }
+        }
+    } else if (c->kind == PROBE_LINE) {
+        for (int pass = 0; pass < 2; pass++) {
+            int64_t m = 0;
+            for (int64_t i = 0; i < body->n; i++) {
+                double x[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
+                if (!shapeset_contains(&c->region, x)) continue;
+                if (pass == 1) p->members[m] = i;
+                m++;
+            }
+            if (pass == 0) {
+                if (m == 0)
+                    return NSPD_FAIL(NSPD_ERR_INPUT,
+                                     "line probe '%s': its region holds no material point", c->name);
+                TRY(nspd_alloc(&p->members, (size_t)m, sizeof(int64_t)));
+                p->member_count = m;
+            }
+        }
+        TRY(sort_members(p, body));
+    } else {
+        p->capacity = max_samples;
+        TRY(nspd_alloc(&p->times, (size_t)max_samples, sizeof(double)));
+        TRY(nspd_alloc(&p->along, (size_t)max_samples, sizeof(double)));
+    }
+    return NSPD_OK;
+}
+
+int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdBody *body,
+                  int max_samples) {
+    *probes = NULL;
+    if (cfg->probe_count == 0) return NSPD_OK;
+    TRY(nspd_alloc(probes, (size_t)cfg->probe_count, sizeof(ProbeState)));
+    for (int i = 0; i < cfg->probe_count; i++) {
+        (*probes)[i].cfg = &cfg->probes[i];
+        int status = setup_one(&(*probes)[i], body, max_samples);
+        if (status != NSPD_OK) {
+            probes_destroy(probes, cfg->probe_count);
+            return status;
+        }
+    }
+    return NSPD_OK;
+}
+
+void probes_destroy(ProbeState **probes, int count) {
+    if (!*probes) return;
+    for (int i = 0; i < count; i++) {
+        nspd_free(&(*probes)[i].members);
+        nspd_free(&(*probes)[i].times);
+        nspd_free(&(*probes)[i].along);
+    }
+    nspd_free(probes);
+}
+
+void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv) {
+    for (int k = 0; k < count; k++) {
+        const ProbeConfig *c = probes[k].cfg;
+        if (c->kind == PROBE_CRACK_TIP) {
+            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_tip_%s_m", c->name, AXIS[d]);
+        } else if (c->kind == PROBE_POINT) {
+            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_u%s_m", c->name, AXIS[d]);
+            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_v%s_m_per_s", c->name, AXIS[d]);
+        }
+    }
+}
+
+/* The damaged point furthest along the probe's direction; -1 if none. */
+static int64_t crack_tip(const ProbeConfig *c, const PdBody *body, const double *damage) {
+    int64_t best = -1;
+    double best_along = -INFINITY;
+    for (int64_t i = 0; i < body->n; i++) {
+        if (!(damage[i] > c->damage_threshold)) continue;
+        double x[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
+        if (c->region.count && !shapeset_contains(&c->region, x)) continue;
+        double along = 0;
+        for (int d = 0; d < body->dim; d++) along += x[d] * c->direction[d];
+        if (along > best_along) {
+            best_along = along;
+            best = i;
+        }
+    }
+    return best;
+}
+
+void probes_sample(ProbeState *probes, int count, const PdBody *body, const double *damage,
+                   FILE *csv) {
+    for (int k = 0; k < count; k++) {
+        ProbeState *p = &probes[k];
+        const ProbeConfig *c = p->cfg;
+        if (c->kind == PROBE_CRACK_TIP) {
+            int64_t tip = crack_tip(c, body, damage);
+            double along = (double)NAN;
+            for (int d = 0; d < body->dim; d++) p->last_tip[d] = tip >= 0 ? body->x[d][tip] : (double)NAN;
+            if (tip >= 0) {
+                along = 0;
+                for (int d = 0; d < body->dim; d++) along += body->x[d][tip] * c->direction[d];
+            }
+            if (p->samples < p->capacity) {
+                p->times[p->samples] = body->time;
+                p->along[p->samples] = along;
+                p->samples++;
+            }
+            if (csv)
+                for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", p->last_tip[d]);
+        } else if (c->kind == PROBE_POINT && csv) {
+            for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->u[d][p->point]);
+            for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->v[d][p->point]);
+        }
+    }
+}
+
+int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
+                       const double *damage, const char *dir, int index) {
+    for (int k = 0; k < count; k++) {
+        const ProbeState *p = &probes[k];
+        if (p->cfg->kind != PROBE_LINE) continue;
+        char path[4096];
+        snprintf(path, sizeof path, "%s/line_%s_%05d.csv", dir, p->cfg->name, index);
+        FILE *f = fopen(path, "w");
+        if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+        fprintf(f, "# t = %.9g s\n", body->time);
+        for (int d = 0; d < body->dim; d++) fprintf(f, "%s%s_m", d ? "," : "", AXIS[d]);
+        for (int d = 0; d < body->dim; d++) fprintf(f, ",u%s_m", AXIS[d]);
+        for (int d = 0; d < body->dim; d++) fprintf(f, ",v%s_m_per_s", AXIS[d]);
+        fprintf(f, ",damage\n");
+        for (int64_t m = 0; m < p->member_count; m++) {
+            int64_t i = p->members[m];
+            for (int d = 0; d < body->dim; d++) fprintf(f, "%s%.9g", d ? "," : "", body->x[d][i]);
+            for (int d = 0; d < body->dim; d++) fprintf(f, ",%.9g", body->u[d][i]);
+            for (int d = 0; d < body->dim; d++) fprintf(f, ",%.9g", body->v[d][i]);
+            fprintf(f, ",%.6g\n", damage ? damage[i] : 0.0);
+        }
+        if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+    }
+    return NSPD_OK;
+}
+
+double probe_crack_speed(const ProbeState *p) {
+    int first = -1;
+    for (int s = 0; s < p->samples; s++)
+        if (!isnan(p->along[s])) {
+            first = s;
+            break;
+        }
+    if (first < 0) return NAN;
+    double start = p->along[first], end = p->along[p->samples - 1];
+    if (isnan(end) || end <= start) return 0.0;
+    int s0 = first, s1 = p->samples - 1;
+    while (s0 + 1 < p->samples && p->along[s0 + 1] == start) s0++;
+    while (s1 > s0 && p->along[s1 - 1] == end) s1--;
+    return (end - start) / (p->times[s1] - p->times[s0]);
+}

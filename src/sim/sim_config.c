@@ -1,0 +1,14 @@
+#include "sim/sim_config.h"
+
+#include "core/mem.h"
+
+#include <string.h>
+
+const char *const PROBE_KIND_NAMES[PROBE_KIND_COUNT + 1] = {"crack_tip", "point", "line", NULL};
+
+void sim_config_free(SimConfig *cfg) {
+    if (cfg->has_solid) pd_config_free(&cfg->solid);
+    for (int i = 0; i < cfg->output.probe_count; i++) shapeset_free(&cfg->output.probes[i].region);
+    nspd_free(&cfg->output.probes);
+    memset(cfg, 0, sizeof *cfg);
+}

@@ -1,0 +1,17 @@
+#include "sim_fixtures.h"
+
+#include "test_support.h"
+
+#include "io/case_read.h"
+
+#include <stdio.h>
+
+void fixture_sim(const char *case_file, const char *const *overrides, int count, Sim *sim) {
+    char rel[512];
+    snprintf(rel, sizeof rel, "cases/%s", case_file);
+    CfgDoc doc;
+    SimConfig cfg;
+    assert_ok(case_read(test_source_path(rel), (char *const *)overrides, count, &doc, &cfg));
+    assert_ok(sim_create(sim, &cfg));
+    cfg_doc_free(&doc);
+}

@@ -1,0 +1,150 @@
+/* core/: status propagation, aligned allocation and its accounting and
+ * failure injection, deterministic reductions, shapes. */
+#include "test_support.h"
+
+#include "core/mem.h"
+#include "core/progress.h"
+#include "core/reduce.h"
+#include "core/shape.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdint.h>
+#include <string.h>
+
+static int inner(int fail) {
+    if (fail) return NSPD_FAIL(NSPD_ERR_IO, "disk %s", "full");
+    return NSPD_OK;
+}
+
+static int outer(int fail, int *reached) {
+    TRY(inner(fail));
+    *reached = 1;
+    return NSPD_OK;
+}
+
+static void test_try_propagates(void **state) {
+    (void)state;
+    int reached = 0;
+    assert_int_equal(outer(1, &reached), NSPD_ERR_IO);
+    assert_int_equal(reached, 0);
+    assert_string_equal(nspd_error_message(), "disk full");
+    assert_non_null(strstr(nspd_error_origin(), "test_core.c"));
+    assert_int_equal(outer(0, &reached), NSPD_OK);
+    assert_int_equal(reached, 1);
+}
+
+static void test_alloc_aligned_zeroed_counted(void **state) {
+    (void)state;
+    size_t before = nspd_mem_live_bytes();
+    double *a;
+    assert_ok(nspd_alloc(&a, 1000, sizeof(double)));
+    assert_int_equal((uintptr_t)a % 64, 0);
+    for (int i = 0; i < 1000; i++) assert_true(a[i] == 0.0);
+    assert_int_equal(nspd_mem_live_bytes() - before, 8000);
+    assert_true(nspd_mem_peak_bytes() >= 8000);
+    a[999] = 7;
+    assert_ok(nspd_realloc(&a, 1000, 2000, sizeof(double)));
+    assert_true(a[999] == 7 && a[1999] == 0);
+    nspd_free(&a);
+    assert_null(a);
+    assert_int_equal(nspd_mem_live_bytes(), before);
+    double *none;
+    assert_ok(nspd_alloc(&none, 0, 8));
+    assert_null(none);
+}
+
+static void test_alloc_failure_injection_and_overflow(void **state) {
+    (void)state;
+    double *a = NULL, *b = NULL;
+    nspd_mem_fail_after(1);
+    assert_ok(nspd_alloc(&a, 10, 8));
+    assert_int_equal(nspd_alloc(&b, 10, 8), NSPD_ERR_NOMEM);
+    assert_null(b);
+    nspd_mem_fail_after(-1);
+    nspd_free(&a);
+    assert_int_equal(nspd_alloc(&b, SIZE_MAX / 4, 8), NSPD_ERR_NOMEM);
+}
+
+static void test_reduce_same_at_any_thread_count(void **state) {
+    (void)state;
+    enum { N = 100003 };
+    double *a;
+    assert_ok(nspd_alloc(&a, N, sizeof(double)));
+    for (int i = 0; i < N; i++) a[i] = sin(i * 0.37) * pow(10.0, (i % 17) - 8);
+    omp_set_num_threads(1);
+    double s1 = reduce_sum(a, N);
+    omp_set_num_threads(2);
+    double s2 = reduce_sum(a, N);
+    omp_set_num_threads(3);
+    double s3 = reduce_sum(a, N);
+    assert_memory_equal(&s1, &s2, sizeof s1);
+    assert_memory_equal(&s1, &s3, sizeof s1);
+    double serial = 0;
+    for (int i = 0; i < N; i++) serial += a[i];
+    assert_close(s1, serial, 1e-12 * fabs(serial) + 1e-15);
+    int64_t lo, hi, covered = 0;
+    for (int c = 0; c < REDUCE_CHUNKS; c++) {
+        reduce_chunk(N, c, &lo, &hi);
+        assert_int_equal(lo, covered);
+        covered = hi;
+    }
+    assert_int_equal(covered, N);
+    nspd_free(&a);
+}
+
+static void test_shapes_and_csg(void **state) {
+    (void)state;
+    Shape rect = {.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {2, 1, 0}};
+    Shape hole = {.kind = SHAPE_DISC, .center = {1, 0.5, 0}, .radius = 0.25, .subtract = true};
+    Shape shapes[2] = {rect, hole};
+    ShapeSet set = {2, shapes};
+    assert_true(shapeset_contains(&set, (double[3]){0.1, 0.1, 0}));
+    assert_false(shapeset_contains(&set, (double[3]){1.0, 0.5, 0}));
+    assert_true(shapeset_contains(&set, (double[3]){2.0, 1.0, 0})); /* closed boundary */
+    assert_false(shapeset_contains(&set, (double[3]){2.01, 0.5, 0}));
+    double lo[3], hi[3];
+    assert_true(shapeset_bounds(&set, 2, lo, hi));
+    assert_true(lo[0] == 0 && hi[0] == 2 && lo[1] == 0 && hi[1] == 1);
+
+    Shape ring = {.kind = SHAPE_ANNULUS, .center = {0, 0, 0}, .inner_radius = 1, .radius = 2};
+    assert_true(shape_contains(&ring, (double[3]){1.5, 0, 0}));
+    assert_false(shape_contains(&ring, (double[3]){0.5, 0, 0}));
+
+    double tri[6] = {0, 0, 4, 0, 0, 3};
+    Shape poly = {.kind = SHAPE_POLYGON, .vertex_count = 3, .vertices = tri};
+    assert_true(shape_contains(&poly, (double[3]){1, 1, 0}));
+    assert_false(shape_contains(&poly, (double[3]){3, 2, 0}));
+    assert_true(shape_contains(&poly, (double[3]){2, 1.5, 0})); /* on the hypotenuse */
+    assert_close(polygon_signed_area(tri, 3), 6.0, 1e-15);
+
+    Shape cyl = {.kind = SHAPE_CYLINDER, .center = {0, 0, 1}, .radius = 1, .length = 2};
+    assert_true(shape_contains(&cyl, (double[3]){0.5, 0.5, 1.9}));
+    assert_false(shape_contains(&cyl, (double[3]){0.5, 0.5, 2.1}));
+    Shape ball = {.kind = SHAPE_SPHERE, .center = {0, 0, 0}, .radius = 1};
+    assert_false(shape_contains(&ball, (double[3]){0.6, 0.6, 0.6}));
+}
+
+static void test_duration_format(void **state) {
+    (void)state;
+    char buf[32];
+    progress_format_duration(12.34, buf, sizeof buf);
+    assert_string_equal(buf, "12.3s");
+    progress_format_duration(185, buf, sizeof buf);
+    assert_string_equal(buf, "3m05s");
+    progress_format_duration(3725, buf, sizeof buf);
+    assert_string_equal(buf, "1h02m");
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_try_propagates),
+        cmocka_unit_test(test_alloc_aligned_zeroed_counted),
+        cmocka_unit_test(test_alloc_failure_injection_and_overflow),
+        cmocka_unit_test(test_reduce_same_at_any_thread_count),
+        cmocka_unit_test(test_shapes_and_csg),
+        cmocka_unit_test(test_duration_format),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
