@@ -40,7 +40,7 @@ foreach(kind unit verify)
         add_test(NAME ${name} COMMAND ${exe} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
         nspd_extra_labels(${src} extra)
         set_tests_properties(${name} PROPERTIES LABELS "${kind};${extra}"
-            ENVIRONMENT "OMP_NUM_THREADS=2;OMP_PROC_BIND=false")
+            ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
     endforeach()
 endforeach()
 
@@ -52,5 +52,5 @@ foreach(script ${cli_tests})
         WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
     nspd_extra_labels(${script} extra)
     set_tests_properties(cli.${topic} PROPERTIES LABELS "cli;${extra}"
-        ENVIRONMENT "OMP_NUM_THREADS=2")
+        ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
 endforeach()

@@ -1,13 +1,14 @@
 #!/bin/sh
 # Installs the Debian packages a make target needs, and nothing else.
-#   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cmocka
+#   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cmocka, VTK for Python
+#                              (the tests open our .vtu/.vtr files with VTK's own readers)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine
 # As root the missing packages are installed with apt-get; otherwise the exact
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake pkg-config libyaml-dev libpng-dev libcmocka-dev"
+want="gcc make cmake pkg-config libyaml-dev libpng-dev libcmocka-dev python3-vtk9"
 for group in "$@"; do
     case "$group" in
     build) ;;

@@ -1,8 +1,9 @@
 #include "core/reduce.h"
+#include "core/parallel.h"
 
 double reduce_sum(const double *a, int64_t n) {
     double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int c = 0; c < REDUCE_CHUNKS; c++) {
         int64_t lo, hi;
         reduce_chunk(n, c, &lo, &hi);

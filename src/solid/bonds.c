@@ -8,6 +8,7 @@
  * round-off are in, which matters only for horizon factors without the usual
  * 0.015 margin. */
 #include "solid/bonds.h"
+#include "core/parallel.h"
 
 #include "core/mem.h"
 #include "core/status.h"
@@ -125,7 +126,7 @@ int bonds_find(int64_t n, int dim, const double *const x[3], double horizon, int
     int status = nspd_alloc(first, (size_t)n + 1, sizeof(int64_t));
     if (status == NSPD_OK) {
         int64_t *f = *first;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < n; i++) f[i + 1] = visit(&cl, x, i, r2, NULL);
         for (int64_t i = 0; i < n; i++) f[i + 1] += f[i];
         status = nspd_alloc(nbr, (size_t)f[n], sizeof(int32_t));
@@ -133,7 +134,7 @@ int bonds_find(int64_t n, int dim, const double *const x[3], double horizon, int
     if (status == NSPD_OK) {
         int64_t *f = *first;
         int32_t *b = *nbr;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < n; i++) {
             visit(&cl, x, i, r2, b + f[i]);
             qsort(b + f[i], (size_t)(f[i + 1] - f[i]), sizeof(int32_t), compare_int32);

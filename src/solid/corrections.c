@@ -10,6 +10,7 @@
  * of the imposed displacement, as in Madenci and Oterkus' code; at 1e-3 the
  * difference from the linearised stretch is 1e-3 relative. */
 #include "solid/corrections.h"
+#include "core/parallel.h"
 
 #include "core/status.h"
 
@@ -23,7 +24,7 @@ int pd_surface_factors(const PdBody *body, double *factor[3]) {
     const double w_classical = pd_classical_uniaxial_energy(cfg, strain);
     for (int axis = 0; axis < dim; axis++) {
         double *g = factor[axis];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < body->n; i++) {
             double w = 0.0;
             for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++) {

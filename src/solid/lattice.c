@@ -6,6 +6,7 @@
  * which is what makes the gather in the force loop cheap. A Hilbert curve
  * would be slightly better but measured no faster on the 2D plate. */
 #include "solid/lattice.h"
+#include "core/parallel.h"
 
 #include "core/mem.h"
 #include "core/status.h"
@@ -49,37 +50,45 @@ static int compare_keys(const void *a, const void *b) {
 }
 
 int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
-                 const double origin[3]) {
+                 const double *origin) {
     lattice_free(lat);
     double lo[3], hi[3];
     if (!shapeset_bounds(geometry, dim, lo, hi))
         return NSPD_FAIL(NSPD_ERR_INPUT, "the solid geometry adds no shape");
+    /* Point k along an axis sits at centre + (k - mid) dx. With a given
+     * origin, centre = origin + mid dx reproduces origin + k dx; by default
+     * the lattice is centred in the bounding box, centre = (lo + hi) / 2,
+     * which is exactly 0 for a box written symmetrically, so that mirrored
+     * points have exactly mirrored coordinates (k - mid is a half-integer,
+     * exact, and the product rounds symmetrically). */
     int64_t first[3] = {0, 0, 0}, count[3] = {1, 1, 1};
+    double centre[3] = {0, 0, 0}, mid[3] = {0, 0, 0};
     for (int d = 0; d < dim; d++) {
-        first[d] = (int64_t)ceil((lo[d] - origin[d]) / dx - 1e-9);
-        int64_t last = (int64_t)floor((hi[d] - origin[d]) / dx + 1e-9);
-        count[d] = last - first[d] + 1;
+        if (origin) {
+            first[d] = (int64_t)ceil((lo[d] - origin[d]) / dx - 1e-9);
+            count[d] = (int64_t)floor((hi[d] - origin[d]) / dx + 1e-9) - first[d] + 1;
+        } else {
+            count[d] = (int64_t)floor((hi[d] - lo[d]) / dx + 1e-6);
+            if (count[d] < 1) count[d] = 1;
+        }
         if (count[d] <= 0 || count[d] > (dim == 2 ? (1 << 30) : (1 << 20)))
             return NSPD_FAIL(NSPD_ERR_INPUT,
                              "the solid lattice has %lld points along axis %d; expected 1 to %d",
                              (long long)count[d], d, dim == 2 ? (1 << 30) : (1 << 20));
+        mid[d] = (double)first[d] + 0.5 * (double)(count[d] - 1);
+        centre[d] = origin ? origin[d] + mid[d] * dx : 0.5 * (lo[d] + hi[d]);
     }
     int64_t candidates = count[0] * count[1] * count[2];
-    double mid[3], centre[3];
-    for (int d = 0; d < 3; d++) {
-        mid[d] = (double)first[d] + 0.5 * (double)(count[d] - 1);
-        centre[d] = origin[d] + mid[d] * dx;
-    }
 
     /* pass 1: which candidates are inside (one byte each) */
     uint8_t *inside;
     TRY(nspd_alloc(&inside, (size_t)candidates, 1));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (candidates >= PARALLEL_MIN_ITEMS)
     for (int64_t c = 0; c < candidates; c++) {
         int64_t i = c % count[0], j = (c / count[0]) % count[1], k = c / (count[0] * count[1]);
-        double p[3] = {origin[0] + (double)(first[0] + i) * dx,
-                       origin[1] + (double)(first[1] + j) * dx,
-                       dim == 3 ? origin[2] + (double)(first[2] + k) * dx : 0.0};
+        double p[3] = {centre[0] + ((double)(first[0] + i) - mid[0]) * dx,
+                       centre[1] + ((double)(first[1] + j) - mid[1]) * dx,
+                       dim == 3 ? centre[2] + ((double)(first[2] + k) - mid[2]) * dx : 0.0};
         inside[c] = shapeset_contains(geometry, p);
     }
     int64_t n = 0;
@@ -124,7 +133,7 @@ int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
         lattice_free(lat);
         return status;
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t p = 0; p < n; p++) {
         int64_t c = keyed[p].slot;
         int64_t idx[3] = {c % count[0], (c / count[0]) % count[1], c / (count[0] * count[1])};

@@ -12,11 +12,15 @@ typedef struct {
     int32_t *index[3];  /* integer lattice coordinates */
 } Lattice;
 
-/* Points origin + k dx (k integer per axis) that lie inside `geometry`, sorted
- * along the Morton curve of their lattice indices. `dim` is 2 or 3 (z = 0 in
- * 2D). NSPD_ERR_INPUT if no point falls inside; NSPD_ERR_NOMEM. */
+/* The lattice points inside `geometry`, sorted along the Morton curve of
+ * their lattice indices: origin + k dx (k integer per axis) when `origin` is
+ * given, else a lattice centred in the geometry's bounding box with as many
+ * points per axis as cells of size dx fit in it (for a box, the points sit
+ * half a spacing inside its faces). `dim` is 2 or 3 (z = 0 in 2D). `lat`
+ * must be zeroed or hold a previous lattice. NSPD_ERR_INPUT if no point
+ * falls inside; NSPD_ERR_NOMEM. */
 int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
-                 const double origin[3]);
+                 const double *origin);
 void lattice_free(Lattice *lat);
 
 /* Morton key of non-negative lattice indices (2D: 32 bits per axis, 3D: 21). */

@@ -1,7 +1,9 @@
 /* Building a PD body from its configuration (paper 000 Sec. 3.2).
  *
  * Order of construction, each step depending on the previous:
- *  1. lattice points inside the geometry, Morton-ordered (lattice.c);
+ *  1. lattice points inside the geometry, Morton-ordered, by default centred
+ *     in its bounding box so symmetric bodies get exactly symmetric points
+ *     (lattice.c);
  *  2. point volumes (dx^dim, times the thickness in 2D), regions, initial
  *     velocities;
  *  3. bonds within the horizon |xi| <= delta (bonds.c). The family is the
@@ -16,6 +18,7 @@
  *  6. pre-cracks: crossing bonds set to 0 (broken);
  *  7. the damage denominator sum_j nu_ij V_j over the initial family. */
 #include "solid/pd_body.h"
+#include "core/parallel.h"
 
 #include "core/mem.h"
 #include "core/status.h"
@@ -43,7 +46,7 @@ static int alloc_points(PdBody *body) {
 
 static void assign_regions(PdBody *body) {
     const PdConfig *cfg = &body->cfg;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         double p[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
         body->region[i] = -1;
@@ -66,7 +69,7 @@ static void assign_coefficients(PdBody *body, double *const g[3]) {
     const int dim = body->dim;
     const double dx = body->spacing, horizon = body->horizon;
     const bool any_region = cfg->failure_region.count > 0;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         double xi_pt[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
         double gi[3] = {1, 1, 1}, bond_volume = 0.0;
@@ -117,17 +120,9 @@ static int build(PdBody *body, PdConfig *cfg) {
     double s_c = cfg->critical_stretch;
     body->stretch_limit2 = (1.0 + s_c) * (1.0 + s_c);
 
-    double origin[3] = {0, 0, 0};
-    if (cfg->has_lattice_origin) {
-        memcpy(origin, cfg->lattice_origin, sizeof origin);
-    } else {
-        double lo[3], hi[3];
-        if (!shapeset_bounds(&cfg->geometry, cfg->dim, lo, hi))
-            return NSPD_FAIL(NSPD_ERR_INPUT, "the solid geometry adds no shape");
-        for (int d = 0; d < cfg->dim; d++) origin[d] = lo[d] + 0.5 * cfg->spacing;
-    }
     Lattice lat = {0};
-    TRY(lattice_fill(&lat, &cfg->geometry, cfg->dim, cfg->spacing, origin));
+    TRY(lattice_fill(&lat, &cfg->geometry, cfg->dim, cfg->spacing,
+                     cfg->has_lattice_origin ? cfg->lattice_origin : NULL));
     body->n = lat.n;
     for (int d = 0; d < 3; d++) {
         body->x[d] = lat.x[d];

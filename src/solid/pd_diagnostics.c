@@ -1,4 +1,5 @@
 #include "solid/pd_diagnostics.h"
+#include "core/parallel.h"
 
 #include "core/reduce.h"
 
@@ -6,7 +7,7 @@
 
 void pd_damage(const PdBody *body, double *damage) {
     const int dim = body->dim;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         double intact = 0.0;
         for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++) {
@@ -28,14 +29,14 @@ void pd_damage(const PdBody *body, double *damage) {
 
 int64_t pd_broken_bonds(const PdBody *body) {
     int64_t broken = 0;
-#pragma omp parallel for schedule(static) reduction(+ : broken)
+#pragma omp parallel for schedule(static) reduction(+ : broken) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t b = 0; b < body->bond_count; b++) broken += body->bond_coef[b] == 0.0f;
     return broken / 2;
 }
 
 double pd_kinetic_energy(const PdBody *body) {
     double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int c = 0; c < REDUCE_CHUNKS; c++) {
         int64_t lo, hi;
         reduce_chunk(body->n, c, &lo, &hi);
@@ -53,7 +54,7 @@ double pd_kinetic_energy(const PdBody *body) {
 double pd_elastic_energy(const PdBody *body) {
     const int dim = body->dim;
     double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int c = 0; c < REDUCE_CHUNKS; c++) {
         int64_t lo, hi;
         reduce_chunk(body->n, c, &lo, &hi);
@@ -84,7 +85,7 @@ double pd_elastic_energy(const PdBody *body) {
 void pd_momentum(const PdBody *body, double p[3]) {
     for (int d = 0; d < 3; d++) {
         double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
         for (int c = 0; c < REDUCE_CHUNKS; c++) {
             int64_t lo, hi;
             reduce_chunk(body->n, c, &lo, &hi);

@@ -22,6 +22,7 @@
  * computes it. The store that breaks a bond is conditional: an
  * unconditional one costs 25 % on the 2D plate (measured). */
 #include "solid/pd_force.h"
+#include "core/parallel.h"
 
 #include <math.h>
 
@@ -88,7 +89,7 @@ void pd_force_compute(PdBody *body) {
     const int64_t n = body->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
     if (body->dim == 2) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
             pd_force_kernel_2d(lo, hi, body->x[0], body->x[1], body->u[0], body->u[1],
@@ -96,7 +97,7 @@ void pd_force_compute(PdBody *body) {
                                body->force[0], body->force[1]);
         }
     } else {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
             pd_force_kernel_3d(lo, hi, body->x[0], body->x[1], body->x[2], body->u[0], body->u[1],

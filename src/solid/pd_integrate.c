@@ -1,4 +1,5 @@
 #include "solid/pd_integrate.h"
+#include "core/parallel.h"
 
 #include "core/status.h"
 #include "solid/pd_force.h"
@@ -12,7 +13,7 @@ static void kick(PdBody *body, double h) {
     const int dim = body->dim;
     const double inv_rho = 1.0 / cfg->density;
     const PdBoundaryRegion *regions = cfg->boundaries;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         const int r = body->region[i];
         for (int d = 0; d < dim; d++) {
@@ -34,7 +35,7 @@ static bool drift(PdBody *body, double h) {
     const int dim = body->dim;
     const PdBoundaryRegion *regions = body->cfg.boundaries;
     bool bad = false;
-#pragma omp parallel for schedule(static) reduction(|| : bad)
+#pragma omp parallel for schedule(static) reduction(|| : bad) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         const int r = body->region[i];
         for (int d = 0; d < dim; d++) {
@@ -83,7 +84,7 @@ int pd_step(PdBody *body, double dt) {
 
 double pd_stable_time_step(const PdBody *body) {
     double min_dt2 = INFINITY;
-#pragma omp parallel for schedule(static) reduction(min : min_dt2)
+#pragma omp parallel for schedule(static) reduction(min : min_dt2) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         double sum = 0.0;
         for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++)

@@ -1,0 +1,63 @@
+#!/bin/sh
+# Every kind of bad input is refused before anything runs: exit status 2, a
+# "FILE:LINE:COL: what; expected" message on stderr (checked against the
+# file's "# expect:" line), and no output directory. Files: tests/cli/bad/.
+#   usage: test_bad_input.sh NSPD SOURCE_DIR
+set -u
+nspd=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+count=0
+
+check() { # name, expected regex, command...
+    name=$1
+    expect=$2
+    shift 2
+    count=$((count + 1))
+    "$@" >"$work/out" 2>"$work/err"
+    status=$?
+    if [ "$status" -ne 2 ]; then
+        echo "FAIL $name: exit status $status, expected 2"
+        cat "$work/err"
+        failures=$((failures + 1))
+    elif ! grep -Eq -- "$expect" "$work/err"; then
+        echo "FAIL $name: message does not match /$expect/:"
+        cat "$work/err"
+        failures=$((failures + 1))
+    elif [ -e "$work/result" ]; then
+        echo "FAIL $name: created the output directory"
+        failures=$((failures + 1))
+    fi
+    rm -rf "$work/result"
+}
+
+cd "$src/tests/cli/bad" || exit 1
+for file in *.yaml; do
+    expect=$(sed -n 's/^# expect: //p' "$file")
+    args=$(sed -n 's/^# args: //p' "$file")
+    # shellcheck disable=SC2086 # args are words
+    check "run $file" "$expect" "$nspd" run "$file" -o "$work/result" $args
+    check "check $file" "$expect" "$nspd" check "$file" $args
+done
+
+check "missing file" "nonexistent.yaml: cannot open the case file" \
+    "$nspd" run nonexistent.yaml -o "$work/result"
+check "no case" "which case\\?" "$nspd" run
+check "unknown option" "unknown option '--fast'" "$nspd" run x.yaml --fast
+check "bad --set syntax" "--set solid: expected dotted.key=value" \
+    "$nspd" check "$src/cases/plate_crack.yaml" --set solid
+check "unknown command" "unknown command 'walk'" "$nspd" walk
+mkdir -p "$work/existing"
+count=$((count + 1))
+"$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"
+if [ $? -ne 2 ] || ! grep -q "output directory '$work/existing' exists" "$work/err" ||
+    [ -n "$(ls -A "$work/existing")" ]; then
+    echo "FAIL existing directory without --force was not refused cleanly"
+    cat "$work/err"
+    failures=$((failures + 1))
+fi
+
+echo "$((count - failures)) passed, $failures failed"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,15 @@
+#!/bin/sh
+# The VTK files nspd writes open in VTK's own XML readers (what ParaView
+# uses): a small 2D and 3D solid run, every file of each .pvd series.
+#   usage: test_vtk_reader.sh NSPD SOURCE_DIR
+set -eu
+nspd=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$nspd" run "$src/cases/block_3d.yaml" -o "$work/block" --quiet --set time.end=1e-6 \
+    --set output.field_interval=5e-7
+points=$(sed -n 's/.*"points": \([0-9]*\).*/\1/p' "$work/block/summary.json")
+/usr/bin/python3 "$src/tests/cli/tools/read_vtk.py" "$work/block/solid.pvd" "$points" \
+    displacement:3 velocity:3 damage volume
+echo "1 passed, 0 failed"
