@@ -29,8 +29,9 @@ static bool parse(int argc, char **argv, BenchOptions *opt) {
         } else if (strcmp(a, "--threads") == 0 && value > 0) {
             opt->threads = (int)value;
         } else {
-            fprintf(stderr, "nspd bench: bad option '%s' (expected --points/--cells N, --steps S, "
-                            "--threads T with positive values)\n",
+            fprintf(stderr,
+                    "nspd bench: bad option '%s' (expected --points/--cells N, --steps S, "
+                    "--threads T with positive values)\n",
                     a);
             return false;
         }
@@ -61,7 +62,8 @@ static int bench_pd(const BenchOptions *opt) {
     cfg.integrator = PD_EULER_CROMER;
     TRY(nspd_alloc(&cfg.geometry.shapes, 1, sizeof(Shape)));
     cfg.geometry.count = 1;
-    cfg.geometry.shapes[0] = (Shape){.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {length, length, 0}};
+    cfg.geometry.shapes[0] =
+        (Shape){.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {length, length, 0}};
 
     double t0 = nspd_wall_time();
     PdBody body;
@@ -88,7 +90,8 @@ static int bench_pd(const BenchOptions *opt) {
         json_int(&w, "steps", opt->steps);
         json_int(&w, "threads", omp_get_max_threads());
         json_number(&w, "seconds", seconds);
-        json_number(&w, "bond_updates_per_s", (double)body.bond_count * (double)opt->steps / seconds);
+        json_number(&w, "bond_updates_per_s",
+                    (double)body.bond_count * (double)opt->steps / seconds);
         json_number(&w, "bytes_per_bond", PD_BYTES_PER_BOND);
         json_number(&w, "bytes_per_point", ((double)bytes - bond_bytes) / (double)body.n);
         json_number(&w, "setup_s", setup_s);

@@ -20,10 +20,14 @@
 
 int exit_status_of(int status) {
     switch (status) {
-    case NSPD_OK: return 0;
-    case NSPD_ERR_INPUT: return EXIT_BAD_INPUT;
-    case NSPD_ERR_INTERRUPTED: return EXIT_INTERRUPTED;
-    default: return EXIT_RUN_FAILED;
+    case NSPD_OK:
+        return 0;
+    case NSPD_ERR_INPUT:
+        return EXIT_BAD_INPUT;
+    case NSPD_ERR_INTERRUPTED:
+        return EXIT_INTERRUPTED;
+    default:
+        return EXIT_RUN_FAILED;
     }
 }
 
@@ -126,8 +130,8 @@ int cmd_info(int argc, char **argv) {
 
 /* Output files nspd writes, for --force to clear before a new run. */
 static bool is_output_file(const char *name) {
-    static const char *const exact[] = {"case.yaml", "log.txt", "history.csv", "summary.json",
-                                        "solid.pvd", NULL};
+    static const char *const exact[] = {"case.yaml",    "log.txt",   "history.csv",
+                                        "summary.json", "solid.pvd", NULL};
     static const char *const prefix[] = {"solid_", "damage_", "line_", NULL};
     for (int i = 0; exact[i]; i++)
         if (strcmp(name, exact[i]) == 0) return true;
@@ -203,8 +207,9 @@ int cmd_run(int argc, char **argv) {
         const PdBody *b = &sim.solid;
         nspd_log(LOG_INFO, "nspd %s: case '%s' from %s -> %s", NSPD_VERSION, sim.cfg.name,
                  opt.case_path, dir);
-        nspd_log(LOG_INFO, "solid: %lld points, %lld bonds, horizon %g m, dt %g s (stable %g s), "
-                           "%lld steps, %d threads",
+        nspd_log(LOG_INFO,
+                 "solid: %lld points, %lld bonds, horizon %g m, dt %g s (stable %g s), "
+                 "%lld steps, %d threads",
                  (long long)b->n, (long long)b->bond_count / 2, b->horizon, sim.dt, sim.stable_dt,
                  (long long)sim.steps, omp_get_max_threads());
         interrupt_install();

@@ -17,7 +17,6 @@ typedef struct {
 
 /* Parses argv; on a usage error prints it and returns false. `allow_output`
  * enables -o/--force (run only). */
-bool options_parse(int argc, char **argv, bool allow_output, const char *command,
-                   CaseOptions *opt);
+bool options_parse(int argc, char **argv, bool allow_output, const char *command, CaseOptions *opt);
 
 #endif

@@ -32,8 +32,8 @@ static void draw(Progress *p, int64_t step, double time, double fraction, bool f
     char eta_text[32], elapsed_text[32];
     progress_format_duration(final ? 0.0 : eta, eta_text, sizeof eta_text);
     progress_format_duration(elapsed, elapsed_text, sizeof elapsed_text);
-    fprintf(p->stream, "%sstep %lld  t = %.4e s  %5.1f %%  elapsed %s  ETA %s%s", p->live ? "\r" : "",
-            (long long)step, time, 100.0 * fraction, elapsed_text, eta_text,
+    fprintf(p->stream, "%sstep %lld  t = %.4e s  %5.1f %%  elapsed %s  ETA %s%s",
+            p->live ? "\r" : "", (long long)step, time, 100.0 * fraction, elapsed_text, eta_text,
             p->live ? "\033[K" : "\n");
     fflush(p->stream);
 }

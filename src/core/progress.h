@@ -13,7 +13,7 @@
 typedef struct {
     FILE *stream;
     bool enabled, live;
-    double end_time;  /* simulated end time, s */
+    double end_time; /* simulated end time, s */
     double wall_start, last_draw;
     int last_decile;
 } Progress;

@@ -4,8 +4,8 @@
 
 #include <math.h>
 
-const char *const SHAPE_NAMES[SHAPE_KIND_COUNT + 1] = {
-    "rectangle", "disc", "annulus", "polygon", "box", "sphere", "cylinder", NULL};
+const char *const SHAPE_NAMES[SHAPE_KIND_COUNT + 1] = {"rectangle", "disc",   "annulus",  "polygon",
+                                                       "box",       "sphere", "cylinder", NULL};
 
 bool shape_is_3d(ShapeKind kind) {
     return kind == SHAPE_BOX || kind == SHAPE_SPHERE || kind == SHAPE_CYLINDER;
@@ -36,19 +36,23 @@ bool shape_contains(const Shape *s, const double x[3]) {
     switch (s->kind) {
     case SHAPE_RECTANGLE:
         return x[0] >= s->lo[0] && x[0] <= s->hi[0] && x[1] >= s->lo[1] && x[1] <= s->hi[1];
-    case SHAPE_DISC: return dx * dx + dy * dy <= s->radius * s->radius;
+    case SHAPE_DISC:
+        return dx * dx + dy * dy <= s->radius * s->radius;
     case SHAPE_ANNULUS: {
         double r2 = dx * dx + dy * dy;
         return r2 <= s->radius * s->radius && r2 >= s->inner_radius * s->inner_radius;
     }
-    case SHAPE_POLYGON: return polygon_contains(s->vertices, s->vertex_count, x[0], x[1]);
+    case SHAPE_POLYGON:
+        return polygon_contains(s->vertices, s->vertex_count, x[0], x[1]);
     case SHAPE_BOX:
         return x[0] >= s->lo[0] && x[0] <= s->hi[0] && x[1] >= s->lo[1] && x[1] <= s->hi[1] &&
                x[2] >= s->lo[2] && x[2] <= s->hi[2];
-    case SHAPE_SPHERE: return dx * dx + dy * dy + dz * dz <= s->radius * s->radius;
+    case SHAPE_SPHERE:
+        return dx * dx + dy * dy + dz * dz <= s->radius * s->radius;
     case SHAPE_CYLINDER:
         return dx * dx + dy * dy <= s->radius * s->radius && fabs(dz) <= 0.5 * s->length;
-    default: return false;
+    default:
+        return false;
     }
 }
 
@@ -87,7 +91,8 @@ static void shape_bounds(const Shape *s, double lo[3], double hi[3]) {
         lo[2] = s->center[2] - 0.5 * s->length;
         hi[2] = s->center[2] + 0.5 * s->length;
         break;
-    default: break;
+    default:
+        break;
     }
 }
 
@@ -109,7 +114,8 @@ bool shapeset_bounds(const ShapeSet *set, int dim, double lo[3], double hi[3]) {
 
 double polygon_signed_area(const double *xy, int n) {
     double a = 0.0;
-    for (int i = 0, j = n - 1; i < n; j = i++) a += xy[2 * j] * xy[2 * i + 1] - xy[2 * i] * xy[2 * j + 1];
+    for (int i = 0, j = n - 1; i < n; j = i++)
+        a += xy[2 * j] * xy[2 * i + 1] - xy[2 * i] * xy[2 * j + 1];
     return 0.5 * a;
 }
 

@@ -31,13 +31,21 @@ void nspd_error_clear(void) {
 
 const char *nspd_status_name(int status) {
     switch (status) {
-    case NSPD_OK: return "ok";
-    case NSPD_ERR_INPUT: return "bad input";
-    case NSPD_ERR_IO: return "i/o error";
-    case NSPD_ERR_NOMEM: return "out of memory";
-    case NSPD_ERR_NUMERIC: return "numerical failure";
-    case NSPD_ERR_INTERNAL: return "internal error";
-    case NSPD_ERR_INTERRUPTED: return "interrupted";
-    default: return "unknown status";
+    case NSPD_OK:
+        return "ok";
+    case NSPD_ERR_INPUT:
+        return "bad input";
+    case NSPD_ERR_IO:
+        return "i/o error";
+    case NSPD_ERR_NOMEM:
+        return "out of memory";
+    case NSPD_ERR_NUMERIC:
+        return "numerical failure";
+    case NSPD_ERR_INTERNAL:
+        return "internal error";
+    case NSPD_ERR_INTERRUPTED:
+        return "interrupted";
+    default:
+        return "unknown status";
     }
 }

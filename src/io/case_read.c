@@ -37,8 +37,9 @@ static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
     for (const char *c = name; *c; c++)
         if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
               *c == '_'))
-            return cfg_fail_at(item, "name", "'%s' has characters other than letters, digits and _; "
-                                             "expected a name usable in file and column names",
+            return cfg_fail_at(item, "name",
+                               "'%s' has characters other than letters, digits and _; "
+                               "expected a name usable in file and column names",
                                name);
     snprintf(p->name, sizeof p->name, "%s", name);
     switch (p->kind) {
@@ -53,7 +54,9 @@ static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
         TRY(case_read_shapes(item, "region", dim, false, &p->region));
         break;
     }
-    case PROBE_POINT: TRY(cfg_req_vec(item, "at", dim, p->at)); break;
+    case PROBE_POINT:
+        TRY(cfg_req_vec(item, "at", dim, p->at));
+        break;
     case PROBE_LINE: {
         TRY(case_read_shapes(item, "region", dim, true, &p->region));
         int axis;
@@ -62,7 +65,8 @@ static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
         p->sort_axis = axis;
         break;
     }
-    default: break;
+    default:
+        break;
     }
     return cfg_end_map(item);
 }
@@ -97,8 +101,9 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim) {
             TRY(read_probe(seq->child[i], dim, &out->probes[i], i));
             for (int k = 0; k < i; k++)
                 if (strcmp(out->probes[k].name, out->probes[i].name) == 0)
-                    return cfg_fail(seq->child[i], "probe name '%s' used twice; expected unique "
-                                                   "names",
+                    return cfg_fail(seq->child[i],
+                                    "probe name '%s' used twice; expected unique "
+                                    "names",
                                     out->probes[i].name);
         }
     }
@@ -110,8 +115,9 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     const char *name;
     TRY(cfg_req_string(root, "name", &name));
     if (!name[0] || strlen(name) >= SIM_MAX_NAME || strchr(name, '/'))
-        return cfg_fail_at(root, "name", "'%s' is not usable as a directory name; expected 1 to %d "
-                                         "characters without '/'",
+        return cfg_fail_at(root, "name",
+                           "'%s' is not usable as a directory name; expected 1 to %d "
+                           "characters without '/'",
                            name, SIM_MAX_NAME - 1);
     snprintf(cfg->name, sizeof cfg->name, "%s", name);
     const char *description;
@@ -143,8 +149,9 @@ int case_read(const char *path, char *const *overrides, int override_count, CfgD
 int case_write_resolved(const CfgDoc *doc, const char *path) {
     FILE *f = fopen(path, "w");
     if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
-    fprintf(f, "# The resolved case: the file %s with every --set override and every default\n"
-               "# written out. `nspd run` on this file repeats the run exactly.\n",
+    fprintf(f,
+            "# The resolved case: the file %s with every --set override and every default\n"
+            "# written out. `nspd run` on this file repeats the run exactly.\n",
             doc->file);
     int status = cfg_doc_write(doc, f);
     if (fclose(f) != 0 && status == NSPD_OK)

@@ -55,8 +55,12 @@ static int read_shape(CfgNode *item, int dim, Shape *s) {
                            dim == 3 ? "box, sphere or cylinder"
                                     : "rectangle, disc, annulus or polygon");
     switch (s->kind) {
-    case SHAPE_RECTANGLE: TRY(read_min_max(item, 2, s)); break;
-    case SHAPE_BOX: TRY(read_min_max(item, 3, s)); break;
+    case SHAPE_RECTANGLE:
+        TRY(read_min_max(item, 2, s));
+        break;
+    case SHAPE_BOX:
+        TRY(read_min_max(item, 3, s));
+        break;
     case SHAPE_DISC:
     case SHAPE_SPHERE:
         TRY(cfg_req_vec(item, "center", dim, s->center));
@@ -81,8 +85,11 @@ static int read_shape(CfgNode *item, int dim, Shape *s) {
         TRY(cfg_check_positive(item, "radius", s->radius, "a radius in m"));
         TRY(cfg_check_positive(item, "length", s->length, "a length along z in m"));
         break;
-    case SHAPE_POLYGON: TRY(read_polygon(item, s)); break;
-    default: break;
+    case SHAPE_POLYGON:
+        TRY(read_polygon(item, s));
+        break;
+    default:
+        break;
     }
     return cfg_end_map(item);
 }
@@ -92,8 +99,7 @@ int case_read_shapes(CfgNode *map, const char *key, int dim, bool required, Shap
     CfgNode *seq;
     TRY(required ? cfg_req_seq(map, key, &seq) : cfg_opt_seq(map, key, &seq));
     if (!seq) return NSPD_OK;
-    if (seq->count == 0)
-        return cfg_fail(seq, "an empty list; expected at least one shape");
+    if (seq->count == 0) return cfg_fail(seq, "an empty list; expected at least one shape");
     TRY(nspd_alloc(&set->shapes, (size_t)seq->count, sizeof(Shape)));
     set->count = seq->count;
     for (int i = 0; i < seq->count; i++) TRY(read_shape(seq->child[i], dim, &set->shapes[i]));

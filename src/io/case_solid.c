@@ -25,7 +25,8 @@ static int read_components(CfgNode *map, const char *key, int dim, unsigned *mas
     }
     TRY(cfg_end_map(node));
     if (!*mask)
-        return cfg_fail(node, "no component given; expected some of %s", dim == 2 ? "x, y" : "x, y, z");
+        return cfg_fail(node, "no component given; expected some of %s",
+                        dim == 2 ? "x, y" : "x, y, z");
     return NSPD_OK;
 }
 
@@ -89,7 +90,8 @@ static int read_precracks(CfgNode *solid, PdConfig *cfg) {
         PdPrecrack *c = &cfg->precracks[i];
         if (item->kind != CFG_MAP)
             return cfg_fail(item, "not a crack; expected {from: [x, y], to: [x, y]}%s",
-                            cfg->dim == 3 ? " or in 3D {corner: [..], edge1: [..], edge2: [..]}" : "");
+                            cfg->dim == 3 ? " or in 3D {corner: [..], edge1: [..], edge2: [..]}"
+                                          : "");
         if (cfg->dim == 2) {
             TRY(cfg_req_vec(item, "from", 2, c->a));
             TRY(cfg_req_vec(item, "to", 2, c->b));
@@ -152,8 +154,7 @@ static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
     cfg->initial_velocity_count = seq->count;
     for (int i = 0; i < seq->count; i++) {
         CfgNode *item = seq->child[i];
-        if (item->kind != CFG_MAP)
-            return cfg_fail(item, "expected a map with region and velocity");
+        if (item->kind != CFG_MAP) return cfg_fail(item, "expected a map with region and velocity");
         TRY(case_read_shapes(item, "region", cfg->dim, true, &cfg->initial_velocities[i].region));
         TRY(cfg_req_vec(item, "velocity", cfg->dim, cfg->initial_velocities[i].velocity));
         TRY(cfg_end_map(item));

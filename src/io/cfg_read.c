@@ -96,10 +96,9 @@ static int put_default(CfgNode *map, const char *key, const char *text) {
 
 int cfg_node_double(const CfgNode *node, double *out) {
     if (node->kind != CFG_SCALAR || node->quoted || node->is_null)
-        return cfg_fail(node, "got %s; expected a number", node->kind == CFG_SCALAR
-                                                               ? (node->is_null ? "nothing"
-                                                                                : "text in quotes")
-                                                               : kind_name(node));
+        return cfg_fail(node, "got %s; expected a number",
+                        node->kind == CFG_SCALAR ? (node->is_null ? "nothing" : "text in quotes")
+                                                 : kind_name(node));
     char *end;
     errno = 0;
     double v = strtod(node->text, &end);
@@ -163,11 +162,18 @@ int cfg_opt_bool(CfgNode *map, const char *key, bool def, bool *out) {
         *out = def;
         return put_default(map, key, def ? "true" : "false");
     }
-    static const char *const yes[] = {"true", "True", "TRUE"}, *const no[] = {"false", "False", "FALSE"};
+    static const char *const yes[] = {"true", "True", "TRUE"}, *const no[] = {"false", "False",
+                                                                              "FALSE"};
     if (node->kind == CFG_SCALAR && !node->quoted) {
         for (int i = 0; i < 3; i++) {
-            if (strcmp(node->text, yes[i]) == 0) { *out = true; return NSPD_OK; }
-            if (strcmp(node->text, no[i]) == 0) { *out = false; return NSPD_OK; }
+            if (strcmp(node->text, yes[i]) == 0) {
+                *out = true;
+                return NSPD_OK;
+            }
+            if (strcmp(node->text, no[i]) == 0) {
+                *out = false;
+                return NSPD_OK;
+            }
         }
     }
     return cfg_fail(node, "'%s' is not a yes/no value; expected true or false",
@@ -202,8 +208,8 @@ static int node_enum(const CfgNode *node, const char *const *names, int *out) {
             *out = i;
             return NSPD_OK;
         }
-        len += snprintf(options + len, sizeof options - (size_t)len, "%s%s", i ? ", " : "",
-                        names[i]);
+        len +=
+            snprintf(options + len, sizeof options - (size_t)len, "%s%s", i ? ", " : "", names[i]);
     }
     return cfg_fail(node, "'%s' is not a known choice; expected one of: %s",
                     node->kind == CFG_SCALAR ? node->text : kind_name(node), options);
@@ -226,7 +232,10 @@ static int node_vec(const CfgNode *node, int n, double *out) {
     if (node->kind != CFG_SEQ || node->count != n) {
         if (node->kind == CFG_SEQ)
             return cfg_fail(node, "a list of %d numbers; expected exactly %d ([%s])", node->count,
-                            n, n == 2 ? "x, y" : n == 3 ? "x, y, z" : "...");
+                            n,
+                            n == 2   ? "x, y"
+                            : n == 3 ? "x, y, z"
+                                     : "...");
         return cfg_fail(node, "got %s; expected a list of %d numbers", kind_name(node), n);
     }
     for (int i = 0; i < n; i++) TRY(cfg_node_double(node->child[i], &out[i]));

@@ -407,8 +407,10 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
     int status = parse_document(&r, &value);
     yaml_parser_delete(&r.parser);
     if (status != NSPD_OK)
-        return NSPD_FAIL(NSPD_ERR_INPUT, "--set %s: the value is not valid YAML; expected a "
-                                         "number, word, or [list]", assignment);
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "--set %s: the value is not valid YAML; expected a "
+                         "number, word, or [list]",
+                         assignment);
     if (!value) {
         value = node_new(CFG_SCALAR, text, 0, 0, CFG_FROM_OVERRIDE);
         if (!value || !(value->text = dup_string("")))
@@ -469,7 +471,8 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
         }
         if (!child) {
             child = node_new(CFG_MAP, text, 0, 0, CFG_FROM_OVERRIDE);
-            if (!child || !(child->key = dup_string(segment)) || node_append(node, child) != NSPD_OK) {
+            if (!child || !(child->key = dup_string(segment)) ||
+                node_append(node, child) != NSPD_OK) {
                 node_free(child);
                 node_free(value);
                 return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
@@ -501,7 +504,8 @@ static bool all_scalars(const CfgNode *node) {
 
 static bool emit_node(yaml_emitter_t *e, const CfgNode *node) {
     yaml_event_t event;
-    if (node->kind == CFG_SCALAR) return emit_scalar(e, node->is_null ? "~" : node->text, node->quoted);
+    if (node->kind == CFG_SCALAR)
+        return emit_scalar(e, node->is_null ? "~" : node->text, node->quoted);
     if (node->kind == CFG_MAP) {
         yaml_mapping_start_event_initialize(&event, NULL, NULL, 1, YAML_BLOCK_MAPPING_STYLE);
         if (!yaml_emitter_emit(e, &event)) return false;
@@ -512,8 +516,8 @@ static bool emit_node(yaml_emitter_t *e, const CfgNode *node) {
         return yaml_emitter_emit(e, &event);
     }
     /* short lists of numbers read best inline: [x, y] */
-    yaml_sequence_style_t style = all_scalars(node) ? YAML_FLOW_SEQUENCE_STYLE
-                                                    : YAML_BLOCK_SEQUENCE_STYLE;
+    yaml_sequence_style_t style =
+        all_scalars(node) ? YAML_FLOW_SEQUENCE_STYLE : YAML_BLOCK_SEQUENCE_STYLE;
     yaml_sequence_start_event_initialize(&event, NULL, NULL, 1, style);
     if (!yaml_emitter_emit(e, &event)) return false;
     for (int i = 0; i < node->count; i++)

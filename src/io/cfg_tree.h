@@ -29,16 +29,16 @@ struct CfgNode {
     bool quoted;      /* SCALAR: written in quotes, so never a number or bool */
     bool is_null;     /* SCALAR: ~, null or empty */
     CfgNode *parent;
-    char *key;        /* key in the parent map; NULL in a sequence or at the root */
-    int index;        /* position in the parent sequence */
-    bool used;        /* read by the schema */
-    int count, cap;   /* MAP, SEQ: children */
+    char *key;      /* key in the parent map; NULL in a sequence or at the root */
+    int index;      /* position in the parent sequence */
+    bool used;      /* read by the schema */
+    int count, cap; /* MAP, SEQ: children */
     CfgNode **child;
 };
 
 typedef struct {
     char *file;
-    CfgNode *root; /* always a map (an empty document is an empty map) */
+    CfgNode *root;         /* always a map (an empty document is an empty map) */
     char **override_texts; /* the --set strings, owned here so nodes can point at them */
     int override_count;
 } CfgDoc;

@@ -11,10 +11,16 @@
 
 enum { TABLE = 256, ANCHORS = 5 };
 
-static const uint8_t VIRIDIS_ANCHORS[ANCHORS][3] = {
-    {0x44, 0x01, 0x54}, {0x3b, 0x52, 0x8b}, {0x21, 0x91, 0x8c}, {0x5e, 0xc9, 0x62}, {0xfd, 0xe7, 0x25}};
-static const uint8_t INFERNO_ANCHORS[ANCHORS][3] = {
-    {0x00, 0x00, 0x04}, {0x57, 0x10, 0x6e}, {0xbc, 0x37, 0x54}, {0xf9, 0x8e, 0x09}, {0xfc, 0xff, 0xa4}};
+static const uint8_t VIRIDIS_ANCHORS[ANCHORS][3] = {{0x44, 0x01, 0x54},
+                                                    {0x3b, 0x52, 0x8b},
+                                                    {0x21, 0x91, 0x8c},
+                                                    {0x5e, 0xc9, 0x62},
+                                                    {0xfd, 0xe7, 0x25}};
+static const uint8_t INFERNO_ANCHORS[ANCHORS][3] = {{0x00, 0x00, 0x04},
+                                                    {0x57, 0x10, 0x6e},
+                                                    {0xbc, 0x37, 0x54},
+                                                    {0xf9, 0x8e, 0x09},
+                                                    {0xfc, 0xff, 0xa4}};
 
 static double srgb_to_linear(double c) {
     return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);

@@ -6,8 +6,8 @@
 
 #include <math.h>
 
-int render_points_png(const char *path, int64_t n, const double *const pos[2],
-                      const double *values, double spacing, const RenderOptions *opt) {
+int render_points_png(const char *path, int64_t n, const double *const pos[2], const double *values,
+                      double spacing, const RenderOptions *opt) {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int64_t i = 0; i < n; i++)
         for (int d = 0; d < 2; d++) {

@@ -10,14 +10,14 @@
 #include <stdint.h>
 
 typedef struct {
-    double vmin, vmax;   /* colour scale: vmin -> 0, vmax -> 1 */
+    double vmin, vmax; /* colour scale: vmin -> 0, vmax -> 1 */
     ColormapKind colormap;
-    int max_pixels;      /* longest side of the plot area */
+    int max_pixels; /* longest side of the plot area */
 } RenderOptions;
 
 /* Writes a PNG of n points at positions pos[0], pos[1] (current, m), each
  * `spacing` wide, coloured by values[i], with a colour bar on the right. */
-int render_points_png(const char *path, int64_t n, const double *const pos[2],
-                      const double *values, double spacing, const RenderOptions *opt);
+int render_points_png(const char *path, int64_t n, const double *const pos[2], const double *values,
+                      double spacing, const RenderOptions *opt);
 
 #endif

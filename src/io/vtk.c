@@ -20,8 +20,9 @@ static uint64_t block_bytes(const ArrayInfo *a) {
 }
 
 static void declare(FILE *f, const ArrayInfo *a, uint64_t *offset) {
-    fprintf(f, "        <DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" "
-               "format=\"appended\" offset=\"%llu\"/>\n",
+    fprintf(f,
+            "        <DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" "
+            "format=\"appended\" offset=\"%llu\"/>\n",
             a->type, a->name, a->components, (unsigned long long)*offset);
     *offset += sizeof(uint64_t) + block_bytes(a);
 }
@@ -55,9 +56,10 @@ int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
     FILE *f = fopen(path, "wb");
     if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
     uint64_t offset = 0;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
-               "    <Piece NumberOfPoints=\"%lld\" NumberOfCells=\"%lld\">\n      <PointData>\n",
+    fprintf(f,
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+            "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
+            "    <Piece NumberOfPoints=\"%lld\" NumberOfCells=\"%lld\">\n      <PointData>\n",
             (long long)n, (long long)n);
     for (int k = 0; k < field_count; k++) {
         ArrayInfo a = {fields[k].name, "Float64", fields[k].components, n, 8};
@@ -108,10 +110,11 @@ int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double
     if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
     int64_t cells = (int64_t)nx * ny * nz;
     uint64_t offset = 0;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"RectilinearGrid\" version=\"1.0\" "
-               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-               "  <RectilinearGrid WholeExtent=\"0 %d 0 %d 0 %d\">\n"
-               "    <Piece Extent=\"0 %d 0 %d 0 %d\">\n      <CellData>\n",
+    fprintf(f,
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"RectilinearGrid\" version=\"1.0\" "
+            "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+            "  <RectilinearGrid WholeExtent=\"0 %d 0 %d 0 %d\">\n"
+            "    <Piece Extent=\"0 %d 0 %d 0 %d\">\n      <CellData>\n",
             nx, ny, nz, nx, ny, nz);
     for (int k = 0; k < field_count; k++) {
         ArrayInfo a = {fields[k].name, "Float64", fields[k].components, cells, 8};

@@ -63,7 +63,8 @@ static int setup_one(ProbeState *p, const PdBody *body, int max_samples) {
             if (pass == 0) {
                 if (m == 0)
                     return NSPD_FAIL(NSPD_ERR_INPUT,
-                                     "line probe '%s': its region holds no material point", c->name);
+                                     "line probe '%s': its region holds no material point",
+                                     c->name);
                 TRY(nspd_alloc(&p->members, (size_t)m, sizeof(int64_t)));
                 p->member_count = m;
             }
@@ -141,7 +142,8 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
         if (c->kind == PROBE_CRACK_TIP) {
             int64_t tip = crack_tip(c, body, damage);
             double along = (double)NAN;
-            for (int d = 0; d < body->dim; d++) p->last_tip[d] = tip >= 0 ? body->x[d][tip] : (double)NAN;
+            for (int d = 0; d < body->dim; d++)
+                p->last_tip[d] = tip >= 0 ? body->x[d][tip] : (double)NAN;
             if (tip >= 0) {
                 along = 0;
                 for (int d = 0; d < body->dim; d++) along += body->x[d][tip] * c->direction[d];

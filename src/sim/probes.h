@@ -10,8 +10,8 @@
 
 typedef struct {
     const ProbeConfig *cfg;
-    int64_t point;      /* PROBE_POINT: index of the nearest material point */
-    int64_t *members;   /* PROBE_LINE: points inside the region, sorted */
+    int64_t point;    /* PROBE_POINT: index of the nearest material point */
+    int64_t *members; /* PROBE_LINE: points inside the region, sorted */
     int64_t member_count;
     /* PROBE_CRACK_TIP history: position along `direction` at each sample */
     double *times, *along;

@@ -39,8 +39,8 @@ typedef struct {
 
 typedef struct {
     char name[SIM_MAX_NAME];
-    double end_time;      /* s */
-    double dt;            /* s; computed from the stable step when !dt_given */
+    double end_time; /* s */
+    double dt;       /* s; computed from the stable step when !dt_given */
     bool dt_given;
     double safety_factor; /* dt = safety_factor * stable step */
     bool has_solid;

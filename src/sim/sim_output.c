@@ -77,8 +77,8 @@ int sim_output_fields(Sim *sim) {
         snprintf(name, sizeof name, "damage_%05d.png", sim->field_index);
         path_in(sim, path, sizeof path, name);
         RenderOptions ro = {0.0, 1.0, COLORMAP_VIRIDIS, out->png_max_pixels};
-        status = render_points_png(path, b->n, (const double *const *)pos, sim->damage, b->spacing,
-                                   &ro);
+        status =
+            render_points_png(path, b->n, (const double *const *)pos, sim->damage, b->spacing, &ro);
     }
     if (status == NSPD_OK)
         status = probes_write_lines(sim->probes, out->probe_count, b, sim->damage, sim->dir,

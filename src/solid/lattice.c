@@ -49,8 +49,7 @@ static int compare_keys(const void *a, const void *b) {
     return (ka > kb) - (ka < kb);
 }
 
-int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
-                 const double *origin) {
+int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, const double *origin) {
     lattice_free(lat);
     double lo[3], hi[3];
     if (!shapeset_bounds(geometry, dim, lo, hi))

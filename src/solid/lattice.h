@@ -8,8 +8,8 @@
 
 typedef struct {
     int64_t n;
-    double *x[3];       /* positions, m */
-    int32_t *index[3];  /* integer lattice coordinates */
+    double *x[3];      /* positions, m */
+    int32_t *index[3]; /* integer lattice coordinates */
 } Lattice;
 
 /* The lattice points inside `geometry`, sorted along the Morton curve of
@@ -19,8 +19,7 @@ typedef struct {
  * half a spacing inside its faces). `dim` is 2 or 3 (z = 0 in 2D). `lat`
  * must be zeroed or hold a previous lattice. NSPD_ERR_INPUT if no point
  * falls inside; NSPD_ERR_NOMEM. */
-int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx,
-                 const double *origin);
+int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, const double *origin);
 void lattice_free(Lattice *lat);
 
 /* Morton key of non-negative lattice indices (2D: 32 bits per axis, 3D: 21). */

@@ -38,8 +38,13 @@ typedef struct {
     int dim;
     int64_t n;
     double *x[3], *u[3], *v[3];
-    double *force[3];    /* PD internal force density, N/m^3 */
-    double *external[3]; /* external force density, N/m^3 */
+    double *force[3]; /* PD internal force density, N/m^3 */
+    /* External force density, N/m^3: the entry point for loads from outside
+     * the solid (the fluid's surface traction: traction x segment length x
+     * thickness / point volume on surface points). Whoever sets it owns it;
+     * it stays until changed, and pd_step adds the case's body force and
+     * region force densities on top. */
+    double *external[3];
     double *volume;
     int16_t *region;     /* boundary region index or -1 */
     int32_t *lattice[3]; /* integer lattice coordinates (for images and symmetry checks) */
@@ -48,11 +53,11 @@ typedef struct {
     int64_t *bond_first; /* n + 1 */
     int32_t *bond_nbr;
     float *bond_coef;
-    double coef_scale;       /* k_ij = coef_scale * |bond_coef| */
-    double stretch_limit2;   /* (1 + s_c)^2: a bond breaks when |y|^2 > this |xi|^2 */
-    double micromodulus;     /* c of Eq. 15 */
-    double horizon;          /* delta, m */
-    double spacing;          /* dx, m */
+    double coef_scale;           /* k_ij = coef_scale * |bond_coef| */
+    double stretch_limit2;       /* (1 + s_c)^2: a bond breaks when |y|^2 > this |xi|^2 */
+    double micromodulus;         /* c of Eq. 15 */
+    double horizon;              /* delta, m */
+    double spacing;              /* dx, m */
     double *initial_bond_volume; /* sum_j nu_ij V_j over all initial bonds (damage denominator) */
 
     int64_t step;

@@ -19,8 +19,8 @@
 #include <math.h>
 
 const char *const PD_MODEL_NAMES[PD_MODEL_COUNT + 1] = {"plane_stress", "plane_strain", "3d", NULL};
-const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1] = {"euler_cromer",
-                                                                  "velocity_verlet", NULL};
+const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1] = {"euler_cromer", "velocity_verlet",
+                                                                  NULL};
 const char *const PD_VOLUME_NAMES[PD_VOLUME_COUNT + 1] = {"none", "linear", NULL};
 const char *const PD_SURFACE_NAMES[PD_SURFACE_COUNT + 1] = {"none", "energy", NULL};
 
@@ -31,18 +31,24 @@ double pd_model_poisson_ratio(PdModel model) {
 double pd_micromodulus(const PdConfig *cfg) {
     double delta = cfg->horizon_factor * cfg->spacing, E = cfg->youngs_modulus;
     switch (cfg->model) {
-    case PD_PLANE_STRESS: return 9.0 * E / (M_PI * cfg->thickness * pow(delta, 3));
-    case PD_PLANE_STRAIN: return 48.0 * E / (5.0 * M_PI * cfg->thickness * pow(delta, 3));
-    default: return 12.0 * E / (M_PI * pow(delta, 4));
+    case PD_PLANE_STRESS:
+        return 9.0 * E / (M_PI * cfg->thickness * pow(delta, 3));
+    case PD_PLANE_STRAIN:
+        return 48.0 * E / (5.0 * M_PI * cfg->thickness * pow(delta, 3));
+    default:
+        return 12.0 * E / (M_PI * pow(delta, 4));
     }
 }
 
 static double bulk_modulus(const PdConfig *cfg) {
     double E = cfg->youngs_modulus, nu = pd_model_poisson_ratio(cfg->model);
     switch (cfg->model) {
-    case PD_PLANE_STRESS: return E / (2.0 * (1.0 - nu));
-    case PD_PLANE_STRAIN: return E / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu));
-    default: return E / (3.0 * (1.0 - 2.0 * nu));
+    case PD_PLANE_STRESS:
+        return E / (2.0 * (1.0 - nu));
+    case PD_PLANE_STRAIN:
+        return E / (2.0 * (1.0 + nu) * (1.0 - 2.0 * nu));
+    default:
+        return E / (3.0 * (1.0 - 2.0 * nu));
     }
 }
 
@@ -84,7 +90,10 @@ double pd_rayleigh_wave_speed(const PdConfig *cfg) {
     for (int it = 0; it < 200; it++) {
         double xi = 0.5 * (lo + hi);
         double f = (2.0 - xi) * (2.0 - xi) - 4.0 * sqrt(1.0 - xi) * sqrt(1.0 - xi * k);
-        if (f < 0) lo = xi; else hi = xi;
+        if (f < 0)
+            lo = xi;
+        else
+            hi = xi;
     }
     return sqrt(0.5 * (lo + hi)) * pd_shear_wave_speed(cfg);
 }

@@ -101,8 +101,8 @@ void pd_force_compute(PdBody *body) {
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
             pd_force_kernel_3d(lo, hi, body->x[0], body->x[1], body->x[2], body->u[0], body->u[1],
-                               body->u[2], body->bond_first, body->bond_nbr, body->bond_coef,
-                               scale, limit2, body->force[0], body->force[1], body->force[2]);
+                               body->u[2], body->bond_first, body->bond_nbr, body->bond_coef, scale,
+                               limit2, body->force[0], body->force[1], body->force[2]);
         }
     }
 }

@@ -40,7 +40,8 @@ static bool drift(PdBody *body, double h) {
         const int r = body->region[i];
         for (int d = 0; d < dim; d++) {
             double u = body->u[d][i] + body->v[d][i] * h;
-            if (r >= 0 && (regions[r].displacement_mask & (1u << d))) u = regions[r].displacement[d];
+            if (r >= 0 && (regions[r].displacement_mask & (1u << d)))
+                u = regions[r].displacement[d];
             body->u[d][i] = u;
             bad = bad || !isfinite(u);
         }
@@ -84,7 +85,8 @@ int pd_step(PdBody *body, double dt) {
 
 double pd_stable_time_step(const PdBody *body) {
     double min_dt2 = INFINITY;
-#pragma omp parallel for schedule(static) reduction(min : min_dt2) if (body->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) reduction(min                                            \
+                                                    : min_dt2) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         double sum = 0.0;
         for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++)

@@ -94,7 +94,8 @@ static void test_typed_getters(void **state) {
 static void test_type_errors_point_at_the_value(void **state) {
     (void)state;
     CfgDoc doc;
-    load(&doc, "solid:\n  spacing: fast\n  n: 1.5\n  flag: maybe\n  model: planar\n  v: [1]\n  m: 3\n");
+    load(&doc,
+         "solid:\n  spacing: fast\n  n: 1.5\n  flag: maybe\n  model: planar\n  v: [1]\n  m: 3\n");
     CfgNode *s = cfg_map_find(doc.root, "solid");
     double d, v[2];
     int64_t i;
@@ -107,9 +108,11 @@ static void test_type_errors_point_at_the_value(void **state) {
     assert_int_equal(cfg_req_int(s, "n", &i), NSPD_ERR_INPUT);
     expect_message("solid.n: '1.5' is not a whole number; expected an integer");
     assert_int_equal(cfg_opt_bool(s, "flag", false, &b), NSPD_ERR_INPUT);
-    expect_message("case.yaml:4:3: solid.flag: 'maybe' is not a yes/no value; expected true or false");
+    expect_message(
+        "case.yaml:4:3: solid.flag: 'maybe' is not a yes/no value; expected true or false");
     assert_int_equal(cfg_req_enum(s, "model", names, &e), NSPD_ERR_INPUT);
-    expect_message("solid.model: 'planar' is not a known choice; expected one of: plane_stress, 3d");
+    expect_message(
+        "solid.model: 'planar' is not a known choice; expected one of: plane_stress, 3d");
     assert_int_equal(cfg_req_vec(s, "v", 2, v), NSPD_ERR_INPUT);
     expect_message("solid.v: a list of 1 numbers; expected exactly 2");
     assert_int_equal(cfg_req_map(s, "m", &m), NSPD_ERR_INPUT);

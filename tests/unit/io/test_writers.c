@@ -118,8 +118,9 @@ static void test_json(void **state) {
     json_end(&w);
     fclose(f);
     char *text = test_read_file(path);
-    assert_string_equal(text, "{\n  \"a\": 1.5,\n  \"b\": 7,\n  \"c\": true,\n  \"d\": \"say \\\"hi\\\"\",\n"
-                              "  \"e\": null\n}\n");
+    assert_string_equal(
+        text, "{\n  \"a\": 1.5,\n  \"b\": 7,\n  \"c\": true,\n  \"d\": \"say \\\"hi\\\"\",\n"
+              "  \"e\": null\n}\n");
     free(text);
 }
 

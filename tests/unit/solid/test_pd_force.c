@@ -116,10 +116,10 @@ static void test_failure_is_history(void **state) {
     for (int64_t i = 0; i < b.n; i++) b.u[0][i] = 0.02 * b.x[0][i];
     pd_force_compute(&b);
     double f_first = force_scale(&b);
-    assert_true(f_first > 0);        /* the force of that step still had the bonds */
+    assert_true(f_first > 0); /* the force of that step still had the bonds */
     int64_t broken = pd_broken_bonds(&b);
     assert_true(broken > 0);
-    int64_t expect = 0;              /* bonds whose stretch exceeds 0.01 */
+    int64_t expect = 0; /* bonds whose stretch exceeds 0.01 */
     for (int64_t i = 0; i < b.n; i++)
         for (int64_t k = b.bond_first[i]; k < b.bond_first[i + 1]; k++) {
             int32_t j = b.bond_nbr[k];

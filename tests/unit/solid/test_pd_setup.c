@@ -78,8 +78,8 @@ static void check_neighbours(int dim, int n, int interior_expected) {
 
 static void test_neighbours_match_brute_force(void **state) {
     (void)state;
-    check_neighbours(2, 14, 28);  /* lattice points within 3.015 dx in 2D */
-    check_neighbours(3, 9, 122);  /* and in 3D */
+    check_neighbours(2, 14, 28); /* lattice points within 3.015 dx in 2D */
+    check_neighbours(3, 9, 122); /* and in 3D */
 }
 
 static void test_material_relations(void **state) {

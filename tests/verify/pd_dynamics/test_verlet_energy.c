@@ -49,8 +49,8 @@ static void test_energy_bounded_and_second_order(void **state) {
     run(0.25, 20000, &w2, &e2, &l2);
     print_message("dt: worst %.3e (first fifth %.3e, last %.3e); dt/2: worst %.3e; ratio %.3f\n",
                   w1, e1, l1, w2, w1 / w2);
-    assert_true(w1 < 1e-2);          /* bounded: a fraction of a percent */
-    assert_true(l1 < 1.5 * e1);      /* no drift between the first and last 2,000 steps */
+    assert_true(w1 < 1e-2);     /* bounded: a fraction of a percent */
+    assert_true(l1 < 1.5 * e1); /* no drift between the first and last 2,000 steps */
     assert_true(w1 / w2 > 3.6 && w1 / w2 < 4.4); /* second order: 4 within 10 % */
 }
 

@@ -47,7 +47,8 @@ static double max_tip_offset(const char *dir) {
     char line[4096];
     assert_non_null(fgets(line, sizeof line, f));
     int column = 0;
-    for (char *tok = strtok(line, ",\n"); tok && strcmp(tok, "crack_tip_y_m"); tok = strtok(NULL, ",\n"))
+    for (char *tok = strtok(line, ",\n"); tok && strcmp(tok, "crack_tip_y_m");
+         tok = strtok(NULL, ",\n"))
         column++;
     double worst = 0;
     int rows = 0;
@@ -107,7 +108,8 @@ static void test_straight_symmetric_crack(void **state) {
     for (int axis = 0; axis < 2; axis++) {
         double worst = 0;
         for (int64_t i = 0; i < b->n; i++)
-            worst = fmax(worst, fabs(damage[i] - damage[mirror(b, grid, lo, n, i, axis == 0, axis == 1)]));
+            worst = fmax(worst,
+                         fabs(damage[i] - damage[mirror(b, grid, lo, n, i, axis == 0, axis == 1)]));
         print_message("mirror %c: largest damage difference %.3g\n", axis ? 'y' : 'x', worst);
         assert_true(worst < 0.1);
     }
