@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "core/timer.h"
+#include "flow/flow_solver.h"
 #include "io/json.h"
 #include "solid/pd_body.h"
 #include "solid/pd_integrate.h"
@@ -102,19 +103,42 @@ static int bench_pd(const BenchOptions *opt) {
     return status;
 }
 
+/* The viscous 2D GKS step on an N x N periodic grid (flow_bench). */
+static int bench_gks(const BenchOptions *opt) {
+    FlowBenchResult r;
+    TRY(flow_bench((int)opt->points, opt->threads > 0 ? opt->threads : omp_get_max_threads(),
+                   (int)opt->steps, &r));
+    JsonWriter w;
+    json_begin(&w, stdout);
+    json_string(&w, "bench", "gks");
+    json_int(&w, "cells", r.cells);
+    json_int(&w, "steps", r.steps);
+    json_int(&w, "threads", r.threads);
+    json_number(&w, "seconds", r.seconds);
+    json_number(&w, "cell_updates_per_s", r.cell_updates_per_s);
+    json_number(&w, "bytes_per_cell", r.bytes_per_cell);
+    json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
+    json_end(&w);
+    return NSPD_OK;
+}
+
 int cmd_bench(int argc, char **argv) {
     if (argc < 1) {
-        fprintf(stderr, "usage: nspd bench pd [--points N] [--threads T] [--steps S]\n");
+        fprintf(stderr, "usage: nspd bench pd [--points N] [--threads T] [--steps S]\n"
+                        "       nspd bench gks [--cells N] [--threads T] [--steps S]\n");
         return EXIT_BAD_INPUT;
     }
-    BenchOptions opt = {250000, 50, 0};
+    bool gks = strcmp(argv[0], "gks") == 0;
+    BenchOptions opt = {gks ? 1000000 : 250000, gks ? 20 : 50, 0};
     if (!parse(argc - 1, argv + 1, &opt)) return EXIT_BAD_INPUT;
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
     int status;
     if (strcmp(argv[0], "pd") == 0) {
         status = bench_pd(&opt);
+    } else if (gks) {
+        status = bench_gks(&opt);
     } else {
-        fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd)\n", argv[0]);
+        fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd or gks)\n", argv[0]);
         return EXIT_BAD_INPUT;
     }
     if (status != NSPD_OK) fprintf(stderr, "nspd bench: %s\n", nspd_error_message());

@@ -13,6 +13,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <string.h>
@@ -59,6 +60,21 @@ static int load(const CaseOptions *opt, CfgDoc *doc, Sim *sim) {
     return status;
 }
 
+/* "253000 points, 3523910 bonds, dt 1.3e-08 s, 1250 steps" or the flow's
+ * equivalent. */
+static void describe(const Sim *sim, char *buf, size_t size) {
+    int len = 0;
+    if (sim->has_solid)
+        len += snprintf(buf + len, size - (size_t)len, "%lld points, %lld bonds, ",
+                        (long long)sim->solid.n, (long long)sim->solid.bond_count / 2);
+    if (sim->has_flow) {
+        const Grid *g = flow_solver_grid(sim->flow);
+        len += snprintf(buf + len, size - (size_t)len, "%d x %d cells, ", g->nx, g->ny);
+    }
+    snprintf(buf + len, size - (size_t)len, "dt %.4g s, %s%lld steps", sim->dt,
+             sim->has_flow && !sim->cfg.dt_given ? "about " : "", (long long)sim->steps);
+}
+
 int cmd_check(int argc, char **argv) {
     CaseOptions opt;
     if (!options_parse(argc, argv, false, "check", &opt)) return EXIT_BAD_INPUT;
@@ -66,38 +82,16 @@ int cmd_check(int argc, char **argv) {
     Sim sim;
     int status = load(&opt, &doc, &sim);
     if (status != NSPD_OK) return report(status);
-    printf("%s: ok (case '%s': %lld points, %lld bonds, dt %.4g s, %lld steps)\n", opt.case_path,
-           sim.cfg.name, (long long)sim.solid.n, (long long)sim.solid.bond_count / 2, sim.dt,
-           (long long)sim.steps);
+    char what[256];
+    describe(&sim, what, sizeof what);
+    printf("%s: ok (case '%s': %s)\n", opt.case_path, sim.cfg.name, what);
     sim_destroy(&sim);
     cfg_doc_free(&doc);
     return 0;
 }
 
-int cmd_info(int argc, char **argv) {
-    CaseOptions opt;
-    if (!options_parse(argc, argv, false, "info", &opt)) return EXIT_BAD_INPUT;
-    CfgDoc doc;
-    Sim sim;
-    double t0 = nspd_wall_time();
-    int status = load(&opt, &doc, &sim);
-    if (status != NSPD_OK) return report(status);
-    double setup_s = nspd_wall_time() - t0;
-    const PdBody *b = &sim.solid;
-    size_t memory = nspd_mem_live_bytes();
-    /* time a few steps to estimate the run (outputs not included) */
-    int64_t probe_steps = sim.steps < 5 ? sim.steps : 5;
-    t0 = nspd_wall_time();
-    status = sim_advance(&sim, probe_steps);
-    double step_s = (nspd_wall_time() - t0) / (double)(probe_steps > 0 ? probe_steps : 1);
-    if (status != NSPD_OK) {
-        sim_destroy(&sim);
-        cfg_doc_free(&doc);
-        return report(status);
-    }
-    char eta[32];
-    progress_format_duration(step_s * (double)sim.steps, eta, sizeof eta);
-    printf("case                 %s\n", sim.cfg.name);
+static void info_solid(const Sim *sim, size_t memory) {
+    const PdBody *b = &sim->solid;
     printf("model                %s, %dD\n", PD_MODEL_NAMES[b->cfg.model], b->dim);
     printf("points               %lld\n", (long long)b->n);
     printf("bonds                %lld (%.1f per point; %lld broken at start)\n",
@@ -112,14 +106,74 @@ int cmd_info(int argc, char **argv) {
         printf("critical stretch     (failure off)\n");
     printf("bar wave speed       %.6g m/s (Rayleigh %.6g m/s)\n", pd_bar_wave_speed(&b->cfg),
            pd_rayleigh_wave_speed(&b->cfg));
-    printf("stable time step     %.6g s\n", sim.stable_dt);
-    printf("time step            %.6g s (%s)\n", sim.dt,
-           sim.cfg.dt_given ? "given" : "safety factor x stable");
-    printf("steps                %lld to t = %.6g s\n", (long long)sim.steps,
-           (double)sim.steps * sim.dt);
+    printf("stable time step     %.6g s\n", sim->stable_dt);
     printf("memory               %.1f MB in solver arrays (%d bytes per bond + %.0f per point)\n",
            (double)memory / 1e6, PD_BYTES_PER_BOND,
            ((double)memory - (double)b->bond_count * PD_BYTES_PER_BOND) / (double)b->n);
+}
+
+static void info_flow(const Sim *sim, size_t memory) {
+    const Grid *g = flow_solver_grid(sim->flow);
+    const FlowConfig *c = flow_solver_config(sim->flow);
+    for (int a = 0; a < 2; a++) {
+        double hmin = INFINITY, hmax = 0;
+        for (int i = 0; i < g->ax[a].n; i++) {
+            hmin = fmin(hmin, g->ax[a].width[i]);
+            hmax = fmax(hmax, g->ax[a].width[i]);
+        }
+        printf("grid %c               %d cells on [%.6g, %.6g] m, spacing %.4g to %.4g m\n",
+               "xy"[a], g -> ax[a].n, g->ax[a].lo, g->ax[a].hi, hmin, hmax);
+    }
+    printf("cells                %lld\n", (long long)g->nx * g->ny);
+    printf("gas                  gamma %.4g, R %.6g J/(kg K), Pr %.3g, viscosity %s\n", c->gamma,
+           c->gas_constant, c->prandtl, c->viscosity == VISCOSITY_NONE ? "none (Euler)" : "on");
+    const FlowCaseConfig *fc = &sim->cfg.flow;
+    if (fc->has_free_stream) {
+        const FlowPrim *q = &fc->free_stream;
+        double speed = hypot(q->u, q->v), a = sqrt(c->gamma * q->p / q->rho);
+        printf("free stream          rho %.6g, |u| %.6g, p %.6g, Mach %.4g", q->rho, speed, q->p,
+               speed / a);
+        if (c->viscosity != VISCOSITY_NONE && fc->reference_length > 0)
+            printf(", Re %.6g over %.4g m", q->rho * speed * fc->reference_length / c->mu_ref,
+                   fc->reference_length);
+        printf("\n");
+    }
+    printf("CFL time step        %.6g s at the start (CFL %.3g)\n", sim->stable_dt, c->cfl);
+    printf("memory               %.1f MB in solver arrays (%.0f bytes per cell)\n",
+           (double)memory / 1e6, (double)memory / ((double)g->nx * g->ny));
+}
+
+int cmd_info(int argc, char **argv) {
+    CaseOptions opt;
+    if (!options_parse(argc, argv, false, "info", &opt)) return EXIT_BAD_INPUT;
+    CfgDoc doc;
+    Sim sim;
+    double t0 = nspd_wall_time();
+    int status = load(&opt, &doc, &sim);
+    if (status != NSPD_OK) return report(status);
+    double setup_s = nspd_wall_time() - t0;
+    size_t memory = nspd_mem_live_bytes();
+    /* time a few steps to estimate the run (outputs not included) */
+    int64_t probe_steps = sim.steps < 5 ? sim.steps : 5;
+    t0 = nspd_wall_time();
+    status = sim_advance(&sim, probe_steps);
+    double step_s = (nspd_wall_time() - t0) / (double)(probe_steps > 0 ? probe_steps : 1);
+    if (status != NSPD_OK) {
+        sim_destroy(&sim);
+        cfg_doc_free(&doc);
+        return report(status);
+    }
+    char eta[32];
+    progress_format_duration(step_s * (double)sim.steps, eta, sizeof eta);
+    printf("case                 %s\n", sim.cfg.name);
+    if (sim.has_solid) info_solid(&sim, memory);
+    if (sim.has_flow) info_flow(&sim, memory);
+    printf("time step            %.6g s (%s)\n", sim.dt,
+           sim.cfg.dt_given ? "given"
+           : sim.has_solid  ? "safety factor x stable"
+                            : "CFL; it follows the flow");
+    printf("steps                %s%lld to t = %.6g s\n", sim.has_flow ? "about " : "",
+           (long long)sim.steps, sim.has_solid ? (double)sim.steps * sim.dt : sim.cfg.end_time);
     printf("threads              %d\n", omp_get_max_threads());
     printf("setup                %.3g s\n", setup_s);
     printf("estimated run time   %s (%.3g s per step, outputs excluded)\n", eta, step_s);
@@ -204,20 +258,17 @@ int cmd_run(int argc, char **argv) {
     }
     if (status == NSPD_OK) {
         if (opt.quiet) nspd_log_set_console_level(LOG_WARN);
-        const PdBody *b = &sim.solid;
         nspd_log(LOG_INFO, "nspd %s: case '%s' from %s -> %s", NSPD_VERSION, sim.cfg.name,
                  opt.case_path, dir);
-        nspd_log(LOG_INFO,
-                 "solid: %lld points, %lld bonds, horizon %g m, dt %g s (stable %g s), "
-                 "%lld steps, %d threads",
-                 (long long)b->n, (long long)b->bond_count / 2, b->horizon, sim.dt, sim.stable_dt,
-                 (long long)sim.steps, omp_get_max_threads());
+        char what[256];
+        describe(&sim, what, sizeof what);
+        nspd_log(LOG_INFO, "%s, %d threads", what, omp_get_max_threads());
         interrupt_install();
         SimRunOptions ro = {dir, !opt.quiet};
         status = sim_run(&sim, &ro);
         if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED)
             nspd_log(LOG_INFO, "done: %lld steps to t = %g s in %.2f s; results in %s/",
-                     (long long)sim.solid.step, sim.solid.time, sim.wall_s, dir);
+                     (long long)sim.step, sim.time, sim.wall_s, dir);
     }
     int code = report(status);
     nspd_log_close();

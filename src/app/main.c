@@ -16,6 +16,8 @@ static void usage(FILE *out) {
           "                         derived numbers: points, bonds, time step, memory, run time\n"
           "  bench pd [--points N] [--threads T] [--steps S]\n"
           "                         PD force + integration throughput, one JSON object\n"
+          "  bench gks [--cells N] [--threads T] [--steps S]\n"
+          "                         viscous GKS flow step throughput, one JSON object\n"
           "  version                print the version\n"
           "\n"
           "exit status: 0 success, 1 run-time failure, 2 bad input, 130 interrupted\n",

@@ -2,6 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "io/case_flow.h"
 #include "io/case_shapes.h"
 #include "io/case_solid.h"
 #include "io/cfg_read.h"
@@ -24,7 +25,9 @@ static int read_time(CfgNode *root, SimConfig *cfg) {
 
 static const char *const SORT_AXES[] = {"x", "y", "z", NULL};
 
-static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
+static const char *const TARGETS[] = {"solid", "flow", NULL};
+
+static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, int index) {
     if (item->kind != CFG_MAP)
         return cfg_fail(item, "not a probe; expected a map with 'type: crack_tip | point | line'");
     int kind;
@@ -42,6 +45,22 @@ static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
                                "expected a name usable in file and column names",
                                name);
     snprintf(p->name, sizeof p->name, "%s", name);
+    int target = has_solid ? PROBE_ON_SOLID : PROBE_ON_FLOW;
+    if (p->kind != PROBE_CRACK_TIP) TRY(cfg_opt_enum(item, "on", TARGETS, target, &target));
+    p->target = (ProbeTarget)target;
+    if (p->target == PROBE_ON_FLOW) {
+        /* a flow point: the cell holding `at`; a flow line: the row or
+         * column of cells through `at` */
+        TRY(cfg_req_vec(item, "at", 2, p->at));
+        if (p->kind == PROBE_LINE) {
+            int axis;
+            TRY(cfg_opt_enum(item, "along", SORT_AXES, 0, &axis));
+            if (axis > 1)
+                return cfg_fail_at(item, "along", "no z axis in a 2D flow; expected x or y");
+            p->sort_axis = axis;
+        }
+        return cfg_end_map(item);
+    }
     switch (p->kind) {
     case PROBE_CRACK_TIP: {
         double ex[3] = {1, 0, 0}, len2 = 0;
@@ -71,7 +90,7 @@ static int read_probe(CfgNode *item, int dim, ProbeConfig *p, int index) {
     return cfg_end_map(item);
 }
 
-static int read_output(CfgNode *root, SimConfig *cfg, int dim) {
+static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
     CfgNode *o;
     TRY(cfg_opt_map(root, "output", &o));
     if (!o) { /* all defaults: give the resolved case an explicit section */
@@ -98,7 +117,7 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim) {
         TRY(nspd_alloc(&out->probes, (size_t)seq->count, sizeof(ProbeConfig)));
         out->probe_count = seq->count;
         for (int i = 0; i < seq->count; i++) {
-            TRY(read_probe(seq->child[i], dim, &out->probes[i], i));
+            TRY(read_probe(seq->child[i], dim, has_solid, &out->probes[i], i));
             for (int k = 0; k < i; k++)
                 if (strcmp(out->probes[k].name, out->probes[i].name) == 0)
                     return cfg_fail(seq->child[i],
@@ -123,11 +142,20 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     const char *description;
     TRY(cfg_opt_string(root, "description", "", &description));
     TRY(read_time(root, cfg));
-    CfgNode *solid;
-    TRY(cfg_req_map(root, "solid", &solid));
-    cfg->has_solid = true;
-    TRY(case_read_solid(solid, &cfg->solid));
-    TRY(read_output(root, cfg, cfg->solid.dim));
+    CfgNode *solid, *flow;
+    TRY(cfg_opt_map(root, "solid", &solid));
+    TRY(cfg_opt_map(root, "flow", &flow));
+    if (!solid && !flow)
+        return cfg_fail(root, "nothing to simulate; expected a 'solid' or a 'flow' section");
+    if (solid) {
+        cfg->has_solid = true;
+        TRY(case_read_solid(solid, &cfg->solid));
+    }
+    if (flow) {
+        cfg->has_flow = true;
+        TRY(case_read_flow(flow, &cfg->flow));
+    }
+    TRY(read_output(root, cfg, solid ? cfg->solid.dim : 2, solid != NULL));
     return cfg_end_map(root);
 }
 

@@ -64,3 +64,62 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
     nspd_free(&best);
     return status;
 }
+
+/* Index of the cell of a sorted face array holding coordinate x. */
+static int locate(const double *faces, int n, double x) {
+    int lo = 0, hi = n; /* faces[lo] <= x < faces[hi] */
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (faces[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+int render_grid_png(const char *path, int nx, int ny, const double *xf, const double *yf,
+                    const double *values, const uint8_t *mask, const RenderOptions *opt) {
+    double lx = xf[nx] - xf[0], ly = yf[ny] - yf[0];
+    double scale = opt->max_pixels / fmax(lx, ly);
+    int w = (int)ceil(lx * scale), h = (int)ceil(ly * scale);
+    if (w < 1) w = 1;
+    if (h < 1) h = 1;
+    int margin = 8, bar = 16, gap = 12;
+    Image img;
+    const uint8_t white[3] = {255, 255, 255}, grey[3] = {128, 128, 128};
+    TRY(image_create(&img, w + 2 * margin + gap + bar, h + 2 * margin, white));
+    int *column;
+    int status = nspd_alloc(&column, (size_t)w, sizeof(int));
+    if (status != NSPD_OK) {
+        image_destroy(&img);
+        return status;
+    }
+    for (int x = 0; x < w; x++) column[x] = locate(xf, nx, xf[0] + (x + 0.5) / scale);
+    double range = opt->vmax > opt->vmin ? opt->vmax - opt->vmin : 1.0;
+    for (int y = 0; y < h; y++) {
+        int j = locate(yf, ny, yf[ny] - (y + 0.5) / scale);
+        for (int x = 0; x < w; x++) {
+            int64_t cell = (int64_t)j * nx + column[x];
+            uint8_t rgb[3];
+            if (mask && mask[cell]) {
+                rgb[0] = grey[0];
+                rgb[1] = grey[1];
+                rgb[2] = grey[2];
+            } else {
+                colormap_rgb(opt->colormap, (values[cell] - opt->vmin) / range, rgb);
+            }
+            uint8_t *p =
+                img.rgb + 3 * ((size_t)(margin + y) * (size_t)img.width + (size_t)(margin + x));
+            p[0] = rgb[0];
+            p[1] = rgb[1];
+            p[2] = rgb[2];
+        }
+    }
+    image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,
+                   margin + h);
+    status = image_write_png(&img, path);
+    nspd_free(&column);
+    image_destroy(&img);
+    return status;
+}

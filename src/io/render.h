@@ -20,4 +20,11 @@ typedef struct {
 int render_points_png(const char *path, int64_t n, const double *const pos[2], const double *values,
                       double spacing, const RenderOptions *opt);
 
+/* Writes a PNG of a cell field on a tensor-product grid: cell (i, j) spans
+ * [xf[i], xf[i+1]] x [yf[j], yf[j+1]]; values[j * nx + i]. Pixels are square
+ * in physical space, so stretched cells keep their true size. Cells whose
+ * `mask` entry is non-zero (mask may be NULL) are drawn grey. */
+int render_grid_png(const char *path, int nx, int ny, const double *xf, const double *yf,
+                    const double *values, const uint8_t *mask, const RenderOptions *opt);
+
 #endif

@@ -39,8 +39,53 @@ static int sort_members(ProbeState *p, const PdBody *body) {
     return NSPD_OK;
 }
 
-static int setup_one(ProbeState *p, const PdBody *body, int max_samples) {
+/* Index of the cell of a sorted face array holding x (clamped to the grid). */
+static int cell_of(const GridAxis *a, double x) {
+    int lo = 0, hi = a->n;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (a->face[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+static int setup_flow(ProbeState *p, const FlowSolver *flow) {
     const ProbeConfig *c = p->cfg;
+    const Grid *g = flow_solver_grid(flow);
+    for (int d = 0; d < 2; d++)
+        if (c->at[d] < g->ax[d].lo || c->at[d] > g->ax[d].hi)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "probe '%s': at[%d] = %g is outside the flow grid [%g, %g]", c->name,
+                             d, c->at[d], g->ax[d].lo, g->ax[d].hi);
+    int i = cell_of(&g->ax[0], c->at[0]), j = cell_of(&g->ax[1], c->at[1]);
+    if (c->kind == PROBE_POINT) {
+        p->point = grid_index(g, i, j);
+        return NSPD_OK;
+    }
+    int along = c->sort_axis, n = g->ax[along].n;
+    TRY(nspd_alloc(&p->members, (size_t)n, sizeof(int64_t)));
+    p->member_count = n;
+    for (int k = 0; k < n; k++)
+        p->members[k] = along == 0 ? grid_index(g, k, j) : grid_index(g, i, k);
+    return NSPD_OK;
+}
+
+static int setup_one(ProbeState *p, const PdBody *body, const FlowSolver *flow, int max_samples) {
+    const ProbeConfig *c = p->cfg;
+    if (c->kind != PROBE_CRACK_TIP && c->target == PROBE_ON_FLOW) {
+        if (!flow)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "probe '%s' is on the flow, but the case has "
+                             "none",
+                             c->name);
+        return setup_flow(p, flow);
+    }
+    if (!body)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "probe '%s' needs the solid, but the case has none",
+                         c->name);
     if (c->kind == PROBE_POINT) {
         double best = INFINITY;
         for (int64_t i = 0; i < body->n; i++) {
@@ -79,13 +124,13 @@ static int setup_one(ProbeState *p, const PdBody *body, int max_samples) {
 }
 
 int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdBody *body,
-                  int max_samples) {
+                  const FlowSolver *flow, int max_samples) {
     *probes = NULL;
     if (cfg->probe_count == 0) return NSPD_OK;
     TRY(nspd_alloc(probes, (size_t)cfg->probe_count, sizeof(ProbeState)));
     for (int i = 0; i < cfg->probe_count; i++) {
         (*probes)[i].cfg = &cfg->probes[i];
-        int status = setup_one(&(*probes)[i], body, max_samples);
+        int status = setup_one(&(*probes)[i], body, flow, max_samples);
         if (status != NSPD_OK) {
             probes_destroy(probes, cfg->probe_count);
             return status;
@@ -109,6 +154,9 @@ void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv
         const ProbeConfig *c = probes[k].cfg;
         if (c->kind == PROBE_CRACK_TIP) {
             for (int d = 0; d < dim; d++) fprintf(csv, ",%s_tip_%s_m", c->name, AXIS[d]);
+        } else if (c->kind == PROBE_POINT && c->target == PROBE_ON_FLOW) {
+            fprintf(csv, ",%s_rho_kg_per_m3,%s_u_m_per_s,%s_v_m_per_s,%s_p_Pa,%s_T_K", c->name,
+                    c->name, c->name, c->name, c->name);
         } else if (c->kind == PROBE_POINT) {
             for (int d = 0; d < dim; d++) fprintf(csv, ",%s_u%s_m", c->name, AXIS[d]);
             for (int d = 0; d < dim; d++) fprintf(csv, ",%s_v%s_m_per_s", c->name, AXIS[d]);
@@ -134,8 +182,22 @@ static int64_t crack_tip(const ProbeConfig *c, const PdBody *body, const double 
     return best;
 }
 
+/* Density, velocity, pressure and temperature of flow cell `cell`. */
+static void flow_cell(FlowSolver *flow, int64_t cell, double out[5]) {
+    FlowFields f = flow_solver_fields(flow);
+    const GksParams *gas = flow_solver_gas(flow);
+    double w[4] = {f.w[0][cell], f.w[1][cell], f.w[2][cell], f.w[3][cell]};
+    FlowPrim q;
+    flow_cons_to_prim(w, gas->gamma, &q);
+    out[0] = q.rho;
+    out[1] = q.u;
+    out[2] = q.v;
+    out[3] = q.p;
+    out[4] = q.p / (q.rho * gas->R);
+}
+
 void probes_sample(ProbeState *probes, int count, const PdBody *body, const double *damage,
-                   FILE *csv) {
+                   FlowSolver *flow, double time, FILE *csv) {
     for (int k = 0; k < count; k++) {
         ProbeState *p = &probes[k];
         const ProbeConfig *c = p->cfg;
@@ -149,12 +211,16 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
                 for (int d = 0; d < body->dim; d++) along += body->x[d][tip] * c->direction[d];
             }
             if (p->samples < p->capacity) {
-                p->times[p->samples] = body->time;
+                p->times[p->samples] = time;
                 p->along[p->samples] = along;
                 p->samples++;
             }
             if (csv)
                 for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", p->last_tip[d]);
+        } else if (c->kind == PROBE_POINT && csv && c->target == PROBE_ON_FLOW) {
+            double q[5];
+            flow_cell(flow, p->point, q);
+            for (int m = 0; m < 5; m++) fprintf(csv, ",%.9g", q[m]);
         } else if (c->kind == PROBE_POINT && csv) {
             for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->u[d][p->point]);
             for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->v[d][p->point]);
@@ -162,8 +228,25 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
     }
 }
 
+/* The cells of a flow line: coordinates and primitive values. */
+static void write_flow_line(const ProbeState *p, FlowSolver *flow, FILE *f) {
+    const Grid *g = flow_solver_grid(flow);
+    const GksParams *gas = flow_solver_gas(flow);
+    fprintf(f, "x_m,y_m,rho_kg_per_m3,u_m_per_s,v_m_per_s,p_Pa,T_K,mach\n");
+    for (int64_t m = 0; m < p->member_count; m++) {
+        int64_t cell = p->members[m];
+        int j = (int)(cell / g->stride) - GRID_NG, i = (int)(cell % g->stride) - GRID_NG;
+        double q[5];
+        flow_cell(flow, cell, q);
+        double mach = sqrt(q[1] * q[1] + q[2] * q[2]) / sqrt(gas->gamma * q[3] / q[0]);
+        fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", g->ax[0].center[i],
+                g->ax[1].center[j], q[0], q[1], q[2], q[3], q[4], mach);
+    }
+}
+
 int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
-                       const double *damage, const char *dir, int index) {
+                       const double *damage, FlowSolver *flow, double time, const char *dir,
+                       int index) {
     for (int k = 0; k < count; k++) {
         const ProbeState *p = &probes[k];
         if (p->cfg->kind != PROBE_LINE) continue;
@@ -171,7 +254,12 @@ int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
         snprintf(path, sizeof path, "%s/line_%s_%05d.csv", dir, p->cfg->name, index);
         FILE *f = fopen(path, "w");
         if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
-        fprintf(f, "# t = %.9g s\n", body->time);
+        fprintf(f, "# t = %.9g s\n", time);
+        if (p->cfg->target == PROBE_ON_FLOW) {
+            write_flow_line(p, flow, f);
+            if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+            continue;
+        }
         for (int d = 0; d < body->dim; d++) fprintf(f, "%s%s_m", d ? "," : "", AXIS[d]);
         for (int d = 0; d < body->dim; d++) fprintf(f, ",u%s_m", AXIS[d]);
         for (int d = 0; d < body->dim; d++) fprintf(f, ",v%s_m_per_s", AXIS[d]);

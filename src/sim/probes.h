@@ -1,8 +1,10 @@
 /* Case-specific measurements taken during a run (sim_config.h ProbeConfig):
- * crack tip position, point displacements, and line samples. */
+ * crack tip position, point values and line samples, on the solid's points
+ * or the flow's cells. */
 #ifndef NSPD_SIM_PROBES_H
 #define NSPD_SIM_PROBES_H
 
+#include "flow/flow_solver.h"
 #include "sim/sim_config.h"
 #include "solid/pd_body.h"
 
@@ -10,8 +12,8 @@
 
 typedef struct {
     const ProbeConfig *cfg;
-    int64_t point;    /* PROBE_POINT: index of the nearest material point */
-    int64_t *members; /* PROBE_LINE: points inside the region, sorted */
+    int64_t point;    /* PROBE_POINT: the nearest material point, or the flow cell (grid index) */
+    int64_t *members; /* PROBE_LINE: points inside the region sorted, or the cells of the line */
     int64_t member_count;
     /* PROBE_CRACK_TIP history: position along `direction` at each sample */
     double *times, *along;
@@ -19,10 +21,12 @@ typedef struct {
     double last_tip[3];
 } ProbeState;
 
-/* Sets up the probes of `cfg` on `body` (nearest points, line members,
- * history buffers for `max_samples` samples). */
+/* Sets up the probes of `cfg` on the solid and/or flow (either may be
+ * NULL): nearest points, line members, history buffers for `max_samples`
+ * samples. NSPD_ERR_INPUT if a probe targets a part the case lacks, or
+ * finds nothing. */
 int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdBody *body,
-                  int max_samples);
+                  const FlowSolver *flow, int max_samples);
 void probes_destroy(ProbeState **probes, int count);
 
 /* True if some probe needs the damage field at every history sample. */
@@ -31,12 +35,14 @@ bool probes_need_damage(const OutputConfig *cfg);
 /* Appends this probe set's column names to the CSV header line. */
 void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv);
 /* Samples every probe at the current state (damage: the current damage
- * field, or NULL if no probe needs it) and appends the values to the row. */
+ * field, or NULL if no probe needs it) and appends the values to the row
+ * (csv may be NULL: the crack tip history is still recorded). */
 void probes_sample(ProbeState *probes, int count, const PdBody *body, const double *damage,
-                   FILE *csv);
+                   FlowSolver *flow, double time, FILE *csv);
 /* Writes line_<name>_<index>.csv files for the line probes. */
 int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
-                       const double *damage, const char *dir, int index);
+                       const double *damage, FlowSolver *flow, double time, const char *dir,
+                       int index);
 
 /* Crack speed from the tip history: (s_end - s_start) / (t_end - t_start)
  * where t_start is the last sample before the tip first advanced and t_end

@@ -1,12 +1,16 @@
 /* The simulation: owns the state of a case and runs its time loop.
  *
- * Per step (solid-only cases): PD force and update (pd_step), then the
- * outputs due. The flow and the coupling join this loop in later stages:
- * interface -> ghost cells -> flow step -> surface loads -> solid sub-steps
- * -> outputs (../shared/DESIGN.md). */
+ * A case has a solid, a flow, or (issue 5) both. Per step:
+ *   solid only: PD force and update (pd_step) with the fixed dt;
+ *   flow only:  GKS step with the stable (CFL) dt, the last one shortened to
+ *               land on the end time;
+ * then the outputs due. The coupled loop (interface -> ghost cells -> flow
+ * step -> surface loads -> solid sub-steps -> outputs, ../shared/DESIGN.md)
+ * is the same loop with both parts. */
 #ifndef NSPD_SIM_SIM_H
 #define NSPD_SIM_SIM_H
 
+#include "flow/flow_solver.h"
 #include "io/vtk.h"
 #include "sim/probes.h"
 #include "sim/sim_config.h"
@@ -21,17 +25,24 @@ typedef struct {
 
 typedef struct {
     SimConfig cfg;
+    bool has_solid, has_flow;
     PdBody solid;
-    double dt, stable_dt;
-    int64_t steps;
+    FlowSolver *flow;
+    double dt;        /* solid: the fixed step; flow: the last step taken */
+    double stable_dt; /* solid: the stable PD step; flow: the initial CFL step */
+    int64_t steps;    /* planned steps (flow: estimated from the initial step) */
+    int64_t step;     /* steps taken */
+    double time;      /* simulated time, s */
+
     double *damage;      /* scratch: the damage field when an output or probe needs it */
     double *position[3]; /* scratch: current positions x + u for outputs */
+    double *cells[6];    /* scratch: flow fields of the interior cells for outputs */
     ProbeState *probes;
 
     /* output state */
     const char *dir;
     FILE *history;
-    PvdSeries pvd;
+    PvdSeries pvd_solid, pvd_flow;
     int field_index;
     double next_field, next_history;
     double wall_s;
@@ -39,8 +50,8 @@ typedef struct {
 } Sim;
 
 /* Builds everything the case describes (takes ownership of *cfg, zeroing
- * it) and fixes the time step: the case's dt, or safety_factor x the stable
- * step. NSPD_ERR_INPUT for geometry problems found while building. */
+ * it) and fixes the time step. NSPD_ERR_INPUT for problems found while
+ * building (geometry without points, inconsistent boundaries). */
 int sim_create(Sim *sim, SimConfig *cfg);
 void sim_destroy(Sim *sim);
 
@@ -49,7 +60,8 @@ void sim_destroy(Sim *sim);
  * with all outputs written and summary.json marked "interrupted"). */
 int sim_run(Sim *sim, const SimRunOptions *opt);
 
-/* Advances `steps` steps with no output (tests, `nspd info` timing). */
+/* Advances `steps` steps (or to the end time) with no output (tests,
+ * `nspd info` timing). */
 int sim_advance(Sim *sim, int64_t steps);
 
 #endif

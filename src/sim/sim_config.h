@@ -1,29 +1,50 @@
-/* A whole case as read from its YAML file: what to simulate (a solid now;
- * flow and coupling join later), for how long, and what to write. Filled by
- * io/case_read.c, consumed by sim_create(). Units SI. */
+/* A whole case as read from its YAML file: what to simulate (a solid, a
+ * flow; the coupling joins later), for how long, and what to write. Filled
+ * by io/case_read.c, consumed by sim_create(). Units SI. */
 #ifndef NSPD_SIM_SIM_CONFIG_H
 #define NSPD_SIM_SIM_CONFIG_H
 
 #include "core/shape.h"
+#include "flow/flow_solver.h"
 #include "solid/pd_config.h"
 
 #include <stdbool.h>
+
+/* The flow part of a case: the solver's configuration plus what it borrows
+ * (initial-condition regions and their shapes, the vortex), owned here. */
+typedef struct {
+    FlowConfig solver;
+    int region_count;
+    FlowRegion *regions; /* owned, with their shapes */
+    bool has_vortex;
+    FlowVortex vortex; /* solver.init_fn points at it when has_vortex */
+    /* the free stream, when the case defines one: the reference of Mach
+     * number, pressure coefficient and force coefficients */
+    bool has_free_stream;
+    FlowPrim free_stream;
+    double reference_length; /* m; 0 if not given */
+} FlowCaseConfig;
 
 typedef enum { PROBE_CRACK_TIP, PROBE_POINT, PROBE_LINE, PROBE_KIND_COUNT } ProbeKind;
 extern const char *const PROBE_KIND_NAMES[PROBE_KIND_COUNT + 1];
 
 enum { SIM_MAX_NAME = 64 };
 
+typedef enum { PROBE_ON_SOLID, PROBE_ON_FLOW } ProbeTarget;
+
 typedef struct {
     ProbeKind kind;
+    ProbeTarget target; /* point and line probes: the solid's points or the flow's cells */
     char name[SIM_MAX_NAME];
     /* crack_tip: the damaged point (damage > threshold) furthest along
      * `direction`, optionally only inside `region` */
     double direction[3];
     double damage_threshold;
-    /* point: the material point nearest to `at` (reference configuration) */
+    /* point: the material point nearest to `at` (reference configuration),
+     * or the flow cell containing it */
     double at[3];
-    /* line: the points inside `region`, sorted along axis `sort_axis` */
+    /* line: the points inside `region`, sorted along axis `sort_axis`; on the
+     * flow, the row (sort_axis x) or column (y) of cells through `at` */
     ShapeSet region;
     int sort_axis;
 } ProbeConfig;
@@ -45,9 +66,12 @@ typedef struct {
     double safety_factor; /* dt = safety_factor * stable step */
     bool has_solid;
     PdConfig solid;
+    bool has_flow;
+    FlowCaseConfig flow;
     OutputConfig output;
 } SimConfig;
 
+void flow_case_config_free(FlowCaseConfig *flow);
 void sim_config_free(SimConfig *cfg);
 
 #endif

@@ -1,0 +1,195 @@
+/* The compressible flow operator: grid + state + GKS step.
+ *
+ * A FlowSolver owns a stretched Cartesian grid, the conservative state
+ * (rho, rho u, rho v, rho E; one array per variable, with ghost layers), a
+ * per-cell kind array and the work space of one time step. One call of
+ * flow_solver_step advances the state by dt with the single-stage gas-kinetic
+ * scheme (the flux is integrated in time, second order):
+ *     W_i^{n+1} = W_i^n - (1/V_i) sum_faces (\int_0^dt F dt) |face|          (paper 000 Eq. 20)
+ *
+ * Step: box ghost layers (bc.h) -> optional fill_ghosts hook (immersed
+ * boundary) -> per row, limited slopes, x-face and y-face fluxes
+ * (gks_flux.h), update of the fluid cells -> check for NaN / rho <= 0 / p <= 0.
+ *
+ * Cell kinds (uint8): FLUID cells are updated; SOLID and GHOST cells are not.
+ * A face's flux is computed if at least one of its cells is fluid. Box ghost
+ * layers take the kind of their image cell. A slope in a direction is zero in
+ * a SOLID cell and in any cell with a SOLID neighbour in that direction, so
+ * GHOST cell values (set by the hook) are used but nothing inside the solid
+ * ever is.
+ *
+ * Determinism: every face flux is a pure function of the state, rows are
+ * split among threads in fixed blocks, a face on a block boundary is computed
+ * by both blocks identically, and sums are taken in a fixed order: results
+ * are bitwise identical at any thread count.
+ *
+ * Thread safety: one solver per thread of the caller; the step itself is
+ * OpenMP-parallel. No allocation happens after flow_solver_create. */
+#ifndef NSPD_FLOW_FLOW_SOLVER_H
+#define NSPD_FLOW_FLOW_SOLVER_H
+
+#include "core/shape.h"
+#include "flow/bc.h"
+#include "flow/gks_kernel.h"
+#include "flow/grid.h"
+
+#include <stdint.h>
+
+enum { FLOW_CELL_FLUID = 0, FLOW_CELL_SOLID = 1, FLOW_CELL_GHOST = 2 };
+
+typedef enum {
+    LIMITER_VAN_LEER = 0, /* harmonic mean of the one-sided slopes */
+    LIMITER_VAN_ALBADA,   /* smoother: max(ab,0)(a+b)/(a^2+b^2) */
+    LIMITER_NONE,         /* unlimited central slope (smooth-flow verification only) */
+    LIMITER_FIRST_ORDER,  /* zero slopes */
+    LIMITER_COUNT
+} FlowLimiter;
+
+extern const char *const FLOW_LIMITER_NAMES[LIMITER_COUNT + 1]; /* "van_leer", ..., NULL */
+
+enum { FLOW_MAX_SEGMENTS = 16 };
+
+/* A region of the initial condition: cells (or quadrature points) inside
+ * `shapes` take `state`. Later regions override earlier ones. */
+typedef struct {
+    ShapeSet shapes; /* borrowed */
+    FlowPrim state;
+} FlowRegion;
+
+/* Initial condition as a function: the primitive state at (x, y). */
+typedef void (*FlowInitFn)(void *ctx, double x, double y, FlowPrim *out);
+
+typedef struct FlowSolver FlowSolver;
+/* Called in every step after the box ghost layers are filled and before the
+ * fluxes: sets the state of GHOST cells (immersed boundary). */
+typedef void (*FlowGhostHook)(void *ctx, FlowSolver *solver);
+
+typedef struct {
+    /* grid: segments per axis from (x0, y0) */
+    double x0, y0;
+    int segment_count[2];
+    GridSegment segments[2][FLOW_MAX_SEGMENTS];
+    /* gas */
+    double gamma;        /* default 1.4 */
+    double gas_constant; /* J/(kg K), default 287 */
+    ViscosityLaw viscosity;
+    double mu_ref, T_ref, omega, sutherland_S; /* see ViscosityLaw */
+    double prandtl;                            /* default 0.72 */
+    /* numerics */
+    FlowLimiter limiter; /* default van Leer */
+    double cfl;          /* default 0.5 */
+    double tau_jump_c;   /* C in tau_n = tau + C dt |pL - pR|/(pL + pR); default 1 */
+    double tau_eps;      /* eps: tau_n += eps dt everywhere; default 0 */
+    /* boundaries: FLOW_FACE_XLO, XHI, YLO, YHI */
+    FlowFaceBc bc[4];
+    /* initial condition: uniform `initial`, then `regions` in order, or
+     * init_fn if set; averaged over init_quadrature^2 Gauss points per cell
+     * (1 = cell centre; up to 4). */
+    FlowPrim initial;
+    int region_count;
+    const FlowRegion *regions; /* borrowed during flow_solver_create only */
+    FlowInitFn init_fn;
+    void *init_ctx;
+    int init_quadrature;
+} FlowConfig;
+
+/* Defaults: air (gamma 1.4, R 287, Pr 0.72), inviscid, van Leer, CFL 0.5,
+ * C = 1, eps = 0, extrapolation on all faces, no grid segments. */
+void flow_config_default(FlowConfig *c);
+/* Convenience: a uniform nx x ny grid on [x0,x1] x [y0,y1]. */
+void flow_config_uniform_grid(FlowConfig *c, double x0, double x1, int nx, double y0, double y1,
+                              int ny);
+/* Sets every segment of a face to one condition. */
+void flow_config_set_bc(FlowConfig *c, int face, const FlowBc *bc);
+
+/* Builds the solver and applies the initial condition. Allocates everything
+ * the steps need (work space for omp_get_max_threads() threads).
+ * NSPD_ERR_INPUT for an inconsistent configuration, NSPD_ERR_NOMEM. */
+int flow_solver_create(FlowSolver **out, const FlowConfig *cfg);
+void flow_solver_destroy(FlowSolver **s);
+
+/* Re-applies an initial condition from cfg (its IC fields only). */
+void flow_solver_apply_initial(FlowSolver *s, const FlowConfig *cfg);
+
+/* The current fields: pointers into the solver, valid until the next step
+ * (the step swaps buffers). Index with grid_index(). */
+typedef struct {
+    double *w[4];  /* rho, rho u, rho v, rho E */
+    uint8_t *kind; /* FLOW_CELL_* */
+} FlowFields;
+FlowFields flow_solver_fields(FlowSolver *s);
+const Grid *flow_solver_grid(const FlowSolver *s);
+const GksParams *flow_solver_gas(const FlowSolver *s);
+const FlowConfig *flow_solver_config(const FlowSolver *s);
+
+void flow_solver_set_ghost_hook(FlowSolver *s, FlowGhostHook hook, void *ctx);
+
+/* Fills the box ghost layers now (the step does it itself; for output). */
+void flow_solver_fill_boundaries(FlowSolver *s);
+
+/* Largest stable dt: CFL / max over fluid cells of
+ *   (|u| + c)/dx + (|v| + c)/dy + 2 nu_eff (1/dx^2 + 1/dy^2),
+ * nu_eff = max(4/3, gamma/Pr) mu / rho. */
+double flow_solver_stable_dt(const FlowSolver *s);
+
+/* One step of size dt (s). NSPD_ERR_NUMERIC if a fluid cell ends with NaN,
+ * rho <= 0 or p <= 0; the message names the first such cell (row-major
+ * order), its centre and the step. */
+int flow_solver_step(FlowSolver *s, double dt);
+
+/* Steps with the stable dt until time t_end (the last step is shortened to
+ * land on it) or max_steps steps (<= 0: no limit). */
+int flow_solver_advance(FlowSolver *s, double t_end, int64_t max_steps);
+
+double flow_solver_time(const FlowSolver *s);
+int64_t flow_solver_step_count(const FlowSolver *s);
+/* First-order fallbacks (cell-directions whose limited slopes would have made
+ * rho or p negative at a face) in the last step, and in all steps so far. */
+int64_t flow_solver_fallbacks_last(const FlowSolver *s);
+int64_t flow_solver_fallbacks_total(const FlowSolver *s);
+
+typedef enum {
+    FLOW_DENSITY = 0,
+    FLOW_VELOCITY_X,
+    FLOW_VELOCITY_Y,
+    FLOW_PRESSURE,
+    FLOW_TEMPERATURE,
+    FLOW_MACH,
+    FLOW_FIELD_COUNT
+} FlowField;
+
+/* Writes a primitive field of the interior cells into out[nx * ny], x
+ * fastest, no ghosts (non-fluid cells included as stored). */
+void flow_solver_primitive(const FlowSolver *s, FlowField field, double *out);
+
+/* Integrals over the fluid cells: mass (kg/m), x and y momentum, energy (J/m). */
+void flow_solver_totals(const FlowSolver *s, double totals[4]);
+
+/* The isentropic vortex (Yee et al.): a free-stream (rho_inf, u_inf, v_inf,
+ * p_inf) carrying a vortex of strength `strength` centred at (x0, y0), with
+ * T = p/(rho R). With R = 1, rho_inf = p_inf = 1:
+ *   du = -eps/(2 pi) (y - y0) exp((1 - r^2)/2), dv = eps/(2 pi) (x - x0) exp((1 - r^2)/2),
+ *   T = 1 - (gamma - 1) eps^2 / (8 gamma pi^2) exp(1 - r^2), rho = T^(1/(gamma-1)).
+ * The general form scales T and rho by the free stream (isentropic). Coordinates
+ * on a periodic box [lo, lo + period] take the nearest image (period <= 0: none). */
+typedef struct {
+    double x0, y0, strength, gamma;
+    double rho_inf, u_inf, v_inf, p_inf;
+    double period_x, period_y, lo_x, lo_y;
+} FlowVortex;
+void flow_isentropic_vortex(void *vortex, double x, double y, FlowPrim *out);
+
+/* Benchmark: viscous (Sutherland air, Pr 0.72) Taylor-Green-like flow at Mach
+ * 0.3 on a periodic N x N grid, N = round(sqrt(cells)), run at `threads`
+ * threads; times `steps` full steps (stable dt + step) after one warm-up step. */
+typedef struct {
+    int64_t cells; /* N * N */
+    int steps;
+    int threads;
+    double seconds;            /* wall time of the timed steps */
+    double cell_updates_per_s; /* cells * steps / seconds */
+    double bytes_per_cell;     /* state + kinds + work arrays of the solver, per cell */
+} FlowBenchResult;
+int flow_bench(int cells, int threads, int steps, FlowBenchResult *out);
+
+#endif
