@@ -35,6 +35,42 @@ gnuplot -e "datafile='$out/plate_crack/history.csv'; outfile='docs/img/plate_fig
 sed -n 's/.*"\(crack_tip_x_m\|crack_speed_m_per_s\|wall_s\)": \(.*\),*/Fig. 10: \1 = \2/p' \
     "$out/plate_crack/summary.json" | tee "$out/fig10.txt"
 
+echo "== shock tubes (Sod, Lax) against the exact solution"
+for tube in sod lax; do
+    "$nspd" run cases/$tube.yaml -o "$out/$tube" --force --quiet
+done
+"$nspd" riemann --left 1,0,1 --right 0.125,0,0.1 --time 0.2 --cells 2000 >"$out/sod/exact.csv"
+"$nspd" riemann --left 0.445,0.698,3.528 --right 0.5,0,0.571 --time 0.14 --cells 2000 \
+    >"$out/lax/exact.csv"
+for tube in sod lax; do
+    last=$(ls "$out/$tube"/line_centre_*.csv | tail -1)
+    gnuplot -e "datafile='$last'; exactfile='$out/$tube/exact.csv'; outfile='docs/img/${tube}.png'; name='$tube, 400 cells'" \
+        scripts/plots/shock_tube.gp
+done
+
+echo "== Couette flow with heating"
+"$nspd" run cases/couette.yaml -o "$out/couette" --force --quiet
+last=$(ls "$out/couette"/line_profile_*.csv | tail -1)
+gnuplot -e "datafile='$last'; outfile='docs/img/couette.png'" scripts/plots/couette.gp
+awk -F, 'NR > 2 { cp = 3.5; ex = 1 + 0.72 / (2 * cp) * $2 * (1 - $2); amp = 0.72 / (8 * cp);
+        e = ($7 - ex) / amp; if (e < 0) e = -e; if (e > m) m = e; eu = $4 - $2; if (eu < 0) eu = -eu; if (eu > mu) mu = eu }
+    END { printf "Couette: max |T - T_exact| = %.2f %% of the heating amplitude, max |u - u_exact| = %.2e U\n", 100 * m, mu }' \
+    "$last" | tee "$out/couette.txt"
+
+echo "== flat plate against Blasius"
+"$nspd" run cases/blasius.yaml -o "$out/blasius" --force --quiet
+r1=$(ls "$out/blasius"/line_wall_row1_*.csv | tail -1)
+r2=$(ls "$out/blasius"/line_wall_row2_*.csv | tail -1)
+# Cf = mu du/dy / (rho U^2 / 2), du/dy at the wall from u(0) = 0 and the two
+# first cells (quadratic); mu = U L / Re = 3e-6, rho U^2 / 2 = 0.045
+paste -d, "$r1" "$r2" | awk -F, 'NR > 2 && $1 > 0 && $1 < 1 {
+        y1 = $2; u1 = $4; y2 = $10; u2 = $12; dudy = (u1 * y2 * y2 - u2 * y1 * y1) / (y1 * y2 * (y2 - y1));
+        cf = 3e-6 * dudy / 0.045; rex = 1e5 * $1; printf "%.6g,%.6g,%.6g\n", $1, rex, cf }' >"$out/blasius/cf.csv"
+gnuplot -e "cffile='$out/blasius/cf.csv'; outfile='docs/img/blasius_cf.png'" scripts/plots/blasius.gp
+awk -F, '$1 >= 0.2 && $1 <= 0.8 { e = $3 * sqrt($2) / 0.664 - 1; if ((e < 0 ? -e : e) > (w < 0 ? -w : w)) w = e; s += e; n++ }
+    END { printf "Blasius: Cf/Cf_Blasius - 1 over Re_x 2e4..8e4: worst %+.4f, mean %+.4f (%d cells)\n", w, s / n, n }' \
+    "$out/blasius/cf.csv" | tee "$out/blasius.txt"
+
 echo "== slow tests"
 ctest --test-dir "$build" --output-on-failure -L slow || true
 echo "plots in docs/img/, runs in $out/"

@@ -122,14 +122,66 @@ static int bench_gks(const BenchOptions *opt) {
     return NSPD_OK;
 }
 
+/* STREAM-style triad a = b + s c over three arrays of `points` doubles
+ * (default 2^25 each, 768 MB in all: far beyond the caches): the machine's
+ * sustainable memory bandwidth, the ceiling of a memory-bound kernel.
+ * Counts 24 bytes per element (two reads, one write; the write-allocate read
+ * is not counted, as in STREAM). */
+static int bench_memory(const BenchOptions *opt) {
+    int64_t n = opt->points;
+    double *a, *b, *c;
+    TRY(nspd_alloc(&a, (size_t)n, sizeof(double)));
+    int status = nspd_alloc(&b, (size_t)n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&c, (size_t)n, sizeof(double));
+    if (status != NSPD_OK) {
+        nspd_free(&a);
+        nspd_free(&b);
+        return status;
+    }
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < n; i++) {
+        a[i] = 0.0;
+        b[i] = 1.0;
+        c[i] = 2.0;
+    }
+    double best = 0.0;
+    for (long rep = 0; rep < opt->steps; rep++) {
+        double t0 = nspd_wall_time();
+#pragma omp parallel for schedule(static)
+        for (int64_t i = 0; i < n; i++) a[i] = b[i] + 3.0 * c[i];
+        double rate = 24.0 * (double)n / (nspd_wall_time() - t0);
+        if (rate > best) best = rate;
+    }
+    JsonWriter w;
+    json_begin(&w, stdout);
+    json_string(&w, "bench", "memory");
+    json_int(&w, "doubles_per_array", n);
+    json_int(&w, "repeats", opt->steps);
+    json_int(&w, "threads", omp_get_max_threads());
+    json_number(&w, "triad_bytes_per_s", best);
+    json_number(&w, "check", a[n / 2]); /* 7: keeps the loop from being optimised away */
+    json_end(&w);
+    nspd_free(&a);
+    nspd_free(&b);
+    nspd_free(&c);
+    return NSPD_OK;
+}
+
 int cmd_bench(int argc, char **argv) {
     if (argc < 1) {
         fprintf(stderr, "usage: nspd bench pd [--points N] [--threads T] [--steps S]\n"
-                        "       nspd bench gks [--cells N] [--threads T] [--steps S]\n");
+                        "       nspd bench gks [--cells N] [--threads T] [--steps S]\n"
+                        "       nspd bench memory [--points N] [--threads T] [--steps REPEATS]\n");
         return EXIT_BAD_INPUT;
     }
-    bool gks = strcmp(argv[0], "gks") == 0;
-    BenchOptions opt = {gks ? 1000000 : 250000, gks ? 20 : 50, 0};
+    bool gks = strcmp(argv[0], "gks") == 0, memory = strcmp(argv[0], "memory") == 0;
+    BenchOptions opt = {memory ? (1L << 25)
+                        : gks  ? 1000000
+                               : 250000,
+                        memory ? 10
+                        : gks  ? 20
+                               : 50,
+                        0};
     if (!parse(argc - 1, argv + 1, &opt)) return EXIT_BAD_INPUT;
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
     int status;
@@ -137,8 +189,11 @@ int cmd_bench(int argc, char **argv) {
         status = bench_pd(&opt);
     } else if (gks) {
         status = bench_gks(&opt);
+    } else if (memory) {
+        status = bench_memory(&opt);
     } else {
-        fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd or gks)\n", argv[0]);
+        fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd, gks or memory)\n",
+                argv[0]);
         return EXIT_BAD_INPUT;
     }
     if (status != NSPD_OK) fprintf(stderr, "nspd bench: %s\n", nspd_error_message());

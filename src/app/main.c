@@ -18,6 +18,8 @@ static void usage(FILE *out) {
           "                         PD force + integration throughput, one JSON object\n"
           "  bench gks [--cells N] [--threads T] [--steps S]\n"
           "                         viscous GKS flow step throughput, one JSON object\n"
+          "  riemann [--left R,U,P] [--right R,U,P] [--time T] [--cells N] ...\n"
+          "                         exact shock-tube solution as CSV (the reference)\n"
           "  version                print the version\n"
           "\n"
           "exit status: 0 success, 1 run-time failure, 2 bad input, 130 interrupted\n",
@@ -34,6 +36,7 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "check") == 0) return cmd_check(argc - 2, argv + 2);
     if (strcmp(cmd, "info") == 0) return cmd_info(argc - 2, argv + 2);
     if (strcmp(cmd, "bench") == 0) return cmd_bench(argc - 2, argv + 2);
+    if (strcmp(cmd, "riemann") == 0) return cmd_riemann(argc - 2, argv + 2);
     if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
         printf("nspd %s\n", NSPD_VERSION);
         return 0;

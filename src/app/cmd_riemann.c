@@ -1,0 +1,72 @@
+/* nspd riemann: the exact solution of a 1D Riemann problem (Toro ch. 4) as
+ * cell averages on a uniform grid, CSV on stdout - the reference of the
+ * shock-tube cases. */
+#include "app/commands.h"
+#include "core/status.h"
+#include "flow/riemann_exact.h"
+
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static bool parse_state(const char *text, RiemannState *s) {
+    char *end;
+    s->rho = strtod(text, &end);
+    if (*end != ',') return false;
+    s->u = strtod(end + 1, &end);
+    if (*end != ',') return false;
+    s->p = strtod(end + 1, &end);
+    return *end == '\0';
+}
+
+int cmd_riemann(int argc, char **argv) {
+    RiemannState left = {1, 0, 1}, right = {0.125, 0, 0.1};
+    double gamma = 1.4, time = 0.2, x0 = 0.5, length = 1.0;
+    long cells = 400;
+    for (int i = 0; i + 1 < argc; i += 2) {
+        const char *k = argv[i], *v = argv[i + 1];
+        bool ok = true;
+        if (strcmp(k, "--left") == 0)
+            ok = parse_state(v, &left);
+        else if (strcmp(k, "--right") == 0)
+            ok = parse_state(v, &right);
+        else if (strcmp(k, "--gamma") == 0)
+            gamma = atof(v);
+        else if (strcmp(k, "--time") == 0)
+            time = atof(v);
+        else if (strcmp(k, "--x0") == 0)
+            x0 = atof(v);
+        else if (strcmp(k, "--length") == 0)
+            length = atof(v);
+        else if (strcmp(k, "--cells") == 0)
+            cells = atol(v);
+        else
+            ok = false;
+        if (!ok || (argc % 2)) {
+            fprintf(stderr, "usage: nspd riemann [--left RHO,U,P] [--right RHO,U,P] [--gamma G]\n"
+                            "                    [--time T] [--x0 X] [--length L] [--cells N]\n"
+                            "(defaults: Sod's problem on (0, 1) at t = 0.2, 400 cells)\n");
+            return EXIT_BAD_INPUT;
+        }
+    }
+    if (!(time > 0) || cells < 1 || !(length > 0)) {
+        fprintf(stderr, "nspd riemann: time, length and cells must be positive\n");
+        return EXIT_BAD_INPUT;
+    }
+    RiemannSolution sol;
+    if (riemann_exact_solve(&left, &right, gamma, &sol) != NSPD_OK) {
+        fprintf(stderr, "nspd riemann: %s\n", nspd_error_message());
+        return EXIT_BAD_INPUT;
+    }
+    printf("# exact solution, p* = %.10g, u* = %.10g, t = %g\nx,rho,u,p\n", sol.p_star, sol.u_star,
+           time);
+    double h = length / (double)cells;
+    for (long i = 0; i < cells; i++) {
+        double cons[3];
+        riemann_exact_average(&sol, x0, time, i * h, (i + 1) * h, 64, cons);
+        double u = cons[1] / cons[0], p = (gamma - 1) * (cons[2] - 0.5 * cons[1] * u);
+        printf("%.9g,%.9g,%.9g,%.9g\n", (i + 0.5) * h, cons[0], u, p);
+    }
+    return 0;
+}
