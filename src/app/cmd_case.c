@@ -266,9 +266,15 @@ int cmd_run(int argc, char **argv) {
         interrupt_install();
         SimRunOptions ro = {dir, !opt.quiet};
         status = sim_run(&sim, &ro);
-        if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED)
+        if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED) {
+            if (sim.has_flow && flow_solver_fallbacks_total(sim.flow) > 0)
+                nspd_log(LOG_INFO,
+                         "flow: %lld first-order fallbacks (a limited slope would have made the "
+                         "density or pressure negative at a face); per step in history.csv",
+                         (long long)flow_solver_fallbacks_total(sim.flow));
             nspd_log(LOG_INFO, "done: %lld steps to t = %g s in %.2f s; results in %s/",
                      (long long)sim.step, sim.time, sim.wall_s, dir);
+        }
     }
     int code = report(status);
     nspd_log_close();
