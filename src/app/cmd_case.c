@@ -106,7 +106,7 @@ static void info_solid(const Sim *sim, size_t memory) {
         printf("critical stretch     (failure off)\n");
     printf("bar wave speed       %.6g m/s (Rayleigh %.6g m/s)\n", pd_bar_wave_speed(&b->cfg),
            pd_rayleigh_wave_speed(&b->cfg));
-    printf("stable time step     %.6g s\n", sim->stable_dt);
+    printf("stable time step     %.6g s\n", sim->has_fsi ? sim->solid_stable_dt : sim->stable_dt);
     printf("memory               %.1f MB in solver arrays (%d bytes per bond + %.0f per point)\n",
            (double)memory / 1e6, PD_BYTES_PER_BOND,
            ((double)memory - (double)b->bond_count * PD_BYTES_PER_BOND) / (double)b->n);
@@ -138,7 +138,8 @@ static void info_flow(const Sim *sim, size_t memory) {
                    fc->reference_length);
         printf("\n");
     }
-    printf("CFL time step        %.6g s at the start (CFL %.3g)\n", sim->stable_dt, c->cfl);
+    printf("CFL time step        %.6g s at the start (CFL %.3g)\n",
+           flow_solver_stable_dt(sim->flow), c->cfl);
     printf("memory               %.1f MB in solver arrays (%.0f bytes per cell)\n",
            (double)memory / 1e6, (double)memory / ((double)g->nx * g->ny));
 }
@@ -168,12 +169,17 @@ int cmd_info(int argc, char **argv) {
     printf("case                 %s\n", sim.cfg.name);
     if (sim.has_solid) info_solid(&sim, memory);
     if (sim.has_flow) info_flow(&sim, memory);
-    printf("time step            %.6g s (%s)\n", sim.dt,
-           sim.cfg.dt_given ? "given"
-           : sim.has_solid  ? "safety factor x stable"
-                            : "CFL; it follows the flow");
+    if (sim.has_fsi)
+        printf("time step            %.6g s (the flow's CFL step); the solid sub-steps at most "
+               "%.6g s\n",
+               sim.dt, sim.solid_substep);
+    else
+        printf("time step            %.6g s (%s)\n", sim.dt,
+               sim.cfg.dt_given ? "given"
+               : sim.has_solid  ? "safety factor x stable"
+                                : "CFL; it follows the flow");
     printf("steps                %s%lld to t = %.6g s\n", sim.has_flow ? "about " : "",
-           (long long)sim.steps, sim.has_solid ? (double)sim.steps * sim.dt : sim.cfg.end_time);
+           (long long)sim.steps, sim.has_flow ? sim.cfg.end_time : (double)sim.steps * sim.dt);
     printf("threads              %d\n", omp_get_max_threads());
     printf("setup                %.3g s\n", setup_s);
     printf("estimated run time   %s (%.3g s per step, outputs excluded)\n", eta, step_s);

@@ -10,6 +10,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "io/case_bodies.h"
 #include "io/case_shapes.h"
 #include "io/cfg_read.h"
 
@@ -399,5 +400,11 @@ int case_read_flow(CfgNode *flow, FlowCaseConfig *fc) {
     for (int f = 0; f < 4; f++) TRY(read_face(bcs, f, &sc, &c->bc[f]));
     TRY(cfg_end_map(bcs));
     TRY(read_initial(flow, fc, &sc));
+    TRY(case_read_bodies(flow, "bodies", false, &fc->bodies));
+    if (fc->bodies.count > 0) {
+        TRY(cfg_opt_double(flow, "soft_start", 0.0, &fc->soft_start));
+        TRY(cfg_check_range(flow, "soft_start", fc->soft_start, 0.0, 1e30,
+                            "a length >= 0 in m over which the flow starts at the wall velocity"));
+    }
     return cfg_end_map(flow);
 }

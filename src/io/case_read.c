@@ -7,6 +7,7 @@
 #include "io/case_solid.h"
 #include "io/cfg_read.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -46,7 +47,8 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
                                name);
     snprintf(p->name, sizeof p->name, "%s", name);
     int target = has_solid ? PROBE_ON_SOLID : PROBE_ON_FLOW;
-    if (p->kind != PROBE_CRACK_TIP) TRY(cfg_opt_enum(item, "on", TARGETS, target, &target));
+    if (p->kind == PROBE_POINT || p->kind == PROBE_LINE)
+        TRY(cfg_opt_enum(item, "on", TARGETS, target, &target));
     p->target = (ProbeTarget)target;
     if (p->target == PROBE_ON_FLOW) {
         /* a flow point: the cell holding `at`; a flow line: the row or
@@ -76,6 +78,20 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
     case PROBE_POINT:
         TRY(cfg_req_vec(item, "at", dim, p->at));
         break;
+    case PROBE_BRANCHES: {
+        if (dim != 2) return cfg_fail_at(item, "type", "branches are measured in 2D only");
+        double ex[3] = {1, 0, 0};
+        TRY(cfg_req_vec(item, "at", 2, p->at));
+        TRY(cfg_opt_vec(item, "direction", 2, ex, p->direction));
+        double len = hypot(p->direction[0], p->direction[1]);
+        if (len == 0) return cfg_fail_at(item, "direction", "zero vector; expected a direction");
+        p->direction[0] /= len;
+        p->direction[1] /= len;
+        TRY(cfg_opt_double(item, "damage_threshold", 0.35, &p->damage_threshold));
+        TRY(cfg_check_range(item, "damage_threshold", p->damage_threshold, 0.0, 1.0,
+                            "a damage value in [0, 1]"));
+        break;
+    }
     case PROBE_LINE: {
         TRY(case_read_shapes(item, "region", dim, true, &p->region));
         int axis;
@@ -101,6 +117,9 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
     OutputConfig *out = &cfg->output;
     TRY(cfg_opt_double(o, "field_interval", cfg->end_time / 10, &out->field_interval));
     TRY(cfg_check_positive(o, "field_interval", out->field_interval, "seconds between outputs"));
+    TRY(cfg_opt_double(o, "average_from", cfg->end_time / 2, &out->average_from));
+    TRY(cfg_check_range(o, "average_from", out->average_from, 0.0, cfg->end_time,
+                        "the time (s) from which force coefficients are averaged, <= time.end"));
     TRY(cfg_opt_double(o, "history_interval", cfg->end_time / 200, &out->history_interval));
     TRY(cfg_check_positive(o, "history_interval", out->history_interval,
                            "seconds between history rows"));
@@ -129,6 +148,31 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
     return cfg_end_map(o);
 }
 
+static const char *const WALLS[] = {"adiabatic", "isothermal", NULL};
+
+/* The `coupling:` section: the wall condition of the solid's surface, the
+ * start-up and the reference state of the surface loads. */
+static int read_coupling(CfgNode *m, SimConfig *cfg) {
+    FsiConfig *c = &cfg->coupling;
+    const FlowCaseConfig *f = &cfg->flow;
+    TRY(cfg_opt_enum(m, "hold", FSI_HOLD_NAMES, FSI_HOLD_NONE, &c->hold));
+    TRY(cfg_opt_enum(m, "wall", WALLS, IBM_WALL_ADIABATIC, &c->thermal));
+    if (c->thermal == IBM_WALL_ISOTHERMAL) {
+        TRY(cfg_req_double(m, "wall_temperature", &c->wall_temperature));
+        TRY(cfg_check_positive(m, "wall_temperature", c->wall_temperature, "a temperature in K"));
+    }
+    TRY(cfg_opt_double(m, "soft_start", 0.0, &c->soft_start));
+    TRY(cfg_check_range(m, "soft_start", c->soft_start, 0.0, 1e30, "a length >= 0 in m"));
+    /* the solid is built unloaded in the gas at its initial pressure */
+    const FlowPrim *ref = f->has_free_stream ? &f->free_stream : &f->solver.initial;
+    c->reference = (IbmReference){
+        ref->rho, ref->u, ref->v, ref->p, f->reference_length > 0 ? f->reference_length : 1.0, 0.0};
+    TRY(cfg_opt_double(m, "ambient_pressure", f->solver.initial.p, &c->reference.p_ambient));
+    TRY(cfg_check_range(m, "ambient_pressure", c->reference.p_ambient, 0.0, 1e30,
+                        "the pressure (Pa) in which the solid carries no load"));
+    return cfg_end_map(m);
+}
+
 static int read_all(CfgDoc *doc, SimConfig *cfg) {
     CfgNode *root = doc->root;
     const char *name;
@@ -154,6 +198,27 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     if (flow) {
         cfg->has_flow = true;
         TRY(case_read_flow(flow, &cfg->flow));
+    }
+    CfgNode *coupling;
+    TRY(cfg_opt_map(root, "coupling", &coupling));
+    if (solid && flow) {
+        if (cfg->solid.dim != 2)
+            return cfg_fail_at(solid, "model",
+                               "a solid coupled to the 2D flow must be 2D; "
+                               "expected plane_stress or plane_strain");
+        if (cfg->flow.bodies.count > 0)
+            return cfg_fail_at(flow, "bodies",
+                               "fixed bodies together with a coupled solid are not "
+                               "supported; expected one of them");
+        if (!coupling) {
+            coupling = cfg_map_add_collection(root, "coupling", CFG_MAP, CFG_FROM_DEFAULT);
+            if (!coupling) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+            coupling->used = true;
+        }
+        cfg->has_coupling = true;
+        TRY(read_coupling(coupling, cfg));
+    } else if (coupling) {
+        return cfg_fail(coupling, "a coupling needs both a solid and a flow section");
     }
     TRY(read_output(root, cfg, solid ? cfg->solid.dim : 2, solid != NULL));
     return cfg_end_map(root);

@@ -78,9 +78,38 @@ static int locate(const double *faces, int n, double x) {
     return lo;
 }
 
+/* Draws overlay points onto the plot area of img (origin at the margin). */
+static void draw_points(Image *img, int margin, int w, int h, double x0, double ytop, double scale,
+                        const RenderPoints *pts) {
+    double range = pts->vmax > pts->vmin ? pts->vmax - pts->vmin : 1.0;
+    for (int64_t i = 0; i < pts->n; i++) {
+        int xa = (int)floor((pts->pos[0][i] - 0.5 * pts->spacing - x0) * scale);
+        int xb = (int)ceil((pts->pos[0][i] + 0.5 * pts->spacing - x0) * scale);
+        int ya = (int)floor((ytop - pts->pos[1][i] - 0.5 * pts->spacing) * scale);
+        int yb = (int)ceil((ytop - pts->pos[1][i] + 0.5 * pts->spacing) * scale);
+        if (xb <= xa) xb = xa + 1;
+        if (yb <= ya) yb = ya + 1;
+        xa = xa < 0 ? 0 : xa;
+        ya = ya < 0 ? 0 : ya;
+        xb = xb > w ? w : xb;
+        yb = yb > h ? h : yb;
+        uint8_t rgb[3];
+        colormap_rgb(pts->colormap, (pts->values[i] - pts->vmin) / range, rgb);
+        image_fill_rect(img, margin + xa, margin + ya, margin + xb, margin + yb, rgb);
+    }
+}
+
 int render_grid_png(const char *path, int nx, int ny, const double *xf, const double *yf,
-                    const double *values, const uint8_t *mask, const RenderOptions *opt) {
-    double lx = xf[nx] - xf[0], ly = yf[ny] - yf[0];
+                    const double *values, const uint8_t *mask, const RenderOptions *opt,
+                    const RenderPoints *overlay) {
+    double x0 = xf[0], y0 = yf[0], x1 = xf[nx], y1 = yf[ny];
+    if (opt->window[2] > opt->window[0] && opt->window[3] > opt->window[1]) {
+        x0 = fmax(x0, opt->window[0]);
+        y0 = fmax(y0, opt->window[1]);
+        x1 = fmin(x1, opt->window[2]);
+        y1 = fmin(y1, opt->window[3]);
+    }
+    double lx = x1 - x0, ly = y1 - y0;
     double scale = opt->max_pixels / fmax(lx, ly);
     int w = (int)ceil(lx * scale), h = (int)ceil(ly * scale);
     if (w < 1) w = 1;
@@ -88,17 +117,18 @@ int render_grid_png(const char *path, int nx, int ny, const double *xf, const do
     int margin = 8, bar = 16, gap = 12;
     Image img;
     const uint8_t white[3] = {255, 255, 255}, grey[3] = {128, 128, 128};
-    TRY(image_create(&img, w + 2 * margin + gap + bar, h + 2 * margin, white));
+    int bars = overlay ? 2 : 1;
+    TRY(image_create(&img, w + 2 * margin + bars * (gap + bar), h + 2 * margin, white));
     int *column;
     int status = nspd_alloc(&column, (size_t)w, sizeof(int));
     if (status != NSPD_OK) {
         image_destroy(&img);
         return status;
     }
-    for (int x = 0; x < w; x++) column[x] = locate(xf, nx, xf[0] + (x + 0.5) / scale);
+    for (int x = 0; x < w; x++) column[x] = locate(xf, nx, x0 + (x + 0.5) / scale);
     double range = opt->vmax > opt->vmin ? opt->vmax - opt->vmin : 1.0;
     for (int y = 0; y < h; y++) {
-        int j = locate(yf, ny, yf[ny] - (y + 0.5) / scale);
+        int j = locate(yf, ny, y1 - (y + 0.5) / scale);
         for (int x = 0; x < w; x++) {
             int64_t cell = (int64_t)j * nx + column[x];
             uint8_t rgb[3];
@@ -116,8 +146,12 @@ int render_grid_png(const char *path, int nx, int ny, const double *xf, const do
             p[2] = rgb[2];
         }
     }
+    if (overlay) draw_points(&img, margin, w, h, x0, y1, scale, overlay);
     image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,
                    margin + h);
+    if (overlay)
+        image_colorbar(&img, overlay->colormap, margin + w + 2 * gap + bar, margin,
+                       margin + w + 2 * gap + 2 * bar, margin + h);
     status = image_write_png(&img, path);
     nspd_free(&column);
     image_destroy(&img);

@@ -12,7 +12,8 @@
 typedef struct {
     double vmin, vmax; /* colour scale: vmin -> 0, vmax -> 1 */
     ColormapKind colormap;
-    int max_pixels; /* longest side of the plot area */
+    int max_pixels;   /* longest side of the plot area */
+    double window[4]; /* grid pictures: x0, y0, x1, y1 shown (m); x1 <= x0: the whole grid */
 } RenderOptions;
 
 /* Writes a PNG of n points at positions pos[0], pos[1] (current, m), each
@@ -23,8 +24,21 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
 /* Writes a PNG of a cell field on a tensor-product grid: cell (i, j) spans
  * [xf[i], xf[i+1]] x [yf[j], yf[j+1]]; values[j * nx + i]. Pixels are square
  * in physical space, so stretched cells keep their true size. Cells whose
- * `mask` entry is non-zero (mask may be NULL) are drawn grey. */
+ * `mask` entry is non-zero (mask may be NULL) are drawn grey; `overlay`
+ * points (may be NULL) are drawn on top with their own colour map, with a
+ * second colour bar. */
+/* Points drawn over a grid picture (the solid over the flow). */
+typedef struct {
+    int64_t n;
+    const double *pos[2]; /* current positions, m */
+    const double *values; /* coloured with `colormap` over [vmin, vmax] */
+    double spacing;       /* each point a square of this side, m */
+    double vmin, vmax;
+    ColormapKind colormap;
+} RenderPoints;
+
 int render_grid_png(const char *path, int nx, int ny, const double *xf, const double *yf,
-                    const double *values, const uint8_t *mask, const RenderOptions *opt);
+                    const double *values, const uint8_t *mask, const RenderOptions *opt,
+                    const RenderPoints *overlay);
 
 #endif

@@ -291,3 +291,132 @@ double probe_crack_speed(const ProbeState *p) {
     while (s1 > s0 && p->along[s1 - 1] == end) s1--;
     return (end - start) / (p->times[s1] - p->times[s0]);
 }
+
+/* ------------------------------------------------------------ branches */
+
+typedef struct {
+    int64_t bin;
+    double n;
+} BinnedPoint;
+
+static int compare_binned(const void *a, const void *b) {
+    const BinnedPoint *p = a, *q = b;
+    if (p->bin != q->bin) return (p->bin > q->bin) - (p->bin < q->bin);
+    return (p->n > q->n) - (p->n < q->n);
+}
+
+/* Least-squares line n = a + b s through (s[k], n[k]). */
+static void fit_line(const double *s, const double *n, int count, double *a, double *b) {
+    double ss = 0, sn = 0, s1 = 0, n1 = 0;
+    for (int k = 0; k < count; k++) {
+        s1 += s[k];
+        n1 += n[k];
+        ss += s[k] * s[k];
+        sn += s[k] * n[k];
+    }
+    double det = count * ss - s1 * s1;
+    *b = det != 0 ? (count * sn - s1 * n1) / det : 0.0;
+    *a = (n1 - *b * s1) / count;
+}
+
+int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damage,
+                   BranchResult *out) {
+    memset(out, 0, sizeof *out);
+    out->angle_deg = out->upper_deg = out->lower_deg = NAN;
+    out->point[0] = out->point[1] = NAN;
+    const double dx = body->spacing, *dir = c->direction, perp[2] = {-dir[1], dir[0]};
+    int64_t m = 0;
+    BinnedPoint *pts;
+    TRY(nspd_alloc(&pts, (size_t)body->n, sizeof *pts));
+    for (int64_t i = 0; i < body->n; i++) {
+        if (!(damage[i] > c->damage_threshold)) continue;
+        double rx = body->x[0][i] - c->at[0], ry = body->x[1][i] - c->at[1];
+        double s = rx * dir[0] + ry * dir[1];
+        if (s <= 0) continue;
+        pts[m].bin = (int64_t)floor(s / dx);
+        pts[m].n = rx * perp[0] + ry * perp[1];
+        m++;
+    }
+    qsort(pts, (size_t)m, sizeof *pts, compare_binned);
+    /* per bin: the number of clusters and the outermost clusters' centroids */
+    int64_t bins = m ? pts[m - 1].bin + 1 : 0;
+    double *su, *nu, *nl;
+    int *clusters;
+    int status = nspd_alloc(&su, (size_t)bins + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&nu, (size_t)bins + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&nl, (size_t)bins + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&clusters, (size_t)bins + 1, sizeof(int));
+    if (status != NSPD_OK) {
+        nspd_free(&pts);
+        return status;
+    }
+    for (int64_t k = 0, lo = 0; lo < m; k++) {
+        int64_t hi = lo;
+        while (hi < m && pts[hi].bin == pts[lo].bin) hi++;
+        int64_t b = pts[lo].bin;
+        /* clusters across: split where neighbours are more than 2 dx apart */
+        int count = 1;
+        double first_sum = pts[lo].n, last_sum = 0;
+        int64_t first_n = 1, last_n = 0, cluster_lo = lo;
+        for (int64_t q = lo + 1; q < hi; q++) {
+            if (pts[q].n - pts[q - 1].n > 2.0 * dx) {
+                count++;
+                cluster_lo = q;
+            }
+            if (count == 1) {
+                first_sum += pts[q].n;
+                first_n++;
+            }
+        }
+        for (int64_t q = cluster_lo; q < hi; q++) {
+            last_sum += pts[q].n;
+            last_n++;
+        }
+        clusters[b] = count;
+        su[b] = (b + 0.5) * dx;
+        nl[b] = first_sum / (double)first_n;
+        nu[b] = last_sum / (double)last_n;
+        lo = hi;
+        (void)k;
+    }
+    /* the branch: three successive bins with two or more clusters */
+    int64_t start = -1;
+    for (int64_t b = 0; b + 2 < bins && start < 0; b++)
+        if (clusters[b] >= 2 && clusters[b + 1] >= 2 && clusters[b + 2] >= 2) start = b;
+    if (start >= 0) {
+        double *s_fit, *u_fit, *l_fit;
+        status = nspd_alloc(&s_fit, (size_t)bins, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&u_fit, (size_t)bins, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&l_fit, (size_t)bins, sizeof(double));
+        int count = 0;
+        for (int64_t b = start; b < bins && status == NSPD_OK; b++) {
+            if (clusters[b] < 2) continue;
+            s_fit[count] = su[b];
+            u_fit[count] = nu[b];
+            l_fit[count] = nl[b];
+            count++;
+        }
+        if (status == NSPD_OK && count >= 3) {
+            double au, bu, al, bl;
+            fit_line(s_fit, u_fit, count, &au, &bu);
+            fit_line(s_fit, l_fit, count, &al, &bl);
+            out->branched = true;
+            out->samples = count;
+            out->upper_deg = atan(bu) * 180.0 / M_PI;
+            out->lower_deg = atan(bl) * 180.0 / M_PI;
+            out->angle_deg = out->upper_deg - out->lower_deg;
+            double s_meet = bu != bl ? (al - au) / (bu - bl) : 0.0, n_meet = au + bu * s_meet;
+            out->point[0] = c->at[0] + s_meet * dir[0] + n_meet * perp[0];
+            out->point[1] = c->at[1] + s_meet * dir[1] + n_meet * perp[1];
+        }
+        nspd_free(&s_fit);
+        nspd_free(&u_fit);
+        nspd_free(&l_fit);
+    }
+    nspd_free(&pts);
+    nspd_free(&su);
+    nspd_free(&nu);
+    nspd_free(&nl);
+    nspd_free(&clusters);
+    return status;
+}

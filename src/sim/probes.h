@@ -44,6 +44,26 @@ int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
                        const double *damage, FlowSolver *flow, double time, const char *dir,
                        int index);
 
+/* Crack branching ahead of probe->at along probe->direction, measured on the
+ * damage field (PROBE_BRANCHES). Points with damage above the threshold and
+ * s = (x - at).direction > 0 are binned by s in bins of one spacing; in each
+ * bin the damaged points split into clusters across the direction wherever
+ * neighbours are more than two spacings apart. The crack has branched where
+ * three successive bins hold two or more clusters; from there on, lines
+ * n = a + b s are fitted by least squares to the outermost cluster centroids
+ * on each side, and the branch angle is the angle between them. Reference
+ * positions are used (the crack path, not its opening). */
+typedef struct {
+    bool branched;
+    double angle_deg;            /* between the two branches */
+    double upper_deg, lower_deg; /* each branch against `direction` (+ to its left) */
+    double point[2];             /* where the two fitted lines meet, m */
+    int samples;                 /* bins used in the fits */
+} BranchResult;
+
+int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damage,
+                   BranchResult *out);
+
 /* Crack speed from the tip history: (s_end - s_start) / (t_end - t_start)
  * where t_start is the last sample before the tip first advanced and t_end
  * the first sample at which it reached its final position; 0 if it never

@@ -79,16 +79,48 @@ static int create_flow(Sim *sim) {
     return NSPD_OK;
 }
 
+/* Fixed immersed bodies of a flow case. */
+static int create_bodies(Sim *sim) {
+    const IbmBodySet *set = &sim->cfg.flow.bodies;
+    if (set->count == 0) return NSPD_OK;
+    TRY(nspd_alloc(&sim->bodies, (size_t)set->count, sizeof(IbmPolyline)));
+    sim->body_count = set->count;
+    for (int b = 0; b < set->count; b++) TRY(ibm_body_markers(&set->bodies[b], &sim->bodies[b]));
+    TRY(ibm_create(&sim->ibm, flow_solver_grid(sim->flow), sim->bodies, sim->body_count));
+    TRY(ibm_attach(sim->ibm, sim->flow));
+    if (sim->cfg.flow.soft_start > 0) ibm_soft_start(sim->ibm, sim->flow, sim->cfg.flow.soft_start);
+    TRY(ibm_surface_reserve(sim->ibm, &sim->surface));
+    TRY(nspd_alloc(&sim->coef_sum, (size_t)sim->body_count * 6, sizeof(double)));
+    sim->stable_dt = flow_solver_stable_dt(sim->flow);
+    return NSPD_OK;
+}
+
+/* The coupling: the solid's surface becomes the flow's immersed boundary.
+ * The solid sub-steps; its stable step was computed by create_solid. */
+static int create_coupling(Sim *sim) {
+    TRY(fsi_create(&sim->fsi, &sim->cfg.coupling, &sim->solid, sim->flow));
+    sim->has_fsi = true;
+    sim->body_count = sim->fsi.loop_count;
+    TRY(nspd_alloc(&sim->coef_sum, (size_t)sim->body_count * 6, sizeof(double)));
+    return NSPD_OK;
+}
+
 int sim_create(Sim *sim, SimConfig *cfg) {
     memset(sim, 0, sizeof *sim);
     sim->cfg = *cfg;
     memset(cfg, 0, sizeof *cfg);
     int status = NSPD_OK;
-    if (sim->cfg.has_solid && sim->cfg.has_flow)
-        status = NSPD_FAIL(NSPD_ERR_INPUT, "a case with both a solid and a flow needs the "
-                                           "coupling, which this version does not have yet");
-    if (status == NSPD_OK && sim->cfg.has_solid) status = create_solid(sim);
+    if (sim->cfg.has_solid) status = create_solid(sim);
+    double pd_dt = sim->dt, pd_stable = sim->stable_dt;
     if (status == NSPD_OK && sim->cfg.has_flow) status = create_flow(sim);
+    if (status == NSPD_OK && sim->has_flow) status = create_bodies(sim);
+    if (status == NSPD_OK && sim->cfg.has_coupling) {
+        status = create_coupling(sim);
+        /* the flow sets the pace; the solid sub-steps within each flow step */
+        sim->solid_substep = sim->cfg.dt_given ? pd_dt : sim->cfg.safety_factor * pd_stable;
+        sim->solid_stable_dt = pd_stable;
+        sim->steps = (int64_t)ceil(sim->cfg.end_time / flow_solver_stable_dt(sim->flow) - 1e-9);
+    }
     if (status == NSPD_OK) {
         int max_samples = (int)(sim->cfg.end_time / sim->cfg.output.history_interval) + 4;
         status = probes_create(&sim->probes, &sim->cfg.output, sim->has_solid ? &sim->solid : NULL,
@@ -100,6 +132,12 @@ int sim_create(Sim *sim, SimConfig *cfg) {
 
 void sim_destroy(Sim *sim) {
     probes_destroy(&sim->probes, sim->cfg.output.probe_count);
+    if (sim->has_fsi) fsi_destroy(&sim->fsi);
+    ibm_destroy(&sim->ibm);
+    ibm_surface_free(&sim->surface);
+    for (int b = 0; b < sim->body_count && sim->bodies; b++) ibm_polyline_free(&sim->bodies[b]);
+    nspd_free(&sim->bodies);
+    nspd_free(&sim->coef_sum);
     if (sim->has_solid) pd_body_destroy(&sim->solid);
     flow_solver_destroy(&sim->flow);
     nspd_free(&sim->damage);
@@ -114,20 +152,48 @@ void sim_destroy(Sim *sim) {
 
 /* True once the run has reached its end (to a fraction of a step). */
 static bool finished(const Sim *sim) {
-    if (sim->has_solid) return sim->step >= sim->steps;
+    if (sim->has_solid && !sim->has_flow) return sim->step >= sim->steps;
     return sim->time >= sim->cfg.end_time * (1.0 - 1e-12);
+}
+
+/* One coupled step: interface, flow, loads, solid sub-steps (timed apart). */
+static int coupled_step(Sim *sim) {
+    double t0 = nspd_wall_time();
+    TRY(fsi_move_interface(&sim->fsi, &sim->solid, sim->flow));
+    double dt = sim->cfg.dt_given ? sim->cfg.dt : flow_solver_stable_dt(sim->flow);
+    double left = sim->cfg.end_time - sim->time;
+    if (dt > left) dt = left;
+    double t1 = nspd_wall_time();
+    TRY(flow_solver_step(sim->flow, dt));
+    sim->dt = dt;
+    sim->time = flow_solver_time(sim->flow);
+    double t2 = nspd_wall_time();
+    TRY(fsi_apply_loads(&sim->fsi, &sim->solid, sim->flow));
+    double t3 = nspd_wall_time();
+    TRY(fsi_advance_solid(&sim->fsi, &sim->solid, dt, sim->solid_substep, sim->time));
+    double t4 = nspd_wall_time();
+    sim->part_s[SIM_PART_COUPLING] += (t1 - t0) + (t3 - t2);
+    sim->part_s[SIM_PART_FLOW] += t2 - t1;
+    sim->part_s[SIM_PART_SOLID] += t4 - t3;
+    return NSPD_OK;
 }
 
 /* One step of the whole case. */
 static int sim_step(Sim *sim) {
-    if (sim->has_solid) {
+    if (sim->has_fsi) {
+        TRY(coupled_step(sim));
+    } else if (sim->has_solid) {
+        double t0 = nspd_wall_time();
         TRY(pd_step(&sim->solid, sim->dt));
+        sim->part_s[SIM_PART_SOLID] += nspd_wall_time() - t0;
         sim->time = sim->solid.time;
     } else {
+        double t0 = nspd_wall_time();
         double dt = sim->cfg.dt_given ? sim->cfg.dt : flow_solver_stable_dt(sim->flow);
         double left = sim->cfg.end_time - sim->time;
         if (dt > left) dt = left; /* land on the end time */
         TRY(flow_solver_step(sim->flow, dt));
+        sim->part_s[SIM_PART_FLOW] += nspd_wall_time() - t0;
         sim->dt = dt;
         sim->time = flow_solver_time(sim->flow);
     }

@@ -4,9 +4,11 @@
 
 #include <string.h>
 
-const char *const PROBE_KIND_NAMES[PROBE_KIND_COUNT + 1] = {"crack_tip", "point", "line", NULL};
+const char *const PROBE_KIND_NAMES[PROBE_KIND_COUNT + 1] = {"crack_tip", "point", "line",
+                                                            "branches", NULL};
 
 void flow_case_config_free(FlowCaseConfig *flow) {
+    ibm_body_set_free(&flow->bodies);
     for (int i = 0; i < flow->region_count; i++) shapeset_free(&flow->regions[i].shapes);
     nspd_free(&flow->regions);
     flow->region_count = 0;

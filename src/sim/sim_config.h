@@ -5,6 +5,8 @@
 #define NSPD_SIM_SIM_CONFIG_H
 
 #include "core/shape.h"
+#include "couple/fsi.h"
+#include "couple/ibm_body.h"
 #include "flow/flow_solver.h"
 #include "solid/pd_config.h"
 
@@ -23,9 +25,17 @@ typedef struct {
     bool has_free_stream;
     FlowPrim free_stream;
     double reference_length; /* m; 0 if not given */
+    IbmBodySet bodies;       /* fixed immersed bodies (flow.bodies) */
+    double soft_start;       /* m: ibm_soft_start length for the bodies (0: none) */
 } FlowCaseConfig;
 
-typedef enum { PROBE_CRACK_TIP, PROBE_POINT, PROBE_LINE, PROBE_KIND_COUNT } ProbeKind;
+typedef enum {
+    PROBE_CRACK_TIP,
+    PROBE_POINT,
+    PROBE_LINE,
+    PROBE_BRANCHES,
+    PROBE_KIND_COUNT
+} ProbeKind;
 extern const char *const PROBE_KIND_NAMES[PROBE_KIND_COUNT + 1];
 
 enum { SIM_MAX_NAME = 64 };
@@ -37,7 +47,8 @@ typedef struct {
     ProbeTarget target; /* point and line probes: the solid's points or the flow's cells */
     char name[SIM_MAX_NAME];
     /* crack_tip: the damaged point (damage > threshold) furthest along
-     * `direction`, optionally only inside `region` */
+     * `direction`, optionally only inside `region`; branches: the damaged
+     * points ahead of `at` along `direction` (sim/probes.c) */
     double direction[3];
     double damage_threshold;
     /* point: the material point nearest to `at` (reference configuration),
@@ -51,6 +62,7 @@ typedef struct {
 
 typedef struct {
     double field_interval;   /* s between VTK/PNG outputs */
+    double average_from;     /* s: force coefficients are averaged from this time on */
     double history_interval; /* s between history.csv rows */
     bool vtk, png;
     int png_max_pixels; /* longest side of a PNG */
@@ -68,6 +80,8 @@ typedef struct {
     PdConfig solid;
     bool has_flow;
     FlowCaseConfig flow;
+    bool has_coupling; /* solid and flow coupled through the solid's surface */
+    FsiConfig coupling;
     OutputConfig output;
 } SimConfig;
 

@@ -15,6 +15,68 @@ static void path_in(const Sim *sim, char *buf, size_t size, const char *name) {
     snprintf(buf, size, "%s/%s", sim->dir, name);
 }
 
+/* ------------------------------------------------------------ immersed bodies */
+
+static const Ibm *sim_ibm(const Sim *sim) {
+    return sim->has_fsi ? sim->fsi.ibm : sim->ibm;
+}
+
+/* The reference of the force coefficients: the free stream, else the
+ * initial state; the reference length, else 1 m. */
+static IbmReference reference(const Sim *sim) {
+    if (sim->has_fsi) return sim->cfg.coupling.reference;
+    const FlowCaseConfig *f = &sim->cfg.flow;
+    const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
+    return (IbmReference){
+        q->rho, q->u, q->v, q->p, f->reference_length > 0 ? f->reference_length : 1.0, q->p};
+}
+
+/* Surface loads of the current state (computed here). */
+static int surface_loads(Sim *sim, const IbmSurface **out) {
+    IbmSurface *s = sim->has_fsi ? &sim->fsi.loads : &sim->surface;
+    IbmReference ref = reference(sim);
+    TRY(ibm_surface_compute(sim_ibm(sim), sim->flow, &ref, s));
+    *out = s;
+    return NSPD_OK;
+}
+
+/* "" for the first body, "<name>_" for the others. */
+static void body_prefix(const Sim *sim, int b, char *buf, size_t size) {
+    if (b == 0)
+        buf[0] = '\0';
+    else if (sim->has_fsi)
+        snprintf(buf, size, "loop%d_", b);
+    else
+        snprintf(buf, size, "%s_", sim->cfg.flow.bodies.bodies[b].name);
+}
+
+static const char *const COEF_NAMES[6] = {"cd",         "cl",          "cd_pressure",
+                                          "cd_viscous", "cl_pressure", "cl_viscous"};
+
+static void coefficients(const IbmBodyForces *f, double c[6]) {
+    c[0] = f->cd;
+    c[1] = f->cl;
+    c[2] = f->cd_pressure;
+    c[3] = f->cd_viscous;
+    c[4] = f->cl_pressure;
+    c[5] = f->cl_viscous;
+}
+
+/* surface_NNNNN.csv: per segment of every body. */
+static int write_surface(Sim *sim, const IbmSurface *s) {
+    char name[64], path[4096];
+    snprintf(name, sizeof name, "surface_%05d.csv", sim->field_index);
+    path_in(sim, path, sizeof path, name);
+    FILE *f = fopen(path, "w");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    fprintf(f, "# t = %.9g s\nbody,arc_m,x_m,y_m,cp,cf,p_Pa,tau_Pa\n", sim->time);
+    for (int k = 0; k < s->n; k++)
+        fprintf(f, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s->body[k], s->arc[k], s->x[k],
+                s->y[k], s->cp[k], s->cf[k], s->p[k], s->tau[k]);
+    if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+    return NSPD_OK;
+}
+
 int sim_output_open(Sim *sim) {
     if (!sim->dir) return NSPD_OK;
     char path[4096];
@@ -27,6 +89,13 @@ int sim_output_open(Sim *sim) {
     if (sim->has_flow)
         fprintf(sim->history, ",dt_s,mass_kg_per_m,momentum_x_kg_per_s,momentum_y_kg_per_s,"
                               "energy_J_per_m,fallbacks");
+    for (int b = 0; b < (sim_ibm(sim) ? sim->body_count : 0); b++) {
+        char prefix[128];
+        body_prefix(sim, b, prefix, sizeof prefix);
+        for (int k = 0; k < 6; k++) fprintf(sim->history, ",%s%s", prefix, COEF_NAMES[k]);
+        fprintf(sim->history, ",%scp_stagnation", prefix);
+    }
+    if (sim->has_fsi) fprintf(sim->history, ",force_x_N_per_m,force_y_N_per_m,substeps");
     probes_write_header(sim->probes, sim->cfg.output.probe_count,
                         sim->has_solid ? sim->solid.dim : 2, sim->history);
     fputc('\n', sim->history);
@@ -51,6 +120,24 @@ int sim_output_history(Sim *sim) {
                     totals[1], totals[2], totals[3],
                     (long long)flow_solver_fallbacks_last(sim->flow));
         }
+    }
+    if (sim_ibm(sim)) {
+        const IbmSurface *s;
+        TRY(surface_loads(sim, &s));
+        bool averaging = sim->time >= sim->cfg.output.average_from - 1e-12 * sim->cfg.end_time;
+        for (int k_body = 0; k_body < sim->body_count; k_body++) {
+            double co[6];
+            coefficients(&s->forces[k_body], co);
+            for (int k = 0; k < 6; k++) {
+                if (csv) fprintf(csv, ",%.9g", co[k]);
+                if (averaging) sim->coef_sum[6 * k_body + k] += co[k];
+            }
+            if (csv) fprintf(csv, ",%.9g", s->forces[k_body].cp_stagnation);
+        }
+        if (averaging) sim->coef_samples++;
+        if (csv && sim->has_fsi)
+            fprintf(csv, ",%.9g,%.9g,%lld", sim->fsi.force_on_solid[0], sim->fsi.force_on_solid[1],
+                    (long long)sim->fsi.substeps);
     }
     /* without a directory the probes still keep their own records */
     probes_sample(sim->probes, sim->cfg.output.probe_count, b, need_damage ? sim->damage : NULL,
@@ -86,7 +173,7 @@ static int solid_fields(Sim *sim) {
     if (out->png) {
         snprintf(name, sizeof name, "damage_%05d.png", sim->field_index);
         path_in(sim, path, sizeof path, name);
-        RenderOptions ro = {0.0, 1.0, COLORMAP_VIRIDIS, out->png_max_pixels};
+        RenderOptions ro = {0.0, 1.0, COLORMAP_VIRIDIS, out->png_max_pixels, {0, 0, 0, 0}};
         TRY(render_points_png(path, b->n, (const double *const *)pos, sim->damage, b->spacing,
                               &ro));
     }
@@ -162,19 +249,56 @@ static int flow_fields(Sim *sim) {
             if (!solid[c] && sim->cells[5][c] > mach_max) mach_max = sim->cells[5][c];
         snprintf(name, sizeof name, "mach_%05d.png", sim->field_index);
         path_in(sim, path, sizeof path, name);
-        RenderOptions ro = {0.0, mach_max > 0 ? mach_max : 1.0, COLORMAP_VIRIDIS,
-                            out->png_max_pixels};
+        RenderOptions ro = {0.0,
+                            mach_max > 0 ? mach_max : 1.0,
+                            COLORMAP_VIRIDIS,
+                            out->png_max_pixels,
+                            {0, 0, 0, 0}};
         status = render_grid_png(path, g->nx, g->ny, g->ax[0].face, g->ax[1].face, sim->cells[5],
-                                 solid, &ro);
+                                 solid, &ro, NULL);
+    }
+    if (status == NSPD_OK && out->png && sim->has_fsi) {
+        /* the coupled picture: Mach number with the solid's damage on top */
+        RenderPoints pts = {sim->solid.n,
+                            {sim->position[0], sim->position[1]},
+                            sim->damage,
+                            sim->solid.spacing,
+                            0.0,
+                            1.0,
+                            COLORMAP_INFERNO};
+        snprintf(name, sizeof name, "mach_damage_%05d.png", sim->field_index);
+        path_in(sim, path, sizeof path, name);
+        double mach_max = 0.0;
+        for (int64_t c2 = 0; c2 < ncell; c2++)
+            if (!solid[c2] && sim->cells[5][c2] > mach_max) mach_max = sim->cells[5][c2];
+        RenderOptions ro = {0.0,
+                            mach_max > 0 ? mach_max : 1.0,
+                            COLORMAP_VIRIDIS,
+                            out->png_max_pixels,
+                            {0, 0, 0, 0}};
+        /* the window: the solid's box, enlarged by its own size on each side */
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int64_t i = 0; i < sim->solid.n; i++)
+            for (int d = 0; d < 2; d++) {
+                lo[d] = fmin(lo[d], sim->position[d][i]);
+                hi[d] = fmax(hi[d], sim->position[d][i]);
+            }
+        double size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+        ro.window[0] = lo[0] - size;
+        ro.window[1] = lo[1] - size;
+        ro.window[2] = hi[0] + size;
+        ro.window[3] = hi[1] + size;
+        status = render_grid_png(path, g->nx, g->ny, g->ax[0].face, g->ax[1].face, sim->cells[5],
+                                 solid, &ro, &pts);
     }
     if (status == NSPD_OK && out->png) {
         /* the temperature scratch is free again: reuse it for the schlieren */
         schlieren(g, sim->cells[0], solid, sim->cells[4]);
         snprintf(name, sizeof name, "schlieren_%05d.png", sim->field_index);
         path_in(sim, path, sizeof path, name);
-        RenderOptions ro = {0.0, 1.0, COLORMAP_GRAY, out->png_max_pixels};
+        RenderOptions ro = {0.0, 1.0, COLORMAP_GRAY, out->png_max_pixels, {0, 0, 0, 0}};
         status = render_grid_png(path, g->nx, g->ny, g->ax[0].face, g->ax[1].face, sim->cells[4],
-                                 solid, &ro);
+                                 solid, &ro, NULL);
     }
     nspd_free(&solid);
     nspd_free(&kind);
@@ -186,6 +310,11 @@ int sim_output_fields(Sim *sim) {
     if (sim->has_solid) pd_damage(&sim->solid, sim->damage);
     if (sim->has_solid) TRY(solid_fields(sim));
     if (sim->has_flow) TRY(flow_fields(sim));
+    if (sim_ibm(sim)) {
+        const IbmSurface *s;
+        TRY(surface_loads(sim, &s));
+        TRY(write_surface(sim, s));
+    }
     TRY(probes_write_lines(sim->probes, sim->cfg.output.probe_count,
                            sim->has_solid ? &sim->solid : NULL, sim->damage, sim->flow, sim->time,
                            sim->dir, sim->field_index));
@@ -203,6 +332,8 @@ static void solid_summary(Sim *sim, JsonWriter *w) {
     json_int(w, "points", b->n);
     json_int(w, "bonds", b->bond_count / 2);
     json_int(w, "broken_bonds", pd_broken_bonds(b));
+    json_number(w, "broken_bond_fraction",
+                b->bond_count ? 2.0 * (double)pd_broken_bonds(b) / (double)b->bond_count : 0.0);
     json_number(w, "max_damage", max_damage);
     json_number(w, "kinetic_energy_J", pd_kinetic_energy(b));
     json_number(w, "elastic_energy_J", pd_elastic_energy(b));
@@ -227,6 +358,30 @@ static void flow_summary(Sim *sim, JsonWriter *w) {
     json_number(w, "energy_J_per_m", totals[3]);
 }
 
+/* Time-averaged coefficients (history samples from output.average_from on)
+ * and the last surface state's stagnation Cp and separation point. */
+static void bodies_summary(Sim *sim, JsonWriter *w) {
+    const IbmSurface *s;
+    if (surface_loads(sim, &s) != NSPD_OK) return;
+    json_int(w, "coefficient_samples", sim->coef_samples);
+    for (int b = 0; b < sim->body_count; b++) {
+        char prefix[128], key[256];
+        body_prefix(sim, b, prefix, sizeof prefix);
+        for (int k = 0; k < 6; k++) {
+            snprintf(key, sizeof key, "%s%s", prefix, COEF_NAMES[k]);
+            json_number(w, key,
+                        sim->coef_samples ? sim->coef_sum[6 * b + k] / (double)sim->coef_samples
+                                          : (double)NAN);
+        }
+        snprintf(key, sizeof key, "%scp_stagnation", prefix);
+        json_number(w, key, s->forces[b].cp_stagnation);
+        if (!isnan(s->forces[b].x_separation_over_c)) { /* absent while attached */
+            snprintf(key, sizeof key, "%sx_separation_over_c", prefix);
+            json_number(w, key, s->forces[b].x_separation_over_c);
+        }
+    }
+}
+
 int sim_output_summary(Sim *sim, int run_status) {
     if (!sim->dir) return NSPD_OK;
     char path[4096];
@@ -239,12 +394,28 @@ int sim_output_summary(Sim *sim, int run_status) {
     json_number(&w, "time_s", sim->time);
     json_int(&w, "steps", sim->step);
     json_number(&w, "wall_s", sim->wall_s);
+    if (sim->has_flow) json_number(&w, "flow_s", sim->part_s[SIM_PART_FLOW]);
+    if (sim->has_solid) json_number(&w, "solid_s", sim->part_s[SIM_PART_SOLID]);
+    if (sim->has_fsi) json_number(&w, "coupling_s", sim->part_s[SIM_PART_COUPLING]);
     json_int(&w, "threads", omp_get_max_threads());
     json_bool(&w, "completed", run_status == NSPD_OK && !sim->interrupted);
     json_bool(&w, "interrupted", sim->interrupted);
     if (sim->has_solid) solid_summary(sim, &w);
     if (sim->has_flow) flow_summary(sim, &w);
+    if (sim_ibm(sim)) bodies_summary(sim, &w);
     json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
+    for (int k = 0; k < sim->cfg.output.probe_count && sim->has_solid; k++) {
+        const ProbeState *p = &sim->probes[k];
+        if (p->cfg->kind != PROBE_BRANCHES) continue;
+        BranchResult br;
+        if (probe_branches(p->cfg, &sim->solid, sim->damage, &br) != NSPD_OK) continue;
+        json_bool(&w, "branched", br.branched);
+        json_number(&w, "branch_angle_deg", br.angle_deg);
+        json_number(&w, "branch_upper_deg", br.upper_deg);
+        json_number(&w, "branch_lower_deg", br.lower_deg);
+        json_number(&w, "branch_point_x_m", br.point[0]);
+        json_number(&w, "branch_point_y_m", br.point[1]);
+    }
     for (int k = 0; k < sim->cfg.output.probe_count; k++) {
         const ProbeState *p = &sim->probes[k];
         if (p->cfg->kind != PROBE_CRACK_TIP) continue;

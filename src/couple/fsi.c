@@ -1,0 +1,116 @@
+#include "couple/fsi.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "solid/pd_integrate.h"
+
+#include <math.h>
+#include <string.h>
+
+const char *const FSI_HOLD_NAMES[FSI_HOLD_COUNT + 1] = {"none", "balance", NULL};
+
+/* Copies the surface points' current positions and velocities into the
+ * markers of the polylines. */
+static void markers_from_points(Fsi *f, const PdBody *body) {
+    pd_surface_positions(body, &f->surface, f->mx, f->my, f->mvx, f->mvy);
+}
+
+int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flow) {
+    memset(f, 0, sizeof *f);
+    f->cfg = *cfg;
+    int status = pd_surface_trace(body, &f->surface);
+    if (status == NSPD_OK && f->surface.loop_count == 0)
+        status = NSPD_FAIL(NSPD_ERR_INPUT, "the solid has no surface loop to couple to the flow");
+    size_t n = (size_t)f->surface.length;
+    if (status == NSPD_OK) status = nspd_alloc(&f->mx, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&f->my, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&f->mvx, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&f->mvy, n, sizeof(double));
+    if (status == NSPD_OK)
+        status = nspd_alloc(&f->polylines, (size_t)f->surface.loop_count, sizeof(IbmPolyline));
+    if (status != NSPD_OK) {
+        fsi_destroy(f);
+        return status;
+    }
+    f->loop_count = f->surface.loop_count;
+    for (int k = 0; k < f->loop_count; k++) {
+        int64_t lo = f->surface.loop_start[k];
+        IbmPolyline *p = &f->polylines[k];
+        p->n = (int)(f->surface.loop_start[k + 1] - lo);
+        p->x = f->mx + lo;
+        p->y = f->my + lo;
+        p->vx = f->mvx + lo;
+        p->vy = f->mvy + lo;
+        p->thermal = cfg->thermal;
+        p->wall_temperature = cfg->wall_temperature;
+        p->leading_edge = p->trailing_edge = -1;
+    }
+    markers_from_points(f, body);
+    status = ibm_create(&f->ibm, flow_solver_grid(flow), f->polylines, f->loop_count);
+    if (status == NSPD_OK) status = ibm_attach(f->ibm, flow);
+    if (status == NSPD_OK && cfg->soft_start > 0) ibm_soft_start(f->ibm, flow, cfg->soft_start);
+    if (status == NSPD_OK) status = ibm_surface_reserve(f->ibm, &f->loads);
+    if (status != NSPD_OK) fsi_destroy(f);
+    return status;
+}
+
+void fsi_destroy(Fsi *f) {
+    ibm_destroy(&f->ibm);
+    ibm_surface_free(&f->loads);
+    pd_surface_free(&f->surface);
+    nspd_free(&f->polylines);
+    nspd_free(&f->mx);
+    nspd_free(&f->my);
+    nspd_free(&f->mvx);
+    nspd_free(&f->mvy);
+    memset(f, 0, sizeof *f);
+}
+
+int fsi_move_interface(Fsi *f, const PdBody *body, FlowSolver *flow) {
+    markers_from_points(f, body);
+    return ibm_update(f->ibm, f->polylines, f->loop_count, flow);
+}
+
+int fsi_apply_loads(Fsi *f, PdBody *body, FlowSolver *flow) {
+    TRY(ibm_surface_compute(f->ibm, flow, &f->cfg.reference, &f->loads));
+    /* Parts of the solid outside the flow's box (the panel's clamp below the
+     * floor) have no fluid on them: no load. */
+    const Grid *g = flow_solver_grid(flow);
+    for (int k = 0; k < f->loads.n; k++)
+        if (f->loads.x[k] < g->ax[0].lo || f->loads.x[k] > g->ax[0].hi ||
+            f->loads.y[k] < g->ax[1].lo || f->loads.y[k] > g->ax[1].hi)
+            f->loads.fx[k] = f->loads.fy[k] = 0.0;
+    /* a non-finite load would silently wreck the solid: stop and say where */
+    for (int k = 0; k < f->loads.n; k++)
+        if (!isfinite(f->loads.fx[k]) || !isfinite(f->loads.fy[k]))
+            return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                             "the flow's load on the solid surface is not finite at (%g, %g) m "
+                             "(wall pressure %g Pa, shear %g Pa) at t = %g s: the surface has "
+                             "probably folded or fragmented beyond what the immersed boundary "
+                             "resolves",
+                             f->loads.x[k], f->loads.y[k], f->loads.p[k], f->loads.tau[k],
+                             flow_solver_time(flow));
+    for (int d = 0; d < body->dim; d++)
+        memset(body->external[d], 0, (size_t)body->n * sizeof(double));
+    /* the segments of the immersed boundary are the surface's, in order */
+    pd_surface_apply_tractions(body, &f->surface, f->loads.fx, f->loads.fy, f->force_on_solid);
+    if (f->cfg.hold == FSI_HOLD_BALANCE) {
+        double volume = 0.0; /* per unit depth */
+        for (int64_t i = 0; i < body->n; i++) volume += body->volume[i] / body->cfg.thickness;
+        for (int d = 0; d < 2; d++) {
+            double b = -f->force_on_solid[d] / volume;
+            for (int64_t i = 0; i < body->n; i++) body->external[d][i] += b;
+        }
+    }
+    return NSPD_OK;
+}
+
+int fsi_advance_solid(Fsi *f, PdBody *body, double dt, double max_substep, double end_time) {
+    int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
+    if (n < 1) n = 1;
+    double h = dt / (double)n;
+    for (int64_t k = 0; k < n; k++) TRY(pd_step(body, h));
+    body->time = end_time; /* the same clock as the flow, not a sum of n rounded steps */
+    f->substeps = n;
+    return NSPD_OK;
+}

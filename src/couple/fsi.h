@@ -1,0 +1,91 @@
+/* Two-way coupling of the GKS flow and a 2D PD solid through the ghost-cell
+ * immersed boundary (paper 000 Sec. 3.3.4 and Fig. 3).
+ *
+ * The interface is the solid's own surface (solid/pd_surface.h): one closed
+ * polyline per surface loop, whose markers are the surface points at their
+ * current positions and whose wall velocities are the points' velocities.
+ * Per fluid step (sim/sim.c):
+ *   1. fsi_move_interface: markers <- points; ibm_update re-tags the cells
+ *      near the moved walls, fills the cells the solid uncovered ("fresh"
+ *      cells, by interpolation from fluid neighbours) and rebuilds the ghost
+ *      stencils that changed;
+ *   2. the flow step (the ghost hook imposes no-slip at the wall velocity);
+ *   3. fsi_apply_loads: pressure (minus the ambient pressure the solid was
+ *      built in) and viscous traction per segment, from the flow just
+ *      computed, become force densities on the surface points
+ *      (pd_surface_apply_tractions: traction x segment length x thickness /
+ *      point volume, half to each end);
+ *   4. the PD sub-steps: n = ceil(dt_fluid / dt_pd) steps of dt_fluid / n,
+ *      with the load held over the sub-steps (the flow state it comes from
+ *      is the one at the end of the fluid step: a first-order, explicit,
+ *      loosely coupled scheme, as in the paper), so both clocks end on the
+ *      same time.
+ * The force the solid receives equals the force the surface integration
+ * takes from the fluid, to round-off (tested).
+ *
+ * Holding a body in place (hold: balance): a free body accelerates under the
+ * net fluid force F; adding the uniform force density -F / (sum of the point
+ * volumes / thickness) to every point is the d'Alembert load of that
+ * acceleration, so the internal stresses are those of the free body, while
+ * the body does not translate (its rotation is not removed). The gas keeps
+ * the free-stream velocity relative to the body, as in a wind tunnel.
+ *
+ * Cracks: the loops are traced once on the reference lattice, so a crack that
+ * reaches the surface stays closed to the flow - the polyline bridges its
+ * mouth. This keeps the grid consistent however far the crack opens
+ * (documented limitation; tests/verify/fsi_*). */
+#ifndef NSPD_COUPLE_FSI_H
+#define NSPD_COUPLE_FSI_H
+
+#include "couple/ibm.h"
+#include "couple/ibm_surface.h"
+#include "flow/flow_solver.h"
+#include "solid/pd_body.h"
+#include "solid/pd_surface.h"
+
+typedef enum {
+    FSI_HOLD_NONE = 0, /* the solid moves freely under the fluid's load */
+    FSI_HOLD_BALANCE,  /* a uniform body force cancels the net fluid force */
+    FSI_HOLD_COUNT
+} FsiHold;
+
+extern const char *const FSI_HOLD_NAMES[FSI_HOLD_COUNT + 1];
+
+typedef struct {
+    int hold;                /* FsiHold */
+    int thermal;             /* IbmWallThermal of the solid's surface */
+    double wall_temperature; /* K, isothermal walls */
+    double soft_start;       /* m: ibm_soft_start length at t = 0 (0: none) */
+    IbmReference reference;  /* free stream and the ambient pressure of the tractions */
+} FsiConfig;
+
+typedef struct {
+    FsiConfig cfg;
+    PdSurface surface;
+    int loop_count;
+    IbmPolyline *polylines; /* one per surface loop; markers point into the arrays below */
+    double *mx, *my, *mvx, *mvy;
+    Ibm *ibm;
+    IbmSurface loads;
+    double force_on_solid[2]; /* N per m of depth, from the last fsi_apply_loads */
+    int64_t substeps;         /* PD sub-steps in the last coupled step */
+} Fsi;
+
+/* Traces the solid's surface, builds the immersed boundary on the flow's
+ * grid from it and attaches it to the solver (cell kinds, ghost hook,
+ * optional soft start). The body must be 2D and lie inside the grid.
+ * NSPD_ERR_INPUT for a 3D body or an interface the immersed boundary refuses. */
+int fsi_create(Fsi *fsi, const FsiConfig *cfg, const PdBody *body, FlowSolver *flow);
+void fsi_destroy(Fsi *fsi);
+
+/* Step 1 above. */
+int fsi_move_interface(Fsi *fsi, const PdBody *body, FlowSolver *flow);
+
+/* Step 3 above: replaces body->external with the fluid's tractions. */
+int fsi_apply_loads(Fsi *fsi, PdBody *body, FlowSolver *flow);
+
+/* Step 4 above: advances the solid by dt in sub-steps no longer than
+ * `max_substep`; the solid's clock ends exactly on end_time. */
+int fsi_advance_solid(Fsi *fsi, PdBody *body, double dt, double max_substep, double end_time);
+
+#endif

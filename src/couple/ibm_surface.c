@@ -1,0 +1,203 @@
+/* Surface loads (see ibm_surface.h for the formulas).
+ *
+ * Why probes and not the ghost values: a ghost value is an extrapolation
+ * into the solid that also serves the flux; the wall quantities are
+ * better read on the fluid side. Two probes along the normal give the
+ * one-sided second-order estimates of p_w (with dp/dn = 0) and du_t/dn (with
+ * u = u_w at the wall); the first probe sits one cell out, where its
+ * stencil still leans on the wall rows, so the estimate uses the boundary
+ * condition twice: in the interpolation and in the one-sided formula. */
+#include "couple/ibm_surface.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/status.h"
+#include "couple/ibm_internal.h"
+#include "flow/gks_kernel.h"
+
+#include <math.h>
+#include <string.h>
+
+int ibm_surface_reserve(const Ibm *ibm, IbmSurface *o) {
+    const int n = ibm->nm;
+    if (n > o->cap) {
+        const size_t a = (size_t)o->cap, c = (size_t)n;
+        TRY(nspd_realloc(&o->body, a, c, sizeof(int)));
+        double **arrays[] = {&o->arc, &o->x,   &o->y,  &o->nx, &o->ny, &o->ds,
+                             &o->p,   &o->tau, &o->fx, &o->fy, &o->cp, &o->cf};
+        for (size_t q = 0; q < sizeof arrays / sizeof arrays[0]; q++)
+            TRY(nspd_realloc(arrays[q], a, c, sizeof(double)));
+        TRY(nspd_realloc(&o->upper, a, c, 1));
+        o->cap = n;
+    }
+    if (ibm->body_count > o->body_count) {
+        TRY(nspd_realloc(&o->forces, (size_t)o->body_count, (size_t)ibm->body_count,
+                         sizeof(IbmBodyForces)));
+        o->body_count = ibm->body_count;
+    }
+    o->n = n;
+    return NSPD_OK;
+}
+
+void ibm_surface_free(IbmSurface *o) {
+    nspd_free(&o->body);
+    double **arrays[] = {&o->arc, &o->x,   &o->y,  &o->nx, &o->ny, &o->ds,
+                         &o->p,   &o->tau, &o->fx, &o->fy, &o->cp, &o->cf};
+    for (size_t q = 0; q < sizeof arrays / sizeof arrays[0]; q++) nspd_free(arrays[q]);
+    nspd_free(&o->upper);
+    nspd_free(&o->forces);
+    memset(o, 0, sizeof *o);
+}
+
+/* Leading and trailing edge markers (global) of body b. */
+static void edges(const Ibm *ibm, int b, double ex, double ey, int *le, int *te) {
+    *le = ibm->le[b];
+    *te = ibm->te[b];
+    if (*le >= 0 && *te >= 0) return;
+    const int f = ibm->first[b], n = ibm->count[b];
+    int lo = f, hi = f;
+    for (int k = f; k < f + n; k++) {
+        const double a = ibm->mx[k] * ex + ibm->my[k] * ey;
+        if (a < ibm->mx[lo] * ex + ibm->my[lo] * ey) lo = k;
+        if (a > ibm->mx[hi] * ex + ibm->my[hi] * ey) hi = k;
+    }
+    if (*le < 0) *le = lo;
+    if (*te < 0) *te = hi;
+}
+
+int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, IbmSurface *o) {
+    if (o->cap < ibm->nm || o->body_count < ibm->body_count)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "immersed boundary: surface arrays not reserved for %d segments", ibm->nm);
+    o->n = ibm->nm;
+    FlowFields f = flow_solver_fields(s);
+    const GksParams *gas = flow_solver_gas(s);
+    const double gm1 = gas->gamma - 1.0, R = gas->R;
+    double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
+    const double U2 = ref->u * ref->u + ref->v * ref->v, Um = sqrt(U2);
+    const double q = 0.5 * ref->rho * U2, iq = q > 0.0 ? 1.0 / q : 0.0;
+    const double ex = Um > 0.0 ? ref->u / Um : 1.0, ey = Um > 0.0 ? ref->v / Um : 0.0;
+    const IbmStencilSet *P = &ibm->probes;
+
+    for (int b = 0; b < ibm->body_count; b++) {
+        int le, te;
+        edges(ibm, b, ex, ey, &le, &te);
+        const int fb = ibm->first[b], n = ibm->count[b];
+        const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
+        const double Tw = ibm->wall_t[b];
+        const int span = ((le - te) % n + n) % n; /* upper segments from te */
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+        for (int k = 0; k < n; k++) {
+            const int sg = fb + k, e = ibm->seg_end[sg];
+            const double ax = ibm->mx[sg], ay = ibm->my[sg], bx = ibm->mx[e], by = ibm->my[e];
+            const double ds = hypot(bx - ax, by - ay);
+            const double tx = (bx - ax) / ds, ty = (by - ay) / ds, nx = ty, ny = -tx;
+            const IbmPrim q1 = ibm_stencil_eval(ibm, P, 2 * sg, w, gm1, R, iso, Tw);
+            const IbmPrim q2 = ibm_stencil_eval(ibm, P, 2 * sg + 1, w, gm1, R, iso, Tw);
+            const double d = P->ratio[2 * sg];
+            double pw = (4.0 * q1.p - q2.p) / 3.0;
+            if (!(pw > 0.0)) pw = q1.p;
+            double Twall = iso ? Tw : (4.0 * q1.T - q2.T) / 3.0;
+            if (!(Twall > 0.0)) Twall = q1.T;
+            const double uw = 0.5 * (ibm->mvx[sg] + ibm->mvx[e]);
+            const double vw = 0.5 * (ibm->mvy[sg] + ibm->mvy[e]);
+            const double ut1 = (q1.u - uw) * tx + (q1.v - vw) * ty;
+            const double ut2 = (q2.u - uw) * tx + (q2.v - vw) * ty;
+            const double mu = gks_viscosity(gas, Twall, gas->law);
+            const double tau = mu * (4.0 * ut1 - ut2) / (2.0 * d);
+            const int up = ((k - (te - fb)) % n + n) % n < span;
+            o->body[sg] = b;
+            o->x[sg] = 0.5 * (ax + bx);
+            o->y[sg] = 0.5 * (ay + by);
+            o->nx[sg] = nx;
+            o->ny[sg] = ny;
+            o->ds[sg] = ds;
+            o->p[sg] = pw;
+            o->tau[sg] = tau;
+            o->fx[sg] = -(pw - ref->p_ambient) * nx + tau * tx;
+            o->fy[sg] = -(pw - ref->p_ambient) * ny + tau * ty;
+            o->cp[sg] = (pw - ref->p) * iq;
+            o->cf[sg] = (up ? -tau : tau) * iq;
+            o->upper[sg] = (uint8_t)up;
+        }
+        /* sums in marker order */
+        IbmBodyForces *F = &o->forces[b];
+        memset(F, 0, sizeof *F);
+        double arc = 0.0, cpmax = -INFINITY;
+        for (int k = 0; k < n; k++) {
+            const int sg = fb + k;
+            o->arc[sg] = arc + 0.5 * o->ds[sg];
+            arc += o->ds[sg];
+            const double dp = o->p[sg] - ref->p;
+            F->pressure[0] -= dp * o->nx[sg] * o->ds[sg];
+            F->pressure[1] -= dp * o->ny[sg] * o->ds[sg];
+            F->viscous[0] += o->tau[sg] * -o->ny[sg] * o->ds[sg];
+            F->viscous[1] += o->tau[sg] * o->nx[sg] * o->ds[sg];
+            if (o->cp[sg] > cpmax) {
+                cpmax = o->cp[sg];
+                F->stagnation[0] = o->x[sg];
+                F->stagnation[1] = o->y[sg];
+            }
+        }
+        const double L = ref->length > 0.0 ? ref->length : 1.0;
+        const double c = iq / L;
+        F->cd_pressure = (F->pressure[0] * ex + F->pressure[1] * ey) * c;
+        F->cl_pressure = (-F->pressure[0] * ey + F->pressure[1] * ex) * c;
+        F->cd_viscous = (F->viscous[0] * ex + F->viscous[1] * ey) * c;
+        F->cl_viscous = (-F->viscous[0] * ey + F->viscous[1] * ex) * c;
+        F->cd = F->cd_pressure + F->cd_viscous;
+        F->cl = F->cl_pressure + F->cl_viscous;
+        F->cp_stagnation = cpmax;
+        F->leading_edge[0] = ibm->mx[le], F->leading_edge[1] = ibm->my[le];
+        F->trailing_edge[0] = ibm->mx[te], F->trailing_edge[1] = ibm->my[te];
+        F->chord = (ibm->mx[te] - ibm->mx[le]) * ex + (ibm->my[te] - ibm->my[le]) * ey;
+        /* separation: upper side from the leading edge back (segments le-1, le-2, ..., te) */
+        F->x_separation_over_c = NAN;
+        F->separation[0] = F->separation[1] = NAN;
+        int seen_positive = 0, prev = -1;
+        for (int step = 1; step <= span; step++) {
+            const int sg = fb + (((le - fb) - step) % n + n) % n;
+            const double cf = o->cf[sg];
+            if (cf > 0.0) seen_positive = 1;
+            if (seen_positive && cf < 0.0 && prev >= 0) {
+                const double c0 = o->cf[prev], a = c0 / (c0 - cf);
+                const double xs = o->x[prev] + a * (o->x[sg] - o->x[prev]);
+                const double ys = o->y[prev] + a * (o->y[sg] - o->y[prev]);
+                F->separation[0] = xs;
+                F->separation[1] = ys;
+                F->x_separation_over_c =
+                    ((xs - ibm->mx[le]) * ex + (ys - ibm->my[le]) * ey) / F->chord;
+                break;
+            }
+            prev = sg;
+        }
+    }
+    return NSPD_OK;
+}
+
+void ibm_surface_marker_forces(const Ibm *ibm, const IbmSurface *o, int b, double *fx, double *fy) {
+    const int fb = ibm->first[b], n = ibm->count[b];
+    for (int k = 0; k < n; k++) fx[k] = fy[k] = 0.0;
+    for (int k = 0; k < n; k++) {
+        const int sg = fb + k, k1 = (k + 1) % n;
+        const double hx = 0.5 * o->fx[sg] * o->ds[sg], hy = 0.5 * o->fy[sg] * o->ds[sg];
+        fx[k] += hx;
+        fy[k] += hy;
+        fx[k1] += hx;
+        fy[k1] += hy;
+    }
+}
+
+double ibm_cp_stagnation_isentropic(double g, double m) {
+    const double p0 = pow(1.0 + 0.5 * (g - 1.0) * m * m, g / (g - 1.0));
+    return (p0 - 1.0) / (0.5 * g * m * m);
+}
+
+double ibm_cp_stagnation_pitot(double g, double m) {
+    if (m <= 1.0) return ibm_cp_stagnation_isentropic(g, m);
+    const double m2 = m * m;
+    const double a =
+        pow((g + 1.0) * (g + 1.0) * m2 / (4.0 * g * m2 - 2.0 * (g - 1.0)), g / (g - 1.0));
+    const double p02 = a * (1.0 - g + 2.0 * g * m2) / (g + 1.0);
+    return (p02 - 1.0) / (0.5 * g * m2);
+}
