@@ -95,16 +95,31 @@ int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, 
             const IbmPrim q1 = ibm_stencil_eval(ibm, P, 2 * sg, w, gm1, R, iso, Tw);
             const IbmPrim q2 = ibm_stencil_eval(ibm, P, 2 * sg + 1, w, gm1, R, iso, Tw);
             const double d = P->ratio[2 * sg];
-            double pw = (4.0 * q1.p - q2.p) / 3.0;
-            if (!(pw > 0.0)) pw = q1.p;
-            double Twall = iso ? Tw : (4.0 * q1.T - q2.T) / 3.0;
-            if (!(Twall > 0.0)) Twall = q1.T;
+            /* A probe with no fluid cell in reach (it left the grid, or the
+             * normal points into another part of the body: a folded surface,
+             * the bridged mouth of a crack) evaluates to -inf: that segment
+             * is not wetted and carries no load. With only the far probe
+             * dry, the near one gives first-order values. */
+            const int wet1 = isfinite(q1.p) && isfinite(q1.u) && isfinite(q1.v);
+            const int wet2 = isfinite(q2.p) && isfinite(q2.u) && isfinite(q2.v);
+            double pw = ref->p_ambient, tau = 0.0;
             const double uw = 0.5 * (ibm->mvx[sg] + ibm->mvx[e]);
             const double vw = 0.5 * (ibm->mvy[sg] + ibm->mvy[e]);
-            const double ut1 = (q1.u - uw) * tx + (q1.v - vw) * ty;
-            const double ut2 = (q2.u - uw) * tx + (q2.v - vw) * ty;
-            const double mu = gks_viscosity(gas, Twall, gas->law);
-            const double tau = mu * (4.0 * ut1 - ut2) / (2.0 * d);
+            if (wet1) {
+                const double ut1 = (q1.u - uw) * tx + (q1.v - vw) * ty;
+                double Twall = iso ? Tw : q1.T;
+                pw = q1.p;
+                double dudn = ut1 / d;
+                if (wet2) {
+                    pw = (4.0 * q1.p - q2.p) / 3.0;
+                    if (!(pw > 0.0)) pw = q1.p;
+                    if (!iso) Twall = (4.0 * q1.T - q2.T) / 3.0;
+                    if (!(Twall > 0.0)) Twall = q1.T;
+                    const double ut2 = (q2.u - uw) * tx + (q2.v - vw) * ty;
+                    dudn = (4.0 * ut1 - ut2) / (2.0 * d);
+                }
+                tau = gks_viscosity(gas, Twall, gas->law) * dudn;
+            }
             const int up = ((k - (te - fb)) % n + n) % n < span;
             o->body[sg] = b;
             o->x[sg] = 0.5 * (ax + bx);
@@ -116,8 +131,8 @@ int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, 
             o->tau[sg] = tau;
             o->fx[sg] = -(pw - ref->p_ambient) * nx + tau * tx;
             o->fy[sg] = -(pw - ref->p_ambient) * ny + tau * ty;
-            o->cp[sg] = (pw - ref->p) * iq;
-            o->cf[sg] = (up ? -tau : tau) * iq;
+            o->cp[sg] = wet1 ? (pw - ref->p) * iq : (double)NAN;
+            o->cf[sg] = wet1 ? (up ? -tau : tau) * iq : (double)NAN;
             o->upper[sg] = (uint8_t)up;
         }
         /* sums in marker order */
@@ -128,6 +143,7 @@ int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, 
             const int sg = fb + k;
             o->arc[sg] = arc + 0.5 * o->ds[sg];
             arc += o->ds[sg];
+            if (isnan(o->cp[sg])) continue; /* not wetted: no load */
             const double dp = o->p[sg] - ref->p;
             F->pressure[0] -= dp * o->nx[sg] * o->ds[sg];
             F->pressure[1] -= dp * o->ny[sg] * o->ds[sg];
