@@ -29,13 +29,15 @@
 #include <omp.h>
 #include <string.h>
 
-/* Below this many cells (256^2) a step runs on one thread: a parallel region
- * costs microseconds on an idle machine, but when the cores are
- * oversubscribed (`ctest -j2` with OMP_NUM_THREADS=2) a thread waiting at the
- * closing barrier for a descheduled partner costs a scheduler time slice per
- * region: measured 5x-30x slow-downs of the verification tests on 128^2 and
- * 1D grids. Results do not depend on the thread count either way. */
-enum { PARALLEL_MIN_CELLS = 65536 };
+/* Below this many cells (128^2) a step runs on one thread: a parallel region
+ * costs microseconds, more than a small grid's step gains. Measured on the
+ * panel case (59,540 cells): 2 threads run 1.7x faster than 1. On an
+ * oversubscribed machine (`ctest -j2` with OMP_NUM_THREADS=2) a spinning
+ * thread waiting for a descheduled partner costs a scheduler time slice per
+ * region (5x-30x slow-downs were measured with the default wait policy), so
+ * the tests run with OMP_WAIT_POLICY=passive. Results do not depend on the
+ * thread count either way. */
+enum { PARALLEL_MIN_CELLS = 16384 };
 
 const char *const FLOW_LIMITER_NAMES[LIMITER_COUNT + 1] = {"van_leer", "van_albada", "none",
                                                            "first_order", NULL};
