@@ -401,10 +401,12 @@ int case_read_flow(CfgNode *flow, FlowCaseConfig *fc) {
     TRY(cfg_end_map(bcs));
     TRY(read_initial(flow, fc, &sc));
     TRY(case_read_bodies(flow, "bodies", false, &fc->bodies));
-    if (fc->bodies.count > 0) {
-        TRY(cfg_opt_double(flow, "soft_start", 0.0, &fc->soft_start));
-        TRY(cfg_check_range(flow, "soft_start", fc->soft_start, 0.0, 1e30,
-                            "a length >= 0 in m over which the flow starts at the wall velocity"));
-    }
+    TRY(cfg_opt_double(flow, "soft_start", 0.0, &fc->soft_start));
+    TRY(cfg_check_range(flow, "soft_start", fc->soft_start, 0.0, 1e30,
+                        "a length >= 0 in m over which the flow starts at the wall velocity"));
+    if (fc->soft_start > 0 && fc->bodies.count == 0)
+        return cfg_fail_at(flow, "soft_start",
+                           "a soft start without flow.bodies; expected bodies "
+                           "(a coupled solid takes coupling.soft_start)");
     return cfg_end_map(flow);
 }

@@ -158,7 +158,7 @@ void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv
             fprintf(csv, ",%s_rho_kg_per_m3,%s_u_m_per_s,%s_v_m_per_s,%s_p_Pa,%s_T_K", c->name,
                     c->name, c->name, c->name, c->name);
         } else if (c->kind == PROBE_POINT) {
-            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_u%s_m", c->name, AXIS[d]);
+            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_d%s_m", c->name, AXIS[d]);
             for (int d = 0; d < dim; d++) fprintf(csv, ",%s_v%s_m_per_s", c->name, AXIS[d]);
         }
     }
@@ -221,7 +221,13 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
             double q[5];
             flow_cell(flow, p->point, q);
             for (int m = 0; m < 5; m++) fprintf(csv, ",%.9g", q[m]);
-        } else if (c->kind == PROBE_POINT && csv) {
+        } else if (c->kind == PROBE_POINT) {
+            double ux = body->u[0][p->point];
+            if (p->samples++ == 0 || ux > p->dx_max) {
+                p->dx_max = ux;
+                p->t_dx_max = time;
+            }
+            if (!csv) continue;
             for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->u[d][p->point]);
             for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->v[d][p->point]);
         }

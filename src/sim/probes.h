@@ -19,6 +19,8 @@ typedef struct {
     double *times, *along;
     int samples, capacity;
     double last_tip[3];
+    /* PROBE_POINT on the solid: the largest displacement along x and when */
+    double dx_max, t_dx_max;
 } ProbeState;
 
 /* Sets up the probes of `cfg` on the solid and/or flow (either may be

@@ -406,6 +406,15 @@ int sim_output_summary(Sim *sim, int run_status) {
     json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
     for (int k = 0; k < sim->cfg.output.probe_count && sim->has_solid; k++) {
         const ProbeState *p = &sim->probes[k];
+        if (p->cfg->kind != PROBE_POINT || p->cfg->target != PROBE_ON_SOLID) continue;
+        char key[128];
+        snprintf(key, sizeof key, "%s_dx_max_m", p->cfg->name);
+        json_number(&w, key, p->dx_max);
+        snprintf(key, sizeof key, "t_%s_dx_max_s", p->cfg->name);
+        json_number(&w, key, p->t_dx_max);
+    }
+    for (int k = 0; k < sim->cfg.output.probe_count && sim->has_solid; k++) {
+        const ProbeState *p = &sim->probes[k];
         if (p->cfg->kind != PROBE_BRANCHES) continue;
         BranchResult br;
         if (probe_branches(p->cfg, &sim->solid, sim->damage, &br) != NSPD_OK) continue;

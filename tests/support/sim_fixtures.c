@@ -15,3 +15,18 @@ void fixture_sim(const char *case_file, const char *const *overrides, int count,
     assert_ok(sim_create(sim, &cfg));
     cfg_doc_free(&doc);
 }
+
+void fixture_sim_text(const char *yaml, Sim *sim) {
+    const char *dir = test_scratch_dir("fixture_case");
+    char path[1200];
+    snprintf(path, sizeof path, "%s/case.yaml", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(yaml, f);
+    fclose(f);
+    CfgDoc doc;
+    SimConfig cfg;
+    assert_ok(case_read(path, NULL, 0, &doc, &cfg));
+    assert_ok(sim_create(sim, &cfg));
+    cfg_doc_free(&doc);
+}

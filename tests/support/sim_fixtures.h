@@ -8,4 +8,8 @@
  * simulation; fails the test on any error. */
 void fixture_sim(const char *case_file, const char *const *overrides, int count, Sim *sim);
 
+/* Builds a simulation from a case written in the test (YAML text); fails the
+ * test on any error. */
+void fixture_sim_text(const char *yaml, Sim *sim);
+
 #endif
