@@ -71,6 +71,50 @@ awk -F, '$1 >= 0.2 && $1 <= 0.8 { e = $3 * sqrt($2) / 0.664 - 1; if ((e < 0 ? -e
     END { printf "Blasius: Cf/Cf_Blasius - 1 over Re_x 2e4..8e4: worst %+.4f, mean %+.4f (%d cells)\n", w, s / n, n }' \
     "$out/blasius/cf.csv" | tee "$out/blasius.txt"
 
+echo "== cylinder, Ma 2, Re 300 (paper Sec. 4.1.2) at D/128 (D/512 takes about 11 h on 2 cores)"
+h=0.0078125
+"$nspd" run cases/cylinder_ma2_re300.yaml -o "$out/cylinder" --force --quiet \
+    --set "flow.grid.x.segments=[{length: 0.6, spacing_start: 0.08, spacing_end: $h}, {length: 2.2, spacing: $h}, {length: 7.2, spacing_start: $h, spacing_end: 0.5}]" \
+    --set "flow.grid.y.segments=[{length: 4.6, spacing_start: 0.5, spacing_end: $h}, {length: 2.8, spacing: $h}, {length: 4.6, spacing_start: $h, spacing_end: 0.5}]" \
+    --set flow.bodies.0.markers=808
+surf=$(ls "$out/cylinder"/surface_*.csv | tail -1)
+line=$(ls "$out/cylinder"/line_centre_line_*.csv | tail -1)
+# Rayleigh pitot Cp at Ma 2, gamma 1.4: 1.6573; stand-off: the bow shock is
+# where the pressure on the stagnation line first rises by half of its jump
+# (x from the left), the body's front at x = 1.5; Billig: 0.386 exp(4.67/M^2) R
+awk -F, 'NR > 2 && $1 < 1.5 { if (p0 == "") p0 = $6; if (!shock && $6 > p0 + 0.5 * (2.6 - p0)) shock = $1 }
+    END { billig = 0.386 * exp(4.67 / 4) * 0.5; printf "stand-off %.3f D (Billig %.3f D, %+.0f %%)\n", 1.5 - shock, billig, 100 * ((1.5 - shock) / billig - 1) }' \
+    "$line" | tee "$out/cylinder_standoff.txt"
+sed -n 's/.*"\(cd\|cd_pressure\|cd_viscous\|cp_stagnation\|cells\|wall_s\)": \(.*\),*/cylinder: \1 = \2/p' \
+    "$out/cylinder/summary.json" | tee "$out/cylinder.txt"
+gnuplot -e "surffile='$surf'; outfile='docs/img/cylinder_cp.png'; label='D/128'; pitot=1.6573" \
+    scripts/plots/cylinder_cp.gp
+cp "$(ls "$out/cylinder"/mach_*.png | tail -1)" docs/img/cylinder_mach.png
+
+echo "== NACA 0012, Ma 0.5, Re 5000 (paper Sec. 4.1.1) at c/512"
+"$nspd" run cases/naca0012_ma05_re5000.yaml -o "$out/naca" --force --quiet
+surf=$(ls "$out/naca"/surface_*.csv | tail -1)
+sed -n 's/.*"\(cd\|cl\|cd_pressure\|cd_viscous\|cp_stagnation\|x_separation_over_c\|wall_s\)": \(.*\),*/naca: \1 = \2/p' \
+    "$out/naca/summary.json" | tee "$out/naca.txt"
+gnuplot -e "surffile='$surf'; outfile='docs/img/naca_cp.png'; isen=1.0641" scripts/plots/naca_cp.gp
+
+echo "== shock on a panel (paper Sec. 4.3)"
+"$nspd" run cases/panel_shock.yaml -o "$out/panel" --force --quiet
+gnuplot -e "datafile='$out/panel/history.csv'; outfile='docs/img/panel_tip.png'" scripts/plots/panel_tip.gp
+for k in 2 4 6 8; do cp "$out/panel/schlieren_0000$k.png" "docs/img/panel_schlieren_$k.png"; done
+sed -n 's/.*"\(tip_dx_max_m\|t_tip_dx_max_s\|wall_s\|flow_s\|solid_s\|coupling_s\)": \(.*\),*/panel: \1 = \2/p' \
+    "$out/panel/summary.json" | tee "$out/panel.txt"
+
+echo "== crack growth in a cylinder in Ma 1.7 flow (paper Sec. 4.4), E = 30, 40, 50, 60 MPa"
+for e in 30 40 50 60; do
+    "$nspd" run cases/cylinder_crack_ma17.yaml -o "$out/cylinder_crack_$e" --force --quiet \
+        --set solid.material.youngs_modulus=${e}.0e6
+    last=$(ls "$out/cylinder_crack_$e"/mach_damage_*.png | tail -1)
+    cp "$last" "docs/img/cylinder_crack_${e}MPa.png"
+    sed -n 's/.*"\(broken_bond_fraction\|branched\|branch_angle_deg\|branch_point_x_m\|wall_s\|flow_s\|solid_s\|coupling_s\)": \(.*\),*/E = '$e' MPa: \1 = \2/p' \
+        "$out/cylinder_crack_$e/summary.json" | tee -a "$out/cylinder_crack.txt"
+done
+
 echo "== slow tests"
 ctest --test-dir "$build" --output-on-failure -L slow || true
 echo "plots in docs/img/, runs in $out/"

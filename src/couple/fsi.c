@@ -5,14 +5,47 @@
 #include "solid/pd_integrate.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <string.h>
 
 const char *const FSI_HOLD_NAMES[FSI_HOLD_COUNT + 1] = {"none", "balance", NULL};
 
-/* Copies the surface points' current positions and velocities into the
- * markers of the polylines. */
+/* True if point i still has an intact bond. */
+static bool attached(const PdBody *b, int32_t i) {
+    for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++)
+        if (b->bond_coef[k] != 0.0f) return true;
+    return false;
+}
+
+/* This step's interface: the surface loops without debris (points with no
+ * intact bond), their markers at the points' current positions and
+ * velocities. A loop keeps all its points if fewer than 3 would remain. */
 static void markers_from_points(Fsi *f, const PdBody *body) {
-    pd_surface_positions(body, &f->surface, f->mx, f->my, f->mvx, f->mvy);
+    const PdSurface *all = &f->surface;
+    PdSurface *w = &f->wetted;
+    int64_t used = 0;
+    for (int k = 0; k < all->loop_count; k++) {
+        int64_t lo = all->loop_start[k], hi = all->loop_start[k + 1], start = used;
+        w->loop_start[k] = used;
+        for (int64_t m = lo; m < hi; m++)
+            if (attached(body, all->point[m])) w->point[used++] = all->point[m];
+        if (used - start < 3) { /* keep the loop whole rather than lose the body */
+            used = start;
+            for (int64_t m = lo; m < hi; m++) w->point[used++] = all->point[m];
+        }
+    }
+    w->loop_start[all->loop_count] = used;
+    w->length = used;
+    pd_surface_positions(body, w, f->mx, f->my, f->mvx, f->mvy);
+    for (int k = 0; k < f->loop_count; k++) {
+        int64_t lo = w->loop_start[k];
+        IbmPolyline *p = &f->polylines[k];
+        p->n = (int)(w->loop_start[k + 1] - lo);
+        p->x = f->mx + lo;
+        p->y = f->my + lo;
+        p->vx = f->mvx + lo;
+        p->vy = f->mvy + lo;
+    }
 }
 
 int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flow) {
@@ -28,19 +61,18 @@ int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flo
     if (status == NSPD_OK) status = nspd_alloc(&f->mvy, n, sizeof(double));
     if (status == NSPD_OK)
         status = nspd_alloc(&f->polylines, (size_t)f->surface.loop_count, sizeof(IbmPolyline));
+    if (status == NSPD_OK)
+        status =
+            nspd_alloc(&f->wetted.loop_start, (size_t)f->surface.loop_count + 1, sizeof(int64_t));
+    if (status == NSPD_OK) status = nspd_alloc(&f->wetted.point, n, sizeof(int32_t));
     if (status != NSPD_OK) {
         fsi_destroy(f);
         return status;
     }
     f->loop_count = f->surface.loop_count;
+    f->wetted.loop_count = f->loop_count;
     for (int k = 0; k < f->loop_count; k++) {
-        int64_t lo = f->surface.loop_start[k];
         IbmPolyline *p = &f->polylines[k];
-        p->n = (int)(f->surface.loop_start[k + 1] - lo);
-        p->x = f->mx + lo;
-        p->y = f->my + lo;
-        p->vx = f->mvx + lo;
-        p->vy = f->mvy + lo;
         p->thermal = cfg->thermal;
         p->wall_temperature = cfg->wall_temperature;
         p->leading_edge = p->trailing_edge = -1;
@@ -58,6 +90,7 @@ void fsi_destroy(Fsi *f) {
     ibm_destroy(&f->ibm);
     ibm_surface_free(&f->loads);
     pd_surface_free(&f->surface);
+    pd_surface_free(&f->wetted);
     nspd_free(&f->polylines);
     nspd_free(&f->mx);
     nspd_free(&f->my);
@@ -68,7 +101,8 @@ void fsi_destroy(Fsi *f) {
 
 int fsi_move_interface(Fsi *f, const PdBody *body, FlowSolver *flow) {
     markers_from_points(f, body);
-    return ibm_update(f->ibm, f->polylines, f->loop_count, flow);
+    TRY(ibm_update(f->ibm, f->polylines, f->loop_count, flow));
+    return ibm_surface_reserve(f->ibm, &f->loads); /* the marker count may change */
 }
 
 int fsi_apply_loads(Fsi *f, PdBody *body, FlowSolver *flow) {
@@ -92,8 +126,8 @@ int fsi_apply_loads(Fsi *f, PdBody *body, FlowSolver *flow) {
                              flow_solver_time(flow));
     for (int d = 0; d < body->dim; d++)
         memset(body->external[d], 0, (size_t)body->n * sizeof(double));
-    /* the segments of the immersed boundary are the surface's, in order */
-    pd_surface_apply_tractions(body, &f->surface, f->loads.fx, f->loads.fy, f->force_on_solid);
+    /* the segments of the immersed boundary are this step's loops', in order */
+    pd_surface_apply_tractions(body, &f->wetted, f->loads.fx, f->loads.fy, f->force_on_solid);
     if (f->cfg.hold == FSI_HOLD_BALANCE) {
         double volume = 0.0; /* per unit depth */
         for (int64_t i = 0; i < body->n; i++) volume += body->volume[i] / body->cfg.thickness;

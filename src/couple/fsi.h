@@ -30,6 +30,10 @@
  * the body does not translate (its rotation is not removed). The gas keeps
  * the free-stream velocity relative to the body, as in a wind tunnel.
  *
+ * Debris: a surface point that has lost all its bonds belongs to no body; it
+ * leaves the interface (its loop joins its neighbours) and takes no load, so
+ * that a point knocked off the surface does not drag the wall after it.
+ *
  * Cracks: the loops are traced once on the reference lattice, so a crack that
  * reaches the surface stays closed to the flow - the polyline bridges its
  * mouth. This keeps the grid consistent however far the crack opens
@@ -61,7 +65,8 @@ typedef struct {
 
 typedef struct {
     FsiConfig cfg;
-    PdSurface surface;
+    PdSurface surface; /* all surface points, traced on the reference lattice */
+    PdSurface wetted;  /* this step's interface: `surface` without debris */
     int loop_count;
     IbmPolyline *polylines; /* one per surface loop; markers point into the arrays below */
     double *mx, *my, *mvx, *mvy;

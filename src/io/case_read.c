@@ -90,6 +90,9 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
         TRY(cfg_opt_double(item, "damage_threshold", 0.35, &p->damage_threshold));
         TRY(cfg_check_range(item, "damage_threshold", p->damage_threshold, 0.0, 1.0,
                             "a damage value in [0, 1]"));
+        TRY(cfg_opt_double(item, "length", 0.0, &p->length));
+        TRY(cfg_check_range(item, "length", p->length, 0.0, 1e30,
+                            "how far ahead to look, m (0: no limit)"));
         break;
     }
     case PROBE_LINE: {

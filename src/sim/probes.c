@@ -335,10 +335,11 @@ int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damag
     BinnedPoint *pts;
     TRY(nspd_alloc(&pts, (size_t)body->n, sizeof *pts));
     for (int64_t i = 0; i < body->n; i++) {
-        if (!(damage[i] > c->damage_threshold)) continue;
+        /* crack faces, not detached debris (damage 1) */
+        if (!(damage[i] > c->damage_threshold) || damage[i] >= 0.99) continue;
         double rx = body->x[0][i] - c->at[0], ry = body->x[1][i] - c->at[1];
         double s = rx * dir[0] + ry * dir[1];
-        if (s <= 0) continue;
+        if (s <= 0 || (c->length > 0 && s > c->length)) continue;
         pts[m].bin = (int64_t)floor(s / dx);
         pts[m].n = rx * perp[0] + ry * perp[1];
         m++;

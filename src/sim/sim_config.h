@@ -51,6 +51,7 @@ typedef struct {
      * points ahead of `at` along `direction` (sim/probes.c) */
     double direction[3];
     double damage_threshold;
+    double length; /* branches: how far ahead of `at` to look, m (0: no limit) */
     /* point: the material point nearest to `at` (reference configuration),
      * or the flow cell containing it */
     double at[3];

@@ -413,17 +413,43 @@ int sim_output_summary(Sim *sim, int run_status) {
         snprintf(key, sizeof key, "t_%s_dx_max_s", p->cfg->name);
         json_number(&w, key, p->t_dx_max);
     }
+    /* branches: per probe, then the overall answer - the side that branched
+     * (the first listed if both did) */
+    BranchResult best = {0};
+    const char *best_side = NULL;
     for (int k = 0; k < sim->cfg.output.probe_count && sim->has_solid; k++) {
         const ProbeState *p = &sim->probes[k];
         if (p->cfg->kind != PROBE_BRANCHES) continue;
         BranchResult br;
         if (probe_branches(p->cfg, &sim->solid, sim->damage, &br) != NSPD_OK) continue;
-        json_bool(&w, "branched", br.branched);
-        json_number(&w, "branch_angle_deg", br.angle_deg);
-        json_number(&w, "branch_upper_deg", br.upper_deg);
-        json_number(&w, "branch_lower_deg", br.lower_deg);
-        json_number(&w, "branch_point_x_m", br.point[0]);
-        json_number(&w, "branch_point_y_m", br.point[1]);
+        char key[128];
+        const char *name = p->cfg->name;
+        snprintf(key, sizeof key, "%s_branched", name);
+        json_bool(&w, key, br.branched);
+        snprintf(key, sizeof key, "%s_branch_angle_deg", name);
+        json_number(&w, key, br.angle_deg);
+        snprintf(key, sizeof key, "%s_branch_upper_deg", name);
+        json_number(&w, key, br.upper_deg);
+        snprintf(key, sizeof key, "%s_branch_lower_deg", name);
+        json_number(&w, key, br.lower_deg);
+        snprintf(key, sizeof key, "%s_branch_point_x_m", name);
+        json_number(&w, key, br.point[0]);
+        snprintf(key, sizeof key, "%s_branch_point_y_m", name);
+        json_number(&w, key, br.point[1]);
+        if (br.branched && !best_side) {
+            best = br;
+            best_side = name;
+        }
+    }
+    if (best_side) {
+        json_number(&w, "branch_angle_deg", best.angle_deg);
+        json_string(&w, "branch_side", best_side);
+    } else {
+        for (int k = 0; k < sim->cfg.output.probe_count; k++)
+            if (sim->probes[k].cfg->kind == PROBE_BRANCHES) {
+                json_number(&w, "branch_angle_deg", (double)NAN);
+                break;
+            }
     }
     for (int k = 0; k < sim->cfg.output.probe_count; k++) {
         const ProbeState *p = &sim->probes[k];
