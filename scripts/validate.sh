@@ -106,12 +106,14 @@ sed -n 's/.*"\(tip_dx_max_m\|t_tip_dx_max_s\|wall_s\|flow_s\|solid_s\|coupling_s
     "$out/panel/summary.json" | tee "$out/panel.txt"
 
 echo "== crack growth in a cylinder in Ma 1.7 flow (paper Sec. 4.4), E = 30, 40, 50, 60 MPa"
+rm -f "$out/cylinder_crack.txt"
 for e in 30 40 50 60; do
     "$nspd" run cases/cylinder_crack_ma17.yaml -o "$out/cylinder_crack_$e" --force --quiet \
         --set solid.material.youngs_modulus=${e}.0e6
-    last=$(ls "$out/cylinder_crack_$e"/mach_damage_*.png | tail -1)
-    cp "$last" "docs/img/cylinder_crack_${e}MPa.png"
-    sed -n 's/.*"\(broken_bond_fraction\|branched\|branch_angle_deg\|branch_point_x_m\|wall_s\|flow_s\|solid_s\|coupling_s\)": \(.*\),*/E = '$e' MPa: \1 = \2/p' \
+    cp "$out/cylinder_crack_$e/mach_damage_00010.png" "docs/img/cylinder_crack_${e}MPa_mach.png"
+    cp "$out/cylinder_crack_$e/damage_00010.png" "docs/img/cylinder_crack_${e}MPa_20ms.png"
+    cp "$out/cylinder_crack_$e/damage_00005.png" "docs/img/cylinder_crack_${e}MPa_10ms.png"
+    sed -n 's/.*"\([a-z_]*branch[a-z_]*\|broken_bond_fraction\|cd\|wall_s\|flow_s\|solid_s\|coupling_s\)": \(.*\),*/E = '$e' MPa: \1 = \2/p' \
         "$out/cylinder_crack_$e/summary.json" | tee -a "$out/cylinder_crack.txt"
 done
 

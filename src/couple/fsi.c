@@ -51,6 +51,11 @@ static void markers_from_points(Fsi *f, const PdBody *body) {
 int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flow) {
     memset(f, 0, sizeof *f);
     f->cfg = *cfg;
+    /* neighbouring surface points are 1 or sqrt(2) spacings apart; 2.5
+     * spacings leaves room for 75 % stretch before a segment counts as a
+     * bridge, and a single dropped debris point (2 spacings) still loads
+     * its neighbours */
+    f->cfg.reference.bridge_length = 2.5 * body->spacing;
     int status = pd_surface_trace(body, &f->surface);
     if (status == NSPD_OK && f->surface.loop_count == 0)
         status = NSPD_FAIL(NSPD_ERR_INPUT, "the solid has no surface loop to couple to the flow");

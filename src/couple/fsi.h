@@ -37,7 +37,9 @@
  * Cracks: the loops are traced once on the reference lattice, so a crack that
  * reaches the surface stays closed to the flow - the polyline bridges its
  * mouth. This keeps the grid consistent however far the crack opens
- * (documented limitation; tests/verify/fsi_*). */
+ * (documented limitation; tests/verify/fsi_*). A segment stretched beyond
+ * 2.5 spacings (an opened mouth, a gap left by debris) is such a bridge: it
+ * carries no load (IbmReference.bridge_length). */
 #ifndef NSPD_COUPLE_FSI_H
 #define NSPD_COUPLE_FSI_H
 

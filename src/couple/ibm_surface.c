@@ -100,8 +100,9 @@ int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, 
              * the bridged mouth of a crack) evaluates to -inf: that segment
              * is not wetted and carries no load. With only the far probe
              * dry, the near one gives first-order values. */
-            const int wet1 = isfinite(q1.p) && isfinite(q1.u) && isfinite(q1.v);
-            const int wet2 = isfinite(q2.p) && isfinite(q2.u) && isfinite(q2.v);
+            const int bridge = ref->bridge_length > 0.0 && ds > ref->bridge_length;
+            const int wet1 = !bridge && isfinite(q1.p) && isfinite(q1.u) && isfinite(q1.v);
+            const int wet2 = wet1 && isfinite(q2.p) && isfinite(q2.u) && isfinite(q2.v);
             double pw = ref->p_ambient, tau = 0.0;
             const double uw = 0.5 * (ibm->mvx[sg] + ibm->mvx[e]);
             const double vw = 0.5 * (ibm->mvy[sg] + ibm->mvy[e]);

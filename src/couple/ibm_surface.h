@@ -35,6 +35,14 @@ typedef struct {
     double length;       /* reference length (diameter, chord), m */
     double p_ambient;    /* pressure subtracted in the tractions (the solid's unloaded
                             state; the free-stream pressure, or 0 for absolute loads) */
+    /* Segments longer than this (m; 0: no limit) are bridges - across the
+     * opened mouth of a crack, or a gap left by debris, on a PD surface:
+     * they keep the fluid out but are not wetted and carry no load. Loaded,
+     * a bridge would put its whole force on its two end points (measured:
+     * the base-pressure suction on the mouth of the 30 MPa cylinder crack,
+     * concentrated on the lips, eroded the rear of the cylinder point by
+     * point from the mouth outward). */
+    double bridge_length;
 } IbmReference;
 
 typedef struct {

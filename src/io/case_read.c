@@ -93,6 +93,9 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
         TRY(cfg_opt_double(item, "length", 0.0, &p->length));
         TRY(cfg_check_range(item, "length", p->length, 0.0, 1e30,
                             "how far ahead to look, m (0: no limit)"));
+        TRY(cfg_opt_double(item, "extent", 0.0, &p->extent));
+        TRY(cfg_check_range(item, "extent", p->extent, 0.0, 1e30,
+                            "the branch span at which to measure, m (0: at the end)"));
         break;
     }
     case PROBE_LINE: {
@@ -168,8 +171,11 @@ static int read_coupling(CfgNode *m, SimConfig *cfg) {
     TRY(cfg_check_range(m, "soft_start", c->soft_start, 0.0, 1e30, "a length >= 0 in m"));
     /* the solid is built unloaded in the gas at its initial pressure */
     const FlowPrim *ref = f->has_free_stream ? &f->free_stream : &f->solver.initial;
-    c->reference = (IbmReference){
-        ref->rho, ref->u, ref->v, ref->p, f->reference_length > 0 ? f->reference_length : 1.0, 0.0};
+    c->reference = (IbmReference){.rho = ref->rho,
+                                  .u = ref->u,
+                                  .v = ref->v,
+                                  .p = ref->p,
+                                  .length = f->reference_length > 0 ? f->reference_length : 1.0};
     TRY(cfg_opt_double(m, "ambient_pressure", f->solver.initial.p, &c->reference.p_ambient));
     TRY(cfg_check_range(m, "ambient_pressure", c->reference.p_ambient, 0.0, 1e30,
                         "the pressure (Pa) in which the solid carries no load"));

@@ -11,7 +11,8 @@ static const char *const AXIS[] = {"x", "y", "z"};
 
 bool probes_need_damage(const OutputConfig *cfg) {
     for (int i = 0; i < cfg->probe_count; i++)
-        if (cfg->probes[i].kind == PROBE_CRACK_TIP) return true;
+        if (cfg->probes[i].kind == PROBE_CRACK_TIP || cfg->probes[i].kind == PROBE_BRANCHES)
+            return true;
     return false;
 }
 
@@ -115,6 +116,8 @@ static int setup_one(ProbeState *p, const PdBody *body, const FlowSolver *flow, 
             }
         }
         TRY(sort_members(p, body));
+    } else if (c->kind == PROBE_BRANCHES) {
+        p->t_first_branch = (double)NAN;
     } else {
         p->capacity = max_samples;
         TRY(nspd_alloc(&p->times, (size_t)max_samples, sizeof(double)));
@@ -154,6 +157,8 @@ void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv
         const ProbeConfig *c = probes[k].cfg;
         if (c->kind == PROBE_CRACK_TIP) {
             for (int d = 0; d < dim; d++) fprintf(csv, ",%s_tip_%s_m", c->name, AXIS[d]);
+        } else if (c->kind == PROBE_BRANCHES) {
+            fprintf(csv, ",%s_branch_angle_deg", c->name);
         } else if (c->kind == PROBE_POINT && c->target == PROBE_ON_FLOW) {
             fprintf(csv, ",%s_rho_kg_per_m3,%s_u_m_per_s,%s_v_m_per_s,%s_p_Pa,%s_T_K", c->name,
                     c->name, c->name, c->name, c->name);
@@ -217,6 +222,14 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
             }
             if (csv)
                 for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", p->last_tip[d]);
+        } else if (c->kind == PROBE_BRANCHES) {
+            BranchResult r;
+            if (probe_branches(c, body, damage, &r) != NSPD_OK) r.angle_deg = (double)NAN;
+            if (c->extent > 0 && isnan(p->t_first_branch) && r.branched && r.span >= c->extent) {
+                p->first_branch = r;
+                p->t_first_branch = time;
+            }
+            if (csv) fprintf(csv, ",%.9g", r.angle_deg);
         } else if (c->kind == PROBE_POINT && csv && c->target == PROBE_ON_FLOW) {
             double q[5];
             flow_cell(flow, p->point, q);
@@ -409,6 +422,7 @@ int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damag
             fit_line(s_fit, l_fit, count, &al, &bl);
             out->branched = true;
             out->samples = count;
+            out->span = count * dx;
             out->upper_deg = atan(bu) * 180.0 / M_PI;
             out->lower_deg = atan(bl) * 180.0 / M_PI;
             out->angle_deg = out->upper_deg - out->lower_deg;
@@ -426,4 +440,21 @@ int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damag
     nspd_free(&nl);
     nspd_free(&clusters);
     return status;
+}
+
+int probe_branch_report(const ProbeState *p, const PdBody *body, const double *damage,
+                        BranchResult *out, double *time) {
+    if (!isnan(p->t_first_branch)) {
+        *out = p->first_branch;
+        *time = p->t_first_branch;
+        return NSPD_OK;
+    }
+    *time = (double)NAN;
+    if (p->cfg->extent > 0) { /* the branches never spanned `extent` */
+        memset(out, 0, sizeof *out);
+        out->angle_deg = out->upper_deg = out->lower_deg = (double)NAN;
+        out->point[0] = out->point[1] = (double)NAN;
+        return NSPD_OK;
+    }
+    return probe_branches(p->cfg, body, damage, out);
 }

@@ -10,6 +10,25 @@
 
 #include <stdio.h>
 
+/* Crack branching ahead of probe->at along probe->direction, measured on the
+ * damage field (PROBE_BRANCHES). Points with damage above the threshold and
+ * below 0.99 (detached debris is not a crack face), with
+ * s = (x - at).direction in (0, length], are binned by s in bins of one
+ * spacing; in each bin the damaged points split into clusters across the
+ * direction wherever neighbours are more than two spacings apart. The crack
+ * has branched where three successive bins hold two or more clusters; from
+ * there on, lines n = a + b s are fitted by least squares to the outermost
+ * cluster centroids on each side, and the branch angle is the angle between
+ * them. Reference positions are used (the crack path, not its opening). */
+typedef struct {
+    bool branched;
+    double angle_deg;            /* between the two branches */
+    double upper_deg, lower_deg; /* each branch against `direction` (+ to its left) */
+    double point[2];             /* where the two fitted lines meet, m */
+    int samples;                 /* bins used in the fits */
+    double span;                 /* samples x spacing: how far along `direction` they reach, m */
+} BranchResult;
+
 typedef struct {
     const ProbeConfig *cfg;
     int64_t point;    /* PROBE_POINT: the nearest material point, or the flow cell (grid index) */
@@ -21,6 +40,10 @@ typedef struct {
     double last_tip[3];
     /* PROBE_POINT on the solid: the largest displacement along x and when */
     double dx_max, t_dx_max;
+    /* PROBE_BRANCHES: the first measurement whose branches span `extent`,
+     * and its time (NaN until then) */
+    BranchResult first_branch;
+    double t_first_branch;
 } ProbeState;
 
 /* Sets up the probes of `cfg` on the solid and/or flow (either may be
@@ -34,6 +57,13 @@ void probes_destroy(ProbeState **probes, int count);
 /* True if some probe needs the damage field at every history sample. */
 bool probes_need_damage(const OutputConfig *cfg);
 
+/* The branch measurement a run reports for a PROBE_BRANCHES probe: with
+ * `extent` > 0, the first one that spanned `extent` (not branched if none
+ * did); with `extent` 0, the measurement on `damage` now. *time is its time
+ * (NaN for `now` and for none). */
+int probe_branch_report(const ProbeState *p, const PdBody *body, const double *damage,
+                        BranchResult *out, double *time);
+
 /* Appends this probe set's column names to the CSV header line. */
 void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv);
 /* Samples every probe at the current state (damage: the current damage
@@ -45,23 +75,6 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
 int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
                        const double *damage, FlowSolver *flow, double time, const char *dir,
                        int index);
-
-/* Crack branching ahead of probe->at along probe->direction, measured on the
- * damage field (PROBE_BRANCHES). Points with damage above the threshold and
- * s = (x - at).direction > 0 are binned by s in bins of one spacing; in each
- * bin the damaged points split into clusters across the direction wherever
- * neighbours are more than two spacings apart. The crack has branched where
- * three successive bins hold two or more clusters; from there on, lines
- * n = a + b s are fitted by least squares to the outermost cluster centroids
- * on each side, and the branch angle is the angle between them. Reference
- * positions are used (the crack path, not its opening). */
-typedef struct {
-    bool branched;
-    double angle_deg;            /* between the two branches */
-    double upper_deg, lower_deg; /* each branch against `direction` (+ to its left) */
-    double point[2];             /* where the two fitted lines meet, m */
-    int samples;                 /* bins used in the fits */
-} BranchResult;
 
 int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damage,
                    BranchResult *out);

@@ -52,6 +52,10 @@ typedef struct {
     double direction[3];
     double damage_threshold;
     double length; /* branches: how far ahead of `at` to look, m (0: no limit) */
+    /* branches: the measurement is kept from the first history sample at
+     * which the branches span `extent` along `direction` (m; 0: measured at
+     * the end of the run only) */
+    double extent;
     /* point: the material point nearest to `at` (reference configuration),
      * or the flow cell containing it */
     double at[3];

@@ -24,11 +24,15 @@ static const Ibm *sim_ibm(const Sim *sim) {
 /* The reference of the force coefficients: the free stream, else the
  * initial state; the reference length, else 1 m. */
 static IbmReference reference(const Sim *sim) {
-    if (sim->has_fsi) return sim->cfg.coupling.reference;
+    if (sim->has_fsi) return sim->fsi.cfg.reference;
     const FlowCaseConfig *f = &sim->cfg.flow;
     const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
-    return (IbmReference){
-        q->rho, q->u, q->v, q->p, f->reference_length > 0 ? f->reference_length : 1.0, q->p};
+    return (IbmReference){.rho = q->rho,
+                          .u = q->u,
+                          .v = q->v,
+                          .p = q->p,
+                          .length = f->reference_length > 0 ? f->reference_length : 1.0,
+                          .p_ambient = q->p};
 }
 
 /* Surface loads of the current state (computed here). */
@@ -421,9 +425,12 @@ int sim_output_summary(Sim *sim, int run_status) {
         const ProbeState *p = &sim->probes[k];
         if (p->cfg->kind != PROBE_BRANCHES) continue;
         BranchResult br;
-        if (probe_branches(p->cfg, &sim->solid, sim->damage, &br) != NSPD_OK) continue;
+        double t_branch;
+        if (probe_branch_report(p, &sim->solid, sim->damage, &br, &t_branch) != NSPD_OK) continue;
         char key[128];
         const char *name = p->cfg->name;
+        snprintf(key, sizeof key, "%s_branch_time_s", name);
+        json_number(&w, key, t_branch);
         snprintf(key, sizeof key, "%s_branched", name);
         json_bool(&w, key, br.branched);
         snprintf(key, sizeof key, "%s_branch_angle_deg", name);

@@ -78,8 +78,58 @@ static void test_straight_crack_does_not_branch(void **state) {
     pd_body_destroy(&b);
 }
 
+/* With `extent` set, the run reports the first measurement whose branches
+ * span it, not what the damage field looks like at the end (after the
+ * body has broken up and damage is everywhere). */
+static void test_first_branching_is_kept(void **state) {
+    (void)state;
+    PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4);
+    PdBody b;
+    assert_ok(pd_body_create(&b, &cfg));
+    double *damage;
+    assert_ok(nspd_alloc(&damage, (size_t)b.n, sizeof(double)));
+    ProbeConfig c = {.kind = PROBE_BRANCHES,
+                     .at = {0.010, 0.020, 0},
+                     .direction = {1, 0, 0},
+                     .damage_threshold = 0.35,
+                     .extent = 0.005};
+    ProbeState p = {.cfg = &c, .t_first_branch = (double)NAN};
+    /* t = 1: a straight crack, no branch yet */
+    for (int64_t i = 0; i < b.n; i++) damage[i] = fabs(b.x[1][i] - 0.020) <= 5e-4 ? 0.5 : 0.0;
+    probes_sample(&p, 1, &b, damage, NULL, 1.0, NULL);
+    assert_true(isnan(p.t_first_branch));
+    /* t = 2: the Y of 130 degrees */
+    y_shaped(&b, 65, 65, damage);
+    probes_sample(&p, 1, &b, damage, NULL, 2.0, NULL);
+    /* t = 3: damage in horizontal stripes every 2 mm (a shattered body) */
+    for (int64_t i = 0; i < b.n; i++) damage[i] = fmod(b.x[1][i] + 1e-4, 0.002) < 6e-4 ? 0.5 : 0.0;
+    probes_sample(&p, 1, &b, damage, NULL, 3.0, NULL);
+    BranchResult r;
+    double t;
+    assert_ok(probe_branch_report(&p, &b, damage, &r, &t));
+    assert_true(t == 2.0);
+    assert_close(r.angle_deg, 130.0, 2.0);
+    /* branches that never span `extent` are not reported */
+    c.extent = 1.0;
+    ProbeState s = {.cfg = &c, .t_first_branch = (double)NAN};
+    probes_sample(&s, 1, &b, damage, NULL, 3.0, NULL);
+    assert_ok(probe_branch_report(&s, &b, damage, &r, &t));
+    assert_false(r.branched);
+    assert_true(isnan(r.angle_deg) && isnan(t));
+    /* without `extent`, the end state is measured */
+    c.extent = 0;
+    ProbeState q = {.cfg = &c, .t_first_branch = (double)NAN};
+    probes_sample(&q, 1, &b, damage, NULL, 3.0, NULL);
+    assert_ok(probe_branch_report(&q, &b, damage, &r, &t));
+    assert_true(isnan(t));
+    assert_true(fabs(r.angle_deg - 130.0) > 10.0);
+    nspd_free(&damage);
+    pd_body_destroy(&b);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_first_branching_is_kept),
         cmocka_unit_test(test_symmetric_and_skewed_branches),
         cmocka_unit_test(test_straight_crack_does_not_branch),
     };
