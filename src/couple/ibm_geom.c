@@ -48,6 +48,17 @@ static inline int bucket_of(double v, double v0, double inv) {
     return f < -1e9 ? -1000000000 : f > 1e9 ? 1000000000 : (int)f;
 }
 
+/* The bucket rows j0..j1 and columns i0..i1 that segment s's bounding box
+ * covers. */
+static void segment_buckets(const Ibm *ibm, const IbmBuckets *bk, int s, int *i0, int *i1, int *j0,
+                            int *j1) {
+    const int e = ibm->seg_end[s];
+    *i0 = bucket_of(fmin(ibm->mx[s], ibm->mx[e]), bk->x0, bk->inv_size);
+    *i1 = bucket_of(fmax(ibm->mx[s], ibm->mx[e]), bk->x0, bk->inv_size);
+    *j0 = bucket_of(fmin(ibm->my[s], ibm->my[e]), bk->y0, bk->inv_size);
+    *j1 = bucket_of(fmax(ibm->my[s], ibm->my[e]), bk->y0, bk->inv_size);
+}
+
 int ibm_buckets_build(Ibm *ibm) {
     IbmBuckets *bk = &ibm->bk;
     const int ns = ibm->nm;
@@ -80,11 +91,8 @@ int ibm_buckets_build(Ibm *ibm) {
     /* count */
     int64_t total = 0, rtotal = 0;
     for (int s = 0; s < ns; s++) {
-        const int e = ibm->seg_end[s];
-        const int i0 = bucket_of(fmin(ibm->mx[s], ibm->mx[e]), bk->x0, bk->inv_size);
-        const int i1 = bucket_of(fmax(ibm->mx[s], ibm->mx[e]), bk->x0, bk->inv_size);
-        const int j0 = bucket_of(fmin(ibm->my[s], ibm->my[e]), bk->y0, bk->inv_size);
-        const int j1 = bucket_of(fmax(ibm->my[s], ibm->my[e]), bk->y0, bk->inv_size);
+        int i0, i1, j0, j1;
+        segment_buckets(ibm, bk, s, &i0, &i1, &j0, &j1);
         for (int j = j0; j <= j1; j++) {
             bk->row_first[j + 1]++;
             rtotal++;
@@ -106,11 +114,8 @@ int ibm_buckets_build(Ibm *ibm) {
     for (int j = 0; j < nby; j++) bk->row_first[j + 1] += bk->row_first[j];
     /* fill in segment order, so every list is sorted */
     for (int s = 0; s < ns; s++) {
-        const int e = ibm->seg_end[s];
-        const int i0 = bucket_of(fmin(ibm->mx[s], ibm->mx[e]), bk->x0, bk->inv_size);
-        const int i1 = bucket_of(fmax(ibm->mx[s], ibm->mx[e]), bk->x0, bk->inv_size);
-        const int j0 = bucket_of(fmin(ibm->my[s], ibm->my[e]), bk->y0, bk->inv_size);
-        const int j1 = bucket_of(fmax(ibm->my[s], ibm->my[e]), bk->y0, bk->inv_size);
+        int i0, i1, j0, j1;
+        segment_buckets(ibm, bk, s, &i0, &i1, &j0, &j1);
         for (int j = j0; j <= j1; j++) {
             bk->row_items[bk->row_first[j]++] = s;
             for (int i = i0; i <= i1; i++) bk->items[bk->first[(int64_t)j * nbx + i]++] = s;

@@ -8,7 +8,7 @@
  * (the speed of sound is 1), failure off. By t = 1 the mouth has opened by
  * 0.105 (measured), 6.7 cells of 1/64: every one of the 150 cells between
  * the crack faces is still solid or ghost, never fluid, and the run stays
- * finite. */
+ * finite. The segment across the mouth (5 spacings long) carries no load. */
 #include "sim_fixtures.h"
 #include "test_support.h"
 
@@ -74,6 +74,18 @@ static void test_crack_stays_closed(void **state) {
     assert_true(upper - lower - 0.02 > 3.0 / 64); /* it did open by several cells */
     assert_true(inside > 20);
     assert_int_equal(fluid, 0);
+    /* the segment across the opened mouth is a bridge: longer than 2.5
+     * spacings, not wetted, no load (IbmReference.bridge_length) */
+    const IbmSurface *loads = &sim.fsi.loads;
+    int bridges = 0;
+    for (int s = 0; s < loads->n; s++) {
+        if (loads->ds[s] <= 2.5 * b->spacing) continue;
+        bridges++;
+        assert_true(isnan(loads->cp[s]));
+        assert_true(loads->fx[s] == 0.0 && loads->fy[s] == 0.0);
+    }
+    print_message("%d bridge segment(s)\n", bridges);
+    assert_true(bridges >= 1);
     sim_destroy(&sim);
 }
 
