@@ -204,6 +204,32 @@ static inline void ibm_case_interp(void *ctx, double x, double y, FlowPrim *out)
     flow_cons_to_prim(q, flow_solver_gas(c)->gamma, out);
 }
 
+/* The cases' flow solver: c at CFL 0.8, started by interpolation of `from`
+ * (grid sequencing) when given. NULL on failure. */
+static inline FlowSolver *ibm_case_solver(FlowConfig *c, FlowSolver *from) {
+    c->cfl = 0.8;
+    if (from) {
+        c->init_fn = ibm_case_interp;
+        c->init_ctx = from;
+    }
+    FlowSolver *s = NULL;
+    return flow_solver_create(&s, c) == NSPD_OK ? s : NULL;
+}
+
+/* One wall as the attached immersed boundary of s; the flow within
+ * soft_start of it starts at rest (0: none, for a flow started from a
+ * developed one). NULL on failure. */
+static inline Ibm *ibm_case_body(FlowSolver *s, const IbmPolyline *wall, double soft_start) {
+    Ibm *ibm = NULL;
+    if (ibm_create(&ibm, flow_solver_grid(s), wall, 1) != NSPD_OK) return NULL;
+    if (ibm_attach(ibm, s) != NSPD_OK) {
+        ibm_destroy(&ibm);
+        return NULL;
+    }
+    if (soft_start > 0.0) ibm_soft_start(ibm, s, soft_start);
+    return ibm;
+}
+
 /* Advances to t_end, printing the coefficients of body 0 every `every`
  * (<= 0: never); leaves the surface of the last state in *sf. */
 static inline int ibm_case_advance(FlowSolver *s, Ibm *ibm, const IbmReference *ref, IbmSurface *sf,

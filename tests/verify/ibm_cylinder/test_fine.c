@@ -12,13 +12,8 @@
 static FlowSolver *solver(double h, FlowSolver *from, FlowPrim *inf) {
     FlowConfig c;
     ibm_cylinder_config(&c, h, IBM_CASE_SUTHERLAND_T, inf);
-    c.cfl = 0.8;
-    if (from) {
-        c.init_fn = ibm_case_interp;
-        c.init_ctx = from;
-    }
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    FlowSolver *s = ibm_case_solver(&c, from);
+    assert_non_null(s);
     return s;
 }
 
@@ -35,10 +30,8 @@ static void test_fine(void **state) {
     FlowSolver *cs = solver(1.0 / 32, NULL, &inf);
     IbmPolyline cw;
     assert_ok(ibm_cylinder_markers(1.0 / 32, &cw));
-    Ibm *ci = NULL;
-    assert_ok(ibm_create(&ci, flow_solver_grid(cs), &cw, 1));
-    assert_ok(ibm_attach(ci, cs));
-    ibm_soft_start(ci, cs, 0.5);
+    Ibm *ci = ibm_case_body(cs, &cw, 0.5);
+    assert_non_null(ci);
     IbmSurface sf;
     memset(&sf, 0, sizeof sf);
     assert_ok(ibm_surface_reserve(ci, &sf));
@@ -48,9 +41,8 @@ static void test_fine(void **state) {
     FlowSolver *s = solver(h, cs, &inf);
     IbmPolyline wall;
     assert_ok(ibm_cylinder_markers(h, &wall));
-    Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), &wall, 1));
-    assert_ok(ibm_attach(ibm, s));
+    Ibm *ibm = ibm_case_body(s, &wall, 0.0);
+    assert_non_null(ibm);
     assert_ok(ibm_surface_reserve(ibm, &sf));
     const Grid *g = flow_solver_grid(s);
     IbmUpdateStats st;

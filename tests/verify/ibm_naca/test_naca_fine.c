@@ -13,13 +13,8 @@ static FlowSolver *solver(const NacaGrid *ng, FlowSolver *from) {
     FlowConfig c;
     FlowPrim inf;
     ibm_naca_config(&c, ng, IBM_CASE_SUTHERLAND_T, &inf);
-    c.cfl = 0.8;
-    if (from) {
-        c.init_fn = ibm_case_interp;
-        c.init_ctx = from;
-    }
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    FlowSolver *s = ibm_case_solver(&c, from);
+    assert_non_null(s);
     return s;
 }
 
@@ -36,10 +31,8 @@ static void test_naca_fine(void **state) {
     FlowSolver *cs = solver(&coarse, NULL);
     IbmPolyline cw;
     assert_ok(ibm_naca_markers(1.0 / 128, &cw));
-    Ibm *ci = NULL;
-    assert_ok(ibm_create(&ci, flow_solver_grid(cs), &cw, 1));
-    assert_ok(ibm_attach(ci, cs));
-    ibm_soft_start(ci, cs, 0.1);
+    Ibm *ci = ibm_case_body(cs, &cw, 0.1);
+    assert_non_null(ci);
     IbmSurface sf;
     memset(&sf, 0, sizeof sf);
     assert_ok(ibm_surface_reserve(ci, &sf));
@@ -48,9 +41,8 @@ static void test_naca_fine(void **state) {
     FlowSolver *s = solver(&fine, cs);
     IbmPolyline wall;
     assert_ok(ibm_naca_markers(1.0 / 1024, &wall));
-    Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), &wall, 1));
-    assert_ok(ibm_attach(ibm, s));
+    Ibm *ibm = ibm_case_body(s, &wall, 0.0);
+    assert_non_null(ibm);
     assert_ok(ibm_surface_reserve(ibm, &sf));
     const Grid *g = flow_solver_grid(s);
     IbmUpdateStats st;
