@@ -84,6 +84,7 @@ int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flo
     }
     markers_from_points(f, body);
     status = ibm_create(&f->ibm, flow_solver_grid(flow), f->polylines, f->loop_count);
+    if (status == NSPD_OK) ibm_set_ghost_faces(f->ibm, (IbmGhostFaces)cfg->ghost_faces);
     if (status == NSPD_OK) status = ibm_attach(f->ibm, flow);
     if (status == NSPD_OK && cfg->soft_start > 0) ibm_soft_start(f->ibm, flow, cfg->soft_start);
     if (status == NSPD_OK) status = ibm_surface_reserve(f->ibm, &f->loads);

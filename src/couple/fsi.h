@@ -62,6 +62,7 @@ typedef struct {
     int thermal;             /* IbmWallThermal of the solid's surface */
     double wall_temperature; /* K, isothermal walls */
     double soft_start;       /* m: ibm_soft_start length at t = 0 (0: none) */
+    int ghost_faces;         /* IbmGhostFaces of the solid's surface */
     IbmReference reference;  /* free stream and the ambient pressure of the tractions */
 } FsiConfig;
 

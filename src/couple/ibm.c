@@ -351,21 +351,23 @@ static inline void set_cons(double *const w[4], int64_t k, double rho, double u,
     w[3][k] = p / gm1 + 0.5 * rho * (u * u + v * v);
 }
 
-static inline void fill_one(const Ibm *ibm, int e, double *const w[4], double gm1, double R) {
-    const IbmStencilSet *G = &ibm->ghosts;
+static inline void fill_one(Ibm *ibm, int e, double *const w[4], double gm1, double R) {
+    IbmStencilSet *G = &ibm->ghosts;
     const int b = G->body[e];
     const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
     const double Tw = ibm->wall_t[b], r = G->ratio[e];
     const IbmPrim q = ibm_stencil_eval(ibm, G, e, w, gm1, R, iso, Tw);
     double uw, vw;
     ibm_wall_velocity(ibm, G->seg[e], G->t[e], &uw, &vw);
+    G->wu[e] = uw;
+    G->wv[e] = vw;
     const double u = uw + r * (uw - q.u), v = vw + r * (vw - q.v); /* Eq. 39 */
     const double T = iso ? fmax(Tw + r * (Tw - q.T), 0.25 * Tw) : q.T;
     set_cons(w, G->cell[e], q.p / (R * T), u, v, q.p, gm1);
 }
 
 void ibm_fill_ghosts(void *ctx, FlowSolver *s) {
-    const Ibm *ibm = ctx;
+    Ibm *ibm = ctx;
     FlowFields f = flow_solver_fields(s);
     const GksParams *gas = flow_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
@@ -373,6 +375,16 @@ void ibm_fill_ghosts(void *ctx, FlowSolver *s) {
     double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int e = 0; e < n; e++) fill_one(ibm, e, w, gm1, R);
+    if (ibm->faces == IBM_FACES_SEALED)
+        flow_solver_set_ghost_walls(s, ibm->slot, ibm->ghosts.wu, ibm->ghosts.wv);
+    else
+        flow_solver_set_ghost_walls(s, NULL, NULL, NULL);
+}
+
+const char *const IBM_GHOST_FACE_NAMES[IBM_FACES_COUNT + 1] = {"reflected", "sealed", NULL};
+
+void ibm_set_ghost_faces(Ibm *ibm, IbmGhostFaces faces) {
+    ibm->faces = faces;
 }
 
 int ibm_attach(Ibm *ibm, FlowSolver *s) {

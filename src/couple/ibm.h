@@ -108,8 +108,28 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s);
 void ibm_soft_start(Ibm *ibm, FlowSolver *s, double length);
 void ibm_soft_start_isentropic(Ibm *ibm, FlowSolver *s, double length);
 
+/* What the faces between fluid and ghost cells carry.
+ *   REFLECTED  the GKS flux between the fluid cell and the ghost state of
+ *              Eq. 39, as in the paper: second order at the wall, but not
+ *              conservative, and a fluid cell whose centre sits on the wall
+ *              can drain into the body where the image point sees faster
+ *              or opposite flow (measured: the Ma 2 cylinder from rest at
+ *              D/128 reached p < 0 at t = 2.95 in a cell 0.04 h from the
+ *              wall, in reversed flow ahead of separation).
+ *   SEALED     no mass but what the wall displaces (flow_solver_set_ghost_walls):
+ *              conservative and robust; the mass sees the cell staircase,
+ *              a first-order wall (measured: stagnation Cp on a nose of 6
+ *              cells' radius erratic by +-4 to 10 %; on a cylinder of 8
+ *              cells' radius within 0.1 %). */
+typedef enum { IBM_FACES_REFLECTED = 0, IBM_FACES_SEALED, IBM_FACES_COUNT } IbmGhostFaces;
+extern const char *const IBM_GHOST_FACE_NAMES[IBM_FACES_COUNT + 1]; /* "reflected", "sealed" */
+
+/* Default REFLECTED; takes effect at the next fill. */
+void ibm_set_ghost_faces(Ibm *ibm, IbmGhostFaces faces);
+
 /* The FlowGhostHook (ctx = the Ibm): sets every ghost cell from the current
- * fluid state (Eqs. 33-39). No allocation; deterministic. */
+ * fluid state (Eqs. 33-39); with SEALED faces, hands the solver each
+ * ghost's wall velocity. No allocation; deterministic. */
 void ibm_fill_ghosts(void *ctx, FlowSolver *s);
 
 /* Cell kinds (FLOW_CELL_*), indexed with grid_index (interior cells). */

@@ -58,6 +58,7 @@ typedef struct {
     int32_t *seg;    /* ghost: own boundary point's segment; probe: -1 */
     double *t;       /* its parameter */
     double *ratio;   /* ghost: d / |P - BI| (1 for Eq. 39); probe: distance to the wall */
+    double *wu, *wv; /* ghost: its wall point's velocity at the last fill */
     double *geo;     /* IBM_GEO per entry: bix, biy, nx, ny, d, px, py */
     double *dep;     /* 4 per entry: bounding box (xlo, xhi, ylo, yhi) of what it read */
     uint8_t *level;  /* IbmStencilLevel */
@@ -96,6 +97,7 @@ struct Ibm {
     uint8_t *moved_bucket;
     int moved_cap;
     IbmUpdateStats last;
+    IbmGhostFaces faces;
 };
 
 /* ------------------------------------------------------------ geometry */

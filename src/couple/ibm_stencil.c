@@ -75,6 +75,8 @@ int ibm_stencils_reserve(IbmStencilSet *s, int n) {
     TRY(nspd_realloc(&s->seg, o, c, sizeof(int32_t)));
     TRY(nspd_realloc(&s->t, o, c, sizeof(double)));
     TRY(nspd_realloc(&s->ratio, o, c, sizeof(double)));
+    TRY(nspd_realloc(&s->wu, o, c, sizeof(double)));
+    TRY(nspd_realloc(&s->wv, o, c, sizeof(double)));
     TRY(nspd_realloc(&s->geo, IBM_GEO * o, IBM_GEO * c, sizeof(double)));
     TRY(nspd_realloc(&s->dep, 4 * o, 4 * c, sizeof(double)));
     TRY(nspd_realloc(&s->level, o, c, 1));
@@ -94,6 +96,8 @@ void ibm_stencils_free(IbmStencilSet *s) {
     nspd_free(&s->seg);
     nspd_free(&s->t);
     nspd_free(&s->ratio);
+    nspd_free(&s->wu);
+    nspd_free(&s->wv);
     nspd_free(&s->geo);
     nspd_free(&s->dep);
     nspd_free(&s->level);
@@ -115,6 +119,8 @@ void ibm_stencils_copy_entry(IbmStencilSet *d, int e, const IbmStencilSet *s, in
     d->seg[e] = s->seg[f];
     d->t[e] = s->t[f];
     d->ratio[e] = s->ratio[f];
+    d->wu[e] = s->wu[f];
+    d->wv[e] = s->wv[f];
     for (int q = 0; q < IBM_GEO; q++) d->geo[IBM_GEO * e + q] = s->geo[IBM_GEO * f + q];
     d->level[e] = s->level[f];
     d->nrep[e] = s->nrep[f];

@@ -74,6 +74,8 @@ struct FlowSolver {
     FlowWork *work;
     FlowGhostHook hook;
     void *hook_ctx;
+    const int32_t *wall_slot; /* flow_solver_set_ghost_walls */
+    const double *wall_u, *wall_v;
     double time;
     int64_t steps;
     int64_t fallbacks_last, fallbacks_total;
@@ -134,6 +136,12 @@ const FlowConfig *flow_solver_config(const FlowSolver *s) {
 void flow_solver_set_ghost_hook(FlowSolver *s, FlowGhostHook hook, void *ctx) {
     s->hook = hook;
     s->hook_ctx = ctx;
+}
+void flow_solver_set_ghost_walls(FlowSolver *s, const int32_t *slot, const double *u,
+                                 const double *v) {
+    s->wall_slot = slot;
+    s->wall_u = u;
+    s->wall_v = v;
 }
 double flow_solver_time(const FlowSolver *s) {
     return s->time;
@@ -447,6 +455,41 @@ static int64_t row_slopes(const FlowSolver *s, int j, double *const sx[4], doubl
     return nb;
 }
 
+/* The flux f[0..3][i] through a face with normal `dir` (0: x, 1: y) between
+ * cells kl (low side) and kr, if one is FLUID and the other an immersed-wall
+ * GHOST: mass from the wall motion only (flow_solver_set_ghost_walls). */
+static void ghost_face(const FlowSolver *s, int64_t kl, int64_t kr, int dir, double dt,
+                       double *const f[4], int i) {
+    const uint8_t al = s->kind[kl], ar = s->kind[kr];
+    int64_t kf, kg;
+    if (al == FLOW_CELL_FLUID && ar == FLOW_CELL_GHOST)
+        kf = kl, kg = kr;
+    else if (al == FLOW_CELL_GHOST && ar == FLOW_CELL_FLUID)
+        kf = kr, kg = kl;
+    else
+        return;
+    const int32_t e = s->wall_slot[kg];
+    if (e < 0) return;
+    const double gm1 = s->gas.gamma - 1.0;
+    double u = 0.0, v = 0.0, h = 0.0;
+    const int64_t ks[2] = {kf, kg};
+    for (int c = 0; c < 2; c++) {
+        const int64_t k = ks[c];
+        const double ir = 1.0 / s->w[0][k], uk = s->w[1][k] * ir, vk = s->w[2][k] * ir;
+        const double p = gm1 * (s->w[3][k] - 0.5 * (s->w[1][k] * uk + s->w[2][k] * vk));
+        u += 0.5 * uk;
+        v += 0.5 * vk;
+        h += 0.5 * (s->w[3][k] + p) * ir;
+    }
+    const double un = dir == 0 ? s->wall_u[e] : s->wall_v[e];
+    const double mass = dt * s->w[0][kf] * un;
+    const double removed = f[0][i] - mass;
+    f[0][i] = mass;
+    f[1][i] -= removed * u;
+    f[2][i] -= removed * v;
+    f[3][i] -= removed * h;
+}
+
 /* y-face fluxes between rows j and j+1 (cells 0 .. nx-1) into g[v]. */
 static void row_yflux(const FlowSolver *s, int j, double *const sxl[4], double *const syl[4],
                       double *const sxr[4], double *const syr[4], double dt,
@@ -475,6 +518,10 @@ static void row_yflux(const FlowSolver *s, int j, double *const sxl[4], double *
             if (wall[i] & WALL_MASS) gout[0][i] = 0.0;
             if (wall[i] & WALL_ENERGY) gout[3][i] = 0.0;
         }
+    if (s->wall_slot) {
+        const int64_t bl = grid_index(g, 0, j), br = grid_index(g, 0, j + 1);
+        for (int i = 0; i < g->nx; i++) ghost_face(s, bl + i, br + i, 1, dt, gout, i);
+    }
 }
 
 /* x-face fluxes of row j: face i (i = 0 .. nx) between cells i-1 and i. */
@@ -500,6 +547,10 @@ static void row_xflux(const FlowSolver *s, int j, double *const sx[4], double *c
     if (wlo & WALL_ENERGY) fout[3][0] = 0.0;
     if (whi & WALL_MASS) fout[0][g->nx] = 0.0;
     if (whi & WALL_ENERGY) fout[3][g->nx] = 0.0;
+    if (s->wall_slot) {
+        const int64_t b = grid_index(g, 0, j);
+        for (int i = 0; i <= g->nx; i++) ghost_face(s, b + i - 1, b + i, 0, dt, fout, i);
+    }
 }
 
 /* Wn of row j; returns non-zero if a fluid cell is not physical. */

@@ -124,6 +124,23 @@ const FlowConfig *flow_solver_config(const FlowSolver *s);
 
 void flow_solver_set_ghost_hook(FlowSolver *s, FlowGhostHook hook, void *ctx);
 
+/* Sealed ghost faces (immersed boundary; set by the ghost hook, valid until
+ * its next call): slot[k] (indexed with grid_index) is the index of ghost
+ * cell k into u[], v[], the velocity of its wall point, or -1. With them, a
+ * face between a FLUID and a GHOST cell with a slot carries the mass only
+ * that the wall's motion displaces,
+ *     F_rho' = dt rho_f u_w.n,
+ * and its momentum and energy fluxes lose what the removed mass carried,
+ *     F_m' = F_m - (F_rho - F_rho') u_face,   F_E' = F_E - (F_rho - F_rho') H_face,
+ * (rho_f the fluid cell's density; u_face, H_face the means of the two
+ * cells'); pressure, viscous stress and heat conduction are kept. The gas
+ * is then conserved to round-off round bodies at rest, and a fluid cell on
+ * the wall cannot drain into the body. The price: for mass the wall is the
+ * cell staircase, a first-order geometry (docs/VALIDATION.md). NULL slot:
+ * the faces carry the GKS flux of the reflected ghost state (Eq. 39). */
+void flow_solver_set_ghost_walls(FlowSolver *s, const int32_t *slot, const double *u,
+                                 const double *v);
+
 /* Fills the box ghost layers now (the step does it itself; for output). */
 void flow_solver_fill_boundaries(FlowSolver *s);
 

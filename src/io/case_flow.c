@@ -10,6 +10,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "couple/ibm.h"
 #include "io/case_bodies.h"
 #include "io/case_shapes.h"
 #include "io/cfg_read.h"
@@ -404,6 +405,8 @@ int case_read_flow(CfgNode *flow, FlowCaseConfig *fc) {
     TRY(cfg_opt_double(flow, "soft_start", 0.0, &fc->soft_start));
     TRY(cfg_check_range(flow, "soft_start", fc->soft_start, 0.0, 1e30,
                         "a length >= 0 in m over which the flow starts at the wall velocity"));
+    TRY(cfg_opt_enum(flow, "ghost_faces", IBM_GHOST_FACE_NAMES, IBM_FACES_REFLECTED,
+                     &fc->ghost_faces));
     if (fc->soft_start > 0 && fc->bodies.count == 0)
         return cfg_fail_at(flow, "soft_start",
                            "a soft start without flow.bodies; expected bodies "

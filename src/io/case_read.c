@@ -169,6 +169,7 @@ static int read_coupling(CfgNode *m, SimConfig *cfg) {
     }
     TRY(cfg_opt_double(m, "soft_start", 0.0, &c->soft_start));
     TRY(cfg_check_range(m, "soft_start", c->soft_start, 0.0, 1e30, "a length >= 0 in m"));
+    TRY(cfg_opt_enum(m, "ghost_faces", IBM_GHOST_FACE_NAMES, IBM_FACES_REFLECTED, &c->ghost_faces));
     /* the solid is built unloaded in the gas at its initial pressure */
     const FlowPrim *ref = f->has_free_stream ? &f->free_stream : &f->solver.initial;
     c->reference = (IbmReference){.rho = ref->rho,

@@ -87,6 +87,7 @@ static int create_bodies(Sim *sim) {
     sim->body_count = set->count;
     for (int b = 0; b < set->count; b++) TRY(ibm_body_markers(&set->bodies[b], &sim->bodies[b]));
     TRY(ibm_create(&sim->ibm, flow_solver_grid(sim->flow), sim->bodies, sim->body_count));
+    ibm_set_ghost_faces(sim->ibm, (IbmGhostFaces)sim->cfg.flow.ghost_faces);
     TRY(ibm_attach(sim->ibm, sim->flow));
     if (sim->cfg.flow.soft_start > 0) ibm_soft_start(sim->ibm, sim->flow, sim->cfg.flow.soft_start);
     TRY(ibm_surface_reserve(sim->ibm, &sim->surface));

@@ -27,6 +27,7 @@ typedef struct {
     double reference_length; /* m; 0 if not given */
     IbmBodySet bodies;       /* fixed immersed bodies (flow.bodies) */
     double soft_start;       /* m: ibm_soft_start length for the bodies (0: none) */
+    int ghost_faces;         /* IbmGhostFaces of the bodies */
 } FlowCaseConfig;
 
 typedef enum {

@@ -3,7 +3,9 @@
  * and the coefficients agree with the solver-level study at this grid
  * (tests/verify/ibm_cylinder: D/16 at t = 16 gives C_D 1.5004, Cp_stag
  * -1.26 % from pitot; this case file runs CFL 0.8 and a shorter t = 8).
- * Measured here: C_D 1.5341 (averaged over t >= 4), Cp_stag 1.6432 (-0.85 %).
+ * Measured here, with the case file's sealed ghost faces: C_D 1.5154
+ * (averaged over t >= 4), Cp_stag 1.6570 (-0.02 %); with the paper's
+ * reflected faces it was 1.5341 and 1.6432 (-0.85 %).
  * Bounds: C_D within 5 % of 1.55 and Cp_stag within 2 % of the Rayleigh pitot
  * value, as the issue asks of the quick cylinder. */
 #include "sim_fixtures.h"

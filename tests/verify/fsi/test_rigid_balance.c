@@ -7,6 +7,7 @@
  * polygon through the outermost lattice points, which lie up to a spacing
  * inside the disc's edge; the disc is therefore made half a spacing larger
  * (radius 0.5 + dx/2) so that the loop's mean radius is the cylinder's.
+ * Both walls have sealed ghost faces, as the case file.
  *
  * And at every coupled step the force the solid receives, sum_i V_i f_i /
  * thickness, equals the integral of the surface tractions the flow exerts,
@@ -33,11 +34,12 @@ static const char *const SOLID[] = {
     GRID_D16,
     "flow.bodies=~",
     "flow.soft_start=~",
+    "flow.ghost_faces=~",
     "time.end=8.0",
     "output.average_from=4.0",
     "solid={model: plane_stress, spacing: 0.02, material: {density: 1.0e4, youngs_modulus: 1.0e6}, "
     "geometry: [{shape: disc, center: [2.0, 6.0], radius: 0.51}], integrator: velocity_verlet}",
-    "coupling={hold: balance, soft_start: 0.5}",
+    "coupling={hold: balance, soft_start: 0.5, ghost_faces: sealed}",
 };
 
 /* Time-averaged C_D of the run (t >= 4). */
@@ -58,6 +60,9 @@ static void test_stiff_disc_is_rigid(void **state) {
     double cd_pd = average_cd(&soft);
     print_message("C_D rigid immersed boundary %.4f, stiff PD disc %.4f (%+.2f %%)\n", cd_rigid,
                   cd_pd, 100 * (cd_pd / cd_rigid - 1));
+    /* Measured: 1.5154 and 1.5345, +1.26 % (with reflected faces on both
+     * 1.5341 and 1.5545, +1.33 %): the polygon through the lattice points is
+     * not a circle at D/16; bound 2 %. */
     assert_true(fabs(cd_pd / cd_rigid - 1) < 0.02);
     sim_destroy(&soft);
 }
