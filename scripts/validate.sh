@@ -71,15 +71,28 @@ awk -F, '$1 >= 0.2 && $1 <= 0.8 { e = $3 * sqrt($2) / 0.664 - 1; if ((e < 0 ? -e
     END { printf "Blasius: Cf/Cf_Blasius - 1 over Re_x 2e4..8e4: worst %+.4f, mean %+.4f (%d cells)\n", w, s / n, n }' \
     "$out/blasius/cf.csv" | tee "$out/blasius.txt"
 
-# D/128 (D/512, the paper's, takes more than a day on 2 cores): the case
-# file's sealed ghost faces carry it from rest (with the paper's reflected
-# faces it stopped at t = 2.95, docs/VALIDATION.md). About 70 min.
-echo "== cylinder, Ma 2, Re 300 (paper Sec. 4.1.2) at D/128 (D/512 takes more than a day on 2 cores)"
-h=0.0078125
-"$nspd" run cases/cylinder_ma2_re300.yaml -o "$out/cylinder" --force --quiet \
-    --set "flow.grid.x.segments=[{length: 0.6, spacing_start: 0.08, spacing_end: $h}, {length: 2.2, spacing: $h}, {length: 7.2, spacing_start: $h, spacing_end: 0.5}]" \
-    --set "flow.grid.y.segments=[{length: 4.6, spacing_start: 0.5, spacing_end: $h}, {length: 2.8, spacing: $h}, {length: 4.6, spacing_start: $h, spacing_end: 0.5}]" \
-    --set flow.bodies.0.markers=808
+# The case file at h = D/n with about two markers per cell, into $out/$3.
+cylinder_at() {
+    local h
+    h=$(awk -v n="$1" 'BEGIN { printf "%.10g", 1 / n }')
+    "$nspd" run cases/cylinder_ma2_re300.yaml -o "$out/$3" --force --quiet \
+        --set "flow.grid.x.segments=[{length: 0.6, spacing_start: 0.08, spacing_end: $h}, {length: 2.2, spacing: $h}, {length: 7.2, spacing_start: $h, spacing_end: 0.5}]" \
+        --set "flow.grid.y.segments=[{length: 4.6, spacing_start: 0.5, spacing_end: $h}, {length: 2.8, spacing: $h}, {length: 4.6, spacing_start: $h, spacing_end: 0.5}]" \
+        --set flow.bodies.0.markers="$2"
+}
+echo "== cylinder, Ma 2, Re 300: grid convergence of the case file, t = 30"
+rm -f "$out/cylinder_convergence.txt"
+for nm in 16:104 32:202 64:404; do
+    cylinder_at "${nm%%:*}" "${nm##*:}" "cylinder_d${nm%%:*}"
+    sed -n 's/.*"\(cd\|cd_pressure\|cd_viscous\|cp_stagnation\)": \(.*\),*/D\/'"${nm%%:*}"': \1 = \2/p' \
+        "$out/cylinder_d${nm%%:*}/summary.json" | tee -a "$out/cylinder_convergence.txt"
+done
+# D/128, the finest this machine runs (the paper's D/512 takes more than a
+# day on 2 cores), about 70 min: the case file's sealed ghost faces carry it
+# from rest (with the paper's reflected faces it stopped at t = 2.95,
+# docs/VALIDATION.md).
+echo "== cylinder, Ma 2, Re 300 (paper Sec. 4.1.2) at D/128"
+cylinder_at 128 808 cylinder
 surf=$(ls "$out/cylinder"/surface_*.csv | tail -1)
 line=$(ls "$out/cylinder"/line_centre_line_*.csv | tail -1)
 # Rayleigh pitot Cp at Ma 2, gamma 1.4: 1.6573; stand-off: the bow shock is
