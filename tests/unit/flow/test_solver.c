@@ -1,4 +1,4 @@
-/* Flow operator plumbing: cell kinds and the ghost hook, the numeric check,
+/* Flow operator plumbing: cell kinds and the ghost hook, sealed ghost faces,
  * accessors, the benchmark entry point. */
 #include "test_support.h"
 
@@ -74,6 +74,59 @@ static void test_kinds_and_hook(void **state) {
         }
     flow_solver_destroy(&s);
     assert_null(s);
+}
+
+/* Sealed ghost faces (flow_solver_set_ghost_walls): the same ring with its
+ * walls at rest. Fluid cell (3, 6) meets the ring only at its right face,
+ * and the state is uniform, so one step changes it only by what that face
+ * no longer carries: the face keeps the pressure and loses the convected
+ * mass, momentum and enthalpy, so
+ *     d rho = dt rho u / dx,  d (rho u) = dt rho u^2 / dx,  d (rho E) = dt rho u H / dx.
+ * With the walls moving with the stream the face carries the stream's flux
+ * and nothing changes. */
+static void sealed_ring_step(double wall_u, double wall_v, double out[4]) {
+    FlowConfig c;
+    base_config(&c, 16);
+    FlowSolver *s = NULL;
+    assert_ok(flow_solver_create(&s, &c));
+    const Grid *g = flow_solver_grid(s);
+    FlowFields f = flow_solver_fields(s);
+    int32_t *slot = test_malloc((size_t)g->size * sizeof(int32_t));
+    double wu[28], wv[28];
+    for (int64_t k = 0; k < g->size; k++) slot[k] = -1;
+    int n = 0;
+    for (int j = 4; j < 12; j++)
+        for (int i = 4; i < 12; i++) {
+            const int64_t k = grid_index(g, i, j);
+            const int ring = i == 4 || i == 11 || j == 4 || j == 11;
+            f.kind[k] = ring ? FLOW_CELL_GHOST : FLOW_CELL_SOLID;
+            if (ring) wu[n] = wall_u, wv[n] = wall_v, slot[k] = n++;
+        }
+    assert_int_equal(n, 28);
+    HookCtx ctx = {0};
+    flow_solver_set_ghost_hook(s, hook, &ctx);
+    flow_solver_set_ghost_walls(s, slot, wu, wv);
+    assert_ok(flow_solver_step(s, 1e-3));
+    f = flow_solver_fields(s);
+    for (int v = 0; v < 4; v++) out[v] = f.w[v][grid_index(g, 3, 6)];
+    flow_solver_destroy(&s);
+    test_free(slot);
+}
+
+static void test_sealed_ghost_faces(void **state) {
+    (void)state;
+    const double rho = 1.0, u = 0.3, v = 0.1, p = 1.0, E = p / 0.4 + 0.5 * (u * u + v * v);
+    const double H = E + p / rho, dt = 1e-3, dx = 1.0 / 16;
+    double w[4];
+    sealed_ring_step(0.0, 0.0, w);
+    assert_close(w[0], rho + dt * rho * u / dx, 1e-13);
+    assert_close(w[1], rho * u + dt * rho * u * u / dx, 1e-13);
+    assert_close(w[2], rho * v + dt * rho * u * v / dx, 1e-13);
+    assert_close(w[3], rho * E + dt * rho * u * H / dx, 1e-13);
+    sealed_ring_step(u, v, w);
+    assert_close(w[0], rho, 1e-13);
+    assert_close(w[1], rho * u, 1e-13);
+    assert_close(w[3], rho * E, 1e-13);
 }
 
 static void test_numeric_check_names_the_cell(void **state) {
@@ -177,6 +230,7 @@ static void test_bench_runs(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_kinds_and_hook),
+        cmocka_unit_test(test_sealed_ghost_faces),
         cmocka_unit_test(test_numeric_check_names_the_cell),
         cmocka_unit_test(test_accessors_and_dt),
         cmocka_unit_test(test_bad_config),
