@@ -1,5 +1,5 @@
 /* Flow operator plumbing: cell kinds and the ghost hook, sealed ghost faces,
- * accessors, the benchmark entry point. */
+ * the numeric check, accessors, the benchmark entry point. */
 #include "test_support.h"
 
 #include "core/status.h"
