@@ -87,8 +87,8 @@ for nm in 16:104 32:202 64:404; do
     sed -n 's/.*"\(cd\|cd_pressure\|cd_viscous\|cp_stagnation\)": \(.*\),*/D\/'"${nm%%:*}"': \1 = \2/p' \
         "$out/cylinder_d${nm%%:*}/summary.json" | tee -a "$out/cylinder_convergence.txt"
 done
-# D/128, the finest this machine runs (the paper's D/512 takes more than a
-# day on 2 cores), about 70 min: the case file's sealed ghost faces carry it
+# D/128, the finest this machine runs (the paper's D/512 takes about five
+# days on 2 cores), about 60 min: the case file's sealed ghost faces carry it
 # from rest (with the paper's reflected faces it stopped at t = 2.95,
 # docs/VALIDATION.md).
 echo "== cylinder, Ma 2, Re 300 (paper Sec. 4.1.2) at D/128"
