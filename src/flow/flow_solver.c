@@ -470,16 +470,16 @@ static void ghost_face(const FlowSolver *s, int64_t kl, int64_t kr, int dir, dou
         return;
     const int32_t e = s->wall_slot[kg];
     if (e < 0) return;
-    const double gm1 = s->gas.gamma - 1.0;
-    double u = 0.0, v = 0.0, h = 0.0;
+    double u = 0.0, v = 0.0, h = 0.0; /* face means */
     const int64_t ks[2] = {kf, kg};
     for (int c = 0; c < 2; c++) {
         const int64_t k = ks[c];
-        const double ir = 1.0 / s->w[0][k], uk = s->w[1][k] * ir, vk = s->w[2][k] * ir;
-        const double p = gm1 * (s->w[3][k] - 0.5 * (s->w[1][k] * uk + s->w[2][k] * vk));
-        u += 0.5 * uk;
-        v += 0.5 * vk;
-        h += 0.5 * (s->w[3][k] + p) * ir;
+        const double w[4] = {s->w[0][k], s->w[1][k], s->w[2][k], s->w[3][k]};
+        FlowPrim q;
+        flow_cons_to_prim(w, s->gas.gamma, &q);
+        u += 0.5 * q.u;
+        v += 0.5 * q.v;
+        h += 0.5 * (w[3] + q.p) / q.rho;
     }
     const double un = dir == 0 ? s->wall_u[e] : s->wall_v[e];
     const double mass = dt * s->w[0][kf] * un;
