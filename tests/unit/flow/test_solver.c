@@ -41,6 +41,28 @@ static void hook(void *ctx, FlowSolver *s) {
         }
 }
 
+/* Cells 4..11 x 4..11 of a 16 x 16 solver: a ring of ghosts round a solid
+ * block holding NaN. With `slot` (grid-sized), numbers the ring cells in it
+ * (-1 elsewhere). Returns the ring's size. */
+static int make_ring(FlowSolver *s, int32_t *slot) {
+    const Grid *g = flow_solver_grid(s);
+    FlowFields f = flow_solver_fields(s);
+    if (slot)
+        for (int64_t k = 0; k < g->size; k++) slot[k] = -1;
+    int n = 0;
+    for (int j = 4; j < 12; j++)
+        for (int i = 4; i < 12; i++) {
+            const int64_t k = grid_index(g, i, j);
+            const int ring = i == 4 || i == 11 || j == 4 || j == 11;
+            f.kind[k] = ring ? FLOW_CELL_GHOST : FLOW_CELL_SOLID;
+            if (ring && slot) slot[k] = n;
+            n += ring;
+            if (!ring)
+                for (int v = 0; v < 4; v++) f.w[v][k] = NAN;
+        }
+    return n;
+}
+
 static void test_kinds_and_hook(void **state) {
     (void)state;
     FlowConfig c;
@@ -48,20 +70,12 @@ static void test_kinds_and_hook(void **state) {
     FlowSolver *s = NULL;
     assert_ok(flow_solver_create(&s, &c));
     const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
-    for (int j = 4; j < 12; j++)
-        for (int i = 4; i < 12; i++) {
-            const int64_t k = grid_index(g, i, j);
-            const int ring = i == 4 || i == 11 || j == 4 || j == 11;
-            f.kind[k] = ring ? FLOW_CELL_GHOST : FLOW_CELL_SOLID;
-            if (!ring)
-                for (int v = 0; v < 4; v++) f.w[v][k] = NAN;
-        }
+    make_ring(s, NULL);
     HookCtx ctx = {0};
     flow_solver_set_ghost_hook(s, hook, &ctx);
     for (int n = 0; n < 5; n++) assert_ok(flow_solver_step(s, 1e-3));
     assert_int_equal(ctx.calls, 5);
-    f = flow_solver_fields(s);
+    FlowFields f = flow_solver_fields(s);
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
             const int64_t k = grid_index(g, i, j);
@@ -90,24 +104,15 @@ static void sealed_ring_step(double wall_u, double wall_v, double out[4]) {
     FlowSolver *s = NULL;
     assert_ok(flow_solver_create(&s, &c));
     const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
     int32_t *slot = test_malloc((size_t)g->size * sizeof(int32_t));
     double wu[28], wv[28];
-    for (int64_t k = 0; k < g->size; k++) slot[k] = -1;
-    int n = 0;
-    for (int j = 4; j < 12; j++)
-        for (int i = 4; i < 12; i++) {
-            const int64_t k = grid_index(g, i, j);
-            const int ring = i == 4 || i == 11 || j == 4 || j == 11;
-            f.kind[k] = ring ? FLOW_CELL_GHOST : FLOW_CELL_SOLID;
-            if (ring) wu[n] = wall_u, wv[n] = wall_v, slot[k] = n++;
-        }
-    assert_int_equal(n, 28);
+    assert_int_equal(make_ring(s, slot), 28);
+    for (int e = 0; e < 28; e++) wu[e] = wall_u, wv[e] = wall_v;
     HookCtx ctx = {0};
     flow_solver_set_ghost_hook(s, hook, &ctx);
     flow_solver_set_ghost_walls(s, slot, wu, wv);
     assert_ok(flow_solver_step(s, 1e-3));
-    f = flow_solver_fields(s);
+    FlowFields f = flow_solver_fields(s);
     for (int v = 0; v < 4; v++) out[v] = f.w[v][grid_index(g, 3, 6)];
     flow_solver_destroy(&s);
     test_free(slot);

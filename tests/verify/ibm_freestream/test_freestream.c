@@ -78,6 +78,17 @@ static void make_bodies(IbmPolyline b[2], double u, double v, int thermal, doubl
         for (int k = 0; k < b[q].n; k++) b[q].vx[k] = u, b[q].vy[k] = v;
 }
 
+/* make_bodies, attached to s with `faces`; the polylines go to b. */
+static Ibm *attach_bodies(FlowSolver *s, IbmGhostFaces faces, IbmPolyline b[2], double u, double v,
+                          int thermal, double T) {
+    make_bodies(b, u, v, thermal, T);
+    Ibm *ibm = NULL;
+    assert_ok(ibm_create(&ibm, flow_solver_grid(s), b, 2));
+    ibm_set_ghost_faces(ibm, faces);
+    assert_ok(ibm_attach(ibm, s));
+    return ibm;
+}
+
 static void moving_walls(IbmGhostFaces faces) {
     const double U = 0.8, a = M_PI / 6;
     const FlowPrim q = {1.0, U * cos(a), U * sin(a), 1.0 / 1.4};
@@ -86,11 +97,7 @@ static void moving_walls(IbmGhostFaces faces) {
     FlowSolver *s = NULL;
     assert_ok(flow_solver_create(&s, &c));
     IbmPolyline b[2];
-    make_bodies(b, q.u, q.v, IBM_WALL_ADIABATIC, 0.0);
-    Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), b, 2));
-    ibm_set_ghost_faces(ibm, faces);
-    assert_ok(ibm_attach(ibm, s));
+    Ibm *ibm = attach_bodies(s, faces, b, q.u, q.v, IBM_WALL_ADIABATIC, 0.0);
     const Grid *g = flow_solver_grid(s);
     IbmUpdateStats st;
     ibm_stats(ibm, &st);
@@ -130,11 +137,7 @@ static double mass_drift(IbmGhostFaces faces) {
     FlowSolver *s = NULL;
     assert_ok(flow_solver_create(&s, &c));
     IbmPolyline b[2];
-    make_bodies(b, 0.0, 0.0, IBM_WALL_ADIABATIC, 0.0);
-    Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), b, 2));
-    ibm_set_ghost_faces(ibm, faces);
-    assert_ok(ibm_attach(ibm, s));
+    Ibm *ibm = attach_bodies(s, faces, b, 0.0, 0.0, IBM_WALL_ADIABATIC, 0.0);
     double t0[4], t1[4];
     flow_solver_totals(s, t0);
     for (int k = 0; k < 100; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
@@ -164,11 +167,8 @@ static void test_rest_isothermal(void **state) {
     config(&c, q);
     FlowSolver *s = NULL;
     assert_ok(flow_solver_create(&s, &c));
-    IbmPolyline b[2];
-    make_bodies(b, 0.0, 0.0, IBM_WALL_ISOTHERMAL, 1.0 / 1.4); /* T = p / (rho R) */
-    Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), b, 2));
-    assert_ok(ibm_attach(ibm, s));
+    IbmPolyline b[2]; /* T = p / (rho R) */
+    Ibm *ibm = attach_bodies(s, IBM_FACES_REFLECTED, b, 0.0, 0.0, IBM_WALL_ISOTHERMAL, 1.0 / 1.4);
     for (int k = 0; k < 20; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
     const double d = deviation(s, q);
     printf("gas at rest, isothermal walls at rest: relative deviation after 20 steps %.2e\n", d);
@@ -188,11 +188,7 @@ static void run_threads(int threads, IbmGhostFaces faces, double *out, int64_t n
     FlowSolver *s = NULL;
     assert_ok(flow_solver_create(&s, &c));
     IbmPolyline b[2];
-    make_bodies(b, 0.0, 0.0, IBM_WALL_ADIABATIC, 0.0);
-    Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), b, 2));
-    ibm_set_ghost_faces(ibm, faces);
-    assert_ok(ibm_attach(ibm, s));
+    Ibm *ibm = attach_bodies(s, faces, b, 0.0, 0.0, IBM_WALL_ADIABATIC, 0.0);
     ibm_soft_start(ibm, s, 0.1);
     for (int k = 0; k < 20; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
     FlowFields f = flow_solver_fields(s);
