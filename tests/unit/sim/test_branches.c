@@ -58,14 +58,21 @@ static void test_symmetric_and_skewed_branches(void **state) {
     check(50, 20);
 }
 
+/* A 160 x 80 block (spacing 0.5 mm) and its damage field (allocated here):
+ * a straight crack, damage 0.5 within 0.5 mm of y = 20 mm. */
+static double *straight_crack_block(PdBody *b) {
+    PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4);
+    assert_ok(pd_body_create(b, &cfg));
+    double *damage;
+    assert_ok(nspd_alloc(&damage, (size_t)b->n, sizeof(double)));
+    for (int64_t i = 0; i < b->n; i++) damage[i] = fabs(b->x[1][i] - 0.020) <= 5e-4 ? 0.5 : 0.0;
+    return damage;
+}
+
 static void test_straight_crack_does_not_branch(void **state) {
     (void)state;
-    PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4);
     PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
-    double *damage;
-    assert_ok(nspd_alloc(&damage, (size_t)b.n, sizeof(double)));
-    for (int64_t i = 0; i < b.n; i++) damage[i] = fabs(b.x[1][i] - 0.020) <= 5e-4 ? 0.5 : 0.0;
+    double *damage = straight_crack_block(&b);
     ProbeConfig c = {.kind = PROBE_BRANCHES,
                      .at = {0.010, 0.020, 0},
                      .direction = {1, 0, 0},
@@ -83,11 +90,8 @@ static void test_straight_crack_does_not_branch(void **state) {
  * body has broken up and damage is everywhere). */
 static void test_first_branching_is_kept(void **state) {
     (void)state;
-    PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4);
     PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
-    double *damage;
-    assert_ok(nspd_alloc(&damage, (size_t)b.n, sizeof(double)));
+    double *damage = straight_crack_block(&b);
     ProbeConfig c = {.kind = PROBE_BRANCHES,
                      .at = {0.010, 0.020, 0},
                      .direction = {1, 0, 0},
@@ -95,7 +99,6 @@ static void test_first_branching_is_kept(void **state) {
                      .extent = 0.005};
     ProbeState p = {.cfg = &c, .t_first_branch = (double)NAN};
     /* t = 1: a straight crack, no branch yet */
-    for (int64_t i = 0; i < b.n; i++) damage[i] = fabs(b.x[1][i] - 0.020) <= 5e-4 ? 0.5 : 0.0;
     probes_sample(&p, 1, &b, damage, NULL, 1.0, NULL);
     assert_true(isnan(p.t_first_branch));
     /* t = 2: the Y of 130 degrees */
