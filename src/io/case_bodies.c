@@ -23,18 +23,6 @@ static int read_markers(CfgNode *item, const char *key, int64_t def, int64_t lo,
     return NSPD_OK;
 }
 
-/* The path of `file` relative to the directory of the case file that
- * names it (absolute paths and --set values as given). */
-static void resolve_path(const CfgNode *node, const char *file, char *out, size_t size) {
-    const char *slash =
-        node->origin == CFG_FROM_FILE && node->file ? strrchr(node->file, '/') : NULL;
-    if (file[0] == '/' || !slash) {
-        snprintf(out, size, "%s", file);
-        return;
-    }
-    snprintf(out, size, "%.*s/%s", (int)(slash - node->file), node->file, file);
-}
-
 /* Parses "x, y" or "x y" (with optional trailing text after a '#'). */
 static int parse_pair(char *line, double *x, double *y) {
     char *hash = strchr(line, '#');
@@ -65,7 +53,7 @@ static int blank(const char *s) {
 static int read_csv(CfgNode *item, IbmBodyConfig *b) {
     const char *file;
     TRY(cfg_req_string(item, "file", &file));
-    resolve_path(cfg_map_find(item, "file"), file, b->path, sizeof b->path);
+    cfg_resolve_path(cfg_map_find(item, "file"), file, b->path, sizeof b->path);
     FILE *fp = fopen(b->path, "r");
     if (!fp)
         return cfg_fail_at(item, "file", "cannot read '%s' (%s); expected a CSV file of x, y",

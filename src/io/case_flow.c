@@ -11,8 +11,10 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "couple/ibm.h"
+#include "flow/field_sample.h"
 #include "io/case_bodies.h"
 #include "io/case_shapes.h"
+#include "io/vtk_read.h"
 #include "io/cfg_read.h"
 
 #include <math.h>
@@ -311,11 +313,72 @@ static int read_face(CfgNode *bcs, int face, const StateContext *sc, FlowFaceBc 
     return NSPD_OK;
 }
 
+/* initial.from: an earlier run's flow_NNNNN.vtr, loaded into fc->field. */
+static int read_field(CfgNode *ini, FlowCaseConfig *fc) {
+    const char *file;
+    TRY(cfg_req_string(ini, "from", &file));
+    CfgNode *node = cfg_map_find(ini, "from");
+    for (const char *const *key = (const char *const[]){"state", "regions", "vortex", NULL}; *key;
+         key++)
+        if (cfg_map_find(ini, *key))
+            return cfg_fail_at(ini, *key, "given together with 'from'; expected one of them");
+    if (!fc->has_free_stream)
+        return cfg_fail(node, "no flow.free_stream; a case started from a field needs one as the "
+                              "reference state of its coefficients");
+    char path[4096];
+    cfg_resolve_path(node, file, path, sizeof path);
+    VtkRectilinear vtr;
+    int status = vtk_read_rectilinear(path, &vtr);
+    const VtkCellArray *rho = NULL, *vel = NULL, *p = NULL, *kind = NULL;
+    if (status == NSPD_OK) {
+        rho = vtk_find_cell_array(&vtr, "density", 1);
+        vel = vtk_find_cell_array(&vtr, "velocity", 3);
+        p = vtk_find_cell_array(&vtr, "pressure", 1);
+        kind = vtk_find_cell_array(&vtr, "cell_kind", 1);
+        if (!rho || !vel || !p)
+            status = NSPD_FAIL(NSPD_ERR_INPUT, "'%s' has no %s array", path,
+                               !rho ? "density" : !vel ? "velocity (3 components)" : "pressure");
+        else if (vtr.n[2] != 1)
+            status = NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is %d cells deep; expected a 2D field", path,
+                               vtr.n[2]);
+    }
+    if (status == NSPD_OK)
+        status = flow_field_source_create(&fc->field, vtr.n[0], vtr.n[1], vtr.face[0], vtr.face[1]);
+    if (status == NSPD_OK) {
+        fc->has_field = true;
+        FlowFieldSource *f = &fc->field;
+        for (int64_t k = 0; k < (int64_t)f->nx * f->ny; k++) {
+            f->rho[k] = rho->data[k];
+            f->u[k] = vel->data[3 * k];
+            f->v[k] = vel->data[3 * k + 1];
+            f->p[k] = p->data[k];
+            f->valid[k] = !kind || kind->data[k] != FLOW_CELL_SOLID;
+            if (f->valid[k] && !(f->rho[k] > 0.0 && f->p[k] > 0.0)) {
+                status = NSPD_FAIL(NSPD_ERR_INPUT,
+                                   "'%s': cell %lld holds density %g, pressure %g; expected a "
+                                   "physical state",
+                                   path, (long long)k, f->rho[k], f->p[k]);
+                break;
+            }
+        }
+    }
+    vtk_rectilinear_free(&vtr);
+    if (status == NSPD_OK) return NSPD_OK;
+    char why[1024]; /* cfg_fail replaces the message it is given */
+    snprintf(why, sizeof why, "%s", nspd_error_message());
+    return cfg_fail(node, "%s", why);
+}
+
 static int read_initial(CfgNode *flow, FlowCaseConfig *fc, const StateContext *sc) {
     FlowConfig *c = &fc->solver;
     CfgNode *ini;
     TRY(cfg_req_map(flow, "initial", &ini));
-    TRY(read_state(ini, "state", sc, &c->initial));
+    if (cfg_map_find(ini, "from")) {
+        TRY(read_field(ini, fc));
+        c->initial = fc->free_stream; /* unused by the field; kept as the reference */
+    } else {
+        TRY(read_state(ini, "state", sc, &c->initial));
+    }
     CfgNode *seq;
     TRY(cfg_opt_seq(ini, "regions", &seq));
     if (seq) {
@@ -411,5 +474,9 @@ int case_read_flow(CfgNode *flow, FlowCaseConfig *fc) {
         return cfg_fail_at(flow, "soft_start",
                            "a soft start without flow.bodies; expected bodies "
                            "(a coupled solid takes coupling.soft_start)");
+    if (fc->soft_start > 0 && fc->has_field)
+        return cfg_fail_at(flow, "soft_start",
+                           "a soft start would stop the flow of initial.from near the bodies; "
+                           "expected soft_start: 0");
     return cfg_end_map(flow);
 }

@@ -357,3 +357,13 @@ int cfg_end_map(const CfgNode *map) {
     }
     return NSPD_OK;
 }
+
+void cfg_resolve_path(const CfgNode *node, const char *file, char *out, size_t size) {
+    const char *slash =
+        node->origin == CFG_FROM_FILE && node->file ? strrchr(node->file, '/') : NULL;
+    if (file[0] == '/' || !slash) {
+        snprintf(out, size, "%s", file);
+        return;
+    }
+    snprintf(out, size, "%.*s/%s", (int)(slash - node->file), node->file, file);
+}

@@ -55,4 +55,8 @@ int cfg_check_range(const CfgNode *map, const char *key, double value, double lo
 /* Refuses the first key of `map` that no getter read. */
 int cfg_end_map(const CfgNode *map);
 
+/* The path `file`, named by `node`, relative to the directory of the case
+ * file it came from (absolute paths and --set values as given), into out. */
+void cfg_resolve_path(const CfgNode *node, const char *file, char *out, size_t size);
+
 #endif

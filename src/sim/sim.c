@@ -61,6 +61,10 @@ static int create_flow(Sim *sim) {
         c->init_fn = flow_isentropic_vortex;
         c->init_ctx = vx;
     }
+    if (fc->has_field) {
+        c->init_fn = flow_field_sample;
+        c->init_ctx = &fc->field;
+    }
     TRY(flow_solver_create(&sim->flow, c));
     sim->has_flow = true;
     const Grid *g = flow_solver_grid(sim->flow);

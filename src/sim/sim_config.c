@@ -12,6 +12,8 @@ void flow_case_config_free(FlowCaseConfig *flow) {
     for (int i = 0; i < flow->region_count; i++) shapeset_free(&flow->regions[i].shapes);
     nspd_free(&flow->regions);
     flow->region_count = 0;
+    flow_field_source_free(&flow->field);
+    flow->has_field = false;
 }
 
 void sim_config_free(SimConfig *cfg) {

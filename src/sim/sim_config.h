@@ -7,6 +7,7 @@
 #include "core/shape.h"
 #include "couple/fsi.h"
 #include "couple/ibm_body.h"
+#include "flow/field_sample.h"
 #include "flow/flow_solver.h"
 #include "solid/pd_config.h"
 
@@ -20,6 +21,8 @@ typedef struct {
     FlowRegion *regions; /* owned, with their shapes */
     bool has_vortex;
     FlowVortex vortex; /* solver.init_fn points at it when has_vortex */
+    bool has_field;
+    FlowFieldSource field; /* initial.from, owned; solver.init_fn samples it */
     /* the free stream, when the case defines one: the reference of Mach
      * number, pressure coefficient and force coefficients */
     bool has_free_stream;

@@ -1,0 +1,179 @@
+/* Reader of nspd's own .vtr files (vtk_read.h).
+ *
+ * The header is small XML that vtk_write_rectilinear prints line by line;
+ * rather than pull in an XML library for one known layout, it is scanned
+ * for the attributes that matter (WholeExtent; per DataArray: type, Name,
+ * NumberOfComponents, format, offset) and the appended block is located by
+ * its `_` marker. Each block's UInt64 byte count is checked against the
+ * size the extent implies, so a truncated or foreign file fails cleanly. */
+#include "io/vtk_read.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <inttypes.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { HEADER_MAX = 1 << 16 };
+
+typedef struct {
+    char name[VTK_MAX_NAME];
+    int components;
+    uint64_t offset;
+    int is_coordinate;
+} Declared;
+
+/* The value of attribute `key` in the tag starting at `tag` (up to '>'),
+ * copied into buf; 0 if absent. */
+static int attribute(const char *tag, const char *key, char *buf, size_t size) {
+    const char *end = strchr(tag, '>');
+    char pattern[64];
+    snprintf(pattern, sizeof pattern, " %s=\"", key);
+    const char *p = strstr(tag, pattern);
+    if (!p || (end && p > end)) return 0;
+    p += strlen(pattern);
+    const char *q = strchr(p, '"');
+    if (!q || (size_t)(q - p) >= size) return 0;
+    memcpy(buf, p, (size_t)(q - p));
+    buf[q - p] = '\0';
+    return 1;
+}
+
+static int parse_header(const char *path, const char *h, VtkRectilinear *out, Declared *decl,
+                        int *decl_count) {
+    if (!strstr(h, "<VTKFile type=\"RectilinearGrid\""))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is not a VTK rectilinear grid (.vtr) file", path);
+    if (!strstr(h, "byte_order=\"LittleEndian\"") || !strstr(h, "header_type=\"UInt64\""))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "'%s': expected little-endian data with UInt64 block headers, as nspd "
+                         "writes them",
+                         path);
+    const char *grid = strstr(h, "<RectilinearGrid");
+    char buf[128];
+    int e[6];
+    if (!grid || !attribute(grid, "WholeExtent", buf, sizeof buf) ||
+        sscanf(buf, "%d %d %d %d %d %d", &e[0], &e[1], &e[2], &e[3], &e[4], &e[5]) != 6)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no WholeExtent in the header", path);
+    for (int a = 0; a < 3; a++) {
+        out->n[a] = e[2 * a + 1] - e[2 * a];
+        if (out->n[a] < 1 || out->n[a] > (1 << 24))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': WholeExtent '%s' is not a grid of cells", path,
+                             buf);
+    }
+    const char *coords = strstr(h, "<Coordinates>");
+    *decl_count = 0;
+    for (const char *p = strstr(h, "<DataArray"); p; p = strstr(p + 1, "<DataArray")) {
+        if (*decl_count == VTK_MAX_ARRAYS + 3)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d arrays", path, VTK_MAX_ARRAYS);
+        Declared *d = &decl[(*decl_count)++];
+        char type[32], format[32], comps[16], off[32];
+        if (!attribute(p, "Name", d->name, sizeof d->name) ||
+            !attribute(p, "type", type, sizeof type) ||
+            !attribute(p, "format", format, sizeof format) ||
+            !attribute(p, "offset", off, sizeof off))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a DataArray without Name, type or offset",
+                             path);
+        if (strcmp(type, "Float64") != 0 || strcmp(format, "appended") != 0)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "'%s': array '%s' is %s, %s; expected Float64, appended (as nspd "
+                             "writes it)",
+                             path, d->name, type, format);
+        d->components = attribute(p, "NumberOfComponents", comps, sizeof comps) ? atoi(comps) : 1;
+        if (d->components < 1 || d->components > 3)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' has %d components", path, d->name,
+                             d->components);
+        d->offset = strtoull(off, NULL, 10);
+        d->is_coordinate = coords && p > coords;
+    }
+    return NSPD_OK;
+}
+
+/* Reads the block at `offset` into *data (count doubles). */
+static int read_block(FILE *f, const char *path, long base, const Declared *d, uint64_t count,
+                      double **data) {
+    uint64_t bytes;
+    if (fseek(f, base + (long)d->offset, SEEK_SET) != 0 || fread(&bytes, sizeof bytes, 1, f) != 1)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' lies past the end of the file", path,
+                         d->name);
+    if (bytes != count * sizeof(double))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "'%s': array '%s' holds %" PRIu64 " bytes; the grid needs %" PRIu64,
+                         path, d->name, bytes, count * (uint64_t)sizeof(double));
+    TRY(nspd_alloc(data, (size_t)count, sizeof(double)));
+    if (fread(*data, sizeof(double), (size_t)count, f) != (size_t)count)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is truncated in array '%s'", path, d->name);
+    return NSPD_OK;
+}
+
+static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
+    char *header;
+    TRY(nspd_alloc(&header, HEADER_MAX + 1, 1));
+    size_t got = fread(header, 1, HEADER_MAX, f);
+    const char *marker = strstr(header, "<AppendedData encoding=\"raw\">");
+    const char *underscore = marker ? strchr(marker, '_') : NULL;
+    if (!underscore) {
+        int status = got == 0 ? NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is empty", path)
+                              : NSPD_FAIL(NSPD_ERR_INPUT,
+                                          "'%s': no raw <AppendedData> block in the first %d "
+                                          "bytes; expected a .vtr written by nspd",
+                                          path, HEADER_MAX);
+        nspd_free(&header);
+        return status;
+    }
+    const long base = (long)(underscore + 1 - header);
+    header[marker - header] = '\0'; /* the binary data after it is not text */
+    Declared decl[VTK_MAX_ARRAYS + 3];
+    int decl_count = 0;
+    int status = parse_header(path, header, out, decl, &decl_count);
+    nspd_free(&header);
+    TRY(status);
+    const uint64_t cells = (uint64_t)out->n[0] * (uint64_t)out->n[1] * (uint64_t)out->n[2];
+    for (int k = 0; k < decl_count; k++) {
+        const Declared *d = &decl[k];
+        if (d->is_coordinate) {
+            int a = d->name[0] - 'x';
+            if (d->name[1] != '\0' || a < 0 || a > 2 || out->face[a])
+                return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': unexpected coordinate array '%s'", path,
+                                 d->name);
+            TRY(read_block(f, path, base, d, (uint64_t)out->n[a] + 1, &out->face[a]));
+        } else {
+            if (out->array_count == VTK_MAX_ARRAYS)
+                return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d cell arrays", path,
+                                 VTK_MAX_ARRAYS);
+            VtkCellArray *c = &out->arrays[out->array_count++];
+            memcpy(c->name, d->name, sizeof c->name);
+            c->components = d->components;
+            TRY(read_block(f, path, base, d, cells * (uint64_t)d->components, &c->data));
+        }
+    }
+    for (int a = 0; a < 3; a++)
+        if (!out->face[a])
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no coordinate array '%c'", path, 'x' + a);
+    return NSPD_OK;
+}
+
+int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
+    memset(out, 0, sizeof *out);
+    FILE *f = fopen(path, "rb");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s'", path);
+    int status = read_file(f, path, out);
+    fclose(f);
+    return status;
+}
+
+const VtkCellArray *vtk_find_cell_array(const VtkRectilinear *grid, const char *name,
+                                        int components) {
+    for (int k = 0; k < grid->array_count; k++)
+        if (strcmp(grid->arrays[k].name, name) == 0 && grid->arrays[k].components == components)
+            return &grid->arrays[k];
+    return NULL;
+}
+
+void vtk_rectilinear_free(VtkRectilinear *grid) {
+    for (int a = 0; a < 3; a++) nspd_free(&grid->face[a]);
+    for (int k = 0; k < grid->array_count; k++) nspd_free(&grid->arrays[k].data);
+    memset(grid, 0, sizeof *grid);
+}
