@@ -71,15 +71,8 @@ awk -F, '$1 >= 0.2 && $1 <= 0.8 { e = $3 * sqrt($2) / 0.664 - 1; if ((e < 0 ? -e
     END { printf "Blasius: Cf/Cf_Blasius - 1 over Re_x 2e4..8e4: worst %+.4f, mean %+.4f (%d cells)\n", w, s / n, n }' \
     "$out/blasius/cf.csv" | tee "$out/blasius.txt"
 
-# The case file at h = D/n with about two markers per cell, into $out/$3.
-cylinder_at() {
-    local h
-    h=$(awk -v n="$1" 'BEGIN { printf "%.10g", 1 / n }')
-    "$nspd" run cases/cylinder_ma2_re300.yaml -o "$out/$3" --force --quiet \
-        --set "flow.grid.x.segments=[{length: 0.6, spacing_start: 0.08, spacing_end: $h}, {length: 2.2, spacing: $h}, {length: 7.2, spacing_start: $h, spacing_end: 0.5}]" \
-        --set "flow.grid.y.segments=[{length: 4.6, spacing_start: 0.5, spacing_end: $h}, {length: 2.8, spacing: $h}, {length: 4.6, spacing_start: $h, spacing_end: 0.5}]" \
-        --set flow.bodies.0.markers="$2"
-}
+# cylinder_at N MARKERS DIR: the case file at h = D/N, into $out/DIR
+. scripts/lib/cylinder.sh
 echo "== cylinder, Ma 2, Re 300: grid convergence of the case file, t = 30"
 rm -f "$out/cylinder_convergence.txt"
 for nm in 16:104 32:202 64:404; do

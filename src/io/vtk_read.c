@@ -11,6 +11,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 
+#include <errno.h>
 #include <inttypes.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -158,7 +159,7 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
 int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
     memset(out, 0, sizeof *out);
     FILE *f = fopen(path, "rb");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s'", path);
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, strerror(errno));
     int status = read_file(f, path, out);
     fclose(f);
     return status;

@@ -49,6 +49,13 @@ check "unknown option" "unknown option '--fast'" "$nspd" run x.yaml --fast
 check "bad --set syntax" "--set solid: expected dotted.key=value" \
     "$nspd" check "$src/cases/plate_crack.yaml" --set solid
 check "unknown command" "unknown command 'walk'" "$nspd" walk
+cyl="$src/cases/cylinder_ma2_re300.yaml"
+check "initial.from: no such file" "flow.initial.from: cannot open 'nothere.vtr' \\(No such file" \
+    "$nspd" run "$cyl" -o "$work/result" --set "flow.initial={from: nothere.vtr}"
+check "initial.from: not a .vtr" "flow.initial.from: .*expected a .vtr written by nspd" \
+    "$nspd" run "$cyl" -o "$work/result" --set "flow.initial={from: $cyl}"
+check "initial.from with a state" "flow.initial.state: given together with 'from'" \
+    "$nspd" check "$cyl" --set "flow.initial={from: nothere.vtr, state: free_stream}"
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"
