@@ -16,7 +16,8 @@ int flow_field_source_create(FlowFieldSource *src, int nx, int ny, const double 
     int status = nspd_alloc(&src->xc, (size_t)nx, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&src->yc, (size_t)ny, sizeof(double));
     double **fields[4] = {&src->rho, &src->u, &src->v, &src->p};
-    for (int k = 0; k < 4 && status == NSPD_OK; k++) status = nspd_alloc(fields[k], n, sizeof(double));
+    for (int k = 0; k < 4 && status == NSPD_OK; k++)
+        status = nspd_alloc(fields[k], n, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&src->valid, n, 1);
     if (status != NSPD_OK) {
         flow_field_source_free(src);

@@ -24,9 +24,9 @@
 
 typedef struct {
     int nx, ny;
-    double *xc, *yc;          /* cell centres, increasing: nx and ny values */
-    double *rho, *u, *v, *p;  /* nx * ny values, x fastest */
-    uint8_t *valid;           /* nx * ny: 1 where the cell holds gas */
+    double *xc, *yc;         /* cell centres, increasing: nx and ny values */
+    double *rho, *u, *v, *p; /* nx * ny values, x fastest */
+    uint8_t *valid;          /* nx * ny: 1 where the cell holds gas */
 } FlowFieldSource;
 
 /* Allocates the arrays of an nx x ny source (zeroed; `valid` all 1) and

@@ -337,7 +337,9 @@ static int read_field(CfgNode *ini, FlowCaseConfig *fc) {
         kind = vtk_find_cell_array(&vtr, "cell_kind", 1);
         if (!rho || !vel || !p)
             status = NSPD_FAIL(NSPD_ERR_INPUT, "'%s' has no %s array", path,
-                               !rho ? "density" : !vel ? "velocity (3 components)" : "pressure");
+                               !rho   ? "density"
+                               : !vel ? "velocity (3 components)"
+                                      : "pressure");
         else if (vtr.n[2] != 1)
             status = NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is %d cells deep; expected a 2D field", path,
                                vtr.n[2]);

@@ -101,8 +101,8 @@ static int read_block(FILE *f, const char *path, long base, const Declared *d, u
                          d->name);
     if (bytes != count * sizeof(double))
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "'%s': array '%s' holds %" PRIu64 " bytes; the grid needs %" PRIu64,
-                         path, d->name, bytes, count * (uint64_t)sizeof(double));
+                         "'%s': array '%s' holds %" PRIu64 " bytes; the grid needs %" PRIu64, path,
+                         d->name, bytes, count * (uint64_t)sizeof(double));
     TRY(nspd_alloc(data, (size_t)count, sizeof(double)));
     if (fread(*data, sizeof(double), (size_t)count, f) != (size_t)count)
         return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is truncated in array '%s'", path, d->name);

@@ -16,7 +16,7 @@ typedef struct {
 } VtkCellArray;
 
 typedef struct {
-    int n[3];       /* cells along x, y, z */
+    int n[3];        /* cells along x, y, z */
     double *face[3]; /* face coordinates, n[a] + 1 each */
     int array_count;
     VtkCellArray arrays[VTK_MAX_ARRAYS];

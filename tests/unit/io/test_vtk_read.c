@@ -25,7 +25,9 @@ static void faces(double *xf, double *yf) {
     for (int j = 0; j <= NY; j++) yf[j] = 2.0 * j + 0.05 * j * j;
 }
 
-static double linear(double x, double y, double a) { return a + 0.25 * x - 0.125 * y; }
+static double linear(double x, double y, double a) {
+    return a + 0.25 * x - 0.125 * y;
+}
 
 /* Writes a field linear in x and y at the cell centres; cell (1, 1) is a
  * body cell (kind 1) holding nonsense that sampling must not see. */
