@@ -313,6 +313,36 @@ static int read_face(CfgNode *bcs, int face, const StateContext *sc, FlowFaceBc 
     return NSPD_OK;
 }
 
+/* The source of initial.from from the file's arrays (path for messages). */
+static int fill_source(const char *path, const VtkRectilinear *vtr, FlowFieldSource *f) {
+    const VtkCellArray *rho = vtk_find_cell_array(vtr, "density", 1),
+                       *vel = vtk_find_cell_array(vtr, "velocity", 3),
+                       *p = vtk_find_cell_array(vtr, "pressure", 1),
+                       *kind = vtk_find_cell_array(vtr, "cell_kind", 1);
+    if (!rho || !vel || !p)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' has no %s array", path,
+                         !rho   ? "density"
+                         : !vel ? "velocity (3 components)"
+                                : "pressure");
+    if (vtr->n[2] != 1)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is %d cells deep; expected a 2D field", path,
+                         vtr->n[2]);
+    TRY(flow_field_source_create(f, vtr->n[0], vtr->n[1], vtr->face[0], vtr->face[1]));
+    for (int64_t k = 0; k < (int64_t)f->nx * f->ny; k++) {
+        f->rho[k] = rho->data[k];
+        f->u[k] = vel->data[3 * k];
+        f->v[k] = vel->data[3 * k + 1];
+        f->p[k] = p->data[k];
+        f->valid[k] = !kind || kind->data[k] != FLOW_CELL_SOLID;
+        if (f->valid[k] && !(f->rho[k] > 0.0 && f->p[k] > 0.0))
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "'%s': cell %lld holds density %g, pressure %g; expected a "
+                             "physical state",
+                             path, (long long)k, f->rho[k], f->p[k]);
+    }
+    return NSPD_OK;
+}
+
 /* initial.from: an earlier run's flow_NNNNN.vtr, loaded into fc->field. */
 static int read_field(CfgNode *ini, FlowCaseConfig *fc) {
     const char *file;
@@ -329,41 +359,8 @@ static int read_field(CfgNode *ini, FlowCaseConfig *fc) {
     cfg_resolve_path(node, file, path, sizeof path);
     VtkRectilinear vtr;
     int status = vtk_read_rectilinear(path, &vtr);
-    const VtkCellArray *rho = NULL, *vel = NULL, *p = NULL, *kind = NULL;
-    if (status == NSPD_OK) {
-        rho = vtk_find_cell_array(&vtr, "density", 1);
-        vel = vtk_find_cell_array(&vtr, "velocity", 3);
-        p = vtk_find_cell_array(&vtr, "pressure", 1);
-        kind = vtk_find_cell_array(&vtr, "cell_kind", 1);
-        if (!rho || !vel || !p)
-            status = NSPD_FAIL(NSPD_ERR_INPUT, "'%s' has no %s array", path,
-                               !rho   ? "density"
-                               : !vel ? "velocity (3 components)"
-                                      : "pressure");
-        else if (vtr.n[2] != 1)
-            status = NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is %d cells deep; expected a 2D field", path,
-                               vtr.n[2]);
-    }
-    if (status == NSPD_OK)
-        status = flow_field_source_create(&fc->field, vtr.n[0], vtr.n[1], vtr.face[0], vtr.face[1]);
-    if (status == NSPD_OK) {
-        fc->has_field = true;
-        FlowFieldSource *f = &fc->field;
-        for (int64_t k = 0; k < (int64_t)f->nx * f->ny; k++) {
-            f->rho[k] = rho->data[k];
-            f->u[k] = vel->data[3 * k];
-            f->v[k] = vel->data[3 * k + 1];
-            f->p[k] = p->data[k];
-            f->valid[k] = !kind || kind->data[k] != FLOW_CELL_SOLID;
-            if (f->valid[k] && !(f->rho[k] > 0.0 && f->p[k] > 0.0)) {
-                status = NSPD_FAIL(NSPD_ERR_INPUT,
-                                   "'%s': cell %lld holds density %g, pressure %g; expected a "
-                                   "physical state",
-                                   path, (long long)k, f->rho[k], f->p[k]);
-                break;
-            }
-        }
-    }
+    if (status == NSPD_OK) status = fill_source(path, &vtr, &fc->field);
+    fc->has_field = status == NSPD_OK;
     vtk_rectilinear_free(&vtr);
     if (status == NSPD_OK) return NSPD_OK;
     char why[1024]; /* cfg_fail replaces the message it is given */

@@ -21,9 +21,9 @@
 enum { HEADER_MAX = 1 << 16 };
 
 typedef struct {
+    uint64_t offset;
     char name[VTK_MAX_NAME];
     int components;
-    uint64_t offset;
     int is_coordinate;
 } Declared;
 
