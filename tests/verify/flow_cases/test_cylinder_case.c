@@ -39,18 +39,25 @@ static const char *const D16[] = {
     "output.field_interval=4.0",
 };
 
-/* The number after "key": in summary.json. */
-static double summary_number(const char *dir, const char *key) {
-    char path[1200], pattern[128];
-    snprintf(path, sizeof path, "%s/summary.json", dir);
+/* The number after the nth (1, 2, ...) occurrence of `pattern` in dir/file. */
+static double number_after(const char *dir, const char *file, const char *pattern, int nth) {
+    char path[1300];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
     char *text = test_read_file(path);
     assert_non_null(text);
-    snprintf(pattern, sizeof pattern, "\"%s\": ", key);
-    char *at = strstr(text, pattern);
-    if (!at) fail_msg("summary.json has no %s", key);
+    char *at = text - 1;
+    for (int k = 0; k < nth && at; k++) at = strstr(at + 1, pattern);
+    if (!at) fail_msg("%s has no %s (occurrence %d)", file, pattern, nth);
     double v = strtod(at + strlen(pattern), NULL);
     free(text);
     return v;
+}
+
+/* The number after "key": in summary.json. */
+static double summary_number(const char *dir, const char *key) {
+    char pattern[128];
+    snprintf(pattern, sizeof pattern, "\"%s\": ", key);
+    return number_after(dir, "summary.json", pattern, 1);
 }
 
 static void test_cylinder_case(void **state) {
@@ -99,21 +106,6 @@ static void read_field(const char *dir, const char *name, VtkRectilinear *g) {
     assert_ok(vtk_read_rectilinear(path, g));
 }
 
-/* The time of `file` in dir/flow.pvd. */
-static double pvd_time(const char *dir, const char *file) {
-    char path[1300], pattern[128];
-    snprintf(path, sizeof path, "%s/flow.pvd", dir);
-    char *text = test_read_file(path);
-    assert_non_null(text);
-    snprintf(pattern, sizeof pattern, "\" part=\"0\" file=\"%s\"", file);
-    char *at = strstr(text, pattern);
-    assert_non_null(at);
-    while (at > text && *at != '=') at--; /* back to timestep="... */
-    double t = strtod(at + 2, NULL);
-    free(text);
-    return t;
-}
-
 static void test_continue_from_field(void **state) {
     (void)state;
     char whole[1200], from[1300], set_from[1400];
@@ -124,9 +116,11 @@ static void test_continue_from_field(void **state) {
     snprintf(from, sizeof from, "%s/flow_00001.vtr", whole);
     snprintf(set_from, sizeof set_from, "flow.initial={from: %s}", from);
     /* fields are written at the first step past each interval: the time of
-     * this one is in the .pvd; the run on ends where the whole one does */
+     * this one is the second in flow.pvd; the run on ends
+     * where the whole one does */
     char set_end[64];
-    snprintf(set_end, sizeof set_end, "time.end=%.12g", 2.0 - pvd_time(whole, "flow_00001.vtr"));
+    snprintf(set_end, sizeof set_end, "time.end=%.12g",
+             2.0 - number_after(whole, "flow.pvd", "timestep=\"", 2));
     const char *const resumed[] = {set_from, "flow.soft_start=0", set_end,
                                    "output.field_interval=10.0", "output.average_from=0"};
     const char *dir = test_scratch_dir("cylinder_case_resumed");
