@@ -6,10 +6,21 @@
 
 #include <string.h>
 
+/* Index of the first face that does not increase, or -1. */
+static int first_unordered(const double *f, int n) {
+    for (int i = 0; i < n; i++)
+        if (!(f[i + 1] > f[i])) return i;
+    return -1;
+}
+
 int flow_field_source_create(FlowFieldSource *src, int nx, int ny, const double *xf,
                              const double *yf) {
     memset(src, 0, sizeof *src);
     if (nx < 1 || ny < 1) return NSPD_FAIL(NSPD_ERR_INPUT, "a field of %d x %d cells", nx, ny);
+    const int bad_x = first_unordered(xf, nx), bad_y = first_unordered(yf, ny);
+    if (bad_x >= 0 || bad_y >= 0)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the field's %c faces do not increase at %d",
+                         bad_x >= 0 ? 'x' : 'y', bad_x >= 0 ? bad_x : bad_y);
     const size_t n = (size_t)nx * (size_t)ny;
     src->nx = nx;
     src->ny = ny;
@@ -26,16 +37,6 @@ int flow_field_source_create(FlowFieldSource *src, int nx, int ny, const double 
     memset(src->valid, 1, n);
     for (int i = 0; i < nx; i++) src->xc[i] = 0.5 * (xf[i] + xf[i + 1]);
     for (int j = 0; j < ny; j++) src->yc[j] = 0.5 * (yf[j] + yf[j + 1]);
-    for (int i = 0; i < nx; i++)
-        if (!(xf[i + 1] > xf[i])) {
-            flow_field_source_free(src);
-            return NSPD_FAIL(NSPD_ERR_INPUT, "the field's x faces do not increase at %d", i);
-        }
-    for (int j = 0; j < ny; j++)
-        if (!(yf[j + 1] > yf[j])) {
-            flow_field_source_free(src);
-            return NSPD_FAIL(NSPD_ERR_INPUT, "the field's y faces do not increase at %d", j);
-        }
     return NSPD_OK;
 }
 
