@@ -27,7 +27,8 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
 # The whole suite: the release build's tests, then the unit tests again under
-# AddressSanitizer + UBSan. Tests labelled "slow" belong to `make validate`.
+# AddressSanitizer + UBSan. Tests labelled "slow" belong to `make validate`;
+# "release" tests compare bits the release build produces (tests/golden).
 test: build test-asan
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE slow
 
@@ -40,7 +41,7 @@ $(BUILD_ASAN)/CMakeCache.txt:
 test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	    ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L "unit|cli"
+	    ctest --test-dir $(BUILD_ASAN) --output-on-failure -j $(JOBS) -L "unit|cli" -LE release
 
 demo: build
 	scripts/demo.sh $(NSPD)
