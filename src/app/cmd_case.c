@@ -7,9 +7,8 @@
 #include "core/progress.h"
 #include "core/status.h"
 #include "core/timer.h"
-#include "io/case_read.h"
+#include "case/case_read.h"
 #include "sim/sim.h"
-#include "solid/pd_diagnostics.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -64,15 +63,16 @@ static int load(const CaseOptions *opt, CfgDoc *doc, Sim *sim) {
  * equivalent. */
 static void describe(const Sim *sim, char *buf, size_t size) {
     int len = 0;
-    if (sim->has_solid)
-        len += snprintf(buf + len, size - (size_t)len, "%lld points, %lld bonds, ",
-                        (long long)sim->solid.n, (long long)sim->solid.bond_count / 2);
-    if (sim->has_flow) {
-        const Grid *g = flow_solver_grid(sim->flow);
-        len += snprintf(buf + len, size - (size_t)len, "%d x %d cells, ", g->nx, g->ny);
+    if (sim->solid) {
+        solid_brief(sim->solid, buf, size);
+        len = (int)strlen(buf);
+    }
+    if (sim->flow) {
+        flow_brief(sim->flow, buf + len, size - (size_t)len);
+        len = (int)strlen(buf);
     }
     snprintf(buf + len, size - (size_t)len, "dt %.4g s, %s%lld steps", sim->dt,
-             sim->has_flow && !sim->cfg.dt_given ? "about " : "", (long long)sim->steps);
+             sim->flow && !sim->cfg.dt_given ? "about " : "", (long long)sim->steps);
 }
 
 int cmd_check(int argc, char **argv) {
@@ -88,60 +88,6 @@ int cmd_check(int argc, char **argv) {
     sim_destroy(&sim);
     cfg_doc_free(&doc);
     return 0;
-}
-
-static void info_solid(const Sim *sim, size_t memory) {
-    const PdBody *b = &sim->solid;
-    printf("model                %s, %dD\n", PD_MODEL_NAMES[b->cfg.model], b->dim);
-    printf("points               %lld\n", (long long)b->n);
-    printf("bonds                %lld (%.1f per point; %lld broken at start)\n",
-           (long long)b->bond_count / 2, (double)b->bond_count / (double)b->n,
-           (long long)pd_broken_bonds(b));
-    printf("spacing              %.6g m\n", b->spacing);
-    printf("horizon              %.6g m (%.4g x spacing)\n", b->horizon, b->cfg.horizon_factor);
-    printf("micromodulus         %.6g\n", b->micromodulus);
-    if (b->cfg.failure)
-        printf("critical stretch     %.6g\n", b->cfg.critical_stretch);
-    else
-        printf("critical stretch     (failure off)\n");
-    printf("bar wave speed       %.6g m/s (Rayleigh %.6g m/s)\n", pd_bar_wave_speed(&b->cfg),
-           pd_rayleigh_wave_speed(&b->cfg));
-    printf("stable time step     %.6g s\n", sim->has_fsi ? sim->solid_stable_dt : sim->stable_dt);
-    printf("memory               %.1f MB in solver arrays (%d bytes per bond + %.0f per point)\n",
-           (double)memory / 1e6, PD_BYTES_PER_BOND,
-           ((double)memory - (double)b->bond_count * PD_BYTES_PER_BOND) / (double)b->n);
-}
-
-static void info_flow(const Sim *sim, size_t memory) {
-    const Grid *g = flow_solver_grid(sim->flow);
-    const FlowConfig *c = flow_solver_config(sim->flow);
-    for (int a = 0; a < 2; a++) {
-        double hmin = INFINITY, hmax = 0;
-        for (int i = 0; i < g->ax[a].n; i++) {
-            hmin = fmin(hmin, g->ax[a].width[i]);
-            hmax = fmax(hmax, g->ax[a].width[i]);
-        }
-        printf("grid %c               %d cells on [%.6g, %.6g] m, spacing %.4g to %.4g m\n",
-               "xy"[a], g -> ax[a].n, g->ax[a].lo, g->ax[a].hi, hmin, hmax);
-    }
-    printf("cells                %lld\n", (long long)g->nx * g->ny);
-    printf("gas                  gamma %.4g, R %.6g J/(kg K), Pr %.3g, viscosity %s\n", c->gamma,
-           c->gas_constant, c->prandtl, c->viscosity == VISCOSITY_NONE ? "none (Euler)" : "on");
-    const FlowCaseConfig *fc = &sim->cfg.flow;
-    if (fc->has_free_stream) {
-        const FlowPrim *q = &fc->free_stream;
-        double speed = hypot(q->u, q->v), a = sqrt(c->gamma * q->p / q->rho);
-        printf("free stream          rho %.6g, |u| %.6g, p %.6g, Mach %.4g", q->rho, speed, q->p,
-               speed / a);
-        if (c->viscosity != VISCOSITY_NONE && fc->reference_length > 0)
-            printf(", Re %.6g over %.4g m", q->rho * speed * fc->reference_length / c->mu_ref,
-                   fc->reference_length);
-        printf("\n");
-    }
-    printf("CFL time step        %.6g s at the start (CFL %.3g)\n",
-           flow_solver_stable_dt(sim->flow), c->cfl);
-    printf("memory               %.1f MB in solver arrays (%.0f bytes per cell)\n",
-           (double)memory / 1e6, (double)memory / ((double)g->nx * g->ny));
 }
 
 int cmd_info(int argc, char **argv) {
@@ -167,19 +113,26 @@ int cmd_info(int argc, char **argv) {
     char eta[32];
     progress_format_duration(step_s * (double)sim.steps, eta, sizeof eta);
     printf("case                 %s\n", sim.cfg.name);
-    if (sim.has_solid) info_solid(&sim, memory);
-    if (sim.has_flow) info_flow(&sim, memory);
-    if (sim.has_fsi)
+    char text[4096];
+    if (sim.solid) {
+        solid_info(sim.solid, memory, text, sizeof text);
+        fputs(text, stdout);
+    }
+    if (sim.flow) {
+        flow_info(sim.flow, memory, text, sizeof text);
+        fputs(text, stdout);
+    }
+    if (sim.solid && sim.flow)
         printf("time step            %.6g s (the flow's CFL step); the solid sub-steps at most "
                "%.6g s\n",
                sim.dt, sim.solid_substep);
     else
         printf("time step            %.6g s (%s)\n", sim.dt,
                sim.cfg.dt_given ? "given"
-               : sim.has_solid  ? "safety factor x stable"
+               : sim.solid      ? "safety factor x stable"
                                 : "CFL; it follows the flow");
-    printf("steps                %s%lld to t = %.6g s\n", sim.has_flow ? "about " : "",
-           (long long)sim.steps, sim.has_flow ? sim.cfg.end_time : (double)sim.steps * sim.dt);
+    printf("steps                %s%lld to t = %.6g s\n", sim.flow ? "about " : "",
+           (long long)sim.steps, sim.flow ? sim.cfg.end_time : (double)sim.steps * sim.dt);
     printf("threads              %d\n", omp_get_max_threads());
     printf("setup                %.3g s\n", setup_s);
     printf("estimated run time   %s (%.3g s per step, outputs excluded)\n", eta, step_s);
@@ -273,11 +226,11 @@ int cmd_run(int argc, char **argv) {
         SimRunOptions ro = {dir, !opt.quiet};
         status = sim_run(&sim, &ro);
         if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED) {
-            if (sim.has_flow && flow_solver_fallbacks_total(sim.flow) > 0)
+            if (sim.flow && flow_fallbacks_total(sim.flow) > 0)
                 nspd_log(LOG_INFO,
                          "flow: %lld first-order fallbacks (a limited slope would have made the "
                          "density or pressure negative at a face); per step in history.csv",
-                         (long long)flow_solver_fallbacks_total(sim.flow));
+                         (long long)flow_fallbacks_total(sim.flow));
             nspd_log(LOG_INFO, "done: %lld steps to t = %g s in %.2f s; results in %s/",
                      (long long)sim.step, sim.time, sim.wall_s, dir);
         }

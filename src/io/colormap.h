@@ -2,9 +2,10 @@
 #ifndef NSPD_IO_COLORMAP_H
 #define NSPD_IO_COLORMAP_H
 
+#include "core/fields.h" /* ColormapKind */
+
 #include <stdint.h>
 
-typedef enum { COLORMAP_VIRIDIS, COLORMAP_GRAY, COLORMAP_INFERNO } ColormapKind;
 
 /* RGB of value t in [0, 1] (clamped; NaN maps to grey). */
 void colormap_rgb(ColormapKind kind, double t, uint8_t rgb[3]);

@@ -7,16 +7,14 @@
 #ifndef NSPD_IO_VTK_H
 #define NSPD_IO_VTK_H
 
+#include "core/fields.h"
+
 #include <stdint.h>
 
 /* A field given as one array per component (struct of arrays); `data[c]`
  * holds n values. Components: 1 (scalar) or 3 (vector; NULL components are
- * written as zeros, e.g. z in 2D). */
-typedef struct {
-    const char *name;
-    int components;
-    const double *data[3];
-} VtkField;
+ * written as zeros, e.g. z in 2D). The same record models hand to output. */
+typedef FieldRef VtkField;
 
 /* n points at positions pos[0..2] (NULL component = 0). */
 int vtk_write_points(const char *path, int64_t n, const double *const pos[3],

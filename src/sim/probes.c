@@ -27,7 +27,7 @@ static int compare_keyed(const void *a, const void *b) {
 }
 
 /* Sorts the line members by their coordinate along the probe's axis. */
-static int sort_members(ProbeState *p, const PdBody *body) {
+static int sort_members(ProbeState *p, const PdPoints *body) {
     Keyed *keyed;
     TRY(nspd_alloc(&keyed, (size_t)p->member_count, sizeof *keyed));
     for (int64_t m = 0; m < p->member_count; m++) {
@@ -53,9 +53,14 @@ static int cell_of(const GridAxis *a, double x) {
     return lo;
 }
 
-static int setup_flow(ProbeState *p, const FlowSolver *flow) {
+static int setup_flow(ProbeState *p, const Flow *flow) {
     const ProbeConfig *c = p->cfg;
-    const Grid *g = flow_solver_grid(flow);
+    const FlowMesh mesh = flow_mesh(flow);
+    if (mesh.kind != MESH_GRID)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "probe '%s': probes on the flow need a grid; the '%s' solver has none",
+                         c->name, flow_name(flow));
+    const Grid *g = mesh.grid;
     for (int d = 0; d < 2; d++)
         if (c->at[d] < g->ax[d].lo || c->at[d] > g->ax[d].hi)
             return NSPD_FAIL(NSPD_ERR_INPUT,
@@ -74,7 +79,7 @@ static int setup_flow(ProbeState *p, const FlowSolver *flow) {
     return NSPD_OK;
 }
 
-static int setup_one(ProbeState *p, const PdBody *body, const FlowSolver *flow, int max_samples) {
+static int setup_one(ProbeState *p, const PdPoints *body, const Flow *flow, int max_samples) {
     const ProbeConfig *c = p->cfg;
     if (c->kind != PROBE_CRACK_TIP && c->target == PROBE_ON_FLOW) {
         if (!flow)
@@ -126,8 +131,8 @@ static int setup_one(ProbeState *p, const PdBody *body, const FlowSolver *flow, 
     return NSPD_OK;
 }
 
-int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdBody *body,
-                  const FlowSolver *flow, int max_samples) {
+int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body,
+                  const Flow *flow, int max_samples) {
     *probes = NULL;
     if (cfg->probe_count == 0) return NSPD_OK;
     TRY(nspd_alloc(probes, (size_t)cfg->probe_count, sizeof(ProbeState)));
@@ -152,25 +157,8 @@ void probes_destroy(ProbeState **probes, int count) {
     nspd_free(probes);
 }
 
-void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv) {
-    for (int k = 0; k < count; k++) {
-        const ProbeConfig *c = probes[k].cfg;
-        if (c->kind == PROBE_CRACK_TIP) {
-            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_tip_%s_m", c->name, AXIS[d]);
-        } else if (c->kind == PROBE_BRANCHES) {
-            fprintf(csv, ",%s_branch_angle_deg", c->name);
-        } else if (c->kind == PROBE_POINT && c->target == PROBE_ON_FLOW) {
-            fprintf(csv, ",%s_rho_kg_per_m3,%s_u_m_per_s,%s_v_m_per_s,%s_p_Pa,%s_T_K", c->name,
-                    c->name, c->name, c->name, c->name);
-        } else if (c->kind == PROBE_POINT) {
-            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_d%s_m", c->name, AXIS[d]);
-            for (int d = 0; d < dim; d++) fprintf(csv, ",%s_v%s_m_per_s", c->name, AXIS[d]);
-        }
-    }
-}
-
 /* The damaged point furthest along the probe's direction; -1 if none. */
-static int64_t crack_tip(const ProbeConfig *c, const PdBody *body, const double *damage) {
+static int64_t crack_tip(const ProbeConfig *c, const PdPoints *body, const double *damage) {
     int64_t best = -1;
     double best_along = -INFINITY;
     for (int64_t i = 0; i < body->n; i++) {
@@ -187,22 +175,9 @@ static int64_t crack_tip(const ProbeConfig *c, const PdBody *body, const double 
     return best;
 }
 
-/* Density, velocity, pressure and temperature of flow cell `cell`. */
-static void flow_cell(FlowSolver *flow, int64_t cell, double out[5]) {
-    FlowFields f = flow_solver_fields(flow);
-    const GksParams *gas = flow_solver_gas(flow);
-    double w[4] = {f.w[0][cell], f.w[1][cell], f.w[2][cell], f.w[3][cell]};
-    FlowPrim q;
-    flow_cons_to_prim(w, gas->gamma, &q);
-    out[0] = q.rho;
-    out[1] = q.u;
-    out[2] = q.v;
-    out[3] = q.p;
-    out[4] = q.p / (q.rho * gas->R);
-}
 
-void probes_sample(ProbeState *probes, int count, const PdBody *body, const double *damage,
-                   FlowSolver *flow, double time, FILE *csv) {
+void probes_sample(ProbeState *probes, int count, const PdPoints *body, const double *damage,
+                   const Flow *flow, double time, Report *row) {
     for (int k = 0; k < count; k++) {
         ProbeState *p = &probes[k];
         const ProbeConfig *c = p->cfg;
@@ -220,8 +195,8 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
                 p->along[p->samples] = along;
                 p->samples++;
             }
-            if (csv)
-                for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", p->last_tip[d]);
+            for (int d = 0; d < body->dim; d++)
+                report_realf(row, p->last_tip[d], "%s_tip_%s_m", c->name, AXIS[d]);
         } else if (c->kind == PROBE_BRANCHES) {
             BranchResult r;
             if (probe_branches(c, body, damage, &r) != NSPD_OK) r.angle_deg = (double)NAN;
@@ -229,42 +204,45 @@ void probes_sample(ProbeState *probes, int count, const PdBody *body, const doub
                 p->first_branch = r;
                 p->t_first_branch = time;
             }
-            if (csv) fprintf(csv, ",%.9g", r.angle_deg);
-        } else if (c->kind == PROBE_POINT && csv && c->target == PROBE_ON_FLOW) {
+            report_realf(row, r.angle_deg, "%s_branch_angle_deg", c->name);
+        } else if (c->kind == PROBE_POINT && c->target == PROBE_ON_FLOW) {
+            static const char *const QUANTITY[5] = {"rho_kg_per_m3", "u_m_per_s", "v_m_per_s",
+                                                    "p_Pa", "T_K"};
             double q[5];
-            flow_cell(flow, p->point, q);
-            for (int m = 0; m < 5; m++) fprintf(csv, ",%.9g", q[m]);
+            flow_cell_state(flow, p->point, q);
+            for (int m = 0; m < 5; m++) report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
         } else if (c->kind == PROBE_POINT) {
             double ux = body->u[0][p->point];
             if (p->samples++ == 0 || ux > p->dx_max) {
                 p->dx_max = ux;
                 p->t_dx_max = time;
             }
-            if (!csv) continue;
-            for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->u[d][p->point]);
-            for (int d = 0; d < body->dim; d++) fprintf(csv, ",%.9g", body->v[d][p->point]);
+            for (int d = 0; d < body->dim; d++)
+                report_realf(row, body->u[d][p->point], "%s_d%s_m", c->name, AXIS[d]);
+            for (int d = 0; d < body->dim; d++)
+                report_realf(row, body->v[d][p->point], "%s_v%s_m_per_s", c->name, AXIS[d]);
         }
     }
 }
 
 /* The cells of a flow line: coordinates and primitive values. */
-static void write_flow_line(const ProbeState *p, FlowSolver *flow, FILE *f) {
-    const Grid *g = flow_solver_grid(flow);
-    const GksParams *gas = flow_solver_gas(flow);
+static void write_flow_line(const ProbeState *p, const Flow *flow, FILE *f) {
+    const Grid *g = flow_mesh(flow).grid;
+    const double gamma = flow_reference(flow).gamma;
     fprintf(f, "x_m,y_m,rho_kg_per_m3,u_m_per_s,v_m_per_s,p_Pa,T_K,mach\n");
     for (int64_t m = 0; m < p->member_count; m++) {
         int64_t cell = p->members[m];
         int j = (int)(cell / g->stride) - GRID_NG, i = (int)(cell % g->stride) - GRID_NG;
         double q[5];
-        flow_cell(flow, cell, q);
-        double mach = sqrt(q[1] * q[1] + q[2] * q[2]) / sqrt(gas->gamma * q[3] / q[0]);
+        flow_cell_state(flow, cell, q);
+        double mach = sqrt(q[1] * q[1] + q[2] * q[2]) / sqrt(gamma * q[3] / q[0]);
         fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", g->ax[0].center[i],
                 g->ax[1].center[j], q[0], q[1], q[2], q[3], q[4], mach);
     }
 }
 
-int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
-                       const double *damage, FlowSolver *flow, double time, const char *dir,
+int probes_write_lines(const ProbeState *probes, int count, const PdPoints *body,
+                       const double *damage, const Flow *flow, double time, const char *dir,
                        int index) {
     for (int k = 0; k < count; k++) {
         const ProbeState *p = &probes[k];
@@ -338,7 +316,7 @@ static void fit_line(const double *s, const double *n, int count, double *a, dou
     *a = (n1 - *b * s1) / count;
 }
 
-int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damage,
+int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *damage,
                    BranchResult *out) {
     memset(out, 0, sizeof *out);
     out->angle_deg = out->upper_deg = out->lower_deg = NAN;
@@ -442,7 +420,7 @@ int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damag
     return status;
 }
 
-int probe_branch_report(const ProbeState *p, const PdBody *body, const double *damage,
+int probe_branch_report(const ProbeState *p, const PdPoints *body, const double *damage,
                         BranchResult *out, double *time) {
     if (!isnan(p->t_first_branch)) {
         *out = p->first_branch;
@@ -457,4 +435,57 @@ int probe_branch_report(const ProbeState *p, const PdBody *body, const double *d
         return NSPD_OK;
     }
     return probe_branches(p->cfg, body, damage, out);
+}
+
+int probes_summary(ProbeState *probes, int count, const PdPoints *body, const double *damage,
+                   Report *out) {
+    for (int k = 0; k < count && body; k++) {
+        const ProbeState *p = &probes[k];
+        if (p->cfg->kind != PROBE_POINT || p->cfg->target != PROBE_ON_SOLID) continue;
+        report_realf(out, p->dx_max, "%s_dx_max_m", p->cfg->name);
+        report_realf(out, p->t_dx_max, "t_%s_dx_max_s", p->cfg->name);
+    }
+    /* branches: per probe, then the overall answer - the side that branched
+     * (the first listed if both did) */
+    BranchResult best = {0};
+    const char *best_side = NULL;
+    for (int k = 0; k < count && body; k++) {
+        const ProbeState *p = &probes[k];
+        if (p->cfg->kind != PROBE_BRANCHES) continue;
+        BranchResult br;
+        double t_branch;
+        if (probe_branch_report(p, body, damage, &br, &t_branch) != NSPD_OK) continue;
+        const char *name = p->cfg->name;
+        report_realf(out, t_branch, "%s_branch_time_s", name);
+        char key[REPORT_MAX_NAME];
+        snprintf(key, sizeof key, "%s_branched", name);
+        report_bool(out, key, br.branched);
+        report_realf(out, br.angle_deg, "%s_branch_angle_deg", name);
+        report_realf(out, br.upper_deg, "%s_branch_upper_deg", name);
+        report_realf(out, br.lower_deg, "%s_branch_lower_deg", name);
+        report_realf(out, br.point[0], "%s_branch_point_x_m", name);
+        report_realf(out, br.point[1], "%s_branch_point_y_m", name);
+        if (br.branched && !best_side) {
+            best = br;
+            best_side = name;
+        }
+    }
+    if (best_side) {
+        report_real(out, "branch_angle_deg", best.angle_deg);
+        report_text(out, "branch_side", best_side);
+    } else {
+        for (int k = 0; k < count; k++)
+            if (probes[k].cfg->kind == PROBE_BRANCHES) {
+                report_real(out, "branch_angle_deg", (double)NAN);
+                break;
+            }
+    }
+    for (int k = 0; k < count; k++) {
+        const ProbeState *p = &probes[k];
+        if (p->cfg->kind != PROBE_CRACK_TIP) continue;
+        for (int d = 0; d < (body ? body->dim : 0); d++)
+            report_realf(out, p->last_tip[d], "%s_tip_%s_m", p->cfg->name, AXIS[d]);
+        report_realf(out, probe_crack_speed(p), "%s_speed_m_per_s", p->cfg->name);
+    }
+    return NSPD_OK;
 }

@@ -4,9 +4,10 @@
 #ifndef NSPD_SIM_PROBES_H
 #define NSPD_SIM_PROBES_H
 
-#include "flow/flow_solver.h"
+#include "core/report.h"
+#include "flow/flow.h"
 #include "sim/sim_config.h"
-#include "solid/pd_body.h"
+#include "solid/solid.h"
 
 #include <stdio.h>
 
@@ -50,8 +51,8 @@ typedef struct {
  * NULL): nearest points, line members, history buffers for `max_samples`
  * samples. NSPD_ERR_INPUT if a probe targets a part the case lacks, or
  * finds nothing. */
-int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdBody *body,
-                  const FlowSolver *flow, int max_samples);
+int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body,
+                  const Flow *flow, int max_samples);
 void probes_destroy(ProbeState **probes, int count);
 
 /* True if some probe needs the damage field at every history sample. */
@@ -61,22 +62,20 @@ bool probes_need_damage(const OutputConfig *cfg);
  * `extent` > 0, the first one that spanned `extent` (not branched if none
  * did); with `extent` 0, the measurement on `damage` now. *time is its time
  * (NaN for `now` and for none). */
-int probe_branch_report(const ProbeState *p, const PdBody *body, const double *damage,
+int probe_branch_report(const ProbeState *p, const PdPoints *body, const double *damage,
                         BranchResult *out, double *time);
 
-/* Appends this probe set's column names to the CSV header line. */
-void probes_write_header(const ProbeState *probes, int count, int dim, FILE *csv);
 /* Samples every probe at the current state (damage: the current damage
- * field, or NULL if no probe needs it) and appends the values to the row
- * (csv may be NULL: the crack tip history is still recorded). */
-void probes_sample(ProbeState *probes, int count, const PdBody *body, const double *damage,
-                   FlowSolver *flow, double time, FILE *csv);
+ * field, or NULL if no probe needs it), keeps what the probes record (the
+ * crack tip history) and appends the values to the history row. */
+void probes_sample(ProbeState *probes, int count, const PdPoints *body, const double *damage,
+                   const Flow *flow, double time, Report *row);
 /* Writes line_<name>_<index>.csv files for the line probes. */
-int probes_write_lines(const ProbeState *probes, int count, const PdBody *body,
-                       const double *damage, FlowSolver *flow, double time, const char *dir,
+int probes_write_lines(const ProbeState *probes, int count, const PdPoints *body,
+                       const double *damage, const Flow *flow, double time, const char *dir,
                        int index);
 
-int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damage,
+int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *damage,
                    BranchResult *out);
 
 /* Crack speed from the tip history: (s_end - s_start) / (t_end - t_start)
@@ -84,5 +83,11 @@ int probe_branches(const ProbeConfig *c, const PdBody *body, const double *damag
  * the first sample at which it reached its final position; 0 if it never
  * moved, NaN if never detected. */
 double probe_crack_speed(const ProbeState *p);
+
+/* The probes' summary keys: per solid point probe its largest x
+ * displacement and when; per branch probe its measurement, then the overall
+ * branch angle; per crack tip probe its last position and speed. */
+int probes_summary(ProbeState *probes, int count, const PdPoints *body, const double *damage,
+                   Report *out);
 
 #endif

@@ -1,37 +1,16 @@
 /* A whole case as read from its YAML file: what to simulate (a solid, a
- * flow; the coupling joins later), for how long, and what to write. Filled
- * by io/case_read.c, consumed by sim_create(). Units SI. */
+ * flow, a coupling; each a tagged union over its models), for how long, and
+ * what to write. Filled by case/case_read.c, consumed by sim_create().
+ * Units SI. */
 #ifndef NSPD_SIM_SIM_CONFIG_H
 #define NSPD_SIM_SIM_CONFIG_H
 
 #include "core/shape.h"
-#include "couple/fsi.h"
-#include "couple/ibm_body.h"
-#include "flow/field_sample.h"
-#include "flow/flow_solver.h"
-#include "solid/pd_config.h"
+#include "couple/coupling.h"
+#include "flow/flow.h"
+#include "solid/solid.h"
 
 #include <stdbool.h>
-
-/* The flow part of a case: the solver's configuration plus what it borrows
- * (initial-condition regions and their shapes, the vortex), owned here. */
-typedef struct {
-    FlowConfig solver;
-    int region_count;
-    FlowRegion *regions; /* owned, with their shapes */
-    bool has_vortex;
-    FlowVortex vortex; /* solver.init_fn points at it when has_vortex */
-    bool has_field;
-    FlowFieldSource field; /* initial.from, owned; solver.init_fn samples it */
-    /* the free stream, when the case defines one: the reference of Mach
-     * number, pressure coefficient and force coefficients */
-    bool has_free_stream;
-    FlowPrim free_stream;
-    double reference_length; /* m; 0 if not given */
-    IbmBodySet bodies;       /* fixed immersed bodies (flow.bodies) */
-    double soft_start;       /* m: ibm_soft_start length for the bodies (0: none) */
-    int ghost_faces;         /* IbmGhostFaces of the bodies */
-} FlowCaseConfig;
 
 typedef enum {
     PROBE_CRACK_TIP,
@@ -85,16 +64,13 @@ typedef struct {
     double dt;       /* s; computed from the stable step when !dt_given */
     bool dt_given;
     double safety_factor; /* dt = safety_factor * stable step */
-    bool has_solid;
-    PdConfig solid;
-    bool has_flow;
-    FlowCaseConfig flow;
-    bool has_coupling; /* solid and flow coupled through the solid's surface */
-    FsiConfig coupling;
+    SolidConfig solid;       /* kind SOLID_NONE: the case has no solid */
+    FlowModelConfig flow;    /* method FLOW_METHOD_NONE: no flow */
+    CouplingConfig coupling; /* kind COUPLING_NONE: nothing couples (a flow's fixed
+                                bodies are a coupling with rigid walls) */
     OutputConfig output;
 } SimConfig;
 
-void flow_case_config_free(FlowCaseConfig *flow);
 void sim_config_free(SimConfig *cfg);
 
 #endif

@@ -2,7 +2,7 @@
 
 #include "test_support.h"
 
-#include "io/case_read.h"
+#include "case/case_read.h"
 
 #include <stdio.h>
 
@@ -29,4 +29,26 @@ void fixture_sim_text(const char *yaml, Sim *sim) {
     assert_ok(case_read(path, NULL, 0, &doc, &cfg));
     assert_ok(sim_create(sim, &cfg));
     cfg_doc_free(&doc);
+}
+
+PdBody *fixture_body(Sim *sim) {
+    PdBody *b = bond_solid_body(sim->solid);
+    assert_non_null(b);
+    return b;
+}
+
+FlowSolver *fixture_flow(Sim *sim) {
+    FlowSolver *f = gks_flow_solver(sim->flow);
+    assert_non_null(f);
+    return f;
+}
+
+double fixture_coupling_summary(Sim *sim, const char *name) {
+    static Report r; /* large for the stack of a test; tests are single-threaded */
+    report_clear(&r);
+    assert_non_null(sim->coupling);
+    assert_ok(coupling_summary(sim->coupling, sim->solid, sim->flow, &r));
+    const ReportItem *it = report_find(&r, name);
+    if (!it) fail_msg("the coupling reports no '%s'", name);
+    return it->kind == REPORT_INT ? (double)it->count : it->real;
 }

@@ -2,7 +2,9 @@
 #ifndef NSPD_TEST_SIM_FIXTURES_H
 #define NSPD_TEST_SIM_FIXTURES_H
 
+#include "flow/gks_flow.h"
 #include "sim/sim.h"
+#include "solid/bond_solid.h"
 
 /* Reads cases/<name> with the given --set overrides and builds the
  * simulation; fails the test on any error. */
@@ -11,5 +13,13 @@ void fixture_sim(const char *case_file, const char *const *overrides, int count,
 /* Builds a simulation from a case written in the test (YAML text); fails the
  * test on any error. */
 void fixture_sim_text(const char *yaml, Sim *sim);
+
+/* The concrete models of a simulation, for tests that look inside them
+ * (fail the test if the case has no such model). */
+PdBody *fixture_body(Sim *sim);
+FlowSolver *fixture_flow(Sim *sim);
+
+/* The value of summary key `name` of the coupling (fails if absent). */
+double fixture_coupling_summary(Sim *sim, const char *name);
 
 #endif

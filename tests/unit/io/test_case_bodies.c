@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 #include "core/status.h"
-#include "io/case_bodies.h"
+#include "case/case_bodies.h"
 #include "io/cfg_read.h"
 #include "io/cfg_tree.h"
 

@@ -5,6 +5,7 @@
 
 #include "core/mem.h"
 #include "sim/probes.h"
+#include "solid/bond_solid.h"
 
 #include <math.h>
 
@@ -29,6 +30,8 @@ static void check(double up, double down) {
     PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4); /* 80 mm x 40 mm */
     PdBody b;
     assert_ok(pd_body_create(&b, &cfg));
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
     double *damage;
     assert_ok(nspd_alloc(&damage, (size_t)b.n, sizeof(double)));
     y_shaped(&b, up, down, damage);
@@ -37,7 +40,7 @@ static void check(double up, double down) {
                      .direction = {1, 0, 0},
                      .damage_threshold = 0.35};
     BranchResult r;
-    assert_ok(probe_branches(&c, &b, damage, &r));
+    assert_ok(probe_branches(&c, &pts, damage, &r));
     print_message("branches +%.0f / -%.0f deg: measured %.1f (%.1f, %.1f) at (%.1f, %.1f) mm\n", up,
                   down, r.angle_deg, r.upper_deg, r.lower_deg, 1e3 * r.point[0], 1e3 * r.point[1]);
     assert_true(r.branched);
@@ -73,12 +76,14 @@ static void test_straight_crack_does_not_branch(void **state) {
     (void)state;
     PdBody b;
     double *damage = straight_crack_block(&b);
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
     ProbeConfig c = {.kind = PROBE_BRANCHES,
                      .at = {0.010, 0.020, 0},
                      .direction = {1, 0, 0},
                      .damage_threshold = 0.35};
     BranchResult r;
-    assert_ok(probe_branches(&c, &b, damage, &r));
+    assert_ok(probe_branches(&c, &pts, damage, &r));
     assert_false(r.branched);
     assert_true(isnan(r.angle_deg));
     nspd_free(&damage);
@@ -92,6 +97,9 @@ static void test_first_branching_is_kept(void **state) {
     (void)state;
     PdBody b;
     double *damage = straight_crack_block(&b);
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
+    static Report row; /* the history row the probes append to (not checked here) */
     ProbeConfig c = {.kind = PROBE_BRANCHES,
                      .at = {0.010, 0.020, 0},
                      .direction = {1, 0, 0},
@@ -99,31 +107,36 @@ static void test_first_branching_is_kept(void **state) {
                      .extent = 0.005};
     ProbeState p = {.cfg = &c, .t_first_branch = (double)NAN};
     /* t = 1: a straight crack, no branch yet */
-    probes_sample(&p, 1, &b, damage, NULL, 1.0, NULL);
+    probes_sample(&p, 1, &pts, damage, NULL, 1.0, &row);
+    report_clear(&row);
     assert_true(isnan(p.t_first_branch));
     /* t = 2: the Y of 130 degrees */
     y_shaped(&b, 65, 65, damage);
-    probes_sample(&p, 1, &b, damage, NULL, 2.0, NULL);
+    probes_sample(&p, 1, &pts, damage, NULL, 2.0, &row);
+    report_clear(&row);
     /* t = 3: damage in horizontal stripes every 2 mm (a shattered body) */
     for (int64_t i = 0; i < b.n; i++) damage[i] = fmod(b.x[1][i] + 1e-4, 0.002) < 6e-4 ? 0.5 : 0.0;
-    probes_sample(&p, 1, &b, damage, NULL, 3.0, NULL);
+    probes_sample(&p, 1, &pts, damage, NULL, 3.0, &row);
+    report_clear(&row);
     BranchResult r;
     double t;
-    assert_ok(probe_branch_report(&p, &b, damage, &r, &t));
+    assert_ok(probe_branch_report(&p, &pts, damage, &r, &t));
     assert_true(t == 2.0);
     assert_close(r.angle_deg, 130.0, 2.0);
     /* branches that never span `extent` are not reported */
     c.extent = 1.0;
     ProbeState s = {.cfg = &c, .t_first_branch = (double)NAN};
-    probes_sample(&s, 1, &b, damage, NULL, 3.0, NULL);
-    assert_ok(probe_branch_report(&s, &b, damage, &r, &t));
+    probes_sample(&s, 1, &pts, damage, NULL, 3.0, &row);
+    report_clear(&row);
+    assert_ok(probe_branch_report(&s, &pts, damage, &r, &t));
     assert_false(r.branched);
     assert_true(isnan(r.angle_deg) && isnan(t));
     /* without `extent`, the end state is measured */
     c.extent = 0;
     ProbeState q = {.cfg = &c, .t_first_branch = (double)NAN};
-    probes_sample(&q, 1, &b, damage, NULL, 3.0, NULL);
-    assert_ok(probe_branch_report(&q, &b, damage, &r, &t));
+    probes_sample(&q, 1, &pts, damage, NULL, 3.0, &row);
+    report_clear(&row);
+    assert_ok(probe_branch_report(&q, &pts, damage, &r, &t));
     assert_true(isnan(t));
     assert_true(fabs(r.angle_deg - 130.0) > 10.0);
     nspd_free(&damage);

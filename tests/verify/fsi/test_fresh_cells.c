@@ -60,24 +60,24 @@ static const char CASE_SEALED[] = CASE_BODY "coupling: {wall: adiabatic, ghost_f
 static void translating_disc(const char *text, double *worst_mass_out, double *worst_jump_out) {
     Sim sim;
     fixture_sim_text(text, &sim);
-    const Grid *g = flow_solver_grid(sim.flow);
+    const Grid *g = flow_solver_grid(fixture_flow(&sim));
     const int64_t ncell = (int64_t)g->nx * g->ny;
     double *p_prev, *p_now;
     assert_ok(nspd_alloc(&p_prev, (size_t)ncell, sizeof(double)));
     assert_ok(nspd_alloc(&p_now, (size_t)ncell, sizeof(double)));
     const double q = 0.5 * 1.0 * 0.2 * 0.2;
-    double totals[4], mass0, worst_mass = 0, worst_jump = 0, x0 = sim.solid.x[0][0];
-    flow_solver_totals(sim.flow, totals);
+    double totals[4], mass0, worst_mass = 0, worst_jump = 0, x0 = fixture_body(&sim)->x[0][0];
+    flow_solver_totals(fixture_flow(&sim), totals);
     mass0 = totals[0];
-    flow_solver_primitive(sim.flow, FLOW_PRESSURE, p_prev);
+    flow_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_prev);
     while (sim.time < 6.0 - 1e-12) {
         assert_ok(sim_advance(&sim, 1));
-        flow_solver_totals(sim.flow, totals);
-        flow_solver_primitive(sim.flow, FLOW_PRESSURE, p_now);
+        flow_solver_totals(fixture_flow(&sim), totals);
+        flow_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_now);
         if (sim.time > 2.0) {
-            double swept = 1.0 * 0.52 * (sim.solid.x[0][0] + sim.solid.u[0][0] - x0);
+            double swept = 1.0 * 0.52 * (fixture_body(&sim)->x[0][0] + fixture_body(&sim)->u[0][0] - x0);
             worst_mass = fmax(worst_mass, fabs(totals[0] - mass0) / swept);
-            const uint8_t *kind = ibm_kinds(sim.fsi.ibm);
+            const uint8_t *kind = ibm_kinds(ghost_coupling_ibm(sim.coupling));
             for (int j = 1; j < g->ny - 1; j++)
                 for (int i = 1; i < g->nx - 1; i++) {
                     int64_t k = grid_index(g, i, j);
@@ -96,7 +96,7 @@ static void translating_disc(const char *text, double *worst_mass_out, double *w
         p_prev = p_now;
         p_now = t;
     }
-    double travelled = sim.solid.x[0][0] + sim.solid.u[0][0] - x0;
+    double travelled = fixture_body(&sim)->x[0][0] + fixture_body(&sim)->u[0][0] - x0;
     print_message("%s ghost faces: moved %.2f (%.0f cells); gas mass change up to %.3f of the "
                   "swept mass; largest one-step pressure change next to the body %.2f dynamic "
                   "pressures\n",

@@ -46,8 +46,8 @@ static const char *const SOLID[] = {
 static double average_cd(Sim *sim) {
     SimRunOptions opt = {NULL, false};
     assert_ok(sim_run(sim, &opt));
-    assert_true(sim->coef_samples > 10);
-    return sim->coef_sum[0] / (double)sim->coef_samples;
+    assert_true(fixture_coupling_summary(sim, "coefficient_samples") > 10);
+    return fixture_coupling_summary(sim, "cd");
 }
 
 static void test_stiff_disc_is_rigid(void **state) {
@@ -84,11 +84,11 @@ static void test_momentum_exchange(void **state) {
     double worst = 0.0;
     for (int s = 0; s < 20; s++) {
         assert_ok(sim_advance(&sim, 1));
-        const PdBody *b = &sim.solid;
+        const PdBody *b = fixture_body(&sim);
         double received[2] = {0, 0};
         for (int64_t i = 0; i < b->n; i++)
             for (int d = 0; d < 2; d++) received[d] += b->volume[i] * b->external[d][i];
-        const IbmSurface *L = &sim.fsi.loads;
+        const IbmSurface *L = ghost_coupling_surface(sim.coupling);
         double taken[2] = {0, 0}, scale = 0;
         for (int k = 0; k < L->n; k++) {
             taken[0] += L->fx[k] * L->ds[k];
@@ -98,7 +98,7 @@ static void test_momentum_exchange(void **state) {
         for (int d = 0; d < 2; d++) {
             received[d] /= b->cfg.thickness;
             worst = fmax(worst, fabs(received[d] - taken[d]) / scale);
-            worst = fmax(worst, fabs(sim.fsi.force_on_solid[d] - taken[d]) / scale);
+            worst = fmax(worst, fabs(ghost_coupling_fsi(sim.coupling)->force_on_solid[d] - taken[d]) / scale);
         }
     }
     print_message("force received by the solid vs taken from the flow: %.2e relative\n", worst);

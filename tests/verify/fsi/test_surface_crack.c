@@ -47,7 +47,7 @@ static void test_crack_stays_closed(void **state) {
     fixture_sim_text(CASE, &sim);
     SimRunOptions opt = {NULL, false};
     assert_ok(sim_run(&sim, &opt));
-    const PdBody *b = &sim.solid;
+    const PdBody *b = fixture_body(&sim);
     /* the mouth's opening: the gap between the two points nearest to the
      * left face just above and below the crack */
     double upper = INFINITY, lower = -INFINITY;
@@ -59,8 +59,8 @@ static void test_crack_stays_closed(void **state) {
         else
             lower = fmax(lower, y);
     }
-    const Grid *g = flow_solver_grid(sim.flow);
-    const uint8_t *kind = ibm_kinds(sim.fsi.ibm);
+    const Grid *g = flow_solver_grid(fixture_flow(&sim));
+    const uint8_t *kind = ibm_kinds(ghost_coupling_ibm(sim.coupling));
     int inside = 0, fluid = 0;
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
@@ -76,7 +76,7 @@ static void test_crack_stays_closed(void **state) {
     assert_int_equal(fluid, 0);
     /* the segment across the opened mouth is a bridge: longer than 2.5
      * spacings, not wetted, no load (IbmReference.bridge_length) */
-    const IbmSurface *loads = &sim.fsi.loads;
+    const IbmSurface *loads = ghost_coupling_surface(sim.coupling);
     int bridges = 0;
     for (int s = 0; s < loads->n; s++) {
         if (loads->ds[s] <= 2.5 * b->spacing) continue;

@@ -15,13 +15,13 @@ static void test_block_3d_conserves_momentum(void **state) {
     (void)state;
     Sim sim;
     fixture_sim("block_3d.yaml", NULL, 0, &sim);
-    assert_int_equal(sim.solid.dim, 3);
+    assert_int_equal(fixture_body(&sim)->dim, 3);
     double p0[3], p1[3];
-    pd_momentum(&sim.solid, p0);
-    int64_t broken0 = pd_broken_bonds(&sim.solid);
+    pd_momentum(fixture_body(&sim), p0);
+    int64_t broken0 = pd_broken_bonds(fixture_body(&sim));
     SimRunOptions opt = {NULL, false};
     assert_ok(sim_run(&sim, &opt));
-    pd_momentum(&sim.solid, p1);
+    pd_momentum(fixture_body(&sim), p1);
     double scale = fabs(p0[0]);
     assert_true(scale > 0); /* the ends move at -20 and +60 m/s */
     for (int d = 0; d < 3; d++) {
@@ -29,7 +29,7 @@ static void test_block_3d_conserves_momentum(void **state) {
                       fabs(p1[d] - p0[d]) / scale);
         assert_true(fabs(p1[d] - p0[d]) < 1e-12 * scale);
     }
-    assert_true(pd_broken_bonds(&sim.solid) > broken0); /* the crack grew */
+    assert_true(pd_broken_bonds(fixture_body(&sim)) > broken0); /* the crack grew */
     sim_destroy(&sim);
 }
 

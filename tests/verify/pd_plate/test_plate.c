@@ -79,7 +79,7 @@ static void test_straight_symmetric_crack(void **state) {
     Sim sim;
     const char *dir = test_scratch_dir("pd_plate");
     run_coarse(&sim, 2, dir);
-    const PdBody *b = &sim.solid;
+    const PdBody *b = fixture_body(&sim);
     double *damage;
     assert_ok(nspd_alloc(&damage, (size_t)b->n, sizeof(double)));
     pd_damage(b, damage);
@@ -147,7 +147,7 @@ static void test_threads_bitwise(void **state) {
     Sim one, two;
     run_coarse(&one, 1, NULL);
     run_coarse(&two, 2, NULL);
-    const PdBody *a = &one.solid, *b = &two.solid;
+    const PdBody *a = fixture_body(&one), *b = fixture_body(&two);
     assert_int_equal(a->n, b->n);
     for (int d = 0; d < 2; d++) {
         assert_memory_equal(a->u[d], b->u[d], (size_t)a->n * sizeof(double));

@@ -1,10 +1,10 @@
-#include "io/case_read.h"
+#include "case/case_read.h"
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "io/case_flow.h"
-#include "io/case_shapes.h"
-#include "io/case_solid.h"
+#include "case/case_flow.h"
+#include "case/case_shapes.h"
+#include "case/case_solid.h"
 #include "io/cfg_read.h"
 
 #include <math.h>
@@ -159,8 +159,8 @@ static const char *const WALLS[] = {"adiabatic", "isothermal", NULL};
 /* The `coupling:` section: the wall condition of the solid's surface, the
  * start-up and the reference state of the surface loads. */
 static int read_coupling(CfgNode *m, SimConfig *cfg) {
-    FsiConfig *c = &cfg->coupling;
-    const FlowCaseConfig *f = &cfg->flow;
+    FsiConfig *c = &cfg->coupling.ghost.fsi;
+    const GksCaseConfig *f = &cfg->flow.gks;
     TRY(cfg_opt_enum(m, "hold", FSI_HOLD_NAMES, FSI_HOLD_NONE, &c->hold));
     TRY(cfg_opt_enum(m, "wall", WALLS, IBM_WALL_ADIABATIC, &c->thermal));
     if (c->thermal == IBM_WALL_ISOTHERMAL) {
@@ -202,35 +202,61 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     if (!solid && !flow)
         return cfg_fail(root, "nothing to simulate; expected a 'solid' or a 'flow' section");
     if (solid) {
-        cfg->has_solid = true;
-        TRY(case_read_solid(solid, &cfg->solid));
+        cfg->solid.kind = SOLID_BOND;
+        TRY(case_read_solid(solid, &cfg->solid.bond));
     }
+    GhostCouplingConfig walls = {0};
     if (flow) {
-        cfg->has_flow = true;
-        TRY(case_read_flow(flow, &cfg->flow));
+        cfg->flow.method = FLOW_METHOD_GKS;
+        int status = case_read_flow(flow, &cfg->flow.gks, &walls);
+        if (status != NSPD_OK) {
+            ghost_coupling_config_free(&walls);
+            return status;
+        }
+    }
+    if (walls.bodies.count > 0 && !solid) {
+        /* fixed bodies: a ghost-cell coupling with rigid walls, measured
+         * against the free stream (else the initial state) */
+        cfg->coupling.kind = COUPLING_GHOST_CELL;
+        cfg->coupling.ghost = walls;
+        const GksCaseConfig *f = &cfg->flow.gks;
+        const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
+        cfg->coupling.ghost.fsi.reference =
+            (IbmReference){.rho = q->rho,
+                           .u = q->u,
+                           .v = q->v,
+                           .p = q->p,
+                           .length = f->reference_length > 0 ? f->reference_length : 1.0,
+                           .p_ambient = q->p};
+        memset(&walls, 0, sizeof walls);
     }
     CfgNode *coupling;
     TRY(cfg_opt_map(root, "coupling", &coupling));
     if (solid && flow) {
-        if (cfg->solid.dim != 2)
+        if (cfg->solid.bond.dim != 2) {
+            ghost_coupling_config_free(&walls);
             return cfg_fail_at(solid, "model",
                                "a solid coupled to the 2D flow must be 2D; "
                                "expected plane_stress or plane_strain");
-        if (cfg->flow.bodies.count > 0)
+        }
+        if (walls.bodies.count > 0) {
+            ghost_coupling_config_free(&walls);
             return cfg_fail_at(flow, "bodies",
                                "fixed bodies together with a coupled solid are not "
                                "supported; expected one of them");
+        }
         if (!coupling) {
             coupling = cfg_map_add_collection(root, "coupling", CFG_MAP, CFG_FROM_DEFAULT);
             if (!coupling) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
             coupling->used = true;
         }
-        cfg->has_coupling = true;
+        cfg->coupling.kind = COUPLING_GHOST_CELL;
         TRY(read_coupling(coupling, cfg));
     } else if (coupling) {
         return cfg_fail(coupling, "a coupling needs both a solid and a flow section");
     }
-    TRY(read_output(root, cfg, solid ? cfg->solid.dim : 2, solid != NULL));
+    ghost_coupling_config_free(&walls); /* read but not used: no bodies */
+    TRY(read_output(root, cfg, solid ? cfg->solid.bond.dim : 2, solid != NULL));
     return cfg_end_map(root);
 }
 

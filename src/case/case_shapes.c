@@ -1,4 +1,4 @@
-#include "io/case_shapes.h"
+#include "case/case_shapes.h"
 
 #include "core/mem.h"
 #include "core/status.h"

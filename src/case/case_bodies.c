@@ -1,5 +1,5 @@
 /* The `bodies:` list of a case file (keys in case_bodies.h). */
-#include "io/case_bodies.h"
+#include "case/case_bodies.h"
 
 #include "core/mem.h"
 #include "core/status.h"

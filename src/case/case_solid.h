@@ -1,6 +1,6 @@
 /* The `solid:` section of a case file -> PdConfig. */
-#ifndef NSPD_IO_CASE_SOLID_H
-#define NSPD_IO_CASE_SOLID_H
+#ifndef NSPD_CASE_CASE_SOLID_H
+#define NSPD_CASE_CASE_SOLID_H
 
 #include "io/cfg_tree.h"
 #include "solid/pd_config.h"

@@ -1,4 +1,4 @@
-/* The `flow:` section of a case file -> FlowCaseConfig.
+/* The `flow:` section of a case file -> GksCaseConfig.
  *
  * A flow state is written {density, velocity: [u, v], pressure} or with
  * temperature instead of pressure (p = rho R T), or as the word
@@ -6,14 +6,14 @@
  * Reynolds numbers over a reference length (docs/CASES.md, "Non-dimensional
  * cases"): then U = Ma sqrt(gamma p/rho) along `angle_deg`, and the
  * viscosity at the free-stream temperature is mu = rho U L / Re. */
-#include "io/case_flow.h"
+#include "case/case_flow.h"
 
 #include "core/mem.h"
 #include "core/status.h"
 #include "couple/ibm.h"
 #include "flow/field_sample.h"
-#include "io/case_bodies.h"
-#include "io/case_shapes.h"
+#include "case/case_bodies.h"
+#include "case/case_shapes.h"
 #include "io/vtk_read.h"
 #include "io/cfg_read.h"
 
@@ -25,7 +25,7 @@ static const char *const FACE_KEYS[4] = {"x_min", "x_max", "y_min", "y_max"};
 
 typedef struct {
     double gamma, R;
-    const FlowCaseConfig *flow; /* for `free_stream` */
+    const GksCaseConfig *flow; /* for `free_stream` */
 } StateContext;
 
 /* map[key] as a state: a map or the word free_stream. */
@@ -94,7 +94,7 @@ static int read_gas(CfgNode *flow, FlowConfig *c) {
 }
 
 /* gas.viscosity needs the free stream when mu comes from a Reynolds number. */
-static int read_viscosity(CfgNode *flow, FlowCaseConfig *fc, bool has_reynolds, double mu_inf,
+static int read_viscosity(CfgNode *flow, GksCaseConfig *fc, bool has_reynolds, double mu_inf,
                           double T_inf) {
     FlowConfig *c = &fc->solver;
     CfgNode *g = cfg_map_find(flow, "gas");
@@ -142,7 +142,7 @@ static int read_viscosity(CfgNode *flow, FlowCaseConfig *fc, bool has_reynolds, 
 }
 
 /* free_stream: SI state, or {mach, reynolds, length, density, pressure|temperature, angle_deg}. */
-static int read_free_stream(CfgNode *flow, FlowCaseConfig *fc, bool *has_reynolds, double *mu_inf) {
+static int read_free_stream(CfgNode *flow, GksCaseConfig *fc, bool *has_reynolds, double *mu_inf) {
     FlowConfig *c = &fc->solver;
     *has_reynolds = false;
     CfgNode *f = cfg_map_find(flow, "free_stream");
@@ -344,7 +344,7 @@ static int fill_source(const char *path, const VtkRectilinear *vtr, FlowFieldSou
 }
 
 /* initial.from: an earlier run's flow_NNNNN.vtr, loaded into fc->field. */
-static int read_field(CfgNode *ini, FlowCaseConfig *fc) {
+static int read_field(CfgNode *ini, GksCaseConfig *fc) {
     const char *file;
     TRY(cfg_req_string(ini, "from", &file));
     CfgNode *node = cfg_map_find(ini, "from");
@@ -368,7 +368,7 @@ static int read_field(CfgNode *ini, FlowCaseConfig *fc) {
     return cfg_fail(node, "%s", why);
 }
 
-static int read_initial(CfgNode *flow, FlowCaseConfig *fc, const StateContext *sc) {
+static int read_initial(CfgNode *flow, GksCaseConfig *fc, const StateContext *sc) {
     FlowConfig *c = &fc->solver;
     CfgNode *ini;
     TRY(cfg_req_map(flow, "initial", &ini));
@@ -440,8 +440,9 @@ static int read_numerics(CfgNode *flow, FlowConfig *c) {
     return cfg_end_map(n);
 }
 
-int case_read_flow(CfgNode *flow, FlowCaseConfig *fc) {
+int case_read_flow(CfgNode *flow, GksCaseConfig *fc, GhostCouplingConfig *walls) {
     memset(fc, 0, sizeof *fc);
+    memset(walls, 0, sizeof *walls);
     FlowConfig *c = &fc->solver;
     flow_config_default(c);
     TRY(read_gas(flow, c));
@@ -463,17 +464,19 @@ int case_read_flow(CfgNode *flow, FlowCaseConfig *fc) {
     for (int f = 0; f < 4; f++) TRY(read_face(bcs, f, &sc, &c->bc[f]));
     TRY(cfg_end_map(bcs));
     TRY(read_initial(flow, fc, &sc));
-    TRY(case_read_bodies(flow, "bodies", false, &fc->bodies));
-    TRY(cfg_opt_double(flow, "soft_start", 0.0, &fc->soft_start));
-    TRY(cfg_check_range(flow, "soft_start", fc->soft_start, 0.0, 1e30,
+    /* the fixed bodies are walls of a ghost-cell coupling with no solid */
+    TRY(case_read_bodies(flow, "bodies", false, &walls->bodies));
+    FsiConfig *w = &walls->fsi;
+    TRY(cfg_opt_double(flow, "soft_start", 0.0, &w->soft_start));
+    TRY(cfg_check_range(flow, "soft_start", w->soft_start, 0.0, 1e30,
                         "a length >= 0 in m over which the flow starts at the wall velocity"));
     TRY(cfg_opt_enum(flow, "ghost_faces", IBM_GHOST_FACE_NAMES, IBM_FACES_REFLECTED,
-                     &fc->ghost_faces));
-    if (fc->soft_start > 0 && fc->bodies.count == 0)
+                     &w->ghost_faces));
+    if (w->soft_start > 0 && walls->bodies.count == 0)
         return cfg_fail_at(flow, "soft_start",
                            "a soft start without flow.bodies; expected bodies "
                            "(a coupled solid takes coupling.soft_start)");
-    if (fc->soft_start > 0 && fc->has_field)
+    if (w->soft_start > 0 && fc->has_field)
         return cfg_fail_at(flow, "soft_start",
                            "a soft start would stop the flow of initial.from near the bodies; "
                            "expected soft_start: 0");

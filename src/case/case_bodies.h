@@ -24,8 +24,8 @@
  *       max_spacing: 0.01        # optional: split longer edges, m; default 0 (as given)
  * Markers should be no farther apart than the finest cell near the body.
  * Every body takes `name`, `wall` and `wall_temperature`. */
-#ifndef NSPD_IO_CASE_BODIES_H
-#define NSPD_IO_CASE_BODIES_H
+#ifndef NSPD_CASE_CASE_BODIES_H
+#define NSPD_CASE_CASE_BODIES_H
 
 #include "couple/ibm_body.h"
 #include "io/cfg_tree.h"

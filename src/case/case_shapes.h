@@ -1,6 +1,6 @@
 /* Reading shapes and regions (lists of shapes) from a case file. */
-#ifndef NSPD_IO_CASE_SHAPES_H
-#define NSPD_IO_CASE_SHAPES_H
+#ifndef NSPD_CASE_CASE_SHAPES_H
+#define NSPD_CASE_CASE_SHAPES_H
 
 #include "core/shape.h"
 #include "io/cfg_tree.h"

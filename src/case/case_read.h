@@ -1,6 +1,6 @@
 /* Reading a whole case file into a SimConfig. */
-#ifndef NSPD_IO_CASE_READ_H
-#define NSPD_IO_CASE_READ_H
+#ifndef NSPD_CASE_CASE_READ_H
+#define NSPD_CASE_CASE_READ_H
 
 #include "io/cfg_tree.h"
 #include "sim/sim_config.h"

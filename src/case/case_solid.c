@@ -1,8 +1,8 @@
-#include "io/case_solid.h"
+#include "case/case_solid.h"
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "io/case_shapes.h"
+#include "case/case_shapes.h"
 #include "io/cfg_read.h"
 
 #include <math.h>

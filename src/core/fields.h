@@ -1,0 +1,78 @@
+/* What a model hands to output: named arrays on its mesh, the pictures to
+ * draw of them and tables to write, as plain pointers into the model's own
+ * memory (valid until its next step). The generic writer (sim/sim_output.c,
+ * through io/) turns a FieldSet into .vtu/.vtr + .pvd, PNG and CSV files;
+ * no model knows a file format, and a new model needs no edit there. */
+#ifndef NSPD_CORE_FIELDS_H
+#define NSPD_CORE_FIELDS_H
+
+#include <stdint.h>
+
+typedef enum { COLORMAP_VIRIDIS, COLORMAP_GRAY, COLORMAP_INFERNO } ColormapKind;
+
+typedef enum {
+    MESH_NONE = 0, /* tables only */
+    MESH_POINTS,   /* scattered points (PD material points, node clouds): .vtu */
+    MESH_GRID,     /* a 2D tensor-product grid of cells: .vtr */
+} MeshKind;
+
+/* A field: `components` arrays of one value per point or cell; a NULL component of
+ * a vector is written as zeros. */
+typedef struct {
+    const char *name;
+    int components; /* 1 or 3 */
+    const double *data[3];
+} FieldRef;
+
+/* A picture series <file>_NNNNN.png of one field over [lo, hi]. On a grid,
+ * `overlay_file` (if set) asks for a second picture, <overlay_file>_NNNNN.png,
+ * with the first picture of a coupled points mesh drawn on top, coloured with
+ * that picture's `overlay_map`, in a window round those points. */
+typedef struct {
+    const char *file;
+    const double *values;
+    double lo, hi;
+    ColormapKind map;
+    const char *overlay_file;
+    ColormapKind overlay_map;
+} PictureRef;
+
+/* A table <file>_NNNNN.csv: a "# t = ... s" line, the header, then `rows`
+ * rows of the columns (%.9g; the columns of `integer_cols`, bit c for
+ * column c, as integers; those of `short_cols` with 6 digits). */
+enum { TABLE_MAX_COLUMNS = 8 };
+typedef struct {
+    const char *file;
+    const char *header;
+    int64_t rows;
+    int ncol;
+    const double *col[TABLE_MAX_COLUMNS];
+    uint32_t integer_cols;
+    uint32_t short_cols;
+} TableRef;
+
+enum { FIELDSET_MAX_FIELDS = 12, FIELDSET_MAX_PICTURES = 4, FIELDSET_MAX_TABLES = 2 };
+
+typedef struct {
+    const char *series; /* the files' stem: "solid" -> solid_NNNNN.vtu and solid.pvd */
+    MeshKind mesh;
+    /* MESH_POINTS: n points at `position` (current, m), each drawn as a
+     * square of side `spacing` */
+    int64_t n;
+    int dim;
+    const double *position[3];
+    double spacing;
+    /* MESH_GRID: nx x ny cells between the faces face[0][0..nx], face[1][0..ny];
+     * `blank[c]` non-zero leaves cell c out of pictures (a body's cells) */
+    int nx, ny;
+    const double *face[2];
+    const uint8_t *blank;
+    int field_count;
+    FieldRef field[FIELDSET_MAX_FIELDS];
+    int picture_count;
+    PictureRef picture[FIELDSET_MAX_PICTURES];
+    int table_count;
+    TableRef table[FIELDSET_MAX_TABLES];
+} FieldSet;
+
+#endif

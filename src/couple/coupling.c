@@ -1,0 +1,87 @@
+#include "couple/coupling.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The registry: one ops table per CouplingKind. */
+static const CouplingOps *const COUPLING_MODELS[COUPLING_KIND_COUNT] = {
+    [COUPLING_GHOST_CELL] = &GHOST_COUPLING_OPS,
+};
+
+struct Coupling {
+    const CouplingOps *ops;
+    CouplingKind kind;
+    void *impl;
+};
+
+void coupling_config_free(CouplingConfig *cfg) {
+    if (cfg->kind == COUPLING_GHOST_CELL) ghost_coupling_config_free(&cfg->ghost);
+    memset(cfg, 0, sizeof *cfg);
+}
+
+int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow) {
+    *out = NULL;
+    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_COUNT ||
+        !COUPLING_MODELS[cfg->kind])
+        return NSPD_FAIL(NSPD_ERR_INPUT, "unknown coupling %d", (int)cfg->kind);
+    if (!flow)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the %s coupling needs a flow",
+                         COUPLING_MODELS[cfg->kind]->name);
+    Coupling *c;
+    TRY(nspd_alloc(&c, 1, sizeof *c));
+    c->kind = cfg->kind;
+    c->ops = COUPLING_MODELS[cfg->kind];
+    int status = c->ops->create(&c->impl, cfg, solid, flow);
+    if (status != NSPD_OK) {
+        nspd_free(&c);
+        return status;
+    }
+    *out = c;
+    return NSPD_OK;
+}
+
+void coupling_destroy(Coupling **cp) {
+    Coupling *c = *cp;
+    if (!c) return;
+    if (c->impl) c->ops->destroy(c->impl);
+    nspd_free(cp);
+}
+
+CouplingKind coupling_kind(const Coupling *c) {
+    return c->kind;
+}
+
+const char *coupling_name(const Coupling *c) {
+    return c->ops->name;
+}
+
+int coupling_before_flow(Coupling *c, Solid *solid, Flow *flow) {
+    return c->ops->before_flow(c->impl, solid, flow);
+}
+
+int coupling_after_flow(Coupling *c, Solid *solid, Flow *flow, double dt) {
+    return c->ops->after_flow(c->impl, solid, flow, dt);
+}
+
+double coupling_solid_dt_limit(const Coupling *c, const Solid *solid) {
+    return c->ops->solid_dt_limit ? c->ops->solid_dt_limit(c->impl, solid) : (double)INFINITY;
+}
+
+int coupling_history(Coupling *c, Solid *solid, Flow *flow, double time, Report *row) {
+    return c->ops->history(c->impl, solid, flow, time, row);
+}
+
+int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out) {
+    return c->ops->summary(c->impl, solid, flow, out);
+}
+
+int coupling_fields(Coupling *c, Solid *solid, Flow *flow, FieldSet *out) {
+    return c->ops->fields(c->impl, solid, flow, out);
+}
+
+void *coupling_impl(Coupling *c, CouplingKind kind) {
+    return c && c->kind == kind ? c->impl : NULL;
+}

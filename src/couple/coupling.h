@@ -1,0 +1,73 @@
+/* The coupling interface: how a solid and a flow exchange walls and loads,
+ * behind an opaque handle. One coupled step of the driver (sim/sim.c):
+ *     coupling_before_flow   the solid's state becomes the flow's boundary
+ *     flow step
+ *     coupling_after_flow    the flow's state becomes the solid's load
+ *     solid sub-steps        no longer than coupling_solid_dt_limit
+ * A coupling may have no solid (rigid walls) but always has a flow. A new
+ * coupling adds a CouplingKind, its ops table (registered in
+ * COUPLING_MODELS, coupling.c) and its configuration in the CouplingConfig
+ * union; create refuses the solid/flow pairs it does not support with
+ * NSPD_ERR_INPUT. */
+#ifndef NSPD_COUPLE_COUPLING_H
+#define NSPD_COUPLE_COUPLING_H
+
+#include "core/fields.h"
+#include "core/report.h"
+#include "couple/ghost_coupling.h"
+#include "flow/flow.h"
+#include "solid/solid.h"
+
+typedef enum {
+    COUPLING_NONE = 0,
+    COUPLING_GHOST_CELL, /* sharp ghost-cell immersed boundary: couple/ghost_coupling.c */
+    COUPLING_KIND_COUNT
+} CouplingKind;
+
+/* A coupling's configuration: a tagged union over the couplings, and what
+ * every coupling shares. */
+typedef struct {
+    CouplingKind kind;
+    /* s: the loads are time-averaged from this time on (the driver sets it
+     * from output.average_from, less a round-off margin of the end time) */
+    double average_from;
+    union {
+        GhostCouplingConfig ghost; /* COUPLING_GHOST_CELL */
+    };
+} CouplingConfig;
+
+void coupling_config_free(CouplingConfig *cfg);
+
+typedef struct Coupling Coupling;
+
+typedef struct CouplingOps {
+    const char *name;
+    /* solid may be NULL (rigid walls); takes ownership of *cfg's contents */
+    int (*create)(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow);
+    void (*destroy)(void *impl);
+    int (*before_flow)(void *impl, Solid *solid, Flow *flow);
+    int (*after_flow)(void *impl, Solid *solid, Flow *flow, double dt);
+    /* the longest solid sub-step the coupling allows (INFINITY: no limit) */
+    double (*solid_dt_limit)(const void *impl, const Solid *solid);
+    /* the loads of the current state as history columns (and the running
+     * time averages, from average_from on) */
+    int (*history)(void *impl, Solid *solid, Flow *flow, double time, Report *row);
+    int (*summary)(void *impl, Solid *solid, Flow *flow, Report *out);
+    /* tables of the current state (surface pressure and friction) */
+    int (*fields)(void *impl, Solid *solid, Flow *flow, FieldSet *out);
+} CouplingOps;
+
+int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow);
+void coupling_destroy(Coupling **c);
+CouplingKind coupling_kind(const Coupling *c);
+const char *coupling_name(const Coupling *c);
+int coupling_before_flow(Coupling *c, Solid *solid, Flow *flow);
+int coupling_after_flow(Coupling *c, Solid *solid, Flow *flow, double dt);
+double coupling_solid_dt_limit(const Coupling *c, const Solid *solid);
+int coupling_history(Coupling *c, Solid *solid, Flow *flow, double time, Report *row);
+int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out);
+int coupling_fields(Coupling *c, Solid *solid, Flow *flow, FieldSet *out);
+/* The concrete coupling if it is of `kind`, else NULL. */
+void *coupling_impl(Coupling *c, CouplingKind kind);
+
+#endif

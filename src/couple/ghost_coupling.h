@@ -1,0 +1,34 @@
+/* The ghost-cell immersed-boundary coupling (paper 000 Sec. 3.3) as a
+ * coupling model. Its walls are either
+ *   - the surface of a bond-based PD solid (two-way: couple/fsi.h), or
+ *   - rigid fixed bodies (flow.bodies), when the case has no solid: the
+ *     walls stay where they are, the flow feels them, and their loads are
+ *     measured (force coefficients, surface pressure and friction).
+ * It needs the GKS grid (gks_flow_solver) and the bonds of a bond-based
+ * solid (bond_solid_body); other models are refused at create with an
+ * input error. */
+#ifndef NSPD_COUPLE_GHOST_COUPLING_H
+#define NSPD_COUPLE_GHOST_COUPLING_H
+
+#include "couple/fsi.h"
+#include "couple/ibm_body.h"
+
+typedef struct {
+    FsiConfig fsi;     /* the walls' condition, soft start, ghost faces, reference state */
+    IbmBodySet bodies; /* rigid walls (owned); empty when a solid gives the walls */
+} GhostCouplingConfig;
+
+void ghost_coupling_config_free(GhostCouplingConfig *cfg);
+
+struct CouplingOps;
+extern const struct CouplingOps GHOST_COUPLING_OPS;
+
+/* Views for tests and tools (NULL if the coupling is not a ghost-cell one):
+ * the immersed boundary, the surface loads of the last computation, and the
+ * two-way state (NULL for rigid bodies). */
+typedef struct Coupling Coupling;
+const Ibm *ghost_coupling_ibm(Coupling *c);
+const IbmSurface *ghost_coupling_surface(Coupling *c);
+const Fsi *ghost_coupling_fsi(Coupling *c);
+
+#endif

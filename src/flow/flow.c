@@ -1,0 +1,107 @@
+#include "flow/flow.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <string.h>
+
+/* The registry: one ops table per FlowMethod. */
+static const FlowOps *const FLOW_METHODS[FLOW_METHOD_COUNT] = {
+    [FLOW_METHOD_GKS] = &GKS_FLOW_OPS,
+};
+
+struct Flow {
+    const FlowOps *ops;
+    FlowMethod method;
+    void *impl;
+};
+
+void flow_model_config_free(FlowModelConfig *cfg) {
+    if (cfg->method == FLOW_METHOD_GKS) gks_case_config_free(&cfg->gks);
+    memset(cfg, 0, sizeof *cfg);
+}
+
+int flow_create(Flow **out, FlowModelConfig *cfg) {
+    *out = NULL;
+    if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_COUNT ||
+        !FLOW_METHODS[cfg->method])
+        return NSPD_FAIL(NSPD_ERR_INPUT, "unknown flow solver %d", (int)cfg->method);
+    Flow *f;
+    TRY(nspd_alloc(&f, 1, sizeof *f));
+    f->method = cfg->method;
+    f->ops = FLOW_METHODS[cfg->method];
+    int status = f->ops->create(&f->impl, cfg);
+    if (status != NSPD_OK) {
+        nspd_free(&f);
+        return status;
+    }
+    *out = f;
+    return NSPD_OK;
+}
+
+void flow_destroy(Flow **fp) {
+    Flow *f = *fp;
+    if (!f) return;
+    if (f->impl) f->ops->destroy(f->impl);
+    nspd_free(fp);
+}
+
+FlowMethod flow_method(const Flow *f) {
+    return f->method;
+}
+
+const char *flow_name(const Flow *f) {
+    return f->ops->name;
+}
+
+double flow_stable_dt(const Flow *f) {
+    return f->ops->stable_dt(f->impl);
+}
+
+int flow_step(Flow *f, double dt) {
+    return f->ops->step(f->impl, dt);
+}
+
+double flow_time(const Flow *f) {
+    return f->ops->time(f->impl);
+}
+
+FlowMesh flow_mesh(const Flow *f) {
+    return f->ops->mesh(f->impl);
+}
+
+void flow_cell_state(const Flow *f, int64_t cell, double out[5]) {
+    f->ops->cell_state(f->impl, cell, out);
+}
+
+FlowReference flow_reference(const Flow *f) {
+    return f->ops->reference(f->impl);
+}
+
+void flow_history(const Flow *f, Report *row) {
+    f->ops->history(f->impl, row);
+}
+
+void flow_summary(const Flow *f, const RunStats *run, Report *out) {
+    f->ops->summary(f->impl, run, out);
+}
+
+void flow_info(const Flow *f, size_t memory_bytes, char *buf, size_t size) {
+    f->ops->info(f->impl, memory_bytes, buf, size);
+}
+
+void flow_brief(const Flow *f, char *buf, size_t size) {
+    f->ops->brief(f->impl, buf, size);
+}
+
+int64_t flow_fallbacks_total(const Flow *f) {
+    return f->ops->fallbacks_total(f->impl);
+}
+
+void flow_fields(Flow *f, FieldSet *out) {
+    f->ops->fields(f->impl, out);
+}
+
+void *flow_impl(Flow *f, FlowMethod method) {
+    return f && f->method == method ? f->impl : NULL;
+}

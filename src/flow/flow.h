@@ -1,0 +1,101 @@
+/* The flow interface: a flow solver behind an opaque handle.
+ *
+ * The driver (sim/), the couplings and the probes call the flow_* functions,
+ * which dispatch through the FlowOps table once per step, sample or output;
+ * hot loops stay inside a solver. A new solver adds a FlowMethod, its ops
+ * table (registered in FLOW_METHODS, flow.c) and its configuration in the
+ * FlowModelConfig union; nothing in sim/, case/ output or the probes
+ * changes. A coupling tied to one representation (the ghost-cell immersed
+ * boundary needs the GKS grid) reaches the concrete solver through the
+ * checked accessor of that solver (gks_flow_solver) and refuses the others
+ * when it is created. */
+#ifndef NSPD_FLOW_FLOW_H
+#define NSPD_FLOW_FLOW_H
+
+#include "core/fields.h"
+#include "core/report.h"
+#include "flow/gks_flow.h"
+#include "flow/grid.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum {
+    FLOW_METHOD_NONE = 0, /* the case has no flow */
+    FLOW_METHOD_GKS,      /* gas-kinetic BGK-NS finite volumes (paper 000): flow/gks_flow.c */
+    FLOW_METHOD_COUNT
+} FlowMethod;
+
+/* A flow's configuration: a tagged union over the solvers. */
+typedef struct {
+    FlowMethod method;
+    union {
+        GksCaseConfig gks; /* FLOW_METHOD_GKS */
+    };
+} FlowModelConfig;
+
+void flow_model_config_free(FlowModelConfig *cfg);
+
+/* Where the solver's unknowns live, for probes and output. */
+typedef struct {
+    MeshKind kind;
+    const Grid *grid; /* MESH_GRID */
+} FlowMesh;
+
+/* The reference state of force and pressure coefficients: the free stream
+ * if the case defines one, else the initial state; the reference length
+ * (0 if none was given). */
+typedef struct {
+    double rho, u, v, p;
+    double length;
+    double gamma, gas_constant;
+} FlowReference;
+
+typedef struct Flow Flow;
+
+typedef struct FlowOps {
+    const char *name;
+    /* Builds the solver from *cfg, taking ownership of its contents. */
+    int (*create)(void **impl, FlowModelConfig *cfg);
+    void (*destroy)(void *impl);
+    double (*stable_dt)(const void *impl);
+    int (*step)(void *impl, double dt);
+    double (*time)(const void *impl);
+    FlowMesh (*mesh)(const void *impl);
+    /* density, u, v, pressure, temperature at node/cell `cell` of the mesh */
+    void (*cell_state)(const void *impl, int64_t cell, double out[5]);
+    FlowReference (*reference)(const void *impl);
+    void (*history)(const void *impl, Report *row);
+    void (*summary)(const void *impl, const RunStats *run, Report *out);
+    void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
+    void (*brief)(const void *impl, char *buf, size_t size); /* "nx x ny cells, " */
+    int64_t (*fallbacks_total)(const void *impl);             /* reduced-order events, for the log */
+    /* the fields and pictures of the current state, into the solver's own
+     * scratch (no allocation) */
+    void (*fields)(void *impl, FieldSet *out);
+} FlowOps;
+
+/* NSPD_ERR_INPUT for an unknown method; otherwise what the solver's create
+ * returns. Takes ownership of *cfg. */
+int flow_create(Flow **out, FlowModelConfig *cfg);
+void flow_destroy(Flow **f);
+
+FlowMethod flow_method(const Flow *f);
+const char *flow_name(const Flow *f);
+double flow_stable_dt(const Flow *f);
+int flow_step(Flow *f, double dt);
+double flow_time(const Flow *f);
+FlowMesh flow_mesh(const Flow *f);
+void flow_cell_state(const Flow *f, int64_t cell, double out[5]);
+FlowReference flow_reference(const Flow *f);
+void flow_history(const Flow *f, Report *row);
+void flow_summary(const Flow *f, const RunStats *run, Report *out);
+void flow_info(const Flow *f, size_t memory_bytes, char *buf, size_t size);
+void flow_brief(const Flow *f, char *buf, size_t size);
+int64_t flow_fallbacks_total(const Flow *f);
+void flow_fields(Flow *f, FieldSet *out);
+
+/* The concrete solver if the flow is of `method`, else NULL. */
+void *flow_impl(Flow *f, FlowMethod method);
+
+#endif

@@ -1,0 +1,306 @@
+#include "flow/gks_flow.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "flow/flow.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void gks_case_config_free(GksCaseConfig *c) {
+    for (int i = 0; i < c->region_count; i++) shapeset_free(&c->regions[i].shapes);
+    nspd_free(&c->regions);
+    c->region_count = 0;
+    flow_field_source_free(&c->field);
+    c->has_field = false;
+}
+
+enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
+
+/* The model: the solver, its case and the output scratch (allocated once). */
+typedef struct {
+    GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
+    FlowSolver *solver;
+    double last_dt; /* s, of the last step; 0 before the first */
+    double *cells[GKS_SCRATCH];
+    double *kind;   /* cell kinds as a field */
+    uint8_t *blank; /* 1: not a fluid cell */
+} GksFlow;
+
+/* The vortex on a periodic box takes its nearest image: its periods are the
+ * grid's lengths along the periodic axes. */
+static void vortex_periods(GksCaseConfig *fc) {
+    FlowConfig *c = &fc->solver;
+    FlowVortex *vx = &fc->vortex;
+    if (c->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC) {
+        GridSegment *s = c->segments[0];
+        vx->lo_x = c->x0;
+        vx->period_x = 0;
+        for (int k = 0; k < c->segment_count[0]; k++) vx->period_x += s[k].length;
+    }
+    if (c->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC) {
+        GridSegment *s = c->segments[1];
+        vx->lo_y = c->y0;
+        vx->period_y = 0;
+        for (int k = 0; k < c->segment_count[1]; k++) vx->period_y += s[k].length;
+    }
+}
+
+static void gks_destroy(void *impl) {
+    GksFlow *g = impl;
+    flow_solver_destroy(&g->solver);
+    gks_case_config_free(&g->cfg);
+    for (int k = 0; k < GKS_SCRATCH; k++) nspd_free(&g->cells[k]);
+    nspd_free(&g->kind);
+    nspd_free(&g->blank);
+    nspd_free(&g);
+}
+
+static int gks_create(void **impl, FlowModelConfig *mc) {
+    GksFlow *g;
+    TRY(nspd_alloc(&g, 1, sizeof *g));
+    g->cfg = mc->gks; /* the initial condition needs the vortex at its final address */
+    memset(mc, 0, sizeof *mc);
+    GksCaseConfig *fc = &g->cfg;
+    FlowConfig *c = &fc->solver;
+    if (fc->has_vortex) {
+        vortex_periods(fc);
+        c->init_fn = flow_isentropic_vortex;
+        c->init_ctx = &fc->vortex;
+    }
+    if (fc->has_field) {
+        c->init_fn = flow_field_sample;
+        c->init_ctx = &fc->field;
+    }
+    int status = flow_solver_create(&g->solver, c);
+    if (status == NSPD_OK) {
+        const Grid *grid = flow_solver_grid(g->solver);
+        const size_t n = (size_t)grid->nx * (size_t)grid->ny;
+        for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK; k++)
+            status = nspd_alloc(&g->cells[k], n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&g->kind, n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&g->blank, n, 1);
+    }
+    if (status != NSPD_OK) {
+        gks_destroy(g);
+        return status;
+    }
+    *impl = g;
+    return NSPD_OK;
+}
+
+static double gks_stable_dt(const void *impl) {
+    return flow_solver_stable_dt(((const GksFlow *)impl)->solver);
+}
+
+static int gks_step(void *impl, double dt) {
+    GksFlow *g = impl;
+    TRY(flow_solver_step(g->solver, dt));
+    g->last_dt = dt;
+    return NSPD_OK;
+}
+
+static double gks_time(const void *impl) {
+    return flow_solver_time(((const GksFlow *)impl)->solver);
+}
+
+static FlowMesh gks_mesh(const void *impl) {
+    return (FlowMesh){MESH_GRID, flow_solver_grid(((const GksFlow *)impl)->solver)};
+}
+
+static void gks_cell_state(const void *impl, int64_t cell, double out[5]) {
+    /* the fields are read only here; the accessor is not const-qualified */
+    FlowSolver *solver = ((const GksFlow *)impl)->solver;
+    FlowFields f = flow_solver_fields(solver);
+    const GksParams *gas = flow_solver_gas(solver);
+    double w[4] = {f.w[0][cell], f.w[1][cell], f.w[2][cell], f.w[3][cell]};
+    FlowPrim q;
+    flow_cons_to_prim(w, gas->gamma, &q);
+    out[0] = q.rho;
+    out[1] = q.u;
+    out[2] = q.v;
+    out[3] = q.p;
+    out[4] = q.p / (q.rho * gas->R);
+}
+
+static FlowReference gks_reference(const void *impl) {
+    const GksFlow *g = impl;
+    const GksCaseConfig *f = &g->cfg;
+    const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
+    const GksParams *gas = flow_solver_gas(g->solver);
+    return (FlowReference){.rho = q->rho,
+                           .u = q->u,
+                           .v = q->v,
+                           .p = q->p,
+                           .length = f->reference_length,
+                           .gamma = gas->gamma,
+                           .gas_constant = gas->R};
+}
+
+static void gks_history(const void *impl, Report *row) {
+    const GksFlow *g = impl;
+    double totals[4];
+    flow_solver_totals(g->solver, totals);
+    report_real(row, "dt_s", g->last_dt);
+    report_precise(row, "mass_kg_per_m", totals[0]);
+    report_precise(row, "momentum_x_kg_per_s", totals[1]);
+    report_precise(row, "momentum_y_kg_per_s", totals[2]);
+    report_precise(row, "energy_J_per_m", totals[3]);
+    report_int(row, "fallbacks", flow_solver_fallbacks_last(g->solver));
+}
+
+static void gks_summary(const void *impl, const RunStats *run, Report *out) {
+    const GksFlow *g = impl;
+    const Grid *grid = flow_solver_grid(g->solver);
+    double totals[4];
+    flow_solver_totals(g->solver, totals);
+    int64_t cells = (int64_t)grid->nx * grid->ny;
+    report_int(out, "cells", cells);
+    report_int(out, "cells_x", grid->nx);
+    report_int(out, "cells_y", grid->ny);
+    report_real(out, "cell_updates_per_s",
+                run->wall_s > 0 ? (double)cells * (double)run->steps / run->wall_s : 0.0);
+    report_int(out, "fallbacks", flow_solver_fallbacks_total(g->solver));
+    report_real(out, "mass_kg_per_m", totals[0]);
+    report_real(out, "momentum_x_kg_per_s", totals[1]);
+    report_real(out, "momentum_y_kg_per_s", totals[2]);
+    report_real(out, "energy_J_per_m", totals[3]);
+}
+
+static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
+    const GksFlow *gf = impl;
+    const Grid *g = flow_solver_grid(gf->solver);
+    const FlowConfig *c = flow_solver_config(gf->solver);
+    int len = 0;
+#define APPEND(...)                                                                                \
+    len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
+    for (int a = 0; a < 2; a++) {
+        double hmin = INFINITY, hmax = 0;
+        for (int i = 0; i < g->ax[a].n; i++) {
+            hmin = fmin(hmin, g->ax[a].width[i]);
+            hmax = fmax(hmax, g->ax[a].width[i]);
+        }
+        APPEND("grid %c               %d cells on [%.6g, %.6g] m, spacing %.4g to %.4g m\n",
+               "xy"[a], g->ax[a].n, g->ax[a].lo, g->ax[a].hi, hmin, hmax);
+    }
+    APPEND("cells                %lld\n", (long long)g->nx * g->ny);
+    APPEND("gas                  gamma %.4g, R %.6g J/(kg K), Pr %.3g, viscosity %s\n", c->gamma,
+           c->gas_constant, c->prandtl, c->viscosity == VISCOSITY_NONE ? "none (Euler)" : "on");
+    const GksCaseConfig *fc = &gf->cfg;
+    if (fc->has_free_stream) {
+        const FlowPrim *q = &fc->free_stream;
+        double speed = hypot(q->u, q->v), a = sqrt(c->gamma * q->p / q->rho);
+        APPEND("free stream          rho %.6g, |u| %.6g, p %.6g, Mach %.4g", q->rho, speed, q->p,
+               speed / a);
+        if (c->viscosity != VISCOSITY_NONE && fc->reference_length > 0)
+            APPEND(", Re %.6g over %.4g m", q->rho * speed * fc->reference_length / c->mu_ref,
+                   fc->reference_length);
+        APPEND("\n");
+    }
+    APPEND("CFL time step        %.6g s at the start (CFL %.3g)\n",
+           flow_solver_stable_dt(gf->solver), c->cfl);
+    APPEND("memory               %.1f MB in solver arrays (%.0f bytes per cell)\n",
+           (double)memory / 1e6, (double)memory / ((double)g->nx * g->ny));
+#undef APPEND
+}
+
+static void gks_brief(const void *impl, char *buf, size_t size) {
+    const Grid *g = flow_solver_grid(((const GksFlow *)impl)->solver);
+    snprintf(buf, size, "%d x %d cells, ", g->nx, g->ny);
+}
+
+static int64_t gks_fallbacks_total(const void *impl) {
+    return flow_solver_fallbacks_total(((const GksFlow *)impl)->solver);
+}
+
+/* Numerical schlieren (Quirk 1994): S = exp(-k |grad rho| / max |grad rho|),
+ * k = 15, from central differences of the density on the stretched grid. */
+static void schlieren(const Grid *g, const double *rho, const uint8_t *solid, double *out) {
+    int nx = g->nx, ny = g->ny;
+    double gmax = 0.0;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            int il = i > 0 ? i - 1 : i, ir = i < nx - 1 ? i + 1 : i;
+            int jl = j > 0 ? j - 1 : j, jr = j < ny - 1 ? j + 1 : j;
+            double gx = ir > il ? (rho[(int64_t)j * nx + ir] - rho[(int64_t)j * nx + il]) /
+                                      (g->ax[0].center[ir] - g->ax[0].center[il])
+                                : 0.0;
+            double gy = jr > jl ? (rho[(int64_t)jr * nx + i] - rho[(int64_t)jl * nx + i]) /
+                                      (g->ax[1].center[jr] - g->ax[1].center[jl])
+                                : 0.0;
+            double m = solid[(int64_t)j * nx + i] ? 0.0 : sqrt(gx * gx + gy * gy);
+            out[(int64_t)j * nx + i] = m;
+            if (m > gmax) gmax = m;
+        }
+    for (int64_t c = 0; c < (int64_t)nx * ny; c++)
+        out[c] = gmax > 0.0 ? exp(-15.0 * out[c] / gmax) : 1.0;
+}
+
+static void gks_fields(void *impl, FieldSet *out) {
+    GksFlow *gf = impl;
+    const Grid *g = flow_solver_grid(gf->solver);
+    const int64_t ncell = (int64_t)g->nx * g->ny;
+    static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
+                                       FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
+    for (int k = 0; k < 6; k++) flow_solver_primitive(gf->solver, order[k], gf->cells[k]);
+    /* cell kinds of the interior cells, as 0/1 "blank" and as a field */
+    FlowFields f = flow_solver_fields(gf->solver);
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            uint8_t k = f.kind[grid_index(g, i, j)];
+            gf->blank[(int64_t)j * g->nx + i] = k != FLOW_CELL_FLUID;
+            gf->kind[(int64_t)j * g->nx + i] = k;
+        }
+    double mach_max = 0.0;
+    for (int64_t c = 0; c < ncell; c++)
+        if (!gf->blank[c] && gf->cells[5][c] > mach_max) mach_max = gf->cells[5][c];
+    schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
+    memset(out, 0, sizeof *out);
+    out->series = "flow";
+    out->mesh = MESH_GRID;
+    out->nx = g->nx;
+    out->ny = g->ny;
+    out->face[0] = g->ax[0].face;
+    out->face[1] = g->ax[1].face;
+    out->blank = gf->blank;
+    double *const *c = gf->cells;
+    const FieldRef fields[] = {
+        {"density", 1, {c[0], NULL, NULL}},     {"velocity", 3, {c[1], c[2], NULL}},
+        {"pressure", 1, {c[3], NULL, NULL}},    {"temperature", 1, {c[4], NULL, NULL}},
+        {"mach", 1, {c[5], NULL, NULL}},        {"cell_kind", 1, {gf->kind, NULL, NULL}},
+    };
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
+        out->field[out->field_count++] = fields[k];
+    out->picture[out->picture_count++] = (PictureRef){.file = "mach",
+                                                      .values = c[5],
+                                                      .lo = 0.0,
+                                                      .hi = mach_max > 0 ? mach_max : 1.0,
+                                                      .map = COLORMAP_VIRIDIS,
+                                                      .overlay_file = "mach_damage"};
+    out->picture[out->picture_count++] = (PictureRef){
+        .file = "schlieren", .values = c[6], .lo = 0.0, .hi = 1.0, .map = COLORMAP_GRAY};
+}
+
+const FlowOps GKS_FLOW_OPS = {
+    .name = "gks",
+    .create = gks_create,
+    .destroy = gks_destroy,
+    .stable_dt = gks_stable_dt,
+    .step = gks_step,
+    .time = gks_time,
+    .mesh = gks_mesh,
+    .cell_state = gks_cell_state,
+    .reference = gks_reference,
+    .history = gks_history,
+    .summary = gks_summary,
+    .info = gks_info,
+    .brief = gks_brief,
+    .fallbacks_total = gks_fallbacks_total,
+    .fields = gks_fields,
+};
+
+FlowSolver *gks_flow_solver(Flow *f) {
+    GksFlow *g = flow_impl(f, FLOW_METHOD_GKS);
+    return g ? g->solver : NULL;
+}

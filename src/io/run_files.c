@@ -1,0 +1,160 @@
+#include "io/run_files.h"
+
+#include "core/status.h"
+#include "io/json.h"
+#include "io/render.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <string.h>
+
+int history_open(HistoryFile *h, const char *dir) {
+    memset(h, 0, sizeof *h);
+    snprintf(h->path, sizeof h->path, "%s/history.csv", dir);
+    h->file = fopen(h->path, "w");
+    if (!h->file) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", h->path);
+    return NSPD_OK;
+}
+
+int history_write(HistoryFile *h, const Report *row) {
+    if (!h->file) return NSPD_OK;
+    if (!h->header_written) {
+        for (int k = 0; k < row->n; k++) fprintf(h->file, "%s%s", k ? "," : "", row->item[k].name);
+        fputc('\n', h->file);
+        h->header_written = true;
+    }
+    for (int k = 0; k < row->n; k++) {
+        const ReportItem *it = &row->item[k];
+        const char *sep = k ? "," : "";
+        switch (it->kind) {
+        case REPORT_PRECISE: fprintf(h->file, "%s%.12g", sep, it->real); break;
+        case REPORT_INT:
+        case REPORT_BOOL: fprintf(h->file, "%s%lld", sep, (long long)it->count); break;
+        case REPORT_TEXT: fprintf(h->file, "%s%s", sep, it->text); break;
+        case REPORT_REAL:
+        default: fprintf(h->file, "%s%.9g", sep, it->real); break;
+        }
+    }
+    fputc('\n', h->file);
+    if (fflush(h->file) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write history.csv");
+    return NSPD_OK;
+}
+
+void history_close(HistoryFile *h) {
+    if (h->file) fclose(h->file);
+    h->file = NULL;
+}
+
+int summary_write(const char *dir, const Report *summary) {
+    char path[4096];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    JsonWriter w;
+    json_begin(&w, f);
+    for (int k = 0; k < summary->n; k++) {
+        const ReportItem *it = &summary->item[k];
+        switch (it->kind) {
+        case REPORT_INT: json_int(&w, it->name, it->count); break;
+        case REPORT_BOOL: json_bool(&w, it->name, it->count != 0); break;
+        case REPORT_TEXT: json_string(&w, it->name, it->text); break;
+        case REPORT_REAL:
+        case REPORT_PRECISE:
+        default: json_number(&w, it->name, it->real); break;
+        }
+    }
+    json_end(&w);
+    if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+    return NSPD_OK;
+}
+
+static int write_vtk(const char *dir, int index, double t, const FieldSet *fs, PvdSeries *pvd) {
+    char name[256], path[4096];
+    const char *ext = fs->mesh == MESH_GRID ? "vtr" : "vtu";
+    snprintf(name, sizeof name, "%s_%05d.%s", fs->series, index, ext);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (fs->mesh == MESH_GRID) {
+        const double zf[2] = {0.0, 0.0};
+        TRY(vtk_write_rectilinear(path, fs->nx, fs->ny, 1, fs->face[0], fs->face[1], zf, fs->field,
+                                  fs->field_count));
+    } else {
+        TRY(vtk_write_points(path, fs->n, fs->position, fs->field, fs->field_count));
+    }
+    char pvd_path[4096];
+    snprintf(pvd_path, sizeof pvd_path, "%s/%s.pvd", dir, fs->series);
+    return pvd_add(pvd, pvd_path, t, name);
+}
+
+/* The overlay's window: the points' box, enlarged by its own size on each side. */
+static void overlay_window(const FieldSet *pts, double window[4]) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int64_t i = 0; i < pts->n; i++)
+        for (int d = 0; d < 2; d++) {
+            lo[d] = fmin(lo[d], pts->position[d][i]);
+            hi[d] = fmax(hi[d], pts->position[d][i]);
+        }
+    double size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    window[0] = lo[0] - size;
+    window[1] = lo[1] - size;
+    window[2] = hi[0] + size;
+    window[3] = hi[1] + size;
+}
+
+static int write_picture(const char *dir, int index, const FieldSet *fs, const PictureRef *pic,
+                         const FieldSet *overlay, int max_pixels) {
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s_%05d.png", dir, pic->file, index);
+    RenderOptions ro = {pic->lo, pic->hi, pic->map, max_pixels, {0, 0, 0, 0}};
+    if (fs->mesh == MESH_POINTS)
+        return render_points_png(path, fs->n, fs->position, pic->values, fs->spacing, &ro);
+    TRY(render_grid_png(path, fs->nx, fs->ny, fs->face[0], fs->face[1], pic->values, fs->blank, &ro,
+                        NULL));
+    if (!pic->overlay_file || !overlay || overlay->mesh != MESH_POINTS ||
+        overlay->picture_count == 0)
+        return NSPD_OK;
+    const PictureRef *top = &overlay->picture[0];
+    RenderPoints pts = {overlay->n,
+                        {overlay->position[0], overlay->position[1]},
+                        top->values,
+                        overlay->spacing,
+                        top->lo,
+                        top->hi,
+                        top->overlay_map};
+    snprintf(path, sizeof path, "%s/%s_%05d.png", dir, pic->overlay_file, index);
+    overlay_window(overlay, ro.window);
+    return render_grid_png(path, fs->nx, fs->ny, fs->face[0], fs->face[1], pic->values, fs->blank,
+                           &ro, &pts);
+}
+
+static int write_table(const char *dir, int index, double t, const TableRef *tab) {
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s_%05d.csv", dir, tab->file, index);
+    FILE *f = fopen(path, "w");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    fprintf(f, "# t = %.9g s\n%s\n", t, tab->header);
+    for (int64_t r = 0; r < tab->rows; r++) {
+        for (int c = 0; c < tab->ncol; c++) {
+            const char *sep = c ? "," : "";
+            const double v = tab->col[c][r];
+            if (tab->integer_cols & (1u << c))
+                fprintf(f, "%s%lld", sep, (long long)v);
+            else if (tab->short_cols & (1u << c))
+                fprintf(f, "%s%.6g", sep, v);
+            else
+                fprintf(f, "%s%.9g", sep, v);
+        }
+        fputc('\n', f);
+    }
+    if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+    return NSPD_OK;
+}
+
+int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
+                    const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd) {
+    if (fs->mesh != MESH_NONE && opt->vtk) TRY(write_vtk(dir, index, t, fs, pvd));
+    for (int k = 0; k < fs->picture_count && opt->png && fs->mesh != MESH_NONE; k++)
+        TRY(write_picture(dir, index, fs, &fs->picture[k], overlay, opt->png_max_pixels));
+    for (int k = 0; k < fs->table_count; k++) TRY(write_table(dir, index, t, &fs->table[k]));
+    return NSPD_OK;
+}

@@ -1,0 +1,43 @@
+/* The files of a run's directory, written from what the models report
+ * (core/report.h, core/fields.h) without knowing the models:
+ *   history.csv        one Report per row; the header from the first row's names
+ *   summary.json       one Report
+ *   <series>_NNNNN.vtu/.vtr + <series>.pvd, <picture>_NNNNN.png,
+ *   <table>_NNNNN.csv  from a FieldSet */
+#ifndef NSPD_IO_RUN_FILES_H
+#define NSPD_IO_RUN_FILES_H
+
+#include "core/fields.h"
+#include "core/report.h"
+#include "io/vtk.h"
+
+#include <stdbool.h>
+#include <stdio.h>
+
+typedef struct {
+    FILE *file;
+    bool header_written;
+    char path[4096];
+} HistoryFile;
+
+/* Creates dir/history.csv (NSPD_ERR_IO with the reason if it cannot). */
+int history_open(HistoryFile *h, const char *dir);
+/* Appends one row: the first call writes the header (the items' names). */
+int history_write(HistoryFile *h, const Report *row);
+void history_close(HistoryFile *h);
+
+/* Writes dir/summary.json with the items in order. */
+int summary_write(const char *dir, const Report *summary);
+
+typedef struct {
+    bool vtk, png;
+    int png_max_pixels;
+} FieldOutputOptions;
+
+/* Writes the files of one output (index) of a field set at time t:
+ * its VTK file (added to *pvd), its pictures and its tables. `overlay`
+ * (NULL: none) is the points mesh drawn on the pictures that ask for it. */
+int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
+                    const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd);
+
+#endif

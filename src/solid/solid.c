@@ -1,0 +1,159 @@
+#include "solid/solid.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "solid/bond_solid.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The registry: one ops table per SolidKind. */
+static const SolidOps *const SOLID_MODELS[SOLID_KIND_COUNT] = {
+    [SOLID_BOND] = &BOND_SOLID_OPS,
+};
+
+struct Solid {
+    const SolidOps *ops;
+    SolidKind kind;
+    void *impl;
+    PdPoints points;
+    int64_t last_substeps;
+    double *damage;      /* scratch for solid_damage */
+    double *position[3]; /* scratch for solid_current_positions */
+};
+
+void solid_config_free(SolidConfig *cfg) {
+    if (cfg->kind == SOLID_BOND) pd_config_free(&cfg->bond);
+    memset(cfg, 0, sizeof *cfg);
+}
+
+int solid_create(Solid **out, SolidConfig *cfg) {
+    *out = NULL;
+    if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_COUNT || !SOLID_MODELS[cfg->kind])
+        return NSPD_FAIL(NSPD_ERR_INPUT, "unknown solid model %d", (int)cfg->kind);
+    Solid *s;
+    TRY(nspd_alloc(&s, 1, sizeof *s));
+    s->kind = cfg->kind;
+    s->ops = SOLID_MODELS[cfg->kind];
+    int status = s->ops->create(&s->impl, &s->points, cfg);
+    if (status == NSPD_OK) status = nspd_alloc(&s->damage, (size_t)s->points.n, sizeof(double));
+    for (int d = 0; d < s->points.dim && status == NSPD_OK; d++)
+        status = nspd_alloc(&s->position[d], (size_t)s->points.n, sizeof(double));
+    if (status != NSPD_OK) {
+        solid_destroy(&s);
+        return status;
+    }
+    *out = s;
+    return NSPD_OK;
+}
+
+void solid_destroy(Solid **sp) {
+    Solid *s = *sp;
+    if (!s) return;
+    if (s->impl) s->ops->destroy(s->impl);
+    nspd_free(&s->damage);
+    for (int d = 0; d < 3; d++) nspd_free(&s->position[d]);
+    nspd_free(sp);
+}
+
+SolidKind solid_kind(const Solid *s) {
+    return s->kind;
+}
+
+const char *solid_name(const Solid *s) {
+    return s->ops->name;
+}
+
+PdPoints *solid_points(Solid *s) {
+    return &s->points;
+}
+
+const PdPoints *solid_points_const(const Solid *s) {
+    return &s->points;
+}
+
+double solid_stable_dt(const Solid *s) {
+    return s->ops->stable_dt(s->impl);
+}
+
+double solid_time(const Solid *s) {
+    return s->ops->time(s->impl);
+}
+
+void solid_set_time(Solid *s, double t) {
+    s->ops->set_time(s->impl, t);
+}
+
+int solid_advance(Solid *s, double dt, double max_substep) {
+    int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
+    if (n < 1) n = 1;
+    double h = dt / (double)n;
+    for (int64_t k = 0; k < n; k++) TRY(s->ops->step(s->impl, h));
+    s->last_substeps = n;
+    return NSPD_OK;
+}
+
+int64_t solid_last_substeps(const Solid *s) {
+    return s->last_substeps;
+}
+
+const double *solid_damage(Solid *s) {
+    s->ops->damage(s->impl, s->damage);
+    return s->damage;
+}
+
+void solid_current_positions(Solid *s, const double *out[3]) {
+    const PdPoints *p = &s->points;
+    for (int d = 0; d < 3; d++) out[d] = NULL;
+    for (int d = 0; d < p->dim; d++) {
+        for (int64_t i = 0; i < p->n; i++) s->position[d][i] = p->x[d][i] + p->u[d][i];
+        out[d] = s->position[d];
+    }
+}
+
+void solid_history(const Solid *s, Report *row) {
+    s->ops->history(s->impl, row);
+}
+
+void solid_summary(const Solid *s, const RunStats *run, Report *out) {
+    s->ops->summary(s->impl, run, out);
+}
+
+void solid_info(const Solid *s, size_t memory_bytes, char *buf, size_t size) {
+    s->ops->info(s->impl, memory_bytes, buf, size);
+}
+
+void solid_brief(const Solid *s, char *buf, size_t size) {
+    s->ops->brief(s->impl, buf, size);
+}
+
+void solid_fields(Solid *s, FieldSet *out) {
+    const PdPoints *p = &s->points;
+    const double *damage = solid_damage(s);
+    memset(out, 0, sizeof *out);
+    out->series = "solid";
+    out->mesh = MESH_POINTS;
+    out->n = p->n;
+    out->dim = p->dim;
+    out->spacing = p->spacing;
+    /* current positions x + u, so cracks show as openings */
+    solid_current_positions(s, out->position);
+    const bool d3 = p->dim == 3;
+    out->field[out->field_count++] =
+        (FieldRef){"displacement", 3, {p->u[0], p->u[1], d3 ? p->u[2] : NULL}};
+    out->field[out->field_count++] =
+        (FieldRef){"velocity", 3, {p->v[0], p->v[1], d3 ? p->v[2] : NULL}};
+    out->field[out->field_count++] = (FieldRef){"damage", 1, {damage, NULL, NULL}};
+    out->field[out->field_count++] = (FieldRef){"volume", 1, {p->volume, NULL, NULL}};
+    if (s->ops->fields) s->ops->fields(s->impl, out);
+    out->picture[out->picture_count++] = (PictureRef){.file = "damage",
+                                                      .values = damage,
+                                                      .lo = 0.0,
+                                                      .hi = 1.0,
+                                                      .map = COLORMAP_VIRIDIS,
+                                                      .overlay_map = COLORMAP_INFERNO};
+}
+
+void *solid_impl(Solid *s, SolidKind kind) {
+    return s && s->kind == kind ? s->impl : NULL;
+}

@@ -1,0 +1,116 @@
+/* The solid interface: a PD solid model behind an opaque handle.
+ *
+ * Every PD model shares its material points (PdPoints: positions,
+ * displacements, velocities, the external force density couplings write,
+ * volumes, lattice indices and the family CSR); what differs between models
+ * (the force, the material state, failure) sits behind the SolidOps table.
+ * The driver (sim/) and the couplings call the solid_* functions, which
+ * dispatch through the table once per step or output; hot loops stay inside
+ * a model. A new model adds a SolidKind, its ops table (registered in
+ * SOLID_MODELS, solid.c) and its configuration in the SolidConfig union;
+ * nothing in sim/, case/ output or the couplings changes.
+ *
+ * Time: solid_advance(dt, max_substep) takes n = ceil(dt / max_substep)
+ * equal sub-steps (one when the solid sets the pace); solid_set_time pins
+ * the clock to the flow's when the flow sets it. */
+#ifndef NSPD_SOLID_SOLID_H
+#define NSPD_SOLID_SOLID_H
+
+#include "core/fields.h"
+#include "core/report.h"
+#include "solid/pd_config.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum {
+    SOLID_NONE = 0, /* the case has no solid */
+    SOLID_BOND,     /* bond-based PD (paper 000): solid/bond_solid.c */
+    SOLID_KIND_COUNT
+} SolidKind;
+
+/* A solid's configuration: a tagged union over the models. */
+typedef struct {
+    SolidKind kind;
+    union {
+        PdConfig bond; /* SOLID_BOND */
+    };
+} SolidConfig;
+
+void solid_config_free(SolidConfig *cfg);
+
+/* The points every PD model has (struct of arrays, owned by the model,
+ * never reallocated after create). Couplings write `external`; everything
+ * else is read-only outside the model. */
+typedef struct {
+    int dim;
+    int64_t n;
+    double spacing;   /* lattice spacing dx, m */
+    double thickness; /* 2D: out-of-plane thickness, m; 3D: 1 */
+    double *x[3], *u[3], *v[3];
+    double *external[3]; /* force density from outside, N/m^3 (see pd_body.h) */
+    double *volume;
+    int32_t *lattice[3];
+    const int64_t *family_first; /* the family CSR: neighbours of i are */
+    const int32_t *family_nbr;   /* family_nbr[family_first[i] .. family_first[i+1]) */
+} PdPoints;
+
+typedef struct Solid Solid;
+
+typedef struct {
+    const char *name;
+    /* Builds the model from *cfg (taking ownership, zeroing it) and points
+     * `pts` at its points. */
+    int (*create)(void **impl, PdPoints *pts, SolidConfig *cfg);
+    void (*destroy)(void *impl);
+    double (*stable_dt)(const void *impl);         /* without a safety factor */
+    int (*step)(void *impl, double dt);             /* force + integration, one step */
+    double (*time)(const void *impl);
+    void (*set_time)(void *impl, double t);
+    void (*damage)(const void *impl, double *out); /* per point, 0..1 */
+    void (*history)(const void *impl, Report *row);
+    void (*summary)(const void *impl, const RunStats *run, Report *out);
+    void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
+    void (*brief)(const void *impl, char *buf, size_t size); /* "N points, M bonds, " */
+    /* optional (NULL: none): fields beyond the shared ones (stress, plastic
+     * strain), appended to *out */
+    void (*fields)(const void *impl, FieldSet *out);
+} SolidOps;
+
+/* NSPD_ERR_INPUT for an unknown kind; otherwise what the model's create
+ * returns. Takes ownership of *cfg. */
+int solid_create(Solid **out, SolidConfig *cfg);
+void solid_destroy(Solid **s);
+
+SolidKind solid_kind(const Solid *s);
+const char *solid_name(const Solid *s);
+PdPoints *solid_points(Solid *s);
+const PdPoints *solid_points_const(const Solid *s);
+double solid_stable_dt(const Solid *s);
+double solid_time(const Solid *s);
+void solid_set_time(Solid *s, double t);
+/* Advances by dt in n = ceil(dt / max_substep) equal sub-steps (n >= 1). */
+int solid_advance(Solid *s, double dt, double max_substep);
+int64_t solid_last_substeps(const Solid *s);
+
+/* The damage field (0..1 per point), computed into the handle's scratch
+ * array on each call; valid until the next call. */
+const double *solid_damage(Solid *s);
+/* Current positions x + u (for outputs and pictures), into the handle's
+ * scratch; valid until the next call. */
+void solid_current_positions(Solid *s, const double *out[3]);
+
+void solid_history(const Solid *s, Report *row);
+void solid_summary(const Solid *s, const RunStats *run, Report *out);
+void solid_info(const Solid *s, size_t memory_bytes, char *buf, size_t size);
+void solid_brief(const Solid *s, char *buf, size_t size);
+/* The fields and pictures of the current state (displacement, velocity,
+ * damage, volume on the current positions). */
+void solid_fields(Solid *s, FieldSet *out);
+
+/* The concrete model if the solid is of `kind`, else NULL: for the couplings
+ * tied to one representation (they refuse other kinds at create). */
+void *solid_impl(Solid *s, SolidKind kind);
+
+#endif
