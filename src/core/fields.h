@@ -40,7 +40,7 @@ typedef struct {
 /* A table <file>_NNNNN.csv: a "# t = ... s" line, the header, then `rows`
  * rows of the columns (%.9g; the columns of `integer_cols`, bit c for
  * column c, as integers; those of `short_cols` with 6 digits). */
-enum { TABLE_MAX_COLUMNS = 8 };
+enum { TABLE_MAX_COLUMNS = 12 };
 typedef struct {
     const char *file;
     const char *header;

@@ -127,7 +127,7 @@ static int write_picture(const char *dir, int index, const FieldSet *fs, const P
                            &ro, &pts);
 }
 
-static int write_table(const char *dir, int index, double t, const TableRef *tab) {
+int table_write(const char *dir, int index, double t, const TableRef *tab) {
     char path[4096];
     snprintf(path, sizeof path, "%s/%s_%05d.csv", dir, tab->file, index);
     FILE *f = fopen(path, "w");
@@ -155,6 +155,6 @@ int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
     if (fs->mesh != MESH_NONE && opt->vtk) TRY(write_vtk(dir, index, t, fs, pvd));
     for (int k = 0; k < fs->picture_count && opt->png && fs->mesh != MESH_NONE; k++)
         TRY(write_picture(dir, index, fs, &fs->picture[k], overlay, opt->png_max_pixels));
-    for (int k = 0; k < fs->table_count; k++) TRY(write_table(dir, index, t, &fs->table[k]));
+    for (int k = 0; k < fs->table_count; k++) TRY(table_write(dir, index, t, &fs->table[k]));
     return NSPD_OK;
 }

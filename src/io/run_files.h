@@ -40,4 +40,7 @@ typedef struct {
 int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
                     const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd);
 
+/* Writes dir/<table.file>_NNNNN.csv (see TableRef). */
+int table_write(const char *dir, int index, double t, const TableRef *table);
+
 #endif

@@ -4,6 +4,7 @@
 #include "core/status.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -131,6 +132,42 @@ static int setup_one(ProbeState *p, const PdPoints *body, const Flow *flow, int 
     return NSPD_OK;
 }
 
+/* A line probe's table: its file name, header and column storage (filled
+ * at each output, so nothing is allocated then). */
+static int setup_table(ProbeState *p, const PdPoints *body) {
+    const ProbeConfig *c = p->cfg;
+    if (c->kind != PROBE_LINE) return NSPD_OK;
+    TableRef *t = &p->table;
+    snprintf(p->table_file, sizeof p->table_file, "line_%s", c->name);
+    t->file = p->table_file;
+    t->header = p->table_header;
+    t->rows = p->member_count;
+    if (c->target == PROBE_ON_FLOW) {
+        snprintf(p->table_header, sizeof p->table_header,
+                 "x_m,y_m,rho_kg_per_m3,u_m_per_s,v_m_per_s,p_Pa,T_K,mach");
+        t->ncol = 8;
+    } else {
+        const int dim = body->dim;
+        int len = 0;
+        for (int d = 0; d < dim; d++)
+            len += snprintf(p->table_header + len, sizeof p->table_header - (size_t)len, "%s%s_m",
+                            d ? "," : "", AXIS[d]);
+        for (int d = 0; d < dim; d++)
+            len += snprintf(p->table_header + len, sizeof p->table_header - (size_t)len, ",u%s_m",
+                            AXIS[d]);
+        for (int d = 0; d < dim; d++)
+            len += snprintf(p->table_header + len, sizeof p->table_header - (size_t)len,
+                            ",v%s_m_per_s", AXIS[d]);
+        snprintf(p->table_header + len, sizeof p->table_header - (size_t)len, ",damage");
+        t->ncol = 3 * dim + 1;
+        t->short_cols = 1u << (3 * dim); /* damage: 6 digits */
+    }
+    TRY(nspd_alloc(&p->table_data, (size_t)(t->ncol * p->member_count), sizeof(double)));
+    for (int k = 0; k < t->ncol; k++)
+        t->col[k] = p->table_columns[k] = p->table_data + k * p->member_count;
+    return NSPD_OK;
+}
+
 int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body,
                   const Flow *flow, int max_samples) {
     *probes = NULL;
@@ -139,6 +176,7 @@ int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *
     for (int i = 0; i < cfg->probe_count; i++) {
         (*probes)[i].cfg = &cfg->probes[i];
         int status = setup_one(&(*probes)[i], body, flow, max_samples);
+        if (status == NSPD_OK) status = setup_table(&(*probes)[i], body);
         if (status != NSPD_OK) {
             probes_destroy(probes, cfg->probe_count);
             return status;
@@ -153,6 +191,7 @@ void probes_destroy(ProbeState **probes, int count) {
         nspd_free(&(*probes)[i].members);
         nspd_free(&(*probes)[i].times);
         nspd_free(&(*probes)[i].along);
+        nspd_free(&(*probes)[i].table_data);
     }
     nspd_free(probes);
 }
@@ -226,51 +265,45 @@ void probes_sample(ProbeState *probes, int count, const PdPoints *body, const do
 }
 
 /* The cells of a flow line: coordinates and primitive values. */
-static void write_flow_line(const ProbeState *p, const Flow *flow, FILE *f) {
+static void flow_line(ProbeState *p, const Flow *flow) {
     const Grid *g = flow_mesh(flow).grid;
     const double gamma = flow_reference(flow).gamma;
-    fprintf(f, "x_m,y_m,rho_kg_per_m3,u_m_per_s,v_m_per_s,p_Pa,T_K,mach\n");
+    double *const *col = p->table_columns;
     for (int64_t m = 0; m < p->member_count; m++) {
         int64_t cell = p->members[m];
         int j = (int)(cell / g->stride) - GRID_NG, i = (int)(cell % g->stride) - GRID_NG;
         double q[5];
         flow_cell_state(flow, cell, q);
-        double mach = sqrt(q[1] * q[1] + q[2] * q[2]) / sqrt(gamma * q[3] / q[0]);
-        fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", g->ax[0].center[i],
-                g->ax[1].center[j], q[0], q[1], q[2], q[3], q[4], mach);
+        col[0][m] = g->ax[0].center[i];
+        col[1][m] = g->ax[1].center[j];
+        for (int k = 0; k < 5; k++) col[2 + k][m] = q[k];
+        col[7][m] = sqrt(q[1] * q[1] + q[2] * q[2]) / sqrt(gamma * q[3] / q[0]);
     }
 }
 
-int probes_write_lines(const ProbeState *probes, int count, const PdPoints *body,
-                       const double *damage, const Flow *flow, double time, const char *dir,
-                       int index) {
-    for (int k = 0; k < count; k++) {
-        const ProbeState *p = &probes[k];
-        if (p->cfg->kind != PROBE_LINE) continue;
-        char path[4096];
-        snprintf(path, sizeof path, "%s/line_%s_%05d.csv", dir, p->cfg->name, index);
-        FILE *f = fopen(path, "w");
-        if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
-        fprintf(f, "# t = %.9g s\n", time);
-        if (p->cfg->target == PROBE_ON_FLOW) {
-            write_flow_line(p, flow, f);
-            if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
-            continue;
+/* The points of a solid line: reference position, displacement, velocity, damage. */
+static void solid_line(ProbeState *p, const PdPoints *body, const double *damage) {
+    double *const *col = p->table_columns;
+    const int dim = body->dim;
+    for (int64_t m = 0; m < p->member_count; m++) {
+        int64_t i = p->members[m];
+        for (int d = 0; d < dim; d++) {
+            col[d][m] = body->x[d][i];
+            col[dim + d][m] = body->u[d][i];
+            col[2 * dim + d][m] = body->v[d][i];
         }
-        for (int d = 0; d < body->dim; d++) fprintf(f, "%s%s_m", d ? "," : "", AXIS[d]);
-        for (int d = 0; d < body->dim; d++) fprintf(f, ",u%s_m", AXIS[d]);
-        for (int d = 0; d < body->dim; d++) fprintf(f, ",v%s_m_per_s", AXIS[d]);
-        fprintf(f, ",damage\n");
-        for (int64_t m = 0; m < p->member_count; m++) {
-            int64_t i = p->members[m];
-            for (int d = 0; d < body->dim; d++) fprintf(f, "%s%.9g", d ? "," : "", body->x[d][i]);
-            for (int d = 0; d < body->dim; d++) fprintf(f, ",%.9g", body->u[d][i]);
-            for (int d = 0; d < body->dim; d++) fprintf(f, ",%.9g", body->v[d][i]);
-            fprintf(f, ",%.6g\n", damage ? damage[i] : 0.0);
-        }
-        if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
+        col[3 * dim][m] = damage ? damage[i] : 0.0;
     }
-    return NSPD_OK;
+}
+
+const TableRef *probe_line_table(ProbeState *p, const PdPoints *body, const double *damage,
+                                 const Flow *flow) {
+    if (p->cfg->kind != PROBE_LINE) return NULL;
+    if (p->cfg->target == PROBE_ON_FLOW)
+        flow_line(p, flow);
+    else
+        solid_line(p, body, damage);
+    return &p->table;
 }
 
 double probe_crack_speed(const ProbeState *p) {

@@ -4,12 +4,12 @@
 #ifndef NSPD_SIM_PROBES_H
 #define NSPD_SIM_PROBES_H
 
+#include "core/fields.h"
 #include "core/report.h"
 #include "flow/flow.h"
 #include "sim/sim_config.h"
 #include "solid/solid.h"
 
-#include <stdio.h>
 
 /* Crack branching ahead of probe->at along probe->direction, measured on the
  * damage field (PROBE_BRANCHES). Points with damage above the threshold and
@@ -45,6 +45,12 @@ typedef struct {
      * and its time (NaN until then) */
     BranchResult first_branch;
     double t_first_branch;
+    /* PROBE_LINE: the table written at each field output */
+    TableRef table;
+    char table_file[SIM_MAX_NAME + 8];
+    char table_header[160];
+    double *table_data;                        /* ncol x member_count */
+    double *table_columns[TABLE_MAX_COLUMNS]; /* into table_data */
 } ProbeState;
 
 /* Sets up the probes of `cfg` on the solid and/or flow (either may be
@@ -70,10 +76,10 @@ int probe_branch_report(const ProbeState *p, const PdPoints *body, const double 
  * crack tip history) and appends the values to the history row. */
 void probes_sample(ProbeState *probes, int count, const PdPoints *body, const double *damage,
                    const Flow *flow, double time, Report *row);
-/* Writes line_<name>_<index>.csv files for the line probes. */
-int probes_write_lines(const ProbeState *probes, int count, const PdPoints *body,
-                       const double *damage, const Flow *flow, double time, const char *dir,
-                       int index);
+/* A line probe's table at the current state (line_<name>_NNNNN.csv), in
+ * the probe's own storage; NULL for the other kinds. */
+const TableRef *probe_line_table(ProbeState *p, const PdPoints *body, const double *damage,
+                                 const Flow *flow);
 
 int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *damage,
                    BranchResult *out);

@@ -63,9 +63,12 @@ int sim_output_fields(Sim *sim) {
                             NULL));
     }
     const double *damage = damage_if(sim, true);
-    TRY(probes_write_lines(sim->probes, sim->cfg.output.probe_count,
-                           sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow,
-                           sim->time, sim->dir, sim->field_index));
+    for (int k = 0; k < sim->cfg.output.probe_count; k++) {
+        const TableRef *t = probe_line_table(&sim->probes[k],
+                                             sim->solid ? solid_points_const(sim->solid) : NULL,
+                                             damage, sim->flow);
+        if (t) TRY(table_write(sim->dir, sim->field_index, sim->time, t));
+    }
     sim->field_index++;
     return NSPD_OK;
 }
