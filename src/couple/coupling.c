@@ -6,10 +6,20 @@
 #include <math.h>
 #include <string.h>
 
-/* The registry: one ops table per CouplingKind. */
-static const CouplingOps *const COUPLING_MODELS[COUPLING_KIND_COUNT] = {
+/* The registry: one ops table per CouplingKind; coupling_register fills
+ * the slots after the built-in ones. */
+static const CouplingOps *COUPLING_MODELS[COUPLING_KIND_MAX] = {
     [COUPLING_GHOST_CELL] = &GHOST_COUPLING_OPS,
 };
+
+CouplingKind coupling_register(const CouplingOps *ops) {
+    for (int k = COUPLING_KIND_COUNT; k < COUPLING_KIND_MAX; k++)
+        if (!COUPLING_MODELS[k] || COUPLING_MODELS[k] == ops) {
+            COUPLING_MODELS[k] = ops;
+            return (CouplingKind)k;
+        }
+    return COUPLING_NONE;
+}
 
 struct Coupling {
     const CouplingOps *ops;
@@ -24,7 +34,7 @@ void coupling_config_free(CouplingConfig *cfg) {
 
 int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow) {
     *out = NULL;
-    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_COUNT ||
+    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX ||
         !COUPLING_MODELS[cfg->kind])
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown coupling %d", (int)cfg->kind);
     if (!flow)

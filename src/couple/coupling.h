@@ -21,7 +21,8 @@
 typedef enum {
     COUPLING_NONE = 0,
     COUPLING_GHOST_CELL, /* sharp ghost-cell immersed boundary: couple/ghost_coupling.c */
-    COUPLING_KIND_COUNT
+    COUPLING_KIND_COUNT, /* the built-in couplings; coupling_register adds more after these */
+    COUPLING_KIND_MAX = COUPLING_KIND_COUNT + 4
 } CouplingKind;
 
 /* A coupling's configuration: a tagged union over the couplings, and what
@@ -33,6 +34,7 @@ typedef struct {
     double average_from;
     union {
         GhostCouplingConfig ghost; /* COUPLING_GHOST_CELL */
+        const void *external;      /* a registered coupling's configuration (borrowed) */
     };
 } CouplingConfig;
 
@@ -56,6 +58,10 @@ typedef struct CouplingOps {
     /* tables of the current state (surface pressure and friction) */
     int (*fields)(void *impl, Solid *solid, Flow *flow, FieldSet *out);
 } CouplingOps;
+
+/* Adds a coupling to the registry (before any is created; not thread safe):
+ * its kind, or COUPLING_NONE when the registry is full. */
+CouplingKind coupling_register(const CouplingOps *ops);
 
 int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow);
 void coupling_destroy(Coupling **c);

@@ -5,10 +5,20 @@
 
 #include <string.h>
 
-/* The registry: one ops table per FlowMethod. */
-static const FlowOps *const FLOW_METHODS[FLOW_METHOD_COUNT] = {
+/* The registry: one ops table per FlowMethod; flow_register fills the
+ * slots after the built-in ones. */
+static const FlowOps *FLOW_METHODS[FLOW_METHOD_MAX] = {
     [FLOW_METHOD_GKS] = &GKS_FLOW_OPS,
 };
+
+FlowMethod flow_register(const FlowOps *ops) {
+    for (int m = FLOW_METHOD_COUNT; m < FLOW_METHOD_MAX; m++)
+        if (!FLOW_METHODS[m] || FLOW_METHODS[m] == ops) {
+            FLOW_METHODS[m] = ops;
+            return (FlowMethod)m;
+        }
+    return FLOW_METHOD_NONE;
+}
 
 struct Flow {
     const FlowOps *ops;
@@ -23,7 +33,7 @@ void flow_model_config_free(FlowModelConfig *cfg) {
 
 int flow_create(Flow **out, FlowModelConfig *cfg) {
     *out = NULL;
-    if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_COUNT ||
+    if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||
         !FLOW_METHODS[cfg->method])
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown flow solver %d", (int)cfg->method);
     Flow *f;

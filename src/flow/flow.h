@@ -23,14 +23,16 @@
 typedef enum {
     FLOW_METHOD_NONE = 0, /* the case has no flow */
     FLOW_METHOD_GKS,      /* gas-kinetic BGK-NS finite volumes (paper 000): flow/gks_flow.c */
-    FLOW_METHOD_COUNT
+    FLOW_METHOD_COUNT,    /* the built-in solvers; flow_register adds more after these */
+    FLOW_METHOD_MAX = FLOW_METHOD_COUNT + 4
 } FlowMethod;
 
 /* A flow's configuration: a tagged union over the solvers. */
 typedef struct {
     FlowMethod method;
     union {
-        GksCaseConfig gks; /* FLOW_METHOD_GKS */
+        GksCaseConfig gks;    /* FLOW_METHOD_GKS */
+        const void *external; /* a registered solver's configuration (borrowed) */
     };
 } FlowModelConfig;
 
@@ -74,6 +76,11 @@ typedef struct FlowOps {
      * scratch (no allocation) */
     void (*fields)(void *impl, FieldSet *out);
 } FlowOps;
+
+/* Adds a solver to the registry (before any flow is created; not thread
+ * safe): its method number, or FLOW_METHOD_NONE when the registry is full.
+ * How a model outside the tree - or a test - plugs in. */
+FlowMethod flow_register(const FlowOps *ops);
 
 /* NSPD_ERR_INPUT for an unknown method; otherwise what the solver's create
  * returns. Takes ownership of *cfg. */

@@ -7,10 +7,20 @@
 #include <math.h>
 #include <string.h>
 
-/* The registry: one ops table per SolidKind. */
-static const SolidOps *const SOLID_MODELS[SOLID_KIND_COUNT] = {
+/* The registry: one ops table per SolidKind; solid_register fills the
+ * slots after the built-in ones. */
+static const SolidOps *SOLID_MODELS[SOLID_KIND_MAX] = {
     [SOLID_BOND] = &BOND_SOLID_OPS,
 };
+
+SolidKind solid_register(const SolidOps *ops) {
+    for (int k = SOLID_KIND_COUNT; k < SOLID_KIND_MAX; k++)
+        if (!SOLID_MODELS[k] || SOLID_MODELS[k] == ops) {
+            SOLID_MODELS[k] = ops;
+            return (SolidKind)k;
+        }
+    return SOLID_NONE;
+}
 
 struct Solid {
     const SolidOps *ops;
@@ -29,7 +39,7 @@ void solid_config_free(SolidConfig *cfg) {
 
 int solid_create(Solid **out, SolidConfig *cfg) {
     *out = NULL;
-    if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_COUNT || !SOLID_MODELS[cfg->kind])
+    if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_MAX || !SOLID_MODELS[cfg->kind])
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown solid model %d", (int)cfg->kind);
     Solid *s;
     TRY(nspd_alloc(&s, 1, sizeof *s));

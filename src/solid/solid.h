@@ -27,14 +27,16 @@
 typedef enum {
     SOLID_NONE = 0, /* the case has no solid */
     SOLID_BOND,     /* bond-based PD (paper 000): solid/bond_solid.c */
-    SOLID_KIND_COUNT
+    SOLID_KIND_COUNT, /* the built-in models; solid_register adds more after these */
+    SOLID_KIND_MAX = SOLID_KIND_COUNT + 4
 } SolidKind;
 
 /* A solid's configuration: a tagged union over the models. */
 typedef struct {
     SolidKind kind;
     union {
-        PdConfig bond; /* SOLID_BOND */
+        PdConfig bond;        /* SOLID_BOND */
+        const void *external; /* a registered model's configuration (borrowed) */
     };
 } SolidConfig;
 
@@ -77,6 +79,10 @@ typedef struct {
      * strain), appended to *out */
     void (*fields)(const void *impl, FieldSet *out);
 } SolidOps;
+
+/* Adds a model to the registry (before any solid is created; not thread
+ * safe): its kind, or SOLID_NONE when the registry is full. */
+SolidKind solid_register(const SolidOps *ops);
 
 /* NSPD_ERR_INPUT for an unknown kind; otherwise what the model's create
  * returns. Takes ownership of *cfg. */
