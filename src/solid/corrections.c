@@ -16,9 +16,9 @@
 
 #include <math.h>
 
-int pd_surface_factors(const PdBody *body, double *factor[3]) {
+int pd_surface_factors(const PdFamilies *body, double *factor[3]) {
     const double strain = 1e-3; /* small enough to be linear, large against round-off */
-    const PdConfig *cfg = &body->cfg;
+    const PdConfig *cfg = body->cfg;
     const int dim = body->dim;
     const double c = body->micromodulus, horizon = body->horizon, dx = body->spacing;
     const double w_classical = pd_classical_uniaxial_energy(cfg, strain);

@@ -73,16 +73,6 @@ typedef struct {
 int pd_body_create(PdBody *body, PdConfig *cfg);
 void pd_body_destroy(PdBody *body);
 
-/* Pair-wise geometry helpers shared by setup and diagnostics. */
-static inline double pd_volume_factor(double xi_len, double horizon, double spacing,
-                                      PdVolumeCorrection mode) {
-    /* Linear partial-volume correction: a neighbour whose cell is cut by the
-     * horizon sphere contributes the fraction of its cell inside it. */
-    if (mode == PD_VOLUME_NONE || xi_len <= horizon - 0.5 * spacing) return 1.0;
-    double f = (horizon + 0.5 * spacing - xi_len) / spacing;
-    return f > 0.0 ? f : 0.0;
-}
-
 /* Bytes of bond storage per bond (neighbour index + coefficient), and of
  * row offsets per point. */
 enum { PD_BYTES_PER_BOND = (int)(sizeof(int32_t) + sizeof(float)) };

@@ -90,4 +90,15 @@ double pd_rayleigh_wave_speed(const PdConfig *cfg); /* root of the Rayleigh equa
 
 void pd_config_free(PdConfig *cfg);
 
+/* The partial volume nu_ij of a neighbour at distance xi_len (setup,
+ * corrections and diagnostics share it). */
+static inline double pd_volume_factor(double xi_len, double horizon, double spacing,
+                                      PdVolumeCorrection mode) {
+    /* Linear partial-volume correction: a neighbour whose cell is cut by the
+     * horizon sphere contributes the fraction of its cell inside it. */
+    if (mode == PD_VOLUME_NONE || xi_len <= horizon - 0.5 * spacing) return 1.0;
+    double f = (horizon + 0.5 * spacing - xi_len) / spacing;
+    return f > 0.0 ? f : 0.0;
+}
+
 #endif
