@@ -349,15 +349,15 @@ static void fit_line(const double *s, const double *n, int count, double *a, dou
     *a = (n1 - *b * s1) / count;
 }
 
-int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *damage,
-                   BranchResult *out) {
-    memset(out, 0, sizeof *out);
-    out->angle_deg = out->upper_deg = out->lower_deg = NAN;
-    out->point[0] = out->point[1] = NAN;
+/* The crack-face points ahead of `at` (damage above the threshold, not
+ * detached debris), binned by their distance s along `direction` in bins
+ * of one spacing and sorted by bin, then by their offset n across. */
+static int collect_points(const ProbeConfig *c, const PdPoints *body, const double *damage,
+                          BinnedPoint **out, int64_t *count) {
     const double dx = body->spacing, *dir = c->direction, perp[2] = {-dir[1], dir[0]};
-    int64_t m = 0;
     BinnedPoint *pts;
     TRY(nspd_alloc(&pts, (size_t)body->n, sizeof *pts));
+    int64_t m = 0;
     for (int64_t i = 0; i < body->n; i++) {
         /* crack faces, not detached debris (damage 1) */
         if (!(damage[i] > c->damage_threshold) || damage[i] >= 0.99) continue;
@@ -369,23 +369,43 @@ int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *dam
         m++;
     }
     qsort(pts, (size_t)m, sizeof *pts, compare_binned);
-    /* per bin: the number of clusters and the outermost clusters' centroids */
-    int64_t bins = m ? pts[m - 1].bin + 1 : 0;
-    double *su, *nu, *nl;
+    *out = pts;
+    *count = m;
+    return NSPD_OK;
+}
+
+/* Per bin: the number of clusters across (split where neighbours are more
+ * than 2 dx apart), the bin's centre s and the centroids of its outermost
+ * clusters (nl the first, nu the last). */
+typedef struct {
+    int64_t bins;
+    double *s, *nu, *nl;
     int *clusters;
-    int status = nspd_alloc(&su, (size_t)bins + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&nu, (size_t)bins + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&nl, (size_t)bins + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&clusters, (size_t)bins + 1, sizeof(int));
+} BranchBins;
+
+static void branch_bins_free(BranchBins *b) {
+    nspd_free(&b->s);
+    nspd_free(&b->nu);
+    nspd_free(&b->nl);
+    nspd_free(&b->clusters);
+}
+
+static int branch_bins(const BinnedPoint *pts, int64_t m, double dx, BranchBins *out) {
+    memset(out, 0, sizeof *out);
+    out->bins = m ? pts[m - 1].bin + 1 : 0;
+    const size_t n = (size_t)out->bins + 1;
+    int status = nspd_alloc(&out->s, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&out->nu, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&out->nl, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&out->clusters, n, sizeof(int));
     if (status != NSPD_OK) {
-        nspd_free(&pts);
+        branch_bins_free(out);
         return status;
     }
-    for (int64_t k = 0, lo = 0; lo < m; k++) {
+    for (int64_t lo = 0; lo < m;) {
         int64_t hi = lo;
         while (hi < m && pts[hi].bin == pts[lo].bin) hi++;
         int64_t b = pts[lo].bin;
-        /* clusters across: split where neighbours are more than 2 dx apart */
         int count = 1;
         double first_sum = pts[lo].n, last_sum = 0;
         int64_t first_n = 1, last_n = 0, cluster_lo = lo;
@@ -403,53 +423,70 @@ int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *dam
             last_sum += pts[q].n;
             last_n++;
         }
-        clusters[b] = count;
-        su[b] = (b + 0.5) * dx;
-        nl[b] = first_sum / (double)first_n;
-        nu[b] = last_sum / (double)last_n;
+        out->clusters[b] = count;
+        out->s[b] = ((double)b + 0.5) * dx;
+        out->nl[b] = first_sum / (double)first_n;
+        out->nu[b] = last_sum / (double)last_n;
         lo = hi;
-        (void)k;
     }
-    /* the branch: three successive bins with two or more clusters */
+    return NSPD_OK;
+}
+
+/* From the first of three successive bins with two or more clusters on,
+ * lines fitted to the outermost clusters give the branches (fills *out). */
+static int fit_branches(const ProbeConfig *c, const BranchBins *bb, double dx, BranchResult *out) {
     int64_t start = -1;
-    for (int64_t b = 0; b + 2 < bins && start < 0; b++)
-        if (clusters[b] >= 2 && clusters[b + 1] >= 2 && clusters[b + 2] >= 2) start = b;
-    if (start >= 0) {
-        double *s_fit, *u_fit, *l_fit;
-        status = nspd_alloc(&s_fit, (size_t)bins, sizeof(double));
-        if (status == NSPD_OK) status = nspd_alloc(&u_fit, (size_t)bins, sizeof(double));
-        if (status == NSPD_OK) status = nspd_alloc(&l_fit, (size_t)bins, sizeof(double));
-        int count = 0;
-        for (int64_t b = start; b < bins && status == NSPD_OK; b++) {
-            if (clusters[b] < 2) continue;
-            s_fit[count] = su[b];
-            u_fit[count] = nu[b];
-            l_fit[count] = nl[b];
-            count++;
-        }
-        if (status == NSPD_OK && count >= 3) {
-            double au, bu, al, bl;
-            fit_line(s_fit, u_fit, count, &au, &bu);
-            fit_line(s_fit, l_fit, count, &al, &bl);
-            out->branched = true;
-            out->samples = count;
-            out->span = count * dx;
-            out->upper_deg = atan(bu) * 180.0 / M_PI;
-            out->lower_deg = atan(bl) * 180.0 / M_PI;
-            out->angle_deg = out->upper_deg - out->lower_deg;
-            double s_meet = bu != bl ? (al - au) / (bu - bl) : 0.0, n_meet = au + bu * s_meet;
-            out->point[0] = c->at[0] + s_meet * dir[0] + n_meet * perp[0];
-            out->point[1] = c->at[1] + s_meet * dir[1] + n_meet * perp[1];
-        }
-        nspd_free(&s_fit);
-        nspd_free(&u_fit);
-        nspd_free(&l_fit);
+    for (int64_t b = 0; b + 2 < bb->bins && start < 0; b++)
+        if (bb->clusters[b] >= 2 && bb->clusters[b + 1] >= 2 && bb->clusters[b + 2] >= 2)
+            start = b;
+    if (start < 0) return NSPD_OK;
+    double *s_fit, *u_fit, *l_fit;
+    int status = nspd_alloc(&s_fit, (size_t)bb->bins, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&u_fit, (size_t)bb->bins, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&l_fit, (size_t)bb->bins, sizeof(double));
+    int count = 0;
+    for (int64_t b = start; b < bb->bins && status == NSPD_OK; b++) {
+        if (bb->clusters[b] < 2) continue;
+        s_fit[count] = bb->s[b];
+        u_fit[count] = bb->nu[b];
+        l_fit[count] = bb->nl[b];
+        count++;
     }
+    if (status == NSPD_OK && count >= 3) {
+        const double *dir = c->direction, perp[2] = {-dir[1], dir[0]};
+        double au, bu, al, bl;
+        fit_line(s_fit, u_fit, count, &au, &bu);
+        fit_line(s_fit, l_fit, count, &al, &bl);
+        out->branched = true;
+        out->samples = count;
+        out->span = count * dx;
+        out->upper_deg = atan(bu) * 180.0 / M_PI;
+        out->lower_deg = atan(bl) * 180.0 / M_PI;
+        out->angle_deg = out->upper_deg - out->lower_deg;
+        double s_meet = bu != bl ? (al - au) / (bu - bl) : 0.0, n_meet = au + bu * s_meet;
+        out->point[0] = c->at[0] + s_meet * dir[0] + n_meet * perp[0];
+        out->point[1] = c->at[1] + s_meet * dir[1] + n_meet * perp[1];
+    }
+    nspd_free(&s_fit);
+    nspd_free(&u_fit);
+    nspd_free(&l_fit);
+    return status;
+}
+
+int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *damage,
+                   BranchResult *out) {
+    memset(out, 0, sizeof *out);
+    out->angle_deg = out->upper_deg = out->lower_deg = NAN;
+    out->point[0] = out->point[1] = NAN;
+    BinnedPoint *pts;
+    int64_t m;
+    TRY(collect_points(c, body, damage, &pts, &m));
+    BranchBins bins;
+    int status = branch_bins(pts, m, body->spacing, &bins);
     nspd_free(&pts);
-    nspd_free(&su);
-    nspd_free(&nu);
-    nspd_free(&nl);
-    nspd_free(&clusters);
+    TRY(status);
+    status = fit_branches(c, &bins, body->spacing, out);
+    branch_bins_free(&bins);
     return status;
 }
 
