@@ -1,16 +1,20 @@
 #include "core/report.h"
 
-#include <assert.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 void report_clear(Report *r) {
     r->n = 0;
+    r->overflow = false;
 }
 
 static ReportItem *add(Report *r, const char *name, ReportKind kind) {
-    assert(r->n < REPORT_MAX_ITEMS && "a model reports more items than REPORT_MAX_ITEMS");
+    static ReportItem dropped; /* written when full, never read */
+    if (r->n >= REPORT_MAX_ITEMS) {
+        r->overflow = true;
+        return &dropped;
+    }
     ReportItem *it = &r->item[r->n++];
     snprintf(it->name, sizeof it->name, "%s", name);
     it->kind = kind;

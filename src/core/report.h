@@ -1,18 +1,20 @@
 /* Named values a model reports: the columns of a history row, the keys of
- * summary.json, the lines of `nspd info`. Models fill a Report; only the
- * generic writers (sim/sim_output.c, app/) turn it into text, so a model
- * never formats or opens a file and a new model needs no edit in them.
+ * summary.json. Models fill a Report; only the generic writers
+ * (io/run_files.c) turn it into text, so a model never formats or opens a
+ * file and a new model needs no edit in them.
  *
- * A Report is a fixed-capacity value (no allocation): REPORT_MAX_ITEMS
- * items of REPORT_MAX_NAME characters. Adding past the capacity is a bug
- * in the model (an assertion), not a run-time condition. */
+ * A Report is a fixed-capacity value (no allocation; about 140 kB, so keep
+ * it on the heap): REPORT_MAX_ITEMS items of REPORT_MAX_NAME characters.
+ * The number of items follows the case (seven per immersed body, a few per
+ * probe), so adding past the capacity is not a crash: the item is dropped,
+ * `overflow` is set and the writers refuse the report with NSPD_ERR_INPUT. */
 #ifndef NSPD_CORE_REPORT_H
 #define NSPD_CORE_REPORT_H
 
 #include <stdbool.h>
 #include <stdint.h>
 
-enum { REPORT_MAX_ITEMS = 96, REPORT_MAX_NAME = 96 };
+enum { REPORT_MAX_ITEMS = 1024, REPORT_MAX_NAME = 96 };
 
 typedef enum {
     REPORT_REAL,    /* history: %.9g; summary: a JSON number */
@@ -32,6 +34,7 @@ typedef struct {
 
 typedef struct {
     int n;
+    bool overflow; /* an item was dropped: more than REPORT_MAX_ITEMS */
     ReportItem item[REPORT_MAX_ITEMS];
 } Report;
 

@@ -17,7 +17,15 @@ int history_open(HistoryFile *h, const char *dir) {
     return NSPD_OK;
 }
 
+static int check_capacity(const Report *r, const char *what) {
+    if (!r->overflow) return NSPD_OK;
+    return NSPD_FAIL(NSPD_ERR_INPUT,
+                     "the case asks for more than %d %s (bodies, probes); expected fewer",
+                     REPORT_MAX_ITEMS, what);
+}
+
 int history_write(HistoryFile *h, const Report *row) {
+    TRY(check_capacity(row, "history columns"));
     if (!h->file) return NSPD_OK;
     if (!h->header_written) {
         for (int k = 0; k < row->n; k++) fprintf(h->file, "%s%s", k ? "," : "", row->item[k].name);
@@ -47,6 +55,7 @@ void history_close(HistoryFile *h) {
 }
 
 int summary_write(const char *dir, const Report *summary) {
+    TRY(check_capacity(summary, "summary keys"));
     char path[4096];
     snprintf(path, sizeof path, "%s/summary.json", dir);
     FILE *f = fopen(path, "w");

@@ -2,6 +2,7 @@
 
 #include "core/interrupt.h"
 #include "core/log.h"
+#include "core/mem.h"
 #include "core/progress.h"
 #include "core/status.h"
 #include "core/timer.h"
@@ -54,6 +55,7 @@ int sim_create(Sim *sim, SimConfig *cfg) {
         c->coupling.average_from = c->output.average_from - 1e-12 * c->end_time;
         status = coupling_create(&sim->coupling, &c->coupling, sim->solid, sim->flow);
     }
+    if (status == NSPD_OK) status = nspd_alloc(&sim->report, 1, sizeof *sim->report);
     if (status == NSPD_OK) {
         choose_pace(sim);
         int max_samples = (int)(c->end_time / c->output.history_interval) + 4;
@@ -72,6 +74,7 @@ void sim_destroy(Sim *sim) {
     flow_destroy(&sim->flow);
     for (int k = 0; k < 2; k++) pvd_free(&sim->pvd[k]);
     history_close(&sim->history);
+    nspd_free(&sim->report);
     sim_config_free(&sim->cfg);
     memset(sim, 0, sizeof *sim);
 }

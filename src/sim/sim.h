@@ -41,6 +41,7 @@ typedef struct {
     ProbeState *probes;
 
     /* output state */
+    Report *report; /* the history row and the summary being assembled */
     const char *dir;
     HistoryFile history;
     PvdSeries pvd[2]; /* solid, flow */

@@ -23,20 +23,20 @@ static const double *damage_if(Sim *sim, bool needed) {
 int sim_output_history(Sim *sim) {
     const bool need_damage = probes_need_damage(&sim->cfg.output);
     const double *damage = damage_if(sim, need_damage);
-    Report row;
-    report_clear(&row);
-    report_int(&row, "step", sim->step);
-    report_real(&row, "time_s", sim->time);
-    if (sim->solid) solid_history(sim->solid, &row);
-    if (sim->flow) flow_history(sim->flow, &row);
+    Report *row = sim->report;
+    report_clear(row);
+    report_int(row, "step", sim->step);
+    report_real(row, "time_s", sim->time);
+    if (sim->solid) solid_history(sim->solid, row);
+    if (sim->flow) flow_history(sim->flow, row);
     if (sim->coupling)
-        TRY(coupling_history(sim->coupling, sim->solid, sim->flow, sim->time, &row));
+        TRY(coupling_history(sim->coupling, sim->solid, sim->flow, sim->time, row));
     /* without a directory the probes still keep their own records */
     probes_sample(sim->probes, sim->cfg.output.probe_count,
                   sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow, sim->time,
-                  &row);
+                  row);
     if (!sim->dir) return NSPD_OK;
-    return history_write(&sim->history, &row);
+    return history_write(&sim->history, row);
 }
 
 int sim_output_fields(Sim *sim) {
@@ -79,8 +79,7 @@ int sim_output_summary(Sim *sim, int run_status) {
     const bool part_present[SIM_PART_COUNT] = {sim->flow != NULL, sim->solid != NULL,
                                                sim->coupling != NULL};
     const RunStats run = {sim->step, sim->wall_s};
-    Report *r;
-    TRY(nspd_alloc(&r, 1, sizeof *r)); /* once per run; a Report is a few tens of kB */
+    Report *r = sim->report;
     report_clear(r);
     report_text(r, "case", sim->cfg.name);
     report_real(r, "time_s", sim->time);
@@ -105,7 +104,6 @@ int sim_output_summary(Sim *sim, int run_status) {
                                 sim->solid ? solid_points_const(sim->solid) : NULL,
                                 damage_if(sim, true), r);
     if (status == NSPD_OK) status = summary_write(sim->dir, r);
-    nspd_free(&r);
     return status;
 }
 
