@@ -88,6 +88,17 @@ FlowReference flow_reference(const Flow *f) {
     return f->ops->reference(f->impl);
 }
 
+int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out) {
+    if (!f->ops->sample)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the '%s' flow solver cannot be sampled at points",
+                         f->ops->name);
+    return f->ops->sample(f->impl, n, x, y, out);
+}
+
+void flow_totals(const Flow *f, double totals[4]) {
+    f->ops->totals(f->impl, totals);
+}
+
 void flow_history(const Flow *f, Report *row) {
     f->ops->history(f->impl, row);
 }

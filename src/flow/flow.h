@@ -53,6 +53,11 @@ typedef struct {
     double gamma, gas_constant;
 } FlowReference;
 
+/* Samples of the flow at points, struct of arrays (n values each). */
+typedef struct {
+    double *rho, *u, *v, *p;
+} FlowSamples;
+
 typedef struct Flow Flow;
 
 typedef struct FlowOps {
@@ -67,6 +72,12 @@ typedef struct FlowOps {
     /* density, u, v, pressure, temperature at node/cell `cell` of the mesh */
     void (*cell_state)(const void *impl, int64_t cell, double out[5]);
     FlowReference (*reference)(const void *impl);
+    /* the state at n points (x[k], y[k]), interpolated (for couplings that
+     * read the flow where a solid's points are); NULL: not supported (an
+     * input error when asked) */
+    int (*sample)(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out);
+    /* integrals of mass, x and y momentum, energy over the fluid */
+    void (*totals)(const void *impl, double totals[4]);
     void (*history)(const void *impl, Report *row);
     void (*summary)(const void *impl, const RunStats *run, Report *out);
     void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
@@ -95,6 +106,8 @@ double flow_time(const Flow *f);
 FlowMesh flow_mesh(const Flow *f);
 void flow_cell_state(const Flow *f, int64_t cell, double out[5]);
 FlowReference flow_reference(const Flow *f);
+int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out);
+void flow_totals(const Flow *f, double totals[4]);
 void flow_history(const Flow *f, Report *row);
 void flow_summary(const Flow *f, const RunStats *run, Report *out);
 void flow_info(const Flow *f, size_t memory_bytes, char *buf, size_t size);

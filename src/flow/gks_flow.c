@@ -26,6 +26,7 @@ typedef struct {
     double *cells[GKS_SCRATCH];
     double *kind;   /* cell kinds as a field */
     uint8_t *blank; /* 1: not a fluid cell */
+    uint8_t *valid; /* 1: a fluid cell (sampling) */
 } GksFlow;
 
 /* The vortex on a periodic box takes its nearest image: its periods are the
@@ -54,6 +55,7 @@ static void gks_destroy(void *impl) {
     for (int k = 0; k < GKS_SCRATCH; k++) nspd_free(&g->cells[k]);
     nspd_free(&g->kind);
     nspd_free(&g->blank);
+    nspd_free(&g->valid);
     nspd_free(&g);
 }
 
@@ -81,6 +83,7 @@ static int gks_create(void **impl, FlowModelConfig *mc) {
             status = nspd_alloc(&g->cells[k], n, sizeof(double));
         if (status == NSPD_OK) status = nspd_alloc(&g->kind, n, sizeof(double));
         if (status == NSPD_OK) status = nspd_alloc(&g->blank, n, 1);
+        if (status == NSPD_OK) status = nspd_alloc(&g->valid, n, 1);
     }
     if (status != NSPD_OK) {
         gks_destroy(g);
@@ -136,6 +139,56 @@ static FlowReference gks_reference(const void *impl) {
                            .length = f->reference_length,
                            .gamma = gas->gamma,
                            .gas_constant = gas->R};
+}
+
+/* The primitive fields of the interior cells and their kinds, into the
+ * output scratch (cells[0..5], blank, kind). */
+static void primitives(GksFlow *gf) {
+    const Grid *g = flow_solver_grid(gf->solver);
+    static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
+                                       FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
+    for (int k = 0; k < 6; k++) flow_solver_primitive(gf->solver, order[k], gf->cells[k]);
+    FlowFields f = flow_solver_fields(gf->solver);
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            uint8_t k = f.kind[grid_index(g, i, j)];
+            gf->blank[(int64_t)j * g->nx + i] = k != FLOW_CELL_FLUID;
+            gf->kind[(int64_t)j * g->nx + i] = k;
+        }
+}
+
+/* Bilinear between the cell centres around each point, body cells left out:
+ * the interpolation that starts a flow from a stored field
+ * (field_sample.h), over the current state. */
+static int gks_sample(void *impl, int64_t n, const double *x, const double *y,
+                      FlowSamples *out) {
+    GksFlow *gf = impl;
+    const Grid *g = flow_solver_grid(gf->solver);
+    primitives(gf);
+    for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++) gf->valid[c] = !gf->blank[c];
+    /* a view of the scratch: the source's arrays are read only here */
+    FlowFieldSource view = {.nx = g->nx,
+                            .ny = g->ny,
+                            .xc = g->ax[0].center,
+                            .yc = g->ax[1].center,
+                            .rho = gf->cells[0],
+                            .u = gf->cells[1],
+                            .v = gf->cells[2],
+                            .p = gf->cells[3],
+                            .valid = gf->valid};
+    for (int64_t k = 0; k < n; k++) {
+        FlowPrim q;
+        flow_field_sample(&view, x[k], y[k], &q);
+        out->rho[k] = q.rho;
+        out->u[k] = q.u;
+        out->v[k] = q.v;
+        out->p[k] = q.p;
+    }
+    return NSPD_OK;
+}
+
+static void gks_totals(const void *impl, double totals[4]) {
+    flow_solver_totals(((const GksFlow *)impl)->solver, totals);
 }
 
 static void gks_history(const void *impl, Report *row) {
@@ -241,17 +294,7 @@ static void gks_fields(void *impl, FieldSet *out) {
     GksFlow *gf = impl;
     const Grid *g = flow_solver_grid(gf->solver);
     const int64_t ncell = (int64_t)g->nx * g->ny;
-    static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
-                                       FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
-    for (int k = 0; k < 6; k++) flow_solver_primitive(gf->solver, order[k], gf->cells[k]);
-    /* cell kinds of the interior cells, as 0/1 "blank" and as a field */
-    FlowFields f = flow_solver_fields(gf->solver);
-    for (int j = 0; j < g->ny; j++)
-        for (int i = 0; i < g->nx; i++) {
-            uint8_t k = f.kind[grid_index(g, i, j)];
-            gf->blank[(int64_t)j * g->nx + i] = k != FLOW_CELL_FLUID;
-            gf->kind[(int64_t)j * g->nx + i] = k;
-        }
+    primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
     double mach_max = 0.0;
     for (int64_t c = 0; c < ncell; c++)
         if (!gf->blank[c] && gf->cells[5][c] > mach_max) mach_max = gf->cells[5][c];
@@ -292,6 +335,8 @@ const FlowOps GKS_FLOW_OPS = {
     .mesh = gks_mesh,
     .cell_state = gks_cell_state,
     .reference = gks_reference,
+    .sample = gks_sample,
+    .totals = gks_totals,
     .history = gks_history,
     .summary = gks_summary,
     .info = gks_info,
