@@ -28,7 +28,7 @@ typedef struct {
     char name[REPORT_MAX_NAME];
     ReportKind kind;
     double real;
-    int64_t count; /* REPORT_INT; REPORT_BOOL as 0/1 */
+    int64_t count;    /* REPORT_INT; REPORT_BOOL as 0/1 */
     const char *text; /* REPORT_TEXT: borrowed, must outlive the report's use */
 } ReportItem;
 
@@ -53,6 +53,7 @@ void report_text(Report *r, const char *name, const char *value);
 /* The item called `name`, NULL if none. */
 const ReportItem *report_find(const Report *r, const char *name);
 /* printf-style name: report_realf(r, v, "%s_cd", body). */
-void report_realf(Report *r, double value, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+void report_realf(Report *r, double value, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 
 #endif

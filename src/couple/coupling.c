@@ -34,8 +34,7 @@ void coupling_config_free(CouplingConfig *cfg) {
 
 int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow) {
     *out = NULL;
-    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX ||
-        !COUPLING_MODELS[cfg->kind])
+    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX || !COUPLING_MODELS[cfg->kind])
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown coupling %d", (int)cfg->kind);
     if (!flow)
         return NSPD_FAIL(NSPD_ERR_INPUT, "the %s coupling needs a flow",

@@ -82,7 +82,7 @@ typedef struct FlowOps {
     void (*summary)(const void *impl, const RunStats *run, Report *out);
     void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
     void (*brief)(const void *impl, char *buf, size_t size); /* "nx x ny cells, " */
-    int64_t (*fallbacks_total)(const void *impl);             /* reduced-order events, for the log */
+    int64_t (*fallbacks_total)(const void *impl);            /* reduced-order events, for the log */
     /* the fields and pictures of the current state, into the solver's own
      * scratch (no allocation) */
     void (*fields)(void *impl, FieldSet *out);

@@ -160,8 +160,7 @@ static void primitives(GksFlow *gf) {
 /* Bilinear between the cell centres around each point, body cells left out:
  * the interpolation that starts a flow from a stored field
  * (field_sample.h), over the current state. */
-static int gks_sample(void *impl, int64_t n, const double *x, const double *y,
-                      FlowSamples *out) {
+static int gks_sample(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out) {
     GksFlow *gf = impl;
     const Grid *g = flow_solver_grid(gf->solver);
     primitives(gf);
@@ -235,7 +234,7 @@ static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
             hmax = fmax(hmax, g->ax[a].width[i]);
         }
         APPEND("grid %c               %d cells on [%.6g, %.6g] m, spacing %.4g to %.4g m\n",
-               "xy"[a], g->ax[a].n, g->ax[a].lo, g->ax[a].hi, hmin, hmax);
+               "xy"[a], g -> ax[a].n, g->ax[a].lo, g->ax[a].hi, hmin, hmax);
     }
     APPEND("cells                %lld\n", (long long)g->nx * g->ny);
     APPEND("gas                  gamma %.4g, R %.6g J/(kg K), Pr %.3g, viscosity %s\n", c->gamma,
@@ -309,9 +308,9 @@ static void gks_fields(void *impl, FieldSet *out) {
     out->blank = gf->blank;
     double *const *c = gf->cells;
     const FieldRef fields[] = {
-        {"density", 1, {c[0], NULL, NULL}},     {"velocity", 3, {c[1], c[2], NULL}},
-        {"pressure", 1, {c[3], NULL, NULL}},    {"temperature", 1, {c[4], NULL, NULL}},
-        {"mach", 1, {c[5], NULL, NULL}},        {"cell_kind", 1, {gf->kind, NULL, NULL}},
+        {"density", 1, {c[0], NULL, NULL}},  {"velocity", 3, {c[1], c[2], NULL}},
+        {"pressure", 1, {c[3], NULL, NULL}}, {"temperature", 1, {c[4], NULL, NULL}},
+        {"mach", 1, {c[5], NULL, NULL}},     {"cell_kind", 1, {gf->kind, NULL, NULL}},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         out->field[out->field_count++] = fields[k];

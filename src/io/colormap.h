@@ -6,7 +6,6 @@
 
 #include <stdint.h>
 
-
 /* RGB of value t in [0, 1] (clamped; NaN maps to grey). */
 void colormap_rgb(ColormapKind kind, double t, uint8_t rgb[3]);
 

@@ -36,12 +36,20 @@ int history_write(HistoryFile *h, const Report *row) {
         const ReportItem *it = &row->item[k];
         const char *sep = k ? "," : "";
         switch (it->kind) {
-        case REPORT_PRECISE: fprintf(h->file, "%s%.12g", sep, it->real); break;
+        case REPORT_PRECISE:
+            fprintf(h->file, "%s%.12g", sep, it->real);
+            break;
         case REPORT_INT:
-        case REPORT_BOOL: fprintf(h->file, "%s%lld", sep, (long long)it->count); break;
-        case REPORT_TEXT: fprintf(h->file, "%s%s", sep, it->text); break;
+        case REPORT_BOOL:
+            fprintf(h->file, "%s%lld", sep, (long long)it->count);
+            break;
+        case REPORT_TEXT:
+            fprintf(h->file, "%s%s", sep, it->text);
+            break;
         case REPORT_REAL:
-        default: fprintf(h->file, "%s%.9g", sep, it->real); break;
+        default:
+            fprintf(h->file, "%s%.9g", sep, it->real);
+            break;
         }
     }
     fputc('\n', h->file);
@@ -65,12 +73,20 @@ int summary_write(const char *dir, const Report *summary) {
     for (int k = 0; k < summary->n; k++) {
         const ReportItem *it = &summary->item[k];
         switch (it->kind) {
-        case REPORT_INT: json_int(&w, it->name, it->count); break;
-        case REPORT_BOOL: json_bool(&w, it->name, it->count != 0); break;
-        case REPORT_TEXT: json_string(&w, it->name, it->text); break;
+        case REPORT_INT:
+            json_int(&w, it->name, it->count);
+            break;
+        case REPORT_BOOL:
+            json_bool(&w, it->name, it->count != 0);
+            break;
+        case REPORT_TEXT:
+            json_string(&w, it->name, it->text);
+            break;
         case REPORT_REAL:
         case REPORT_PRECISE:
-        default: json_number(&w, it->name, it->real); break;
+        default:
+            json_number(&w, it->name, it->real);
+            break;
         }
     }
     json_end(&w);
@@ -123,12 +139,9 @@ static int write_picture(const char *dir, int index, const FieldSet *fs, const P
         overlay->picture_count == 0)
         return NSPD_OK;
     const PictureRef *top = &overlay->picture[0];
-    RenderPoints pts = {overlay->n,
-                        {overlay->position[0], overlay->position[1]},
-                        top->values,
-                        overlay->spacing,
-                        top->lo,
-                        top->hi,
+    RenderPoints pts = {overlay->n,      {overlay->position[0], overlay->position[1]},
+                        top->values,     overlay->spacing,
+                        top->lo,         top->hi,
                         top->overlay_map};
     snprintf(path, sizeof path, "%s/%s_%05d.png", dir, pic->overlay_file, index);
     overlay_window(overlay, ro.window);

@@ -214,7 +214,6 @@ static int64_t crack_tip(const ProbeConfig *c, const PdPoints *body, const doubl
     return best;
 }
 
-
 void probes_sample(ProbeState *probes, int count, const PdPoints *body, const double *damage,
                    const Flow *flow, double time, Report *row) {
     for (int k = 0; k < count; k++) {
@@ -437,8 +436,7 @@ static int branch_bins(const BinnedPoint *pts, int64_t m, double dx, BranchBins 
 static int fit_branches(const ProbeConfig *c, const BranchBins *bb, double dx, BranchResult *out) {
     int64_t start = -1;
     for (int64_t b = 0; b + 2 < bb->bins && start < 0; b++)
-        if (bb->clusters[b] >= 2 && bb->clusters[b + 1] >= 2 && bb->clusters[b + 2] >= 2)
-            start = b;
+        if (bb->clusters[b] >= 2 && bb->clusters[b + 1] >= 2 && bb->clusters[b + 2] >= 2) start = b;
     if (start < 0) return NSPD_OK;
     double *s_fit, *u_fit, *l_fit;
     int status = nspd_alloc(&s_fit, (size_t)bb->bins, sizeof(double));

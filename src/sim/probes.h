@@ -10,7 +10,6 @@
 #include "sim/sim_config.h"
 #include "solid/solid.h"
 
-
 /* Crack branching ahead of probe->at along probe->direction, measured on the
  * damage field (PROBE_BRANCHES). Points with damage above the threshold and
  * below 0.99 (detached debris is not a crack face), with
@@ -49,7 +48,7 @@ typedef struct {
     TableRef table;
     char table_file[SIM_MAX_NAME + 8];
     char table_header[160];
-    double *table_data;                        /* ncol x member_count */
+    double *table_data;                       /* ncol x member_count */
     double *table_columns[TABLE_MAX_COLUMNS]; /* into table_data */
 } ProbeState;
 

@@ -63,7 +63,7 @@ typedef struct {
     double end_time; /* s */
     double dt;       /* s; computed from the stable step when !dt_given */
     bool dt_given;
-    double safety_factor; /* dt = safety_factor * stable step */
+    double safety_factor;    /* dt = safety_factor * stable step */
     SolidConfig solid;       /* kind SOLID_NONE: the case has no solid */
     FlowModelConfig flow;    /* method FLOW_METHOD_NONE: no flow */
     CouplingConfig coupling; /* kind COUPLING_NONE: nothing couples (a flow's fixed

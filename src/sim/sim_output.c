@@ -29,8 +29,7 @@ int sim_output_history(Sim *sim) {
     report_real(row, "time_s", sim->time);
     if (sim->solid) solid_history(sim->solid, row);
     if (sim->flow) flow_history(sim->flow, row);
-    if (sim->coupling)
-        TRY(coupling_history(sim->coupling, sim->solid, sim->flow, sim->time, row));
+    if (sim->coupling) TRY(coupling_history(sim->coupling, sim->solid, sim->flow, sim->time, row));
     /* without a directory the probes still keep their own records */
     probes_sample(sim->probes, sim->cfg.output.probe_count,
                   sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow, sim->time,
@@ -64,9 +63,8 @@ int sim_output_fields(Sim *sim) {
     }
     const double *damage = damage_if(sim, true);
     for (int k = 0; k < sim->cfg.output.probe_count; k++) {
-        const TableRef *t = probe_line_table(&sim->probes[k],
-                                             sim->solid ? solid_points_const(sim->solid) : NULL,
-                                             damage, sim->flow);
+        const TableRef *t = probe_line_table(
+            &sim->probes[k], sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow);
         if (t) TRY(table_write(sim->dir, sim->field_index, sim->time, t));
     }
     sim->field_index++;

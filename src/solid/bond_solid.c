@@ -113,7 +113,8 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
 static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
     const PdBody *b = &((const BondSolid *)impl)->body;
     int len = 0;
-#define APPEND(...) len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
+#define APPEND(...)                                                                                \
+    len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
     APPEND("model                %s, %dD\n", PD_MODEL_NAMES[b->cfg.model], b->dim);
     APPEND("points               %lld\n", (long long)b->n);
     APPEND("bonds                %lld (%.1f per point; %lld broken at start)\n",
@@ -137,8 +138,7 @@ static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
 
 static void bond_brief(const void *impl, char *buf, size_t size) {
     const PdBody *b = &((const BondSolid *)impl)->body;
-    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n,
-             (long long)b->bond_count / 2);
+    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n, (long long)b->bond_count / 2);
 }
 
 const SolidOps BOND_SOLID_OPS = {

@@ -144,16 +144,10 @@ static int build(PdBody *body, PdConfig *cfg) {
         int status = NSPD_OK;
         for (int d = 0; d < body->dim && status == NSPD_OK; d++)
             status = nspd_alloc(&g[d], (size_t)body->n, sizeof(double));
-        const PdFamilies families = {cfg,
-                                     body->dim,
-                                     body->n,
-                                     {body->x[0], body->x[1], body->x[2]},
-                                     body->volume,
-                                     body->bond_first,
-                                     body->bond_nbr,
-                                     body->micromodulus,
-                                     body->horizon,
-                                     body->spacing};
+        const PdFamilies families = {
+            cfg,           body->dim,        body->n,        {body->x[0], body->x[1], body->x[2]},
+            body->volume,  body->bond_first, body->bond_nbr, body->micromodulus,
+            body->horizon, body->spacing};
         if (status == NSPD_OK) status = pd_surface_factors(&families, g);
         if (status == NSPD_OK) assign_coefficients(body, g);
         for (int d = 0; d < 3; d++) nspd_free(&g[d]);

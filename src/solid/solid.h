@@ -25,8 +25,8 @@
 #include <stdint.h>
 
 typedef enum {
-    SOLID_NONE = 0, /* the case has no solid */
-    SOLID_BOND,     /* bond-based PD (paper 000): solid/bond_solid.c */
+    SOLID_NONE = 0,   /* the case has no solid */
+    SOLID_BOND,       /* bond-based PD (paper 000): solid/bond_solid.c */
     SOLID_KIND_COUNT, /* the built-in models; solid_register adds more after these */
     SOLID_KIND_MAX = SOLID_KIND_COUNT + 4
 } SolidKind;
@@ -66,8 +66,8 @@ typedef struct {
      * `pts` at its points. */
     int (*create)(void **impl, PdPoints *pts, SolidConfig *cfg);
     void (*destroy)(void *impl);
-    double (*stable_dt)(const void *impl);         /* without a safety factor */
-    int (*step)(void *impl, double dt);             /* force + integration, one step */
+    double (*stable_dt)(const void *impl); /* without a safety factor */
+    int (*step)(void *impl, double dt);    /* force + integration, one step */
     double (*time)(const void *impl);
     void (*set_time)(void *impl, double t);
     void (*damage)(const void *impl, double *out); /* per point, 0..1 */

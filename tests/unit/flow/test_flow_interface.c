@@ -58,8 +58,8 @@ static void test_sample_is_exact_for_linear_fields(void **state) {
     for (int k = 0; k < N; k++) {
         FlowPrim q;
         linear(NULL, x[k], y[k], &q);
-        worst = fmax(worst, fabs(rho[k] - q.rho) + fabs(u[k] - q.u) + fabs(v[k] - q.v) +
-                                fabs(p[k] - q.p));
+        worst = fmax(worst,
+                     fabs(rho[k] - q.rho) + fabs(u[k] - q.u) + fabs(v[k] - q.v) + fabs(p[k] - q.p));
     }
     print_message("sampled linear field: worst error %.2e\n", worst);
     assert_true(worst < 1e-13); /* measured 4.8e-16: round-off of the weights and conversions */

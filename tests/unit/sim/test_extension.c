@@ -185,8 +185,8 @@ static int rigid_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
         r->v[0][i] = r->cfg.velocity;
         r->volume[i] = 1e-2;
     }
-    *pts = (PdPoints){.dim = 2, .n = r->cfg.n, .spacing = 0.1, .thickness = 1.0,
-                      .volume = r->volume};
+    *pts =
+        (PdPoints){.dim = 2, .n = r->cfg.n, .spacing = 0.1, .thickness = 1.0, .volume = r->volume};
     for (int d = 0; d < 3; d++) {
         pts->x[d] = r->x[d];
         pts->u[d] = r->u[d];

@@ -75,7 +75,8 @@ static void translating_disc(const char *text, double *worst_mass_out, double *w
         flow_solver_totals(fixture_flow(&sim), totals);
         flow_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_now);
         if (sim.time > 2.0) {
-            double swept = 1.0 * 0.52 * (fixture_body(&sim)->x[0][0] + fixture_body(&sim)->u[0][0] - x0);
+            double swept =
+                1.0 * 0.52 * (fixture_body(&sim)->x[0][0] + fixture_body(&sim)->u[0][0] - x0);
             worst_mass = fmax(worst_mass, fabs(totals[0] - mass0) / swept);
             const uint8_t *kind = ibm_kinds(ghost_coupling_ibm(sim.coupling));
             for (int j = 1; j < g->ny - 1; j++)

@@ -98,7 +98,9 @@ static void test_momentum_exchange(void **state) {
         for (int d = 0; d < 2; d++) {
             received[d] /= b->cfg.thickness;
             worst = fmax(worst, fabs(received[d] - taken[d]) / scale);
-            worst = fmax(worst, fabs(ghost_coupling_fsi(sim.coupling)->force_on_solid[d] - taken[d]) / scale);
+            worst =
+                fmax(worst,
+                     fabs(ghost_coupling_fsi(sim.coupling)->force_on_solid[d] - taken[d]) / scale);
         }
     }
     print_message("force received by the solid vs taken from the flow: %.2e relative\n", worst);
