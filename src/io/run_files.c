@@ -113,7 +113,7 @@ static int write_vtk(const char *dir, int index, double t, const FieldSet *fs, P
 
 /* The overlay's window: the points' box, enlarged by its own size on each side. */
 static void overlay_window(const FieldSet *pts, double window[4]) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-(double)INFINITY, -(double)INFINITY};
     for (int64_t i = 0; i < pts->n; i++)
         for (int d = 0; d < 2; d++) {
             lo[d] = fmin(lo[d], pts->position[d][i]);

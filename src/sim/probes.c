@@ -10,6 +10,11 @@
 
 static const char *const AXIS[] = {"x", "y", "z"};
 
+/* The name of axis d ("x", "y", "z"). */
+static const char *axis_name(int d) {
+    return d >= 0 && d < 3 ? AXIS[d] : "?";
+}
+
 bool probes_need_damage(const OutputConfig *cfg) {
     for (int i = 0; i < cfg->probe_count; i++)
         if (cfg->probes[i].kind == PROBE_CRACK_TIP || cfg->probes[i].kind == PROBE_BRANCHES)
@@ -151,13 +156,13 @@ static int setup_table(ProbeState *p, const PdPoints *body) {
         int len = 0;
         for (int d = 0; d < dim; d++)
             len += snprintf(p->table_header + len, sizeof p->table_header - (size_t)len, "%s%s_m",
-                            d ? "," : "", AXIS[d]);
+                            d ? "," : "", axis_name(d));
         for (int d = 0; d < dim; d++)
             len += snprintf(p->table_header + len, sizeof p->table_header - (size_t)len, ",u%s_m",
-                            AXIS[d]);
+                            axis_name(d));
         for (int d = 0; d < dim; d++)
             len += snprintf(p->table_header + len, sizeof p->table_header - (size_t)len,
-                            ",v%s_m_per_s", AXIS[d]);
+                            ",v%s_m_per_s", axis_name(d));
         snprintf(p->table_header + len, sizeof p->table_header - (size_t)len, ",damage");
         t->ncol = 3 * dim + 1;
         t->short_cols = 1u << (3 * dim); /* damage: 6 digits */
@@ -199,13 +204,13 @@ void probes_destroy(ProbeState **probes, int count) {
 /* The damaged point furthest along the probe's direction; -1 if none. */
 static int64_t crack_tip(const ProbeConfig *c, const PdPoints *body, const double *damage) {
     int64_t best = -1;
-    double best_along = -INFINITY;
+    double best_along = -(double)INFINITY;
     for (int64_t i = 0; i < body->n; i++) {
         if (!(damage[i] > c->damage_threshold)) continue;
         double x[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
         if (c->region.count && !shapeset_contains(&c->region, x)) continue;
         double along = 0;
-        for (int d = 0; d < body->dim; d++) along += x[d] * c->direction[d];
+        for (int d = 0; d < body->dim && d < 3; d++) along += x[d] * c->direction[d];
         if (along > best_along) {
             best_along = along;
             best = i;
@@ -234,7 +239,7 @@ void probes_sample(ProbeState *probes, int count, const PdPoints *body, const do
                 p->samples++;
             }
             for (int d = 0; d < body->dim; d++)
-                report_realf(row, p->last_tip[d], "%s_tip_%s_m", c->name, AXIS[d]);
+                report_realf(row, p->last_tip[d], "%s_tip_%s_m", c->name, axis_name(d));
         } else if (c->kind == PROBE_BRANCHES) {
             BranchResult r;
             if (probe_branches(c, body, damage, &r) != NSPD_OK) r.angle_deg = (double)NAN;
@@ -256,9 +261,9 @@ void probes_sample(ProbeState *probes, int count, const PdPoints *body, const do
                 p->t_dx_max = time;
             }
             for (int d = 0; d < body->dim; d++)
-                report_realf(row, body->u[d][p->point], "%s_d%s_m", c->name, AXIS[d]);
+                report_realf(row, body->u[d][p->point], "%s_d%s_m", c->name, axis_name(d));
             for (int d = 0; d < body->dim; d++)
-                report_realf(row, body->v[d][p->point], "%s_v%s_m_per_s", c->name, AXIS[d]);
+                report_realf(row, body->v[d][p->point], "%s_v%s_m_per_s", c->name, axis_name(d));
         }
     }
 }
@@ -552,7 +557,7 @@ int probes_summary(ProbeState *probes, int count, const PdPoints *body, const do
         const ProbeState *p = &probes[k];
         if (p->cfg->kind != PROBE_CRACK_TIP) continue;
         for (int d = 0; d < (body ? body->dim : 0); d++)
-            report_realf(out, p->last_tip[d], "%s_tip_%s_m", p->cfg->name, AXIS[d]);
+            report_realf(out, p->last_tip[d], "%s_tip_%s_m", p->cfg->name, axis_name(d));
         report_realf(out, probe_crack_speed(p), "%s_speed_m_per_s", p->cfg->name);
     }
     return NSPD_OK;
