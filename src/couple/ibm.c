@@ -114,29 +114,16 @@ static int compute_kind(const Ibm *ibm, int i, int j) {
     return FLOW_CELL_SOLID;
 }
 
-/* First index i in [0, n] with c[i] >= x (c[n] counts as +infinity). */
+/* First index i in [0, n] with c[i] >= x (c[n] counts as +infinity): the
+ * centres increase strictly, so it is the bracket's lower centre when that
+ * one sits exactly at x and the next one otherwise. */
 static int lower_bound(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n;
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (a->center[mid] < x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    const int i = grid_axis_bracket(a, x);
+    return i >= 0 && a->center[i] == x ? i : i + 1;
 }
 /* Last index i in [-1, n-1] with c[i] <= x. */
 static int upper_last(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n;
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (a->center[mid] <= x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo - 1;
+    return grid_axis_bracket(a, x);
 }
 
 static void walls_box(const Ibm *ibm, double box[4]) {
@@ -203,7 +190,7 @@ static void build_probes_for(Ibm *ibm, int s) {
     const double ax = ibm->mx[s], ay = ibm->my[s], bx = ibm->mx[e], by = ibm->my[e];
     const double l = hypot(bx - ax, by - ay), nx = (by - ay) / l, ny = -(bx - ax) / l;
     const double mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    const int i = ibm_cell_of(&g->ax[0], mx), j = ibm_cell_of(&g->ax[1], my);
+    const int i = grid_axis_cell_of(&g->ax[0], mx), j = grid_axis_cell_of(&g->ax[1], my);
     const double h = fmax(g->ax[0].width[i], g->ax[1].width[j]);
     for (int q = 0; q < 2; q++) {
         const double d = (q + 1) * IBM_PROBE_STEP * h;

@@ -297,20 +297,6 @@ void ibm_normal(const Ibm *ibm, int seg, double t, double x, double y, double bx
     *ny = my / l;
 }
 
-int ibm_cell_of(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n; /* face[lo] <= x < face[hi] */
-    if (!(x >= a->face[0])) return 0;
-    if (!(x < a->face[a->n])) return a->n - 1;
-    while (hi - lo > 1) {
-        const int mid = (lo + hi) / 2;
-        if (a->face[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 int ibm_node_kind(const Ibm *ibm, int i, int j) {
     const Grid *g = ibm->grid;
     /* box ghost layer: the kind of the image cell, as bc_fill copies it */

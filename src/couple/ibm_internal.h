@@ -114,9 +114,6 @@ int ibm_blocked(const Ibm *ibm, double px, double py, double qx, double qy);
  * (x, y) on segment `seg` at parameter t; `inside`: (x, y) is in the body. */
 void ibm_normal(const Ibm *ibm, int seg, double t, double x, double y, double bx, double by,
                 double dist, int inside, double *nx, double *ny);
-/* The interior cell whose faces hold x (face[i] <= x < face[i+1]), clamped
- * to 0 .. n-1: mirror-symmetric, unlike a search on the centres. */
-int ibm_cell_of(const GridAxis *a, double x);
 /* Interior-or-first-box-layer cell kind with the box-layer rule of bc.c. */
 int ibm_node_kind(const Ibm *ibm, int i, int j);
 

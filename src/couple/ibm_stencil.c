@@ -212,15 +212,7 @@ static inline void box_add(Box *b, double x, double y, double r) {
 /* Index i0 in [-1, n-1] with c[i0] <= x < c[i0+1], or -2 outside. */
 static int locate(const GridAxis *a, double x) {
     if (!(x >= a->center[-1]) || !(x < a->center[a->n])) return -2;
-    int lo = -1, hi = a->n; /* c[lo] <= x < c[hi] */
-    while (hi - lo > 1) {
-        const int mid = (lo + hi) / 2;
-        if (a->center[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
+    return grid_axis_bracket(a, x);
 }
 
 /* The candidate stencil at P (one attempt). */
@@ -428,12 +420,13 @@ void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const ui
     int level = IBM_LEVEL_IMAGE;
     if (try_point(ibm, px, py, exclude, &a, &dep) < 0) {
         level = IBM_LEVEL_NEAREST;
-        const int ic = ibm_cell_of(&g->ax[0], px), jc = ibm_cell_of(&g->ax[1], py);
+        const int ic = grid_axis_cell_of(&g->ax[0], px), jc = grid_axis_cell_of(&g->ax[1], py);
         double mx, my;
         nearest_mean(ibm, ic, jc, px, py, !ibm_point_inside(ibm, px, py), exclude, &a, &dep, &mx,
                      &my);
     }
-    set->cell[e] = grid_index(g, ibm_cell_of(&g->ax[0], px), ibm_cell_of(&g->ax[1], py));
+    set->cell[e] =
+        grid_index(g, grid_axis_cell_of(&g->ax[0], px), grid_axis_cell_of(&g->ax[1], py));
     set->seg[e] = -1;
     set->t[e] = 0.0;
     set->ratio[e] = dist;

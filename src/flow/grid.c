@@ -166,3 +166,22 @@ void grid_destroy(Grid *g) {
     grid_axis_destroy(&g->ax[1]);
     memset(g, 0, sizeof *g);
 }
+
+int grid_bracket(const double *v, int lo, int hi, double x) {
+    while (hi - lo > 1) { /* v[lo] <= x < v[hi] */
+        const int mid = lo + (hi - lo) / 2;
+        if (v[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+int grid_axis_cell_of(const GridAxis *a, double x) {
+    return grid_bracket(a->face, 0, a->n, x);
+}
+
+int grid_axis_bracket(const GridAxis *a, double x) {
+    return grid_bracket(a->center, -1, a->n, x);
+}

@@ -77,6 +77,22 @@ int grid_create_uniform(Grid *g, double x0, double x1, int nx, double y0, double
                         bool periodic_x, bool periodic_y);
 void grid_destroy(Grid *g);
 
+/* The searches over an axis, O(log n), thread-safe, never failing.
+ *
+ * grid_bracket: in an increasing array v, the last index i in [lo, hi - 1]
+ * with v[i] <= x, where v[lo] counts as -infinity and v[hi] as +infinity
+ * (neither is read); so v[i] <= x < v[i+1] inside the range, lo below it,
+ * hi - 1 above it, and lo for a NaN x. Negative indices are fine where the
+ * array is offset (GridAxis). */
+int grid_bracket(const double *v, int lo, int hi, double x);
+/* The cell holding x, face[i] <= x < face[i+1], clamped to 0 .. n-1 (0 for a
+ * NaN x): grid_bracket(a->face, 0, a->n, x). */
+int grid_axis_cell_of(const GridAxis *a, double x);
+/* The interior centres around x: i in -1 .. n-1 with center[i] <= x <
+ * center[i+1], where center[-1] counts as -infinity and center[n] as
+ * +infinity (-1 for a NaN x): grid_bracket(a->center, -1, a->n, x). */
+int grid_axis_bracket(const GridAxis *a, double x);
+
 static inline int64_t grid_index(const Grid *g, int i, int j) {
     return (int64_t)(j + GRID_NG) * g->stride + (i + GRID_NG);
 }

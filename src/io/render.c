@@ -2,6 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "flow/grid.h" /* grid_bracket: the cell of a pixel */
 #include "io/png.h"
 
 #include <math.h>
@@ -65,19 +66,6 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
     return status;
 }
 
-/* Index of the cell of a sorted face array holding coordinate x. */
-static int locate(const double *faces, int n, double x) {
-    int lo = 0, hi = n; /* faces[lo] <= x < faces[hi] */
-    while (hi - lo > 1) {
-        int mid = (lo + hi) / 2;
-        if (faces[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 /* Draws overlay points onto the plot area of img (origin at the margin). */
 static void draw_points(Image *img, int margin, int w, int h, double x0, double ytop, double scale,
                         const RenderPoints *pts) {
@@ -125,10 +113,10 @@ int render_grid_png(const char *path, int nx, int ny, const double *xf, const do
         image_destroy(&img);
         return status;
     }
-    for (int x = 0; x < w; x++) column[x] = locate(xf, nx, x0 + (x + 0.5) / scale);
+    for (int x = 0; x < w; x++) column[x] = grid_bracket(xf, 0, nx, x0 + (x + 0.5) / scale);
     double range = opt->vmax > opt->vmin ? opt->vmax - opt->vmin : 1.0;
     for (int y = 0; y < h; y++) {
-        int j = locate(yf, ny, y1 - (y + 0.5) / scale);
+        int j = grid_bracket(yf, 0, ny, y1 - (y + 0.5) / scale);
         for (int x = 0; x < w; x++) {
             int64_t cell = (int64_t)j * nx + column[x];
             uint8_t rgb[3];
