@@ -68,8 +68,8 @@ int grid_segments_spacing(int count, const GridSegment *segments, double *h, int
     if (count < 1) return NSPD_FAIL(NSPD_ERR_INPUT, "a grid axis needs at least one segment");
     int total = 0;
     for (int s = 0; s < count; s++) {
-        int n;
-        double h0, r;
+        int n = 0;
+        double h0 = 0.0, r = 1.0;
         TRY(segment_cells(&segments[s], &n, &h0, &r));
         /* Spacings from the progression, the last one adjusted by the
          * rounding residue so the segment ends exactly at its length. */

@@ -9,7 +9,8 @@
 
 int render_points_png(const char *path, int64_t n, const double *const pos[2], const double *values,
                       double spacing, const RenderOptions *opt) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    double lo[2] = {(double)INFINITY, (double)INFINITY},
+           hi[2] = {-(double)INFINITY, -(double)INFINITY};
     for (int64_t i = 0; i < n; i++)
         for (int d = 0; d < 2; d++) {
             lo[d] = fmin(lo[d], pos[d][i]);
@@ -54,7 +55,7 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
                 float t = best[(int64_t)y * w + x];
                 if (t < 0) continue;
                 uint8_t rgb[3];
-                colormap_rgb(opt->colormap, t, rgb);
+                colormap_rgb(opt->colormap, (double)t, rgb);
                 image_fill_rect(&img, margin + x, margin + y, margin + x + 1, margin + y + 1, rgb);
             }
         image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,

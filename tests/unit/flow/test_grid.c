@@ -87,19 +87,19 @@ static void test_axis_searches(void **state) {
     for (int i = 0; i < n; i++) {
         assert_int_equal(grid_axis_cell_of(&a, a.face[i]), i);
         assert_int_equal(grid_axis_cell_of(&a, a.center[i]), i);
-        assert_int_equal(grid_axis_cell_of(&a, nextafter(a.face[i + 1], -INFINITY)), i);
+        assert_int_equal(grid_axis_cell_of(&a, nextafter(a.face[i + 1], -(double)INFINITY)), i);
         assert_int_equal(grid_axis_bracket(&a, a.center[i]), i);
-        assert_int_equal(grid_axis_bracket(&a, nextafter(a.center[i], -INFINITY)), i - 1);
+        assert_int_equal(grid_axis_bracket(&a, nextafter(a.center[i], -(double)INFINITY)), i - 1);
         assert_int_equal(grid_axis_bracket(&a, a.face[i + 1]), i);
     }
     /* clamped outside; NaN gives the low end */
     assert_int_equal(grid_axis_cell_of(&a, a.lo - 1.0), 0);
     assert_int_equal(grid_axis_cell_of(&a, a.face[n]), n - 1);
-    assert_int_equal(grid_axis_cell_of(&a, INFINITY), n - 1);
-    assert_int_equal(grid_axis_cell_of(&a, NAN), 0);
-    assert_int_equal(grid_axis_bracket(&a, -INFINITY), -1);
+    assert_int_equal(grid_axis_cell_of(&a, (double)INFINITY), n - 1);
+    assert_int_equal(grid_axis_cell_of(&a, (double)NAN), 0);
+    assert_int_equal(grid_axis_bracket(&a, -(double)INFINITY), -1);
     assert_int_equal(grid_axis_bracket(&a, a.hi + 1.0), n - 1);
-    assert_int_equal(grid_axis_bracket(&a, NAN), -1);
+    assert_int_equal(grid_axis_bracket(&a, (double)NAN), -1);
     /* the bare-array search against a linear scan, ghost range included */
     for (int k = 0; k <= 400; k++) {
         const double x =
