@@ -33,7 +33,8 @@ int exit_status_of(int status) {
 
 /* Prints a failure: bad input as the bare "FILE:LINE:COL: what; expected"
  * message (editors jump to it), anything else as "nspd: error: ...". The
- * log file, if open, gets it too, with the C source location. */
+ * log file, if open, gets it too, with the C source location and the
+ * traceback of the TRYs it passed through. */
 static int report(int status) {
     if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED) return exit_status_of(status);
     if (status == NSPD_ERR_INPUT)
@@ -41,6 +42,7 @@ static int report(int status) {
     else
         fprintf(stderr, "nspd: error: %s\n", nspd_error_message());
     nspd_log_file(LOG_ERROR, "%s (raised at %s)", nspd_error_message(), nspd_error_origin());
+    if (nspd_error_trace_depth() > 0) nspd_log_file(LOG_DEBUG, "via %s", nspd_error_traceback());
     return exit_status_of(status);
 }
 

@@ -63,10 +63,11 @@ int cmd_riemann(int argc, char **argv) {
            time);
     double h = length / (double)cells;
     for (long i = 0; i < cells; i++) {
+        const double xi = (double)i; /* cells is bounded far below 2^53 */
         double cons[3];
-        riemann_exact_average(&sol, x0, time, i * h, (i + 1) * h, 64, cons);
+        riemann_exact_average(&sol, x0, time, xi * h, (xi + 1) * h, 64, cons);
         double u = cons[1] / cons[0], p = (gamma - 1) * (cons[2] - 0.5 * cons[1] * u);
-        printf("%.9g,%.9g,%.9g,%.9g\n", (i + 0.5) * h, cons[0], u, p);
+        printf("%.9g,%.9g,%.9g,%.9g\n", (xi + 0.5) * h, cons[0], u, p);
     }
     return 0;
 }

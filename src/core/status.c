@@ -1,11 +1,21 @@
-/* Error records: one per thread, the latest failure wins. */
+/* Error records: one per thread, the latest failure wins. The traceback is
+ * kept as (function, line) pairs and formatted only when asked for. */
 #include "core/status.h"
 
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 
 static _Thread_local char error_message[2048];
 static _Thread_local char error_origin[256];
+
+typedef struct {
+    const char *func; /* __func__ of the TRY: static storage */
+    int line;
+} TraceFrame;
+static _Thread_local TraceFrame trace[NSPD_TRACE_FRAMES];
+static _Thread_local int trace_depth; /* frames appended, may exceed NSPD_TRACE_FRAMES */
+static _Thread_local char trace_text[NSPD_TRACE_FRAMES * 64 + 32];
 
 int nspd_error(int status, const char *src_file, int src_line, const char *fmt, ...) {
     va_list args;
@@ -13,7 +23,32 @@ int nspd_error(int status, const char *src_file, int src_line, const char *fmt, 
     vsnprintf(error_message, sizeof error_message, fmt, args);
     va_end(args);
     snprintf(error_origin, sizeof error_origin, "%s:%d", src_file, src_line);
+    trace_depth = 0;
     return status;
+}
+
+void nspd_error_trace(const char *func, int line) {
+    if (trace_depth < NSPD_TRACE_FRAMES) trace[trace_depth] = (TraceFrame){func, line};
+    if (trace_depth < INT_MAX) trace_depth++;
+}
+
+int nspd_error_trace_depth(void) {
+    return trace_depth;
+}
+
+const char *nspd_error_traceback(void) {
+    const int kept = trace_depth < NSPD_TRACE_FRAMES ? trace_depth : NSPD_TRACE_FRAMES;
+    size_t len = 0;
+    trace_text[0] = '\0';
+    for (int k = 0; k < kept && len < sizeof trace_text; k++) {
+        const int n = snprintf(trace_text + len, sizeof trace_text - len, "%s%s:%d",
+                               k ? " <- " : "", trace[k].func, trace[k].line);
+        if (n < 0) break;
+        len += (size_t)n;
+    }
+    if (trace_depth > kept && len < sizeof trace_text)
+        snprintf(trace_text + len, sizeof trace_text - len, " <- (%d more)", trace_depth - kept);
+    return trace_text;
 }
 
 const char *nspd_error_message(void) {
@@ -27,6 +62,7 @@ const char *nspd_error_origin(void) {
 void nspd_error_clear(void) {
     error_message[0] = '\0';
     error_origin[0] = '\0';
+    trace_depth = 0;
 }
 
 const char *nspd_status_name(int status) {

@@ -1,9 +1,19 @@
-/* Status codes and error messages.
+/* Status codes, error messages and their traceback.
  *
  * Every function that can fail returns an int: NSPD_OK (0) or a negative
  * NspdStatus. The first failure records a message (thread-local) that the
  * caller can read with nspd_error_message(); TRY() propagates a failure
- * upward unchanged. Only main() turns a status into an exit code. */
+ * upward unchanged and, as PETSc's PetscCall does, appends the function and
+ * line it passes through to a chain of callers (nspd_error_traceback), so a
+ * log can say how the failure was reached, not only where it was raised.
+ * Only main() turns a status into an exit code.
+ *
+ * Invariants of the thread-local record: NSPD_FAIL (nspd_error) sets the
+ * message and the origin and empties the chain; each TRY that returns a
+ * failure appends one frame; the chain holds at most NSPD_TRACE_FRAMES
+ * frames, the innermost ones, and counts those it had to drop. A frame
+ * keeps __func__ by pointer (a string with static storage): nothing is
+ * allocated, so a failed allocation can be traced too. */
 #ifndef NSPD_CORE_STATUS_H
 #define NSPD_CORE_STATUS_H
 
@@ -17,25 +27,41 @@ typedef enum {
     NSPD_ERR_INTERRUPTED = -6, /* the user asked to stop (Ctrl-C) */
 } NspdStatus;
 
+enum { NSPD_TRACE_FRAMES = 16 }; /* frames kept by the traceback */
+
 /* Records a printf-style message for `status` and returns `status`, so that
  * `return NSPD_FAIL(NSPD_ERR_IO, "...")` reads naturally. The C source
  * location is kept apart (nspd_error_origin) so user-facing messages stay
- * clean. A second call replaces the message. */
+ * clean. A second call replaces the message and starts a new traceback. */
 int nspd_error(int status, const char *src_file, int src_line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 #define NSPD_FAIL(status, ...) nspd_error((status), __FILE__, __LINE__, __VA_ARGS__)
 
+/* Appends the frame `func:line` to this thread's traceback (TRY calls it;
+ * `func` must outlive the record, as __func__ does). */
+void nspd_error_trace(const char *func, int line);
+
 /* Propagates a failure: returns the status of `expr` from the enclosing
- * function if it is negative. */
+ * function if it is negative, after adding this function and line to the
+ * traceback. */
 #define TRY(expr)                                                                                  \
     do {                                                                                           \
         int try_status_ = (expr);                                                                  \
-        if (try_status_ < 0) return try_status_;                                                   \
+        if (try_status_ < 0) {                                                                     \
+            nspd_error_trace(__func__, __LINE__);                                                  \
+            return try_status_;                                                                    \
+        }                                                                                          \
     } while (0)
 
 const char *nspd_error_message(void); /* "" when no error was recorded */
 const char *nspd_error_origin(void);  /* "file.c:123" of the NSPD_FAIL call */
-void nspd_error_clear(void);
+/* The callers a failure passed through, innermost first:
+ * "read_mesh:42 <- load:88 <- cmd_run:130", with " <- (N more)" when frames
+ * were dropped; "" when none. Valid until the next nspd_error* call on this
+ * thread. */
+const char *nspd_error_traceback(void);
+int nspd_error_trace_depth(void); /* frames recorded, dropped ones included */
+void nspd_error_clear(void);      /* message, origin and traceback */
 const char *nspd_status_name(int status);
 
 #endif

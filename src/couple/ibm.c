@@ -114,34 +114,21 @@ static int compute_kind(const Ibm *ibm, int i, int j) {
     return FLOW_CELL_SOLID;
 }
 
-/* First index i in [0, n] with c[i] >= x (c[n] counts as +infinity). */
+/* First index i in [0, n] with c[i] >= x (c[n] counts as +infinity): the
+ * centres increase strictly, so it is the bracket's lower centre when that
+ * one sits exactly at x and the next one otherwise. */
 static int lower_bound(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n;
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (a->center[mid] < x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    const int i = grid_axis_bracket(a, x);
+    return i >= 0 && a->center[i] == x ? i : i + 1;
 }
 /* Last index i in [-1, n-1] with c[i] <= x. */
 static int upper_last(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n;
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (a->center[mid] <= x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo - 1;
+    return grid_axis_bracket(a, x);
 }
 
 static void walls_box(const Ibm *ibm, double box[4]) {
-    box[0] = box[2] = INFINITY;
-    box[1] = box[3] = -INFINITY;
+    box[0] = box[2] = (double)INFINITY;
+    box[1] = box[3] = -(double)INFINITY;
     for (int k = 0; k < ibm->nm; k++) {
         box[0] = fmin(box[0], ibm->mx[k]), box[1] = fmax(box[1], ibm->mx[k]);
         box[2] = fmin(box[2], ibm->my[k]), box[3] = fmax(box[3], ibm->my[k]);
@@ -203,7 +190,7 @@ static void build_probes_for(Ibm *ibm, int s) {
     const double ax = ibm->mx[s], ay = ibm->my[s], bx = ibm->mx[e], by = ibm->my[e];
     const double l = hypot(bx - ax, by - ay), nx = (by - ay) / l, ny = -(bx - ax) / l;
     const double mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    const int i = ibm_cell_of(&g->ax[0], mx), j = ibm_cell_of(&g->ax[1], my);
+    const int i = grid_axis_cell_of(&g->ax[0], mx), j = grid_axis_cell_of(&g->ax[1], my);
     const double h = fmax(g->ax[0].width[i], g->ax[1].width[j]);
     for (int q = 0; q < 2; q++) {
         const double d = (q + 1) * IBM_PROBE_STEP * h;
@@ -337,6 +324,7 @@ void ibm_destroy(Ibm **pp) {
     ibm_stencils_free(&ibm->probes);
     nspd_free(&ibm->list_a);
     nspd_free(&ibm->list_b);
+    nspd_free(&ibm->swept);
     nspd_free(&ibm->moved_bucket);
     nspd_free(pp);
 }
@@ -421,13 +409,11 @@ static void soft_start(Ibm *ibm, FlowSolver *s, double length, bool keep_total) 
         for (int i = i0; i <= i1; i++) {
             const int64_t k = grid_index(g, i, j);
             if (ibm->kind[k] != FLOW_CELL_FLUID) continue;
-            int seg;
-            double t, bx, by, d;
-            ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j], &seg, &t, &bx, &by, &d);
-            if (d >= length) continue;
-            const double z = d / length, fz = z * z * (3.0 - 2.0 * z);
+            const IbmWallPoint wp = ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j]);
+            if (wp.d >= length) continue;
+            const double z = wp.d / length, fz = z * z * (3.0 - 2.0 * z);
             double uw, vw;
-            ibm_wall_velocity(ibm, seg, t, &uw, &vw);
+            ibm_wall_velocity(ibm, wp.seg, wp.t, &uw, &vw);
             const double rho = f.w[0][k], u = f.w[1][k] / rho, v = f.w[2][k] / rho;
             const double p = gm1 * (f.w[3][k] - 0.5 * (f.w[1][k] * u + f.w[2][k] * v));
             const double un = uw + (u - uw) * fz, vn = vw + (v - vw) * fz;
@@ -538,16 +524,240 @@ static void fill_fresh(Ibm *ibm, FlowSolver *s, int n, IbmStencilSet *tmp) {
     for (int q = 0; q < n; q++) {
         if (tmp->rseg[4 * q] == IBM_NODE_UNUSED) continue; /* nothing usable: keep the old value */
         /* the wall that uncovered the cell decides the thermal rows */
-        int i, j, seg;
+        int i, j;
         cell_ij(g, ibm->list_a[q], &i, &j);
-        double t, bx, by, d;
-        ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j], &seg, &t, &bx, &by, &d);
-        const int b = ibm->seg_body[seg];
+        const int b = ibm->seg_body[ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j]).seg];
         const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
         const IbmPrim p = ibm_stencil_eval(ibm, tmp, q, w, gm1, R, iso, ibm->wall_t[b]);
         const double T = iso ? fmax(p.T, 0.25 * ibm->wall_t[b]) : p.T;
         set_cons(w, ibm->list_a[q], p.p / (R * T), p.u, p.v, p.p, gm1);
     }
+}
+
+/* The steps of ibm_update, in order. Each is a pass over the work of the
+ * previous one; the work lists carry what passes between them:
+ *   swept      4 doubles per box swept by moved walls (steps 2-4),
+ *   list_a     cells whose inside flag changed (4-5), then the fresh cells (5-8),
+ *   list_b     cells within reach of a changed one, queued for a new kind (5-6),
+ *   mark       bit 1: queued; bit 2: fresh (cleared at the end of step 8). */
+
+/* 1. Keeps the old walls and loads the new ones. May reallocate the marker
+ * and old-wall arrays and the buckets. */
+static int load_walls(Ibm *ibm, const IbmPolyline *bodies, int count) {
+    if (ibm->nm > ibm->old_cap) {
+        TRY(nspd_realloc(&ibm->old_mx, (size_t)ibm->old_cap, (size_t)ibm->nm, sizeof(double)));
+        TRY(nspd_realloc(&ibm->old_my, (size_t)ibm->old_cap, (size_t)ibm->nm, sizeof(double)));
+        ibm->old_cap = ibm->nm;
+    }
+    memcpy(ibm->old_mx, ibm->mx, (size_t)ibm->nm * sizeof(double));
+    memcpy(ibm->old_my, ibm->my, (size_t)ibm->nm * sizeof(double));
+    ibm->old_nm = ibm->nm;
+    for (int b = 0; b < count; b++) ibm->old_count[b] = ibm->count[b];
+    TRY(set_markers(ibm, bodies, count));
+    TRY(ibm_buckets_build(ibm));
+    return NSPD_OK;
+}
+
+/* The box of the four ends of a segment's old (a-b) and new (c-d) position. */
+static void sweep_segment(double q[4], double ax, double ay, double bx, double by, double cx,
+                          double cy, double dx, double dy) {
+    q[0] = fmin(fmin(ax, bx), fmin(cx, dx));
+    q[1] = fmax(fmax(ax, bx), fmax(cx, dx));
+    q[2] = fmin(fmin(ay, by), fmin(cy, dy));
+    q[3] = fmax(fmax(ay, by), fmax(cy, dy));
+}
+
+/* The box of all old and new markers of body b (old ones from old_first). */
+static void sweep_body(const Ibm *ibm, int b, int old_first, double q[4]) {
+    const int on = ibm->old_count[b], n = ibm->count[b], f = ibm->first[b];
+    q[0] = q[2] = (double)INFINITY;
+    q[1] = q[3] = -(double)INFINITY;
+    for (int k = 0; k < on; k++) {
+        q[0] = fmin(q[0], ibm->old_mx[old_first + k]);
+        q[1] = fmax(q[1], ibm->old_mx[old_first + k]);
+        q[2] = fmin(q[2], ibm->old_my[old_first + k]);
+        q[3] = fmax(q[3], ibm->old_my[old_first + k]);
+    }
+    for (int k = 0; k < n; k++) {
+        q[0] = fmin(q[0], ibm->mx[f + k]), q[1] = fmax(q[1], ibm->mx[f + k]);
+        q[2] = fmin(q[2], ibm->my[f + k]), q[3] = fmax(q[3], ibm->my[f + k]);
+    }
+}
+
+/* 2. The swept box of every moved segment, or of the whole body where its
+ * marker count changed, into `swept`. May reallocate it. */
+static int sweep_boxes(Ibm *ibm, int *nbox) {
+    const int64_t max_boxes = ibm->nm + ibm->body_count;
+    if (4 * max_boxes > ibm->swept_cap) {
+        if (4 * max_boxes > 2000000000)
+            return NSPD_FAIL(NSPD_ERR_NOMEM, "immersed boundary: list too long");
+        TRY(nspd_realloc(&ibm->swept, (size_t)ibm->swept_cap, (size_t)(4 * max_boxes),
+                         sizeof(double)));
+        ibm->swept_cap = (int)(4 * max_boxes);
+    }
+    double *boxes = ibm->swept;
+    int nb = 0, old_first = 0;
+    for (int b = 0; b < ibm->body_count; b++) {
+        const int on = ibm->old_count[b], n = ibm->count[b], f = ibm->first[b];
+        if (on != n) {
+            sweep_body(ibm, b, old_first, boxes + 4 * nb++);
+            old_first += on;
+            continue;
+        }
+        for (int k = 0; k < n; k++) {
+            const int k1 = (k + 1) % n;
+            const double ax = ibm->old_mx[old_first + k], ay = ibm->old_my[old_first + k];
+            const double bx = ibm->old_mx[old_first + k1], by = ibm->old_my[old_first + k1];
+            const double cx = ibm->mx[f + k], cy = ibm->my[f + k];
+            const double dx = ibm->mx[f + k1], dy = ibm->my[f + k1];
+            if (ax == cx && ay == cy && bx == dx && by == dy) continue;
+            sweep_segment(boxes + 4 * nb++, ax, ay, bx, by, cx, cy, dx, dy);
+        }
+        old_first += on;
+    }
+    *nbox = nb;
+    return NSPD_OK;
+}
+
+/* 3. The buckets touched by the swept boxes. May reallocate moved_bucket. */
+static int mark_moved_buckets(Ibm *ibm, int nbox) {
+    const int64_t nb = (int64_t)ibm->bk.nbx * ibm->bk.nby;
+    if (nb > ibm->moved_cap) {
+        nspd_free(&ibm->moved_bucket);
+        TRY(nspd_alloc(&ibm->moved_bucket, (size_t)nb, 1));
+        ibm->moved_cap = (int)nb;
+    }
+    memset(ibm->moved_bucket, 0, (size_t)nb);
+    for (int q = 0; q < nbox; q++) mark_box(ibm, ibm->swept + 4 * q);
+    return NSPD_OK;
+}
+
+/* 4. The inside flags in the swept boxes; the changed cells go to list_a. */
+static int retag_swept(Ibm *ibm, int nbox, int *nchanged) {
+    *nchanged = 0;
+    for (int q = 0; q < nbox; q++) TRY(retag_box(ibm, ibm->swept + 4 * q, nchanged));
+    ibm->last.changed = *nchanged;
+    return NSPD_OK;
+}
+
+/* 5a. Queues in list_b every interior cell within reach of a changed cell,
+ * once (mark bit 1). */
+static int queue_reach(Ibm *ibm, int nchanged, int64_t *nq) {
+    const Grid *g = ibm->grid;
+    TRY(reserve_list(&ibm->list_b, &ibm->list_cap_b, (int64_t)nchanged * 13 + 1));
+    int64_t *queue = ibm->list_b, n = 0;
+    for (int c = 0; c < nchanged; c++) {
+        int i, j;
+        cell_ij(g, ibm->list_a[c], &i, &j);
+        for (int b = -IBM_REACH; b <= IBM_REACH; b++) {
+            const int r = IBM_REACH - abs(b);
+            for (int a = -r; a <= r; a++) {
+                const int q = i + a, p = j + b;
+                if (q < 0 || p < 0 || q >= g->nx || p >= g->ny) continue;
+                const int64_t k = grid_index(g, q, p);
+                if (ibm->mark[k] & 1) continue;
+                ibm->mark[k] |= 1;
+                queue[n++] = k;
+            }
+        }
+    }
+    *nq = n;
+    return NSPD_OK;
+}
+
+/* 5b. New kinds of the queued cells (written into `s` too, if given); fresh
+ * cells (not fluid -> fluid) get mark bit 2 and go to list_a. *nadd counts
+ * the new ghosts. */
+static void update_kinds(Ibm *ibm, FlowSolver *s, int64_t nq, int *nfresh, int *nadd) {
+    const Grid *g = ibm->grid;
+    IbmUpdateStats *st = &ibm->last;
+    *nfresh = *nadd = 0;
+    for (int64_t q = 0; q < nq; q++) {
+        const int64_t k = ibm->list_b[q];
+        int i, j;
+        cell_ij(g, k, &i, &j);
+        const uint8_t old = ibm->kind[k], now = (uint8_t)compute_kind(ibm, i, j);
+        ibm->mark[k] &= (uint8_t)~1u;
+        if (old == now) continue;
+        ibm->kind[k] = now;
+        st->solid_cells += (now == FLOW_CELL_SOLID) - (old == FLOW_CELL_SOLID);
+        if (now == FLOW_CELL_GHOST) (*nadd)++;
+        if (old != FLOW_CELL_FLUID && now == FLOW_CELL_FLUID) {
+            ibm->mark[k] |= 2;
+            ibm->list_a[(*nfresh)++] = k; /* nfresh <= nchanged: list_a holds it */
+        }
+        if (s) flow_solver_fields(s).kind[k] = now;
+    }
+    st->fresh = *nfresh;
+}
+
+/* Copies ghost f of the old set O into entry e of N, renumbering its
+ * segments: a body with another marker count shifts the global segment
+ * numbers of the bodies after it (kept stencils only read bodies whose
+ * markers did not change). */
+static void keep_ghost(const Ibm *ibm, IbmStencilSet *N, int e, const IbmStencilSet *O, int f) {
+    ibm_stencils_copy_entry(N, e, O, f);
+    N->seg[e] = renumber(ibm, N->seg[e]);
+    for (int m = 0; m < 4; m++)
+        if (N->rseg[4 * e + m] >= 0) N->rseg[4 * e + m] = renumber(ibm, N->rseg[4 * e + m]);
+}
+
+/* 6. The new ghost list, sorted by cell, in the spare set, then swapped in:
+ * survivors keep their stencils unless their dependency box touches moved
+ * geometry; the others and the new ghosts (among the nq queued cells) are
+ * built. May reallocate the spare set. */
+static int rebuild_ghost_list(Ibm *ibm, int64_t nq, int nadd) {
+    const Grid *g = ibm->grid;
+    IbmStencilSet *O = &ibm->ghosts, *N = &ibm->spare;
+    int nnew = 0;
+    for (int e = 0; e < O->n; e++) nnew += ibm->kind[O->cell[e]] == FLOW_CELL_GHOST;
+    TRY(ibm_stencils_reserve(N, nnew + nadd));
+    N->n = 0;
+    for (int e = 0; e < O->n; e++)
+        if (ibm->kind[O->cell[e]] == FLOW_CELL_GHOST) N->cell[N->n++] = O->cell[e];
+    for (int64_t q = 0; q < nq; q++) {
+        const int64_t k = ibm->list_b[q];
+        if (ibm->kind[k] == FLOW_CELL_GHOST && ibm->slot[k] < 0) N->cell[N->n++] = k;
+    }
+    qsort(N->cell, (size_t)N->n, sizeof(int64_t), cmp_i64);
+    int rebuilt = 0;
+    for (int e = 0; e < N->n; e++) {
+        const int f = ibm->slot[N->cell[e]];
+        if (f >= 0 && !box_touches_moved(ibm, O->dep + 4 * f)) {
+            keep_ghost(ibm, N, e, O, f);
+        } else {
+            N->level[e] = 255; /* to build */
+            rebuilt++;
+        }
+    }
+    const int nn = N->n;
+#pragma omp parallel for schedule(dynamic, 64) if (rebuilt >= PARALLEL_MIN_ITEMS / 16)
+    for (int e = 0; e < nn; e++) {
+        if (N->level[e] != 255) continue;
+        int i, j;
+        cell_ij(g, N->cell[e], &i, &j);
+        ibm_build_ghost(ibm, i, j, N, e);
+    }
+    ibm->last.rebuilt = rebuilt;
+    ibm->last.kept = N->n - rebuilt;
+    for (int e = 0; e < O->n; e++) ibm->slot[O->cell[e]] = -1;
+    for (int e = 0; e < N->n; e++) ibm->slot[N->cell[e]] = e;
+    const IbmStencilSet tmp = *O;
+    *O = *N;
+    *N = tmp;
+    return NSPD_OK;
+}
+
+/* 8. The fresh cells (list_a[0..nfresh)), from their non-fresh fluid
+ * neighbours, if there is a solver; then their mark bit is cleared. The
+ * spare set serves as scratch space for their stencils (may reallocate). */
+static int fill_fresh_cells(Ibm *ibm, FlowSolver *s, int nfresh) {
+    if (s && nfresh > 0) {
+        TRY(ibm_stencils_reserve(&ibm->spare, nfresh));
+        fill_fresh(ibm, s, nfresh, &ibm->spare);
+    }
+    for (int q = 0; q < nfresh; q++) ibm->mark[ibm->list_a[q]] &= (uint8_t)~2u;
+    return NSPD_OK;
 }
 
 int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s) {
@@ -563,179 +773,21 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s) {
             return NSPD_FAIL(NSPD_ERR_INPUT, "immersed boundary: update with another grid");
     }
     const double t0 = nspd_wall_time();
-    const Grid *g = ibm->grid;
     IbmUpdateStats *st = &ibm->last;
     st->retagged = 0;
     st->changed = st->fresh = st->rebuilt = st->kept = 0;
 
-    /* 1. keep the old walls, load the new ones */
-    if (ibm->nm > ibm->old_cap) {
-        TRY(nspd_realloc(&ibm->old_mx, (size_t)ibm->old_cap, (size_t)ibm->nm, sizeof(double)));
-        TRY(nspd_realloc(&ibm->old_my, (size_t)ibm->old_cap, (size_t)ibm->nm, sizeof(double)));
-        ibm->old_cap = ibm->nm;
-    }
-    memcpy(ibm->old_mx, ibm->mx, (size_t)ibm->nm * sizeof(double));
-    memcpy(ibm->old_my, ibm->my, (size_t)ibm->nm * sizeof(double));
-    ibm->old_nm = ibm->nm;
-    for (int b = 0; b < count; b++) ibm->old_count[b] = ibm->count[b];
-    TRY(set_markers(ibm, bodies, count));
-    TRY(ibm_buckets_build(ibm));
-
-    /* 2. swept boxes of the moved segments (list of 4 doubles, kept in a
-     * double view of list_b) */
-    const int64_t max_boxes = ibm->nm + count;
-    TRY(reserve_list(&ibm->list_b, &ibm->list_cap_b, 4 * max_boxes));
-    double *boxes = (double *)ibm->list_b;
-    int nbox = 0;
-    int old_first = 0;
-    for (int b = 0; b < count; b++) {
-        const int on = ibm->old_count[b], n = ibm->count[b], f = ibm->first[b];
-        if (on == n) {
-            for (int k = 0; k < n; k++) {
-                const int k1 = (k + 1) % n;
-                const double ax = ibm->old_mx[old_first + k], ay = ibm->old_my[old_first + k];
-                const double bx = ibm->old_mx[old_first + k1], by = ibm->old_my[old_first + k1];
-                const double cx = ibm->mx[f + k], cy = ibm->my[f + k];
-                const double dx = ibm->mx[f + k1], dy = ibm->my[f + k1];
-                if (ax == cx && ay == cy && bx == dx && by == dy) continue;
-                double *q = boxes + 4 * nbox++;
-                q[0] = fmin(fmin(ax, bx), fmin(cx, dx));
-                q[1] = fmax(fmax(ax, bx), fmax(cx, dx));
-                q[2] = fmin(fmin(ay, by), fmin(cy, dy));
-                q[3] = fmax(fmax(ay, by), fmax(cy, dy));
-            }
-        } else {
-            double *q = boxes + 4 * nbox++;
-            q[0] = q[2] = INFINITY;
-            q[1] = q[3] = -INFINITY;
-            for (int k = 0; k < on; k++) {
-                q[0] = fmin(q[0], ibm->old_mx[old_first + k]);
-                q[1] = fmax(q[1], ibm->old_mx[old_first + k]);
-                q[2] = fmin(q[2], ibm->old_my[old_first + k]);
-                q[3] = fmax(q[3], ibm->old_my[old_first + k]);
-            }
-            for (int k = 0; k < n; k++) {
-                q[0] = fmin(q[0], ibm->mx[f + k]), q[1] = fmax(q[1], ibm->mx[f + k]);
-                q[2] = fmin(q[2], ibm->my[f + k]), q[3] = fmax(q[3], ibm->my[f + k]);
-            }
-        }
-        old_first += on;
-    }
-
-    /* 3. buckets touched by moved geometry */
-    const int64_t nb = (int64_t)ibm->bk.nbx * ibm->bk.nby;
-    if (nb > ibm->moved_cap) {
-        nspd_free(&ibm->moved_bucket);
-        TRY(nspd_alloc(&ibm->moved_bucket, (size_t)nb, 1));
-        ibm->moved_cap = (int)nb;
-    }
-    memset(ibm->moved_bucket, 0, (size_t)nb);
-    for (int q = 0; q < nbox; q++) mark_box(ibm, boxes + 4 * q);
-
-    /* 4. inside flags in the swept boxes */
-    int nchanged = 0;
-    for (int q = 0; q < nbox; q++) TRY(retag_box(ibm, boxes + 4 * q, &nchanged));
-    st->changed = nchanged;
-
-    /* 5. kinds within reach of the changed cells (mark bit 1: queued) */
+    int nbox = 0, nchanged = 0, nfresh = 0, nadd = 0;
     int64_t nq = 0;
-    int64_t *queue = NULL;
-    {
-        TRY(reserve_list(&ibm->list_b, &ibm->list_cap_b, (int64_t)nchanged * 13 + 1));
-        queue = ibm->list_b; /* the boxes are no longer needed */
-        for (int c = 0; c < nchanged; c++) {
-            int i, j;
-            cell_ij(g, ibm->list_a[c], &i, &j);
-            for (int b = -IBM_REACH; b <= IBM_REACH; b++) {
-                const int r = IBM_REACH - abs(b);
-                for (int a = -r; a <= r; a++) {
-                    const int q = i + a, p = j + b;
-                    if (q < 0 || p < 0 || q >= g->nx || p >= g->ny) continue;
-                    const int64_t k = grid_index(g, q, p);
-                    if (ibm->mark[k] & 1) continue;
-                    ibm->mark[k] |= 1;
-                    queue[nq++] = k;
-                }
-            }
-        }
-    }
-    /* new kinds; fresh cells (not fluid -> fluid) get mark bit 2 and go to list_a */
-    int nfresh = 0, nadd = 0;
-    for (int64_t q = 0; q < nq; q++) {
-        const int64_t k = queue[q];
-        int i, j;
-        cell_ij(g, k, &i, &j);
-        const uint8_t old = ibm->kind[k], now = (uint8_t)compute_kind(ibm, i, j);
-        ibm->mark[k] &= (uint8_t)~1u;
-        if (old == now) continue;
-        ibm->kind[k] = now;
-        st->solid_cells += (now == FLOW_CELL_SOLID) - (old == FLOW_CELL_SOLID);
-        if (now == FLOW_CELL_GHOST) nadd++;
-        if (old != FLOW_CELL_FLUID && now == FLOW_CELL_FLUID) {
-            ibm->mark[k] |= 2;
-            ibm->list_a[nfresh++] = k; /* nfresh <= nchanged: list_a holds it */
-        }
-        if (s) flow_solver_fields(s).kind[k] = now;
-    }
-    st->fresh = nfresh;
-
-    /* 6. the new ghost list, sorted by cell: survivors keep their stencils
-     * unless their dependency box touches moved geometry */
-    IbmStencilSet *O = &ibm->ghosts, *N = &ibm->spare;
-    int nnew = 0;
-    for (int e = 0; e < O->n; e++) nnew += ibm->kind[O->cell[e]] == FLOW_CELL_GHOST;
-    TRY(ibm_stencils_reserve(N, nnew + nadd));
-    N->n = 0;
-    for (int e = 0; e < O->n; e++)
-        if (ibm->kind[O->cell[e]] == FLOW_CELL_GHOST) N->cell[N->n++] = O->cell[e];
-    for (int64_t q = 0; q < nq; q++) {
-        const int64_t k = queue[q];
-        if (ibm->kind[k] == FLOW_CELL_GHOST && ibm->slot[k] < 0) N->cell[N->n++] = k;
-    }
-    qsort(N->cell, (size_t)N->n, sizeof(int64_t), cmp_i64);
-    int rebuilt = 0;
-    for (int e = 0; e < N->n; e++) {
-        const int64_t k = N->cell[e];
-        const int f = ibm->slot[k];
-        if (f >= 0 && !box_touches_moved(ibm, O->dep + 4 * f)) {
-            ibm_stencils_copy_entry(N, e, O, f);
-            /* a body with another marker count shifts the global segment
-             * numbers of the bodies after it: renumber (kept stencils only
-             * read bodies whose markers did not change) */
-            N->seg[e] = renumber(ibm, N->seg[e]);
-            for (int m = 0; m < 4; m++)
-                if (N->rseg[4 * e + m] >= 0) N->rseg[4 * e + m] = renumber(ibm, N->rseg[4 * e + m]);
-        } else {
-            N->level[e] = 255; /* to build */
-            rebuilt++;
-        }
-    }
-    const int nn = N->n;
-#pragma omp parallel for schedule(dynamic, 64) if (rebuilt >= PARALLEL_MIN_ITEMS / 16)
-    for (int e = 0; e < nn; e++) {
-        if (N->level[e] != 255) continue;
-        int i, j;
-        cell_ij(g, N->cell[e], &i, &j);
-        ibm_build_ghost(ibm, i, j, N, e);
-    }
-    st->rebuilt = rebuilt;
-    st->kept = N->n - rebuilt;
-    for (int e = 0; e < O->n; e++) ibm->slot[O->cell[e]] = -1;
-    for (int e = 0; e < N->n; e++) ibm->slot[N->cell[e]] = e;
-    IbmStencilSet tmp = *O;
-    *O = *N;
-    *N = tmp;
-
-    /* 7. surface probes (every segment moves with a deforming body) */
-    TRY(build_probes(ibm));
-
-    /* 8. fresh cells, from their non-fresh fluid neighbours */
-    if (s && nfresh > 0) {
-        /* the spare set serves as scratch space for their stencils */
-        TRY(ibm_stencils_reserve(&ibm->spare, nfresh));
-        fill_fresh(ibm, s, nfresh, &ibm->spare);
-    }
-    for (int q = 0; q < nfresh; q++) ibm->mark[ibm->list_a[q]] &= (uint8_t)~2u;
+    TRY(load_walls(ibm, bodies, count));    /* 1 */
+    TRY(sweep_boxes(ibm, &nbox));           /* 2 */
+    TRY(mark_moved_buckets(ibm, nbox));     /* 3 */
+    TRY(retag_swept(ibm, nbox, &nchanged)); /* 4 */
+    TRY(queue_reach(ibm, nchanged, &nq));   /* 5 */
+    update_kinds(ibm, s, nq, &nfresh, &nadd);
+    TRY(rebuild_ghost_list(ibm, nq, nadd)); /* 6 */
+    TRY(build_probes(ibm));                 /* 7: every segment moves with a deforming body */
+    TRY(fill_fresh_cells(ibm, s, nfresh));  /* 8 */
     count_stats(ibm);
     st->seconds = nspd_wall_time() - t0;
     return NSPD_OK;
@@ -778,11 +830,11 @@ void ibm_ghost_info(const Ibm *ibm, int e, IbmGhostInfo *out) {
     out->replaced = G->nrep[e];
     out->body = G->body[e];
     out->segment = G->seg[e];
-    const double *geo = G->geo + IBM_GEO * e;
-    out->bi[0] = geo[0], out->bi[1] = geo[1];
-    out->normal[0] = geo[2], out->normal[1] = geo[3];
-    out->dist = geo[4];
-    out->point[0] = geo[5], out->point[1] = geo[6];
+    const IbmStencilGeo *geo = &G->geo[e];
+    out->bi[0] = geo->bix, out->bi[1] = geo->biy;
+    out->normal[0] = geo->nx, out->normal[1] = geo->ny;
+    out->dist = geo->dist;
+    out->point[0] = geo->px, out->point[1] = geo->py;
     out->ratio = G->ratio[e];
     for (int m = 0; m < 4; m++) {
         const int rs = G->rseg[4 * e + m];

@@ -89,7 +89,12 @@ int ibm_attach(Ibm *ibm, FlowSolver *s);
  * isothermal walls) by the Dirichlet stencil at the cell centre with the
  * fresh cells themselves replaced by wall points, pressure (and adiabatic
  * temperature) by the Neumann stencil, density by the gas law. The result is
- * bitwise the same as ibm_create with the new walls. */
+ * bitwise the same as ibm_create with the new walls.
+ * May reallocate: the Ibm's marker, bucket, stencil and work arrays grow
+ * (by doubling where they are lists) when the new walls need more room, so
+ * a time loop allocates only while the walls grow; never shrinks. Pointers
+ * from ibm_body_markers_view are invalid afterwards. NSPD_ERR_NOMEM then
+ * leaves the Ibm fit only for ibm_destroy. */
 int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s);
 
 /* Soft start: in every fluid cell within `length` (m) of a wall, replaces

@@ -62,7 +62,8 @@ static void segment_buckets(const Ibm *ibm, const IbmBuckets *bk, int s, int *i0
 int ibm_buckets_build(Ibm *ibm) {
     IbmBuckets *bk = &ibm->bk;
     const int ns = ibm->nm;
-    double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+    double xlo = (double)INFINITY, xhi = -(double)INFINITY, ylo = (double)INFINITY,
+           yhi = -(double)INFINITY;
     for (int s = 0; s < ns; s++) {
         xlo = fmin(xlo, ibm->mx[s]), xhi = fmax(xhi, ibm->mx[s]);
         ylo = fmin(ylo, ibm->my[s]), yhi = fmax(yhi, ibm->my[s]);
@@ -129,9 +130,9 @@ int ibm_buckets_build(Ibm *ibm) {
     return NSPD_OK;
 }
 
-/* Nearest point of segment s to (x, y). */
-static inline void seg_nearest(const Ibm *ibm, int s, double x, double y, double *t, double *bx,
-                               double *by, double *d2) {
+/* Nearest point of segment s to (x, y) and its squared distance d2 (the
+ * point's own distance d is left for the caller: 0). */
+static inline IbmWallPoint seg_nearest(const Ibm *ibm, int s, double x, double y, double *d2) {
     const int e = ibm->seg_end[s];
     const double ax = ibm->mx[s], ay = ibm->my[s];
     const double ex = ibm->mx[e] - ax, ey = ibm->my[e] - ay;
@@ -145,33 +146,29 @@ static inline void seg_nearest(const Ibm *ibm, int s, double x, double y, double
     } else {
         px = ax + tt * ex, py = ay + tt * ey;
     }
-    *t = tt;
-    *bx = px;
-    *by = py;
     *d2 = (x - px) * (x - px) + (y - py) * (y - py);
+    return (IbmWallPoint){.seg = s, .t = tt, .bx = px, .by = py, .d = 0.0};
 }
 
-static inline void consider(const Ibm *ibm, int s, double x, double y, int *best, double *bd2,
-                            double *bt, double *bx, double *by) {
-    double t, px, py, d2;
-    seg_nearest(ibm, s, x, y, &t, &px, &py, &d2);
-    if (d2 < *bd2 || (d2 == *bd2 && s < *best)) {
-        *best = s;
+/* Keeps segment s's nearest point in *best if it is closer than the best so
+ * far (squared distance *bd2), or as close and on a lower segment. */
+static inline void consider(const Ibm *ibm, int s, double x, double y, IbmWallPoint *best,
+                            double *bd2) {
+    double d2;
+    const IbmWallPoint p = seg_nearest(ibm, s, x, y, &d2);
+    if (d2 < *bd2 || (d2 == *bd2 && s < best->seg)) {
+        *best = p;
         *bd2 = d2;
-        *bt = t;
-        *bx = px;
-        *by = py;
     }
 }
 
-void ibm_nearest(const Ibm *ibm, double x, double y, int *seg, double *t, double *bx, double *by,
-                 double *dist) {
+IbmWallPoint ibm_nearest(const Ibm *ibm, double x, double y) {
     const IbmBuckets *bk = &ibm->bk;
-    int best = -1;
-    double bd2 = INFINITY, bt = 0.0, px = x, py = y;
+    IbmWallPoint best = {.seg = -1, .t = 0.0, .bx = x, .by = y, .d = 0.0};
+    double bd2 = (double)INFINITY;
     const int ci = bucket_of(x, bk->x0, bk->inv_size), cj = bucket_of(y, bk->y0, bk->inv_size);
     if (ci < 0 || cj < 0 || ci >= bk->nbx || cj >= bk->nby) {
-        for (int s = 0; s < ibm->nm; s++) consider(ibm, s, x, y, &best, &bd2, &bt, &px, &py);
+        for (int s = 0; s < ibm->nm; s++) consider(ibm, s, x, y, &best, &bd2);
     } else {
         const int kmax = bk->nbx > bk->nby ? bk->nbx : bk->nby;
         for (int k = 0; k <= kmax; k++) {
@@ -182,21 +179,18 @@ void ibm_nearest(const Ibm *ibm, double x, double y, int *seg, double *t, double
                     if (!edge_row && i != i0 && i != i1) continue;
                     const int64_t q = (int64_t)j * bk->nbx + i;
                     for (int m = bk->first[q]; m < bk->first[q + 1]; m++)
-                        consider(ibm, bk->items[m], x, y, &best, &bd2, &bt, &px, &py);
+                        consider(ibm, bk->items[m], x, y, &best, &bd2);
                 }
             }
-            if (best >= 0 && k >= 1) {
+            if (best.seg >= 0 && k >= 1) {
                 const double r = (k - 1) * bk->size;
                 if (bd2 <= r * r) break;
             }
             if (i0 <= 0 && j0 <= 0 && i1 >= bk->nbx - 1 && j1 >= bk->nby - 1) break;
         }
     }
-    *seg = best;
-    *t = bt;
-    *bx = px;
-    *by = py;
-    *dist = sqrt(bd2);
+    best.d = sqrt(bd2);
+    return best;
 }
 
 int ibm_point_inside(const Ibm *ibm, double x, double y) {
@@ -271,22 +265,22 @@ static inline void seg_normal(const Ibm *ibm, int s, double *nx, double *ny) {
     *ny = -ex / l;
 }
 
-void ibm_normal(const Ibm *ibm, int seg, double t, double x, double y, double bx, double by,
-                double dist, int inside, double *nx, double *ny) {
-    if (t > 0.0 && t < 1.0) {
-        seg_normal(ibm, seg, nx, ny);
+void ibm_normal(const Ibm *ibm, const IbmWallPoint *w, double x, double y, int inside, double *nx,
+                double *ny) {
+    if (w->t > 0.0 && w->t < 1.0) {
+        seg_normal(ibm, w->seg, nx, ny);
         return;
     }
-    if (dist > 0.0) {
+    if (w->d > 0.0) {
         /* at a marker: the direction between the point and the marker */
-        const double s = inside ? 1.0 / dist : -1.0 / dist;
-        *nx = (bx - x) * s;
-        *ny = (by - y) * s;
+        const double s = inside ? 1.0 / w->d : -1.0 / w->d;
+        *nx = (w->bx - x) * s;
+        *ny = (w->by - y) * s;
         return;
     }
     /* on a marker: mean of the two segment normals there */
-    const int b = ibm->seg_body[seg];
-    const int marker = t == 0.0 ? seg : ibm->seg_end[seg];
+    const int b = ibm->seg_body[w->seg];
+    const int marker = w->t == 0.0 ? w->seg : ibm->seg_end[w->seg];
     const int prev = marker == ibm->first[b] ? ibm->first[b] + ibm->count[b] - 1 : marker - 1;
     double ax, ay, cx, cy;
     seg_normal(ibm, prev, &ax, &ay);
@@ -295,20 +289,6 @@ void ibm_normal(const Ibm *ibm, int seg, double t, double x, double y, double bx
     if (!(l > 1e-12)) mx = cx, my = cy, l = 1.0;
     *nx = mx / l;
     *ny = my / l;
-}
-
-int ibm_cell_of(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n; /* face[lo] <= x < face[hi] */
-    if (!(x >= a->face[0])) return 0;
-    if (!(x < a->face[a->n])) return a->n - 1;
-    while (hi - lo > 1) {
-        const int mid = (lo + hi) / 2;
-        if (a->face[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
 }
 
 int ibm_node_kind(const Ibm *ibm, int i, int j) {

@@ -46,27 +46,34 @@ typedef struct {
     int items_cap, row_items_cap;
 } IbmBuckets;
 
+/* Where a stencil entry stands (read by queries only, hence a struct per
+ * entry rather than more arrays). */
+typedef struct {
+    double bix, biy; /* ghost: its boundary point BI, m; probe: 0 */
+    double nx, ny;   /* ghost: outward unit normal at BI; probe: 0 */
+    double dist;     /* ghost: distance from the cell centre to BI; probe: from the wall, m */
+    double px, py;   /* the point P the weights interpolate to, m */
+} IbmStencilGeo;
+
 /* A set of point stencils, struct of arrays. Entry e has 4 node slots at
  * 4e .. 4e+3. */
 typedef struct {
     int n, cap;
-    int64_t *cell;   /* ghost: its cell; probe/fresh: the cell holding the point */
-    int64_t *node;   /* 4 per entry: fluid node's cell (rseg = IBM_NODE_FLUID) */
-    double *wd, *wn; /* 4 per entry: weights for Dirichlet / Neumann variables */
-    int32_t *rseg;   /* 4 per entry: replaced node: segment of its boundary point */
-    double *rt;      /* 4 per entry: parameter of that boundary point on its segment */
-    int32_t *seg;    /* ghost: own boundary point's segment; probe: -1 */
-    double *t;       /* its parameter */
-    double *ratio;   /* ghost: d / |P - BI| (1 for Eq. 39); probe: distance to the wall */
-    double *wu, *wv; /* ghost: its wall point's velocity at the last fill */
-    double *geo;     /* IBM_GEO per entry: bix, biy, nx, ny, d, px, py */
-    double *dep;     /* 4 per entry: bounding box (xlo, xhi, ylo, yhi) of what it read */
-    uint8_t *level;  /* IbmStencilLevel */
-    uint8_t *nrep;   /* replaced nodes (0, 1, 2: the paper's cases 1, 2, 3) */
-    uint8_t *body;   /* body of the own boundary point */
+    int64_t *cell;      /* ghost: its cell; probe/fresh: the cell holding the point */
+    int64_t *node;      /* 4 per entry: fluid node's cell (rseg = IBM_NODE_FLUID) */
+    double *wd, *wn;    /* 4 per entry: weights for Dirichlet / Neumann variables */
+    int32_t *rseg;      /* 4 per entry: replaced node: segment of its boundary point */
+    double *rt;         /* 4 per entry: parameter of that boundary point on its segment */
+    int32_t *seg;       /* ghost: own boundary point's segment; probe: -1 */
+    double *t;          /* its parameter */
+    double *ratio;      /* ghost: d / |P - BI| (1 for Eq. 39); probe: distance to the wall */
+    double *wu, *wv;    /* ghost: its wall point's velocity at the last fill */
+    IbmStencilGeo *geo; /* per entry */
+    double *dep;        /* 4 per entry: bounding box (xlo, xhi, ylo, yhi) of what it read */
+    uint8_t *level;     /* IbmStencilLevel */
+    uint8_t *nrep;      /* replaced nodes (0, 1, 2: the paper's cases 1, 2, 3) */
+    uint8_t *body;      /* body of the own boundary point */
 } IbmStencilSet;
-
-enum { IBM_GEO = 7 };
 
 struct Ibm {
     const Grid *grid;
@@ -94,6 +101,8 @@ struct Ibm {
     /* work lists */
     int64_t *list_a, *list_b;
     int list_cap_a, list_cap_b;
+    double *swept; /* ibm_update: boxes of moved walls, 4 doubles (xlo, xhi, ylo, yhi) each */
+    int swept_cap;
     uint8_t *moved_bucket;
     int moved_cap;
     IbmUpdateStats last;
@@ -101,22 +110,27 @@ struct Ibm {
 };
 
 /* ------------------------------------------------------------ geometry */
+
+/* A point on the walls, found as the nearest one to a query point. */
+typedef struct {
+    int seg;       /* its segment; -1 when there are no walls */
+    double t;      /* parameter on seg: 0 at marker seg, 1 at marker seg_end[seg] */
+    double bx, by; /* the point (the paper's BI), m */
+    double d;      /* its distance from the query point, m */
+} IbmWallPoint;
+
 int ibm_buckets_build(Ibm *ibm);
 void ibm_buckets_free(IbmBuckets *bk);
 /* Nearest point of all walls to (x, y); ties go to the lower segment. */
-void ibm_nearest(const Ibm *ibm, double x, double y, int *seg, double *t, double *bx, double *by,
-                 double *dist);
+IbmWallPoint ibm_nearest(const Ibm *ibm, double x, double y);
 /* 1 if (x, y) is inside a body or on a wall (winding number != 0). */
 int ibm_point_inside(const Ibm *ibm, double x, double y);
 /* 1 if the segment p-q meets a wall (touching counts). */
 int ibm_blocked(const Ibm *ibm, double px, double py, double qx, double qy);
-/* Outward unit normal at the boundary point (bx, by) = nearest point of
- * (x, y) on segment `seg` at parameter t; `inside`: (x, y) is in the body. */
-void ibm_normal(const Ibm *ibm, int seg, double t, double x, double y, double bx, double by,
-                double dist, int inside, double *nx, double *ny);
-/* The interior cell whose faces hold x (face[i] <= x < face[i+1]), clamped
- * to 0 .. n-1: mirror-symmetric, unlike a search on the centres. */
-int ibm_cell_of(const GridAxis *a, double x);
+/* Outward unit normal at the wall point w, the nearest one of (x, y);
+ * `inside`: (x, y) is in the body. */
+void ibm_normal(const Ibm *ibm, const IbmWallPoint *w, double x, double y, int inside, double *nx,
+                double *ny);
 /* Interior-or-first-box-layer cell kind with the box-layer rule of bc.c. */
 int ibm_node_kind(const Ibm *ibm, int i, int j);
 
@@ -150,7 +164,8 @@ static inline IbmPrim ibm_stencil_eval(const Ibm *ibm, const IbmStencilSet *S, i
                                        double *const w[4], double gm1, double R, int iso,
                                        double Tw) {
     double ui = 0.0, vi = 0.0, td = 0.0, pn = 0.0, tn = 0.0;
-    double pmin = INFINITY, pmax = -INFINITY, tmin = INFINITY, tmax = -INFINITY;
+    double pmin = (double)INFINITY, pmax = -(double)INFINITY, tmin = (double)INFINITY,
+           tmax = -(double)INFINITY;
     for (int m = 0; m < 4; m++) {
         const int rs = S->rseg[4 * e + m];
         if (rs == IBM_NODE_UNUSED) continue;

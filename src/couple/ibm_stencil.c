@@ -77,7 +77,7 @@ int ibm_stencils_reserve(IbmStencilSet *s, int n) {
     TRY(nspd_realloc(&s->ratio, o, c, sizeof(double)));
     TRY(nspd_realloc(&s->wu, o, c, sizeof(double)));
     TRY(nspd_realloc(&s->wv, o, c, sizeof(double)));
-    TRY(nspd_realloc(&s->geo, IBM_GEO * o, IBM_GEO * c, sizeof(double)));
+    TRY(nspd_realloc(&s->geo, o, c, sizeof(IbmStencilGeo)));
     TRY(nspd_realloc(&s->dep, 4 * o, 4 * c, sizeof(double)));
     TRY(nspd_realloc(&s->level, o, c, 1));
     TRY(nspd_realloc(&s->nrep, o, c, 1));
@@ -121,7 +121,7 @@ void ibm_stencils_copy_entry(IbmStencilSet *d, int e, const IbmStencilSet *s, in
     d->ratio[e] = s->ratio[f];
     d->wu[e] = s->wu[f];
     d->wv[e] = s->wv[f];
-    for (int q = 0; q < IBM_GEO; q++) d->geo[IBM_GEO * e + q] = s->geo[IBM_GEO * f + q];
+    d->geo[e] = s->geo[f];
     d->level[e] = s->level[f];
     d->nrep[e] = s->nrep[f];
     d->body[e] = s->body[f];
@@ -212,15 +212,7 @@ static inline void box_add(Box *b, double x, double y, double r) {
 /* Index i0 in [-1, n-1] with c[i0] <= x < c[i0+1], or -2 outside. */
 static int locate(const GridAxis *a, double x) {
     if (!(x >= a->center[-1]) || !(x < a->center[a->n])) return -2;
-    int lo = -1, hi = a->n; /* c[lo] <= x < c[hi] */
-    while (hi - lo > 1) {
-        const int mid = (lo + hi) / 2;
-        if (a->center[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
+    return grid_axis_bracket(a, x);
 }
 
 /* The candidate stencil at P (one attempt). */
@@ -230,6 +222,7 @@ typedef struct {
     double rt[4], wd[4], wn[4];
     int nrep;
     double wsum;
+    double mx, my; /* nearest_mean only: the weighted centre of its cells */
 } Attempt;
 
 /* Tries the bilinear stencil at (px, py); 0 on success. */
@@ -262,16 +255,14 @@ static int try_point(const Ibm *ibm, double px, double py, const uint8_t *exclud
             nf++;
             continue;
         }
-        int s;
-        double t, qx, qy, d;
-        ibm_nearest(ibm, x, y, &s, &t, &qx, &qy, &d);
-        box_add(dep, x, y, d);
+        const IbmWallPoint wp = ibm_nearest(ibm, x, y);
+        box_add(dep, x, y, wp.d);
         double vx, vy;
-        ibm_normal(ibm, s, t, x, y, qx, qy, d, kind != FLOW_CELL_FLUID, &vx, &vy);
-        a->rseg[m] = s;
-        a->rt[m] = t;
-        bx[m] = (qx - cx[i0]) / hx;
-        by[m] = (qy - cy[j0]) / hy;
+        ibm_normal(ibm, &wp, x, y, kind != FLOW_CELL_FLUID, &vx, &vy);
+        a->rseg[m] = wp.seg;
+        a->rt[m] = wp.t;
+        bx[m] = (wp.bx - cx[i0]) / hx;
+        by[m] = (wp.by - cy[j0]) / hy;
         nx[m] = vx;
         ny[m] = vy;
     }
@@ -292,10 +283,10 @@ static int try_point(const Ibm *ibm, double px, double py, const uint8_t *exclud
 
 /* Inverse-distance mean of up to 4 usable fluid cells of the 5 x 5 block
  * around cell (ic, jc), nearest to the reference point (qx, qy). Weights go
- * to both wd and wn; returns the number of cells used and their weighted
- * centre. */
+ * to both wd and wn, their weighted centre to a->mx, a->my; returns the
+ * number of cells used. */
 static int nearest_mean(const Ibm *ibm, int ic, int jc, double qx, double qy, int check_sight,
-                        const uint8_t *exclude, Attempt *a, Box *dep, double *mx, double *my) {
+                        const uint8_t *exclude, Attempt *a, Box *dep) {
     const Grid *g = ibm->grid;
     const double *cx = g->ax[0].center, *cy = g->ax[1].center;
     int64_t cand[4];
@@ -330,7 +321,7 @@ static int nearest_mean(const Ibm *ibm, int ic, int jc, double qx, double qy, in
         w[m] = 1.0 / (cd2[m] + 1e-300);
         wsum += w[m];
     }
-    *mx = *my = 0.0;
+    a->mx = a->my = 0.0;
     for (int m = 0; m < 4; m++) {
         a->rt[m] = 0.0;
         if (m < nc) {
@@ -340,8 +331,8 @@ static int nearest_mean(const Ibm *ibm, int ic, int jc, double qx, double qy, in
             /* centre of the mean, from the cell's (i, j) */
             const int64_t k = cand[m];
             const int j = (int)(k / g->stride) - GRID_NG, i = (int)(k % g->stride) - GRID_NG;
-            *mx += a->wd[m] * cx[i];
-            *my += a->wd[m] * cy[j];
+            a->mx += a->wd[m] * cx[i];
+            a->my += a->wd[m] * cy[j];
         } else {
             a->node[m] = -1;
             a->rseg[m] = IBM_NODE_UNUSED;
@@ -374,10 +365,10 @@ static void store(IbmStencilSet *set, int e, const Attempt *a, int level, const 
 void ibm_build_ghost(const Ibm *ibm, int i, int j, IbmStencilSet *set, int e) {
     const Grid *g = ibm->grid;
     const double xc = g->ax[0].center[i], yc = g->ax[1].center[j];
-    int s;
-    double t, bx, by, d, nx, ny;
-    ibm_nearest(ibm, xc, yc, &s, &t, &bx, &by, &d);
-    ibm_normal(ibm, s, t, xc, yc, bx, by, d, 1, &nx, &ny);
+    const IbmWallPoint w = ibm_nearest(ibm, xc, yc);
+    const double d = w.d, bx = w.bx, by = w.by;
+    double nx, ny;
+    ibm_normal(ibm, &w, xc, yc, 1, &nx, &ny);
     Box dep = {xc, xc, yc, yc};
     box_add(&dep, xc, yc, d);
     const double h = hypot(g->ax[0].width[i], g->ax[1].width[j]);
@@ -402,21 +393,20 @@ void ibm_build_ghost(const Ibm *ibm, int i, int j, IbmStencilSet *set, int e) {
         /* seen from just outside the wall point */
         const double qx = bx + 0.05 * h * nx, qy = by + 0.05 * h * ny;
         const int sight = !ibm_point_inside(ibm, qx, qy);
-        double mx, my;
-        nearest_mean(ibm, i, j, qx, qy, sight, NULL, &a, &dep, &mx, &my);
-        const double dm = (mx - bx) * nx + (my - by) * ny;
+        nearest_mean(ibm, i, j, qx, qy, sight, NULL, &a, &dep);
+        const double dm = (a.mx - bx) * nx + (a.my - by) * ny;
         ratio = dm > d ? d / dm : 1.0;
-        px = mx;
-        py = my;
+        px = a.mx;
+        py = a.my;
         level = IBM_LEVEL_NEAREST;
     }
     set->cell[e] = grid_index(g, i, j);
-    set->seg[e] = s;
-    set->t[e] = t;
+    set->seg[e] = w.seg;
+    set->t[e] = w.t;
     set->ratio[e] = ratio;
-    set->body[e] = (uint8_t)ibm->seg_body[s];
-    double *geo = set->geo + IBM_GEO * e;
-    geo[0] = bx, geo[1] = by, geo[2] = nx, geo[3] = ny, geo[4] = d, geo[5] = px, geo[6] = py;
+    set->body[e] = (uint8_t)ibm->seg_body[w.seg];
+    set->geo[e] = (IbmStencilGeo){
+        .bix = w.bx, .biy = w.by, .nx = nx, .ny = ny, .dist = w.d, .px = px, .py = py};
     store(set, e, &a, level, &dep);
 }
 
@@ -428,18 +418,15 @@ void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const ui
     int level = IBM_LEVEL_IMAGE;
     if (try_point(ibm, px, py, exclude, &a, &dep) < 0) {
         level = IBM_LEVEL_NEAREST;
-        const int ic = ibm_cell_of(&g->ax[0], px), jc = ibm_cell_of(&g->ax[1], py);
-        double mx, my;
-        nearest_mean(ibm, ic, jc, px, py, !ibm_point_inside(ibm, px, py), exclude, &a, &dep, &mx,
-                     &my);
+        const int ic = grid_axis_cell_of(&g->ax[0], px), jc = grid_axis_cell_of(&g->ax[1], py);
+        nearest_mean(ibm, ic, jc, px, py, !ibm_point_inside(ibm, px, py), exclude, &a, &dep);
     }
-    set->cell[e] = grid_index(g, ibm_cell_of(&g->ax[0], px), ibm_cell_of(&g->ax[1], py));
+    set->cell[e] =
+        grid_index(g, grid_axis_cell_of(&g->ax[0], px), grid_axis_cell_of(&g->ax[1], py));
     set->seg[e] = -1;
     set->t[e] = 0.0;
     set->ratio[e] = dist;
     set->body[e] = 0;
-    double *geo = set->geo + IBM_GEO * e;
-    geo[0] = geo[1] = geo[2] = geo[3] = 0.0;
-    geo[4] = dist, geo[5] = px, geo[6] = py;
+    set->geo[e] = (IbmStencilGeo){.dist = dist, .px = px, .py = py};
     store(set, e, &a, level, &dep);
 }

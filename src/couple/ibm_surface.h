@@ -75,7 +75,10 @@ typedef struct {
 } IbmSurface;
 
 /* Sizes *out for the Ibm's current segments (grows, never shrinks; call
- * again after an update that changes marker counts). */
+ * again after an update that changes marker counts). May reallocate: when
+ * the segments or bodies outnumber its capacity, every array of *out moves
+ * (pointers taken from it before are invalid), so call it outside parallel
+ * regions; otherwise it allocates nothing. */
 int ibm_surface_reserve(const Ibm *ibm, IbmSurface *out);
 void ibm_surface_free(IbmSurface *out);
 

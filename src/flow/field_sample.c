@@ -3,6 +3,8 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "core/search.h"
+#include "flow/grid.h"
 
 #include <string.h>
 
@@ -59,7 +61,6 @@ static void bracket(const double *c, int n, double x, int *lo, double *t) {
         *t = 0.0;
         return;
     }
-    int a = 0, b = n - 1; /* c[a] <= x < c[b] once inside */
     if (x <= c[0]) {
         *lo = 0;
         *t = 0.0;
@@ -70,13 +71,7 @@ static void bracket(const double *c, int n, double x, int *lo, double *t) {
         *t = 1.0;
         return;
     }
-    while (b - a > 1) {
-        int m = a + (b - a) / 2;
-        if (c[m] <= x)
-            a = m;
-        else
-            b = m;
-    }
+    const int a = search_bracket(c, 0, n - 1, x); /* c[a] <= x < c[a+1] */
     *lo = a;
     *t = (x - c[a]) / (c[a + 1] - c[a]);
 }

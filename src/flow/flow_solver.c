@@ -293,7 +293,7 @@ int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
         if ((st = alloc_counted(s, &s->half_w[a], (size_t)n, sizeof(double))) < 0) goto fail;
         for (int i = 0; i < n; i++) s->half_w[a][i] = 0.5 * g->ax[a].width[i - GRID_NG];
     }
-    if ((st = alloc_counted(s, &s->row_sums, (size_t)4 * g->ny, sizeof(double))) < 0) goto fail;
+    if ((st = alloc_counted(s, &s->row_sums, (size_t)4 * (size_t)g->ny, sizeof(double))) < 0) goto fail;
     for (int face = 0; face < 4; face++) {
         const GridAxis *along = &g->ax[face < 2 ? 1 : 0];
         if ((st = alloc_counted(s, &s->wall[face], (size_t)along->n, 1)) < 0) goto fail;

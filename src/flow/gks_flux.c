@@ -29,7 +29,7 @@ void gks_params_default(GksParams *p, double gamma, double R) {
 void gks_flux_face(const double wl[4], const double nl[4], const double tl[4], const double wr[4],
                    const double nr[4], const double tr[4], const double n0[4], const double t0[4],
                    double dt, const GksParams *p, double f[4]) {
-    gks_flux_kernel(wl, nl, tl, wr, nr, tr, n0, t0, dt, p, p->law, f);
+    gks_flux_kernel(wl, nl, tl, wr, nr, tr, n0, t0, dt, p, (int)p->law, f);
 }
 
 /* Row body shared by the two entry points; per_face selects the geometry

@@ -1,6 +1,8 @@
 /* Stretched Cartesian grid: segment layout and ghost geometry. */
 #include "flow/grid.h"
 
+#include "core/search.h"
+
 #include "core/mem.h"
 #include "core/status.h"
 
@@ -68,8 +70,8 @@ int grid_segments_spacing(int count, const GridSegment *segments, double *h, int
     if (count < 1) return NSPD_FAIL(NSPD_ERR_INPUT, "a grid axis needs at least one segment");
     int total = 0;
     for (int s = 0; s < count; s++) {
-        int n;
-        double h0, r;
+        int n = 0;
+        double h0 = 0.0, r = 1.0;
         TRY(segment_cells(&segments[s], &n, &h0, &r));
         /* Spacings from the progression, the last one adjusted by the
          * rounding residue so the segment ends exactly at its length. */
@@ -165,4 +167,12 @@ void grid_destroy(Grid *g) {
     grid_axis_destroy(&g->ax[0]);
     grid_axis_destroy(&g->ax[1]);
     memset(g, 0, sizeof *g);
+}
+
+int grid_axis_cell_of(const GridAxis *a, double x) {
+    return search_bracket(a->face, 0, a->n, x);
+}
+
+int grid_axis_bracket(const GridAxis *a, double x) {
+    return search_bracket(a->center, -1, a->n, x);
 }

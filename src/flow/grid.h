@@ -77,6 +77,16 @@ int grid_create_uniform(Grid *g, double x0, double x1, int nx, double y0, double
                         bool periodic_x, bool periodic_y);
 void grid_destroy(Grid *g);
 
+/* The searches over an axis (core/search.h), O(log n), thread-safe, never
+ * failing.
+ * The cell holding x, face[i] <= x < face[i+1], clamped to 0 .. n-1 (0 for a
+ * NaN x): search_bracket(a->face, 0, a->n, x). */
+int grid_axis_cell_of(const GridAxis *a, double x);
+/* The interior centres around x: i in -1 .. n-1 with center[i] <= x <
+ * center[i+1], where center[-1] counts as -infinity and center[n] as
+ * +infinity (-1 for a NaN x): search_bracket(a->center, -1, a->n, x). */
+int grid_axis_bracket(const GridAxis *a, double x);
+
 static inline int64_t grid_index(const Grid *g, int i, int j) {
     return (int64_t)(j + GRID_NG) * g->stride + (i + GRID_NG);
 }

@@ -3,11 +3,12 @@
  * (those of matplotlib's viridis and inferno at t = 0, 1/4, ..., 1) and is
  * interpolated linearly in Oklab between them, so lightness rises
  * monotonically and equal steps in t read as equal steps in colour. The
- * 256-entry tables are built once. */
+ * 256-entry tables are built once, at the first call, under pthread_once:
+ * renderers may then run on several threads at a time. */
 #include "io/colormap.h"
 
 #include <math.h>
-#include <stdbool.h>
+#include <pthread.h>
 
 enum { TABLE = 256, ANCHORS = 5 };
 
@@ -67,14 +68,17 @@ static void build(const uint8_t anchors[ANCHORS][3], uint8_t table[TABLE][3]) {
     }
 }
 
+/* Written once, by build_tables under tables_once; read-only afterwards. */
+static uint8_t viridis[TABLE][3], inferno[TABLE][3];
+static pthread_once_t tables_once = PTHREAD_ONCE_INIT;
+
+static void build_tables(void) {
+    build(VIRIDIS_ANCHORS, viridis);
+    build(INFERNO_ANCHORS, inferno);
+}
+
 void colormap_rgb(ColormapKind kind, double t, uint8_t rgb[3]) {
-    static uint8_t viridis[TABLE][3], inferno[TABLE][3];
-    static bool ready;
-    if (!ready) { /* first call happens before any parallel region (writers are serial) */
-        build(VIRIDIS_ANCHORS, viridis);
-        build(INFERNO_ANCHORS, inferno);
-        ready = true;
-    }
+    pthread_once(&tables_once, build_tables);
     if (t != t) {
         rgb[0] = rgb[1] = rgb[2] = 128;
         return;

@@ -2,13 +2,15 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "core/search.h" /* the cell of a pixel */
 #include "io/png.h"
 
 #include <math.h>
 
 int render_points_png(const char *path, int64_t n, const double *const pos[2], const double *values,
                       double spacing, const RenderOptions *opt) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    double lo[2] = {(double)INFINITY, (double)INFINITY},
+           hi[2] = {-(double)INFINITY, -(double)INFINITY};
     for (int64_t i = 0; i < n; i++)
         for (int d = 0; d < 2; d++) {
             lo[d] = fmin(lo[d], pos[d][i]);
@@ -53,7 +55,7 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
                 float t = best[(int64_t)y * w + x];
                 if (t < 0) continue;
                 uint8_t rgb[3];
-                colormap_rgb(opt->colormap, t, rgb);
+                colormap_rgb(opt->colormap, (double)t, rgb);
                 image_fill_rect(&img, margin + x, margin + y, margin + x + 1, margin + y + 1, rgb);
             }
         image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,
@@ -63,19 +65,6 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
     }
     nspd_free(&best);
     return status;
-}
-
-/* Index of the cell of a sorted face array holding coordinate x. */
-static int locate(const double *faces, int n, double x) {
-    int lo = 0, hi = n; /* faces[lo] <= x < faces[hi] */
-    while (hi - lo > 1) {
-        int mid = (lo + hi) / 2;
-        if (faces[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
 }
 
 /* Draws overlay points onto the plot area of img (origin at the margin). */
@@ -125,10 +114,10 @@ int render_grid_png(const char *path, int nx, int ny, const double *xf, const do
         image_destroy(&img);
         return status;
     }
-    for (int x = 0; x < w; x++) column[x] = locate(xf, nx, x0 + (x + 0.5) / scale);
+    for (int x = 0; x < w; x++) column[x] = search_bracket(xf, 0, nx, x0 + (x + 0.5) / scale);
     double range = opt->vmax > opt->vmin ? opt->vmax - opt->vmin : 1.0;
     for (int y = 0; y < h; y++) {
-        int j = locate(yf, ny, y1 - (y + 0.5) / scale);
+        int j = search_bracket(yf, 0, ny, y1 - (y + 0.5) / scale);
         for (int x = 0; x < w; x++) {
             int64_t cell = (int64_t)j * nx + column[x];
             uint8_t rgb[3];

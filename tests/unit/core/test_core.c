@@ -11,6 +11,7 @@
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 static int inner(int fail) {
@@ -33,6 +34,63 @@ static void test_try_propagates(void **state) {
     assert_non_null(strstr(nspd_error_origin(), "test_core.c"));
     assert_int_equal(outer(0, &reached), NSPD_OK);
     assert_int_equal(reached, 1);
+}
+
+/* The traceback of a nested failure: the line of each TRY, innermost first. */
+static int line_middle, line_top;
+
+static int middle(int fail) {
+    line_middle = __LINE__ + 1;
+    TRY(inner(fail));
+    return NSPD_OK;
+}
+
+static int top(int fail) {
+    line_top = __LINE__ + 1;
+    TRY(middle(fail));
+    return NSPD_OK;
+}
+
+static int recurse(int depth) {
+    if (depth == 0) return NSPD_FAIL(NSPD_ERR_INTERNAL, "bottom");
+    TRY(recurse(depth - 1));
+    return NSPD_OK;
+}
+
+static void test_try_records_traceback(void **state) {
+    (void)state;
+    assert_int_equal(top(1), NSPD_ERR_IO);
+    char expected[128];
+    snprintf(expected, sizeof expected, "middle:%d <- top:%d", line_middle, line_top);
+    assert_string_equal(nspd_error_traceback(), expected);
+    assert_int_equal(nspd_error_trace_depth(), 2);
+    assert_string_equal(nspd_error_message(), "disk full"); /* the user's message is untouched */
+    assert_non_null(strstr(nspd_error_origin(), "test_core.c"));
+
+    /* a new failure starts a new chain */
+    assert_int_equal(inner(1), NSPD_ERR_IO);
+    assert_string_equal(nspd_error_traceback(), "");
+    assert_int_equal(middle(1), NSPD_ERR_IO);
+    snprintf(expected, sizeof expected, "middle:%d", line_middle);
+    assert_string_equal(nspd_error_traceback(), expected);
+
+    /* success leaves the record alone; clear empties it */
+    assert_int_equal(top(0), NSPD_OK);
+    assert_string_equal(nspd_error_traceback(), expected);
+    nspd_error_clear();
+    assert_string_equal(nspd_error_traceback(), "");
+    assert_int_equal(nspd_error_trace_depth(), 0);
+
+    /* bounded: the innermost NSPD_TRACE_FRAMES frames are kept, the rest counted */
+    assert_int_equal(recurse(NSPD_TRACE_FRAMES + 4), NSPD_ERR_INTERNAL);
+    assert_int_equal(nspd_error_trace_depth(), NSPD_TRACE_FRAMES + 4);
+    const char *text = nspd_error_traceback();
+    assert_non_null(strstr(text, "recurse:"));
+    assert_non_null(strstr(text, " <- (4 more)"));
+    int frames = 1;
+    for (const char *c = strstr(text, " <- "); c; c = strstr(c + 1, " <- ")) frames++;
+    assert_int_equal(frames, NSPD_TRACE_FRAMES + 1); /* + the "(4 more)" entry */
+    assert_string_equal(nspd_error_message(), "bottom");
 }
 
 static void test_alloc_aligned_zeroed_counted(void **state) {
@@ -140,6 +198,7 @@ static void test_duration_format(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_try_propagates),
+        cmocka_unit_test(test_try_records_traceback),
         cmocka_unit_test(test_alloc_aligned_zeroed_counted),
         cmocka_unit_test(test_alloc_failure_injection_and_overflow),
         cmocka_unit_test(test_reduce_same_at_any_thread_count),

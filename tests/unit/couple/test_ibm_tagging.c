@@ -77,7 +77,7 @@ static int brute_inside(const IbmPolyline *b, int nb, double x, double y) {
 }
 
 static void brute_nearest(const IbmPolyline *b, int nb, double x, double y, double *d) {
-    *d = INFINITY;
+    *d = (double)INFINITY;
     for (int q = 0; q < nb; q++)
         for (int k = 0; k < b[q].n; k++) {
             const int e = (k + 1) % b[q].n;
@@ -144,12 +144,11 @@ static void test_tags_and_nearest(void **state) {
         const double x = (seed >> 8) / 16777216.0 * 1.4 - 0.2;
         seed = seed * 1664525u + 1013904223u;
         const double y = (seed >> 8) / 16777216.0 * 1.4 - 0.2;
-        int sg;
-        double t, bx, by, d, ref;
-        ibm_nearest(ibm, x, y, &sg, &t, &bx, &by, &d);
+        double ref;
+        const IbmWallPoint w = ibm_nearest(ibm, x, y);
         brute_nearest(b, 3, x, y, &ref);
-        assert_close(d, ref, 1e-14);
-        assert_close(hypot(x - bx, y - by), d, 1e-14);
+        assert_close(w.d, ref, 1e-14);
+        assert_close(hypot(x - w.bx, y - w.by), w.d, 1e-14);
     }
     ibm_destroy(&ibm);
     for (int q = 0; q < 3; q++) ibm_polyline_free(&b[q]);

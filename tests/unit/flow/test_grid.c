@@ -2,6 +2,7 @@
 #include "test_support.h"
 
 #include "core/status.h"
+#include "core/search.h"
 #include "flow/grid.h"
 
 #include <math.h>
@@ -66,11 +67,58 @@ static void test_bad_segments(void **state) {
     assert_int_equal(grid_axis_create(&a, 0.0, 1, &big, false), NSPD_ERR_INPUT);
 }
 
+/* The axis searches against a linear scan, on a stretched axis, at faces,
+ * centres, between them, outside the axis and for NaN. */
+static int scan_last_le(const double *v, int lo, int hi, double x) {
+    int found = lo;
+    for (int i = lo + 1; i < hi; i++)
+        if (v[i] <= x) found = i;
+    return found;
+}
+
+static void test_axis_searches(void **state) {
+    (void)state;
+    const GridSegment seg[2] = {
+        {.length = 1.0, .h_start = 0.3, .h_end = 0.05},
+        {.length = 0.7, .h_start = 0.1, .cells = 7},
+    };
+    GridAxis a;
+    assert_ok(grid_axis_create(&a, -0.4, 2, seg, false));
+    const int n = a.n;
+    for (int i = 0; i < n; i++) {
+        assert_int_equal(grid_axis_cell_of(&a, a.face[i]), i);
+        assert_int_equal(grid_axis_cell_of(&a, a.center[i]), i);
+        assert_int_equal(grid_axis_cell_of(&a, nextafter(a.face[i + 1], -(double)INFINITY)), i);
+        assert_int_equal(grid_axis_bracket(&a, a.center[i]), i);
+        assert_int_equal(grid_axis_bracket(&a, nextafter(a.center[i], -(double)INFINITY)), i - 1);
+        assert_int_equal(grid_axis_bracket(&a, a.face[i + 1]), i);
+    }
+    /* clamped outside; NaN gives the low end */
+    assert_int_equal(grid_axis_cell_of(&a, a.lo - 1.0), 0);
+    assert_int_equal(grid_axis_cell_of(&a, a.face[n]), n - 1);
+    assert_int_equal(grid_axis_cell_of(&a, (double)INFINITY), n - 1);
+    assert_int_equal(grid_axis_cell_of(&a, (double)NAN), 0);
+    assert_int_equal(grid_axis_bracket(&a, -(double)INFINITY), -1);
+    assert_int_equal(grid_axis_bracket(&a, a.hi + 1.0), n - 1);
+    assert_int_equal(grid_axis_bracket(&a, (double)NAN), -1);
+    /* the bare-array search against a linear scan, ghost range included */
+    for (int k = 0; k <= 400; k++) {
+        const double x =
+            a.face[-GRID_NG] - 0.1 + k * (a.face[n + GRID_NG] - a.face[-GRID_NG] + 0.2) / 400;
+        assert_int_equal(search_bracket(a.face, -GRID_NG, n + GRID_NG, x),
+                         scan_last_le(a.face, -GRID_NG, n + GRID_NG, x));
+        assert_int_equal(grid_axis_cell_of(&a, x), scan_last_le(a.face, 0, n, x));
+        assert_int_equal(grid_axis_bracket(&a, x), scan_last_le(a.center, -1, n, x));
+    }
+    grid_axis_destroy(&a);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_uniform_and_stretched_segments),
         cmocka_unit_test(test_periodic_ghosts_and_index),
         cmocka_unit_test(test_bad_segments),
+        cmocka_unit_test(test_axis_searches),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -58,7 +58,7 @@ static int make_ring(FlowSolver *s, int32_t *slot) {
             if (ring && slot) slot[k] = n;
             n += ring;
             if (!ring)
-                for (int v = 0; v < 4; v++) f.w[v][k] = NAN;
+                for (int v = 0; v < 4; v++) f.w[v][k] = (double)NAN;
         }
     return n;
 }

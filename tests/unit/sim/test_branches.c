@@ -15,7 +15,7 @@
 static void y_shaped(const PdBody *b, double up, double down, double *damage) {
     const double bx = 0.030, by = 0.020, dx = b->spacing;
     for (int64_t i = 0; i < b->n; i++) {
-        double x = b->x[0][i], y = b->x[1][i], d = INFINITY;
+        double x = b->x[0][i], y = b->x[1][i], d = (double)INFINITY;
         if (x >= 0.005 && x <= bx) d = fabs(y - by);
         for (int k = 0; k < 2; k++) {
             double a = (k ? -down : up) * M_PI / 180.0, ux = cos(a), uy = sin(a);

@@ -50,7 +50,7 @@ static void test_crack_stays_closed(void **state) {
     const PdBody *b = fixture_body(&sim);
     /* the mouth's opening: the gap between the two points nearest to the
      * left face just above and below the crack */
-    double upper = INFINITY, lower = -INFINITY;
+    double upper = (double)INFINITY, lower = -(double)INFINITY;
     for (int64_t i = 0; i < b->n; i++) {
         if (b->x[0][i] > 1.02) continue;
         double y = b->x[1][i] + b->u[1][i];

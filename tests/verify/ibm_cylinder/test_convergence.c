@@ -20,7 +20,7 @@
 #include "test_support.h"
 
 #include "../ibm_common/ibm_cases.h"
-#include "couple/ibm_internal.h" /* ibm_cell_of */
+#include "flow/grid.h"
 
 typedef struct {
     int n;
@@ -51,8 +51,8 @@ static void run(int n, double t_end, Row *r) {
     /* momentum balance over [0.4, 2.9] x [4.9, 7.1] (bow shock and near wake
      * inside), with its unsteady term over the last 0.5 */
     const Grid *g = flow_solver_grid(s);
-    const int box[4] = {ibm_cell_of(&g->ax[0], 0.4), ibm_cell_of(&g->ax[0], 2.9),
-                        ibm_cell_of(&g->ax[1], 4.9), ibm_cell_of(&g->ax[1], 7.1)};
+    const int box[4] = {grid_axis_cell_of(&g->ax[0], 0.4), grid_axis_cell_of(&g->ax[0], 2.9),
+                        grid_axis_cell_of(&g->ax[1], 4.9), grid_axis_cell_of(&g->ax[1], 7.1)};
     double m0, m1;
     ibm_case_box_force(s, box, inf.p, &m0);
     const double ta = flow_solver_time(s);
