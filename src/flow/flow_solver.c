@@ -23,6 +23,7 @@
 #include "core/status.h"
 #include "core/timer.h"
 #include "flow/gks_flux.h"
+#include "flow/gks_update_kernel.h"
 #include "flow/recon.h"
 
 #include <math.h>
@@ -455,39 +456,14 @@ static int64_t row_slopes(const FlowSolver *s, int j, double *const sx[4], doubl
     return nb;
 }
 
-/* The flux f[0..3][i] through a face with normal `dir` (0: x, 1: y) between
- * cells kl (low side) and kr, if one is FLUID and the other an immersed-wall
- * GHOST: mass from the wall motion only (flow_solver_set_ghost_walls). */
-static void ghost_face(const FlowSolver *s, int64_t kl, int64_t kr, int dir, double dt,
-                       double *const f[4], int i) {
-    const uint8_t al = s->kind[kl], ar = s->kind[kr];
-    int64_t kf, kg;
-    if (al == FLOW_CELL_FLUID && ar == FLOW_CELL_GHOST)
-        kf = kl, kg = kr;
-    else if (al == FLOW_CELL_GHOST && ar == FLOW_CELL_FLUID)
-        kf = kr, kg = kl;
-    else
-        return;
-    const int32_t e = s->wall_slot[kg];
-    if (e < 0) return;
-    double u = 0.0, v = 0.0, h = 0.0; /* face means */
-    const int64_t ks[2] = {kf, kg};
-    for (int c = 0; c < 2; c++) {
-        const int64_t k = ks[c];
-        const double w[4] = {s->w[0][k], s->w[1][k], s->w[2][k], s->w[3][k]};
-        FlowPrim q;
-        flow_cons_to_prim(w, s->gas.gamma, &q);
-        u += 0.5 * q.u;
-        v += 0.5 * q.v;
-        h += 0.5 * (w[3] + q.p) / q.rho;
-    }
-    const double un = dir == 0 ? s->wall_u[e] : s->wall_v[e];
-    const double mass = dt * s->w[0][kf] * un;
-    const double removed = f[0][i] - mass;
-    f[0][i] = mass;
-    f[1][i] -= removed * u;
-    f[2][i] -= removed * v;
-    f[3][i] -= removed * h;
+/* The solver's arrays as the ghost-face kernel reads them. */
+static GksGhostFaces ghost_faces(const FlowSolver *s) {
+    return (GksGhostFaces){.kind = s->kind,
+                           .wall_slot = s->wall_slot,
+                           .wall_u = s->wall_u,
+                           .wall_v = s->wall_v,
+                           .w = {s->w[0], s->w[1], s->w[2], s->w[3]},
+                           .gamma = s->gas.gamma};
 }
 
 /* y-face fluxes between rows j and j+1 (cells 0 .. nx-1) into g[v]. */
@@ -519,8 +495,9 @@ static void row_yflux(const FlowSolver *s, int j, double *const sxl[4], double *
             if (wall[i] & WALL_ENERGY) gout[3][i] = 0.0;
         }
     if (s->wall_slot) {
+        const GksGhostFaces gf = ghost_faces(s);
         const int64_t bl = grid_index(g, 0, j), br = grid_index(g, 0, j + 1);
-        for (int i = 0; i < g->nx; i++) ghost_face(s, bl + i, br + i, 1, dt, gout, i);
+        for (int i = 0; i < g->nx; i++) gks_ghost_face(&gf, bl + i, br + i, 1, dt, gout, i);
     }
 }
 
@@ -548,12 +525,14 @@ static void row_xflux(const FlowSolver *s, int j, double *const sx[4], double *c
     if (whi & WALL_MASS) fout[0][g->nx] = 0.0;
     if (whi & WALL_ENERGY) fout[3][g->nx] = 0.0;
     if (s->wall_slot) {
+        const GksGhostFaces gf = ghost_faces(s);
         const int64_t b = grid_index(g, 0, j);
-        for (int i = 0; i <= g->nx; i++) ghost_face(s, b + i - 1, b + i, 0, dt, fout, i);
+        for (int i = 0; i <= g->nx; i++) gks_ghost_face(&gf, b + i - 1, b + i, 0, dt, fout, i);
     }
 }
 
-/* Wn of row j; returns non-zero if a fluid cell is not physical. */
+/* Wn of row j (gks_update_cell per cell); returns non-zero if a fluid cell
+ * is not physical. */
 static int row_update(FlowSolver *s, int j, double *const fx[4], double *const gb[4],
                       double *const gt[4]) {
     const Grid *g = &s->grid;
@@ -574,18 +553,16 @@ static int row_update(FlowSolver *s, int j, double *const fx[4], double *const g
     int bad = 0;
 #pragma GCC ivdep
     for (int i = 0; i < g->nx; i++) {
-        const int fluid = kd[i] == FLOW_CELL_FLUID;
-        const double r = o0[i] - (f0[i + 1] - f0[i]) * idx[i] - (t0[i] - b0[i]) * idy;
-        const double mx = o1[i] - (f1[i + 1] - f1[i]) * idx[i] - (t1[i] - b1[i]) * idy;
-        const double my = o2[i] - (f2[i + 1] - f2[i]) * idx[i] - (t2[i] - b2[i]) * idy;
-        const double e = o3[i] - (f3[i + 1] - f3[i]) * idx[i] - (t3[i] - b3[i]) * idy;
-        n0[i] = fluid ? r : o0[i];
-        n1[i] = fluid ? mx : o1[i];
-        n2[i] = fluid ? my : o2[i];
-        n3[i] = fluid ? e : o3[i];
-        /* 2 rho (rho E) - |rho U|^2 = 2 rho^2 e_int > 0, and NaN fails it */
-        const double pp = 2.0 * r * e - mx * mx - my * my;
-        bad |= fluid & !((r > 0.0) & (pp > 0.0));
+        const double w[4] = {o0[i], o1[i], o2[i], o3[i]};
+        const double fx2[2][4] = {{f0[i], f1[i], f2[i], f3[i]},
+                                  {f0[i + 1], f1[i + 1], f2[i + 1], f3[i + 1]}};
+        const double gy2[2][4] = {{b0[i], b1[i], b2[i], b3[i]}, {t0[i], t1[i], t2[i], t3[i]}};
+        double wn[4];
+        bad |= gks_update_cell(kd[i], w, fx2, gy2, idx[i], idy, wn);
+        n0[i] = wn[0];
+        n1[i] = wn[1];
+        n2[i] = wn[2];
+        n3[i] = wn[3];
     }
     return bad;
 }
