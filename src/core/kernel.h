@@ -22,9 +22,15 @@
 /* C++ has no `restrict`; nvcc spells it __restrict__ (same meaning: the
  * pointer is the only way to the memory it points at in this scope). */
 #define NSPD_RESTRICT __restrict__
-/* nvcc warns (#1675) on `#pragma GCC unroll`; its own spelling is
- * `#pragma unroll n`, accepted for host and device code. */
+/* nvcc's front end warns (#1675) on `#pragma GCC unroll` in both of its
+ * passes, and GCC, compiling the host pass, warns on nvcc's `#pragma unroll`.
+ * So: nvcc's spelling in the device pass, nothing in the host pass (the CPU
+ * code that counts is the C build, where the GCC spelling applies). */
+#ifdef __CUDA_ARCH__
 #define NSPD_UNROLL(n) NSPD_PRAGMA(unroll n)
+#else
+#define NSPD_UNROLL(n)
+#endif
 #else
 /* always_inline: the kernels are called inside row loops that must
  * vectorise across cells, faces or bonds, and a call left out of line keeps
@@ -32,8 +38,8 @@
  * compiler's size heuristics (the GKS flux kernel is large). */
 #define NSPD_KERNEL    static inline __attribute__((always_inline))
 #define NSPD_RESTRICT  restrict
-/* Full unrolling of short fixed-count loops inside a kernel: the vectoriser
- * needs them flat (a loop inside a vectorised loop body stays scalar). */
+/* Full unrolling of short fixed-count loops inside a kernel, so that the
+ * loop vectorised around the kernel sees straight-line code. */
 #define NSPD_UNROLL(n) NSPD_PRAGMA(GCC unroll n)
 #endif
 
