@@ -97,8 +97,8 @@ static int alloc_counted(FlowSolver *s, void *out, size_t count, size_t size) {
     return NSPD_OK;
 }
 
-int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
-    *out = NULL;
+/* The configuration's numbers, checked before anything is allocated. */
+static int check_config(const FlowConfig *cfg) {
     if (!(cfg->gamma > 1.0 && cfg->gamma < 3.0))
         return NSPD_FAIL(NSPD_ERR_INPUT, "flow: gamma must be in (1, 3) (got %g)", cfg->gamma);
     if (!(cfg->gas_constant > 0.0))
@@ -117,48 +117,46 @@ int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
         if (cfg->segment_count[a] < 1 || cfg->segment_count[a] > FLOW_MAX_SEGMENTS)
             return NSPD_FAIL(NSPD_ERR_INPUT, "flow: the %s axis needs 1..%d grid segments",
                              a == 0 ? "x" : "y", FLOW_MAX_SEGMENTS);
+    return NSPD_OK;
+}
 
-    FlowSolver *s = NULL;
-    TRY(nspd_alloc(&s, 1, sizeof *s));
-    s->cfg = *cfg;
-    s->cfg.regions = NULL; /* borrowed only during create */
-    s->cfg.region_count = 0;
-    int st = NSPD_OK;
-    const bool per_x = cfg->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC;
-    const bool per_y = cfg->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC;
-    st = grid_create(&s->grid, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
-                     cfg->segment_count[1], cfg->segments[1], per_y);
-    if (st < 0) {
-        nspd_free(&s);
-        return st;
-    }
+/* The kernel's gas parameters from the configuration. */
+static void set_gas(GksParams *gas, const FlowConfig *cfg) {
+    gks_params_default(gas, cfg->gamma, cfg->gas_constant);
+    gas->law = cfg->viscosity;
+    gas->mu_ref = cfg->mu_ref;
+    gas->T_ref = cfg->T_ref > 0.0 ? cfg->T_ref : 1.0;
+    gas->omega = cfg->omega;
+    gas->sutherland_S = cfg->sutherland_S;
+    gas->prandtl = cfg->viscosity == VISCOSITY_NONE ? 1.0 : cfg->prandtl;
+    gas->c_jump = cfg->tau_jump_c;
+    gas->eps_dt = cfg->tau_eps;
+}
+
+/* State, kinds, half widths and row sums. */
+static int alloc_state(FlowSolver *s) {
     const Grid *g = &s->grid;
-    if ((st = bc_validate(g, cfg->bc)) < 0) goto fail;
-
-    gks_params_default(&s->gas, cfg->gamma, cfg->gas_constant);
-    s->gas.law = cfg->viscosity;
-    s->gas.mu_ref = cfg->mu_ref;
-    s->gas.T_ref = cfg->T_ref > 0.0 ? cfg->T_ref : 1.0;
-    s->gas.omega = cfg->omega;
-    s->gas.sutherland_S = cfg->sutherland_S;
-    s->gas.prandtl = cfg->viscosity == VISCOSITY_NONE ? 1.0 : cfg->prandtl;
-    s->gas.c_jump = cfg->tau_jump_c;
-    s->gas.eps_dt = cfg->tau_eps;
-
     for (int v = 0; v < 4; v++) {
-        if ((st = alloc_counted(s, &s->w[v], (size_t)g->size, sizeof(double))) < 0) goto fail;
-        if ((st = alloc_counted(s, &s->wn[v], (size_t)g->size, sizeof(double))) < 0) goto fail;
+        TRY(alloc_counted(s, &s->w[v], (size_t)g->size, sizeof(double)));
+        TRY(alloc_counted(s, &s->wn[v], (size_t)g->size, sizeof(double)));
     }
-    if ((st = alloc_counted(s, &s->kind, (size_t)g->size, 1)) < 0) goto fail;
+    TRY(alloc_counted(s, &s->kind, (size_t)g->size, 1));
     for (int a = 0; a < 2; a++) {
         const int n = g->ax[a].n + 2 * GRID_NG;
-        if ((st = alloc_counted(s, &s->half_w[a], (size_t)n, sizeof(double))) < 0) goto fail;
+        TRY(alloc_counted(s, &s->half_w[a], (size_t)n, sizeof(double)));
         for (int i = 0; i < n; i++) s->half_w[a][i] = 0.5 * g->ax[a].width[i - GRID_NG];
     }
-    if ((st = alloc_counted(s, &s->row_sums, (size_t)4 * g->ny, sizeof(double))) < 0) goto fail;
+    TRY(alloc_counted(s, &s->row_sums, (size_t)4 * g->ny, sizeof(double)));
+    return NSPD_OK;
+}
+
+/* The WALL_* flags of every cell along each box face, from the segment of
+ * the face's boundary condition that covers it. */
+static int build_walls(FlowSolver *s, const FlowConfig *cfg) {
+    const Grid *g = &s->grid;
     for (int face = 0; face < 4; face++) {
         const GridAxis *along = &g->ax[face < 2 ? 1 : 0];
-        if ((st = alloc_counted(s, &s->wall[face], (size_t)along->n, 1)) < 0) goto fail;
+        TRY(alloc_counted(s, &s->wall[face], (size_t)along->n, 1));
         for (int t = 0; t < along->n; t++) {
             const FlowFaceBc *b = &cfg->bc[face];
             int k = 0;
@@ -172,14 +170,18 @@ int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
             s->wall[face][t] = f;
         }
     }
+    return NSPD_OK;
+}
 
+/* The step's work space: one block of rows per thread (FlowWork). */
+static int alloc_work(FlowSolver *s) {
     s->nthreads = omp_get_max_threads();
-    if ((st = nspd_alloc(&s->work, (size_t)s->nthreads, sizeof(FlowWork))) < 0) goto fail;
-    const size_t row = (size_t)g->stride;
+    TRY(nspd_alloc(&s->work, (size_t)s->nthreads, sizeof(FlowWork)));
+    const size_t row = (size_t)s->grid.stride;
     for (int t = 0; t < s->nthreads; t++) {
         FlowWork *wk = &s->work[t];
         /* 16 slope rows + 4 x-flux rows + 8 y-flux rows */
-        if ((st = alloc_counted(s, &wk->block, 28 * row, sizeof(double))) < 0) goto fail;
+        TRY(alloc_counted(s, &wk->block, 28 * row, sizeof(double)));
         double *p = wk->block;
         for (int r = 0; r < 2; r++)
             for (int v = 0; v < 4; v++) {
@@ -189,12 +191,42 @@ int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
             }
         for (int v = 0; v < 4; v++) wk->fx[v] = p, p += row;
     }
+    return NSPD_OK;
+}
+
+/* Everything after the grid; on failure the caller destroys the solver. */
+static int build(FlowSolver *s, const FlowConfig *cfg) {
+    TRY(bc_validate(&s->grid, cfg->bc));
+    set_gas(&s->gas, cfg);
+    TRY(alloc_state(s));
+    TRY(build_walls(s, cfg));
+    TRY(alloc_work(s));
     flow_solver_apply_initial(s, cfg);
+    return NSPD_OK;
+}
+
+int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
+    *out = NULL;
+    TRY(check_config(cfg));
+    FlowSolver *s = NULL;
+    TRY(nspd_alloc(&s, 1, sizeof *s));
+    s->cfg = *cfg;
+    s->cfg.regions = NULL; /* borrowed only during create */
+    s->cfg.region_count = 0;
+    const bool per_x = cfg->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC;
+    const bool per_y = cfg->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC;
+    int st = grid_create(&s->grid, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
+                         cfg->segment_count[1], cfg->segments[1], per_y);
+    if (st < 0) {
+        nspd_free(&s);
+        return st;
+    }
+    if ((st = build(s, cfg)) < 0) {
+        flow_solver_destroy(&s);
+        return st;
+    }
     *out = s;
     return NSPD_OK;
-fail:
-    flow_solver_destroy(&s);
-    return st;
 }
 
 void flow_solver_destroy(FlowSolver **sp) {
