@@ -1,5 +1,5 @@
 /* The cell update of the GKS step and the flux correction of a face between
- * a fluid cell and an immersed-wall ghost cell (kernels; flow_solver.c has
+ * a fluid cell and an immersed-wall ghost cell (kernels; flow_step.c has
  * the row loops).
  *
  * Update (paper 000 Eq. 20 on a Cartesian cell of widths dx, dy):
