@@ -36,7 +36,9 @@
 /* The boundary regions of cfg.boundaries as the integrator reads them: plain
  * arrays built at creation (no shapes, names or pointers to follow, so a
  * device copy is a copy of five arrays). Entry 3 r + d is component d of
- * region r; point i belongs to region region[i] (or none if -1). */
+ * region r; point i belongs to region region[i] (or none if -1). Changing
+ * cfg.boundaries after creation does not reach the integrator: change the
+ * table. */
 typedef struct {
     int count;                  /* regions */
     uint8_t *velocity_given;    /* 1: velocity component prescribed */
