@@ -54,3 +54,15 @@ foreach(script ${cli_tests})
     set_tests_properties(cli.${topic} PROPERTIES LABELS "cli;${extra}" SKIP_RETURN_CODE 77
         ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
 endforeach()
+
+# The kernels (src/**/*_kernel.h) compiled as CUDA, compile only: no GPU is
+# needed, only nvcc; without it the test reports itself skipped.
+find_program(NSPD_NVCC nvcc)
+if(NOT NSPD_NVCC)
+    set(NSPD_NVCC "")
+endif()
+add_test(NAME unit.core.cuda_kernels
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/unit/core/cuda_kernels.sh "${NSPD_NVCC}"
+        ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR}/cuda_kernels
+    WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+set_tests_properties(unit.core.cuda_kernels PROPERTIES LABELS "unit;cuda" SKIP_RETURN_CODE 77)

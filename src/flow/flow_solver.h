@@ -30,20 +30,12 @@
 
 #include "core/shape.h"
 #include "flow/bc.h"
+#include "flow/cell_kind.h"
 #include "flow/gks_kernel.h"
 #include "flow/grid.h"
+#include "flow/recon_kernel.h"
 
 #include <stdint.h>
-
-enum { FLOW_CELL_FLUID = 0, FLOW_CELL_SOLID = 1, FLOW_CELL_GHOST = 2 };
-
-typedef enum {
-    LIMITER_VAN_LEER = 0, /* harmonic mean of the one-sided slopes */
-    LIMITER_VAN_ALBADA,   /* smoother: max(ab,0)(a+b)/(a^2+b^2) */
-    LIMITER_NONE,         /* unlimited central slope (smooth-flow verification only) */
-    LIMITER_FIRST_ORDER,  /* zero slopes */
-    LIMITER_COUNT
-} FlowLimiter;
 
 extern const char *const FLOW_LIMITER_NAMES[LIMITER_COUNT + 1]; /* "van_leer", ..., NULL */
 

@@ -69,12 +69,10 @@
 #ifndef NSPD_FLOW_GKS_KERNEL_H
 #define NSPD_FLOW_GKS_KERNEL_H
 
+#include "core/kernel.h"
 #include "flow/gks_math.h"
 
 #include <math.h>
-
-/* Everything here must inline into the vectorised row loop. */
-#define GKS_INLINE static inline __attribute__((always_inline))
 
 /* Viscosity laws: mu(T) for the collision time tau = mu / p. */
 typedef enum {
@@ -102,7 +100,7 @@ typedef struct {
 /* mu(T), Pa s. `law` is a compile-time constant at every vectorised call
  * site (the row loops are instantiated per law), so the switch folds away and
  * no unused law is evaluated. */
-GKS_INLINE double gks_viscosity(const GksParams *p, double T, int law) {
+NSPD_KERNEL double gks_viscosity(const GksParams *p, double T, int law) {
     switch (law) {
     case VISCOSITY_CONSTANT:
         return p->mu_ref;
@@ -122,7 +120,7 @@ typedef struct {
     double rho, U, V, lam;
 } GksPrim;
 
-GKS_INLINE GksPrim gks_prim_from_w(const double w[4], double K) {
+NSPD_KERNEL GksPrim gks_prim_from_w(const double w[4], double K) {
     GksPrim q;
     q.rho = w[0];
     const double ir = 1.0 / w[0];
@@ -139,7 +137,7 @@ typedef struct {
 } GksDPrim;
 
 /* d(prim) from d(W) at state q. */
-GKS_INLINE GksDPrim gks_dprim(const GksPrim *q, const double dw[4], double K) {
+NSPD_KERNEL GksDPrim gks_dprim(const GksPrim *q, const double dw[4], double K) {
     GksDPrim d;
     const double ir = 1.0 / q->rho;
     d.rho = dw[0];
@@ -154,7 +152,7 @@ GKS_INLINE GksDPrim gks_dprim(const GksPrim *q, const double dw[4], double K) {
 }
 
 /* Micro slope a (a[0..3] = a1..a4) of a primitive derivative: a = d ln g. */
-GKS_INLINE void gks_micro(const GksPrim *q, const GksDPrim *d, double K, double a[4]) {
+NSPD_KERNEL void gks_micro(const GksPrim *q, const GksDPrim *d, double K, double a[4]) {
     a[3] = -2.0 * d->lam;
     a[1] = 2.0 * (q->lam * d->U + q->U * d->lam);
     a[2] = 2.0 * (q->lam * d->V + q->V * d->lam);
@@ -164,8 +162,8 @@ GKS_INLINE void gks_micro(const GksPrim *q, const GksDPrim *d, double K, double 
 
 /* Euler time derivative of the primitives from the normal (x) and tangential
  * (y) derivatives: the compatibility condition in primitive form. */
-GKS_INLINE GksDPrim gks_dprim_dt(const GksPrim *q, const GksDPrim *dx, const GksDPrim *dy,
-                                 double gamma) {
+NSPD_KERNEL GksDPrim gks_dprim_dt(const GksPrim *q, const GksDPrim *dx, const GksDPrim *dy,
+                                  double gamma) {
     const double p = 0.5 * q->rho / q->lam, ir = 1.0 / q->rho, il = 1.0 / q->lam;
     /* p = rho / (2 lambda): dp = (drho - rho dlambda / lambda) / (2 lambda) */
     const double px = 0.5 * il * (dx->rho - q->rho * dx->lam * il);
@@ -185,13 +183,13 @@ typedef struct {
 } GksMoments;
 
 /* Fills v[], xi and, from u[0] and u[1], the rest of u[] by the recursion. */
-GKS_INLINE void gks_moments_fill(GksMoments *m, const GksPrim *q, double K) {
+NSPD_KERNEL void gks_moments_fill(GksMoments *m, const GksPrim *q, double K) {
     const double h = 0.5 / q->lam;
     m->v[0] = 1.0;
     m->v[1] = q->V;
-#pragma GCC unroll 8
+    NSPD_UNROLL(8)
     for (int n = 0; n < 4; n++) m->v[n + 2] = q->V * m->v[n + 1] + (n + 1) * h * m->v[n];
-#pragma GCC unroll 8
+    NSPD_UNROLL(8)
     for (int n = 0; n < 5; n++) m->u[n + 2] = q->U * m->u[n + 1] + (n + 1) * h * m->u[n];
     m->xi2 = K * h;
     m->xi4 = K * (K + 2.0) * h * h;
@@ -200,8 +198,8 @@ GKS_INLINE void gks_moments_fill(GksMoments *m, const GksPrim *q, double K) {
 /* side > 0: u > 0 half of q; side < 0: u < 0 half; side == 0: full space.
  * erfcx_abs = erfcx(|sqrt(lambda) U|) and ex = exp(-lambda U^2) are passed in
  * so that the caller computes them once per state. */
-GKS_INLINE void gks_moments_half(GksMoments *m, const GksPrim *q, double K, double side, double ex,
-                                 double erfcx_abs) {
+NSPD_KERNEL void gks_moments_half(GksMoments *m, const GksPrim *q, double K, double side, double ex,
+                                  double erfcx_abs) {
     const double sl = sqrt(q->lam);
     const double e = erfcx_abs * ex; /* erfc(|x|), x = sqrt(lambda) U */
     /* erfc(-side x)/2: the positive-side half holds more than half the mass
@@ -213,7 +211,7 @@ GKS_INLINE void gks_moments_half(GksMoments *m, const GksPrim *q, double K, doub
     gks_moments_fill(m, q, K);
 }
 
-GKS_INLINE void gks_moments_full(GksMoments *m, const GksPrim *q, double K) {
+NSPD_KERNEL void gks_moments_full(GksMoments *m, const GksPrim *q, double K) {
     m->u[0] = 1.0;
     m->u[1] = q->U;
     gks_moments_fill(m, q, K);
@@ -226,15 +224,15 @@ GKS_INLINE void gks_moments_full(GksMoments *m, const GksPrim *q, double K) {
     (0.5 * (GKS_M(m, (a) + 2, b) + GKS_M(m, a, (b) + 2) + GKS_M(m, a, b) * (m)->xi2))
 
 /* <u^a v^b psi4^2> */
-GKS_INLINE double gks_e2(const GksMoments *m, int a, int b) {
+NSPD_KERNEL double gks_e2(const GksMoments *m, int a, int b) {
     return 0.25 * (GKS_M(m, a + 4, b) + GKS_M(m, a, b + 4) + GKS_M(m, a, b) * m->xi4 +
                    2.0 * GKS_M(m, a + 2, b + 2) +
                    2.0 * (GKS_M(m, a + 2, b) + GKS_M(m, a, b + 2)) * m->xi2);
 }
 
 /* out += s <u^a v^b c psi> for a micro polynomial c = c1 + c2 u + c3 v + c4 psi4. */
-GKS_INLINE void gks_moment_add(const GksMoments *m, int a, int b, const double c[4], double s,
-                               double out[4]) {
+NSPD_KERNEL void gks_moment_add(const GksMoments *m, int a, int b, const double c[4], double s,
+                                double out[4]) {
     const double e00 = GKS_E(m, a, b), e10 = GKS_E(m, a + 1, b), e01 = GKS_E(m, a, b + 1);
     out[0] += s * (c[0] * GKS_M(m, a, b) + c[1] * GKS_M(m, a + 1, b) + c[2] * GKS_M(m, a, b + 1) +
                    c[3] * e00);
@@ -253,8 +251,8 @@ typedef struct {
     double p;                /* pressure */
 } GksSide;
 
-GKS_INLINE void gks_side_init(GksSide *s, const double w[4], const double dn[4],
-                              const double dt_[4], const GksParams *par, double side) {
+NSPD_KERNEL void gks_side_init(GksSide *s, const double w[4], const double dn[4],
+                               const double dt_[4], const GksParams *par, double side) {
     s->q = gks_prim_from_w(w, par->K);
     s->p = 0.5 * s->q.rho / s->q.lam;
     const GksDPrim dx = gks_dprim(&s->q, dn, par->K), dy = gks_dprim(&s->q, dt_, par->K);
@@ -267,7 +265,7 @@ GKS_INLINE void gks_side_init(GksSide *s, const double w[4], const double dn[4],
 }
 
 /* f += the side's share of the initial-data terms (t0, t1, t2). */
-GKS_INLINE void gks_side_flux(const GksSide *s, double c0, double c1, double c2, double f[4]) {
+NSPD_KERNEL void gks_side_flux(const GksSide *s, double c0, double c1, double c2, double f[4]) {
     double c[4];
     for (int n = 0; n < 4; n++) c[n] = c2 * s->A[n];
     c[0] += c0;
@@ -285,10 +283,10 @@ GKS_INLINE void gks_side_flux(const GksSide *s, double c0, double c1, double c2,
  *   law        par->law, passed separately so that vectorised callers can make it a constant
  *   f          out: \int_0^dt F dt per unit face length (rho, rho u_n, rho u_t, rho E)
  * Pure: no allocation, no side effects besides f. */
-GKS_INLINE void gks_flux_kernel(const double wl[4], const double nl[4], const double tl[4],
-                                const double wr[4], const double nr[4], const double tr[4],
-                                const double n0[4], const double t0[4], double dt,
-                                const GksParams *par, int law, double f[4]) {
+NSPD_KERNEL void gks_flux_kernel(const double wl[4], const double nl[4], const double tl[4],
+                                 const double wr[4], const double nr[4], const double tr[4],
+                                 const double n0[4], const double t0[4], double dt,
+                                 const GksParams *par, int law, double f[4]) {
     const double K = par->K;
     GksSide L, R;
     gks_side_init(&L, wl, nl, tl, par, 1.0);

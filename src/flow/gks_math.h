@@ -22,24 +22,24 @@
 #ifndef NSPD_FLOW_GKS_MATH_H
 #define NSPD_FLOW_GKS_MATH_H
 
+#include "core/kernel.h"
+
 #include <stdint.h>
 #include <string.h>
 
-#define GKS_MATH_INLINE static inline __attribute__((always_inline))
-
-GKS_MATH_INLINE double gks_bits_to_double(uint64_t b) {
+NSPD_KERNEL double gks_bits_to_double(uint64_t b) {
     double d;
     memcpy(&d, &b, sizeof d);
     return d;
 }
 
-GKS_MATH_INLINE uint64_t gks_double_to_bits(double d) {
+NSPD_KERNEL uint64_t gks_double_to_bits(double d) {
     uint64_t b;
     memcpy(&b, &d, sizeof b);
     return b;
 }
 
-GKS_MATH_INLINE double gks_exp(double x) {
+NSPD_KERNEL double gks_exp(double x) {
     const double shifter = 0x1.8p52; /* adding it rounds to an integer held in the low bits */
     /* Cody-Waite split of ln 2 (fdlibm's): ln2_hi has 21 trailing zero bits,
      * so k * ln2_hi is exact for |k| < 2^21 without relying on FMA. */
@@ -68,7 +68,7 @@ GKS_MATH_INLINE double gks_exp(double x) {
     return p * gks_bits_to_double(scale);
 }
 
-GKS_MATH_INLINE double gks_erfcx(double z) {
+NSPD_KERNEL double gks_erfcx(double z) {
     static const double c[22] = {
         4.71146074660290654e-01,  3.77158949691565791e-01,  1.18036033447495455e-01,
         2.83623466996951514e-02,  4.87175775760554558e-03,  4.59852387876545759e-04,
@@ -80,7 +80,7 @@ GKS_MATH_INLINE double gks_erfcx(double z) {
         1.34597762783145075e-15};
     const double t = 3.0 / (3.0 + z), s = 2.0 * t - 1.0, s2 = 2.0 * s;
     double b1 = 0.0, b2 = 0.0;
-#pragma GCC unroll 24
+    NSPD_UNROLL(24)
     for (int k = 21; k >= 1; k--) {
         const double b = s2 * b1 - b2 + c[k];
         b2 = b1;
@@ -89,7 +89,7 @@ GKS_MATH_INLINE double gks_erfcx(double z) {
     return t * (s * b1 - b2 + c[0]);
 }
 
-GKS_MATH_INLINE double gks_log(double x) {
+NSPD_KERNEL double gks_log(double x) {
     const uint64_t bits = gks_double_to_bits(x);
     /* Split x = m 2^e with m in [sqrt(1/2), sqrt(2)): offset the bits so that
      * the exponent rounds at sqrt(2) instead of 2. */

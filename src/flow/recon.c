@@ -1,28 +1,14 @@
-/* MUSCL slopes (see recon.h). Each limiter gets its own vectorised loop: the
- * limiter is a compile-time constant of an always-inline body. */
+/* MUSCL slopes (see recon.h): the row loops over recon_slopes_cell
+ * (recon_kernel.h). Each limiter gets its own vectorised loop: the limiter is
+ * a compile-time constant of an always-inline body. */
 #include "flow/recon.h"
 
-#include "flow/flow_solver.h"
+#include "flow/recon_kernel.h"
 
-#include <math.h>
 #include <stddef.h>
 
+/* The row body is inlined into one loop per limiter. */
 #define RECON_INLINE static inline __attribute__((always_inline))
-
-RECON_INLINE double limit(int limiter, double a, double b, double wl, double wr) {
-    switch (limiter) {
-    case LIMITER_VAN_LEER:
-        return (a * fabs(b) + fabs(a) * b) / (fabs(a) + fabs(b) + 1e-300);
-    case LIMITER_VAN_ALBADA: {
-        const double ab = a * b;
-        return (ab > 0.0 ? ab : 0.0) * (a + b) / (a * a + b * b + 1e-300);
-    }
-    case LIMITER_NONE:
-        return (a * wl + b * wr) / (wl + wr);
-    default:
-        return 0.0;
-    }
-}
 
 /* The body shared by both directions: cell k has neighbours m (minus) and p
  * (plus). per_cell selects array or scalar geometry. */
@@ -44,27 +30,16 @@ RECON_INLINE int64_t slopes(int n, int limiter, const double *const wm[4],
     for (int k = 0; k < n; k++) {
         const double idl = per_cell ? idla[k] : idls, idr = per_cell ? idra[k] : idrs;
         const double hw = per_cell ? hwa[k] : hws;
-        const double cm[4] = {m0[k], m1[k], m2[k], m3[k]};
-        const double cc[4] = {c0[k], c1[k], c2[k], c3[k]};
-        const double cp[4] = {p0[k], p1[k], p2[k], p3[k]};
-        double sl[4], lo[4], hi[4];
-        for (int v = 0; v < 4; v++) {
-            sl[v] = limit(limiter, (cc[v] - cm[v]) * idl, (cp[v] - cc[v]) * idr, idl, idr);
-            lo[v] = cc[v] - sl[v] * hw;
-            hi[v] = cc[v] + sl[v] * hw;
-        }
-        /* p > 0  <=>  2 rho (rho E) - |rho U|^2 > 0 when rho > 0 */
-        const double plo = 2.0 * lo[0] * lo[3] - lo[1] * lo[1] - lo[2] * lo[2];
-        const double phi = 2.0 * hi[0] * hi[3] - hi[1] * hi[1] - hi[2] * hi[2];
-        const int ok = (lo[0] > 0.0) & (hi[0] > 0.0) & (plo > 0.0) & (phi > 0.0);
-        const int solid =
-            (km[k] == FLOW_CELL_SOLID) | (k0[k] == FLOW_CELL_SOLID) | (kp[k] == FLOW_CELL_SOLID);
-        const int keep = ok & !solid;
-        fallbacks += !ok & !solid;
-        s0[k] = keep ? sl[0] : 0.0;
-        s1[k] = keep ? sl[1] : 0.0;
-        s2[k] = keep ? sl[2] : 0.0;
-        s3[k] = keep ? sl[3] : 0.0;
+        const double w[3][4] = {{m0[k], m1[k], m2[k], m3[k]},
+                                {c0[k], c1[k], c2[k], c3[k]},
+                                {p0[k], p1[k], p2[k], p3[k]}};
+        const uint8_t kind[3] = {km[k], k0[k], kp[k]};
+        double sl[4];
+        fallbacks += recon_slopes_cell(limiter, w, kind, idl, idr, hw, sl);
+        s0[k] = sl[0];
+        s1[k] = sl[1];
+        s2[k] = sl[2];
+        s3[k] = sl[3];
     }
     return fallbacks;
 }

@@ -18,7 +18,8 @@
  *   van Albada max(ab, 0) (a + b) / (a^2 + b^2)
  *   none       (a (x_{i+1}-x_i) + b (x_i-x_{i-1})) / (x_{i+1} - x_{i-1})   (unlimited)
  * A slope is also zero in a SOLID cell and next to one (kinds from
- * flow_solver.h). */
+ * cell_kind.h). The arithmetic of one cell is recon_slopes_cell
+ * (recon_kernel.h). */
 #ifndef NSPD_FLOW_RECON_H
 #define NSPD_FLOW_RECON_H
 

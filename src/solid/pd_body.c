@@ -4,8 +4,8 @@
  *  1. lattice points inside the geometry, Morton-ordered, by default centred
  *     in its bounding box so symmetric bodies get exactly symmetric points
  *     (lattice.c);
- *  2. point volumes (dx^dim, times the thickness in 2D), regions, initial
- *     velocities;
+ *  2. point volumes (dx^dim, times the thickness in 2D), regions (and their
+ *     flat table for the integrator), initial velocities;
  *  3. bonds within the horizon |xi| <= delta (bonds.c). The family is the
  *     horizon itself, as in Madenci and Oterkus' code (28 neighbours in 2D and
  *     122 in 3D for delta = 3.015 dx); the partial-volume factor nu_ij then
@@ -61,6 +61,31 @@ static void assign_regions(PdBody *body) {
                 for (int d = 0; d < 3; d++) body->v[d][i] = cfg->initial_velocities[k].velocity[d];
         }
     }
+}
+
+/* Flattens cfg.boundaries into body->boundary (pd_body.h). */
+static int build_boundary_table(PdBody *body) {
+    const PdConfig *cfg = &body->cfg;
+    PdBoundaryTable *t = &body->boundary;
+    const size_t n = 3 * (size_t)cfg->boundary_count;
+    TRY(nspd_alloc(&t->velocity_given, n, sizeof(uint8_t)));
+    TRY(nspd_alloc(&t->displacement_held, n, sizeof(uint8_t)));
+    TRY(nspd_alloc(&t->velocity, n, sizeof(double)));
+    TRY(nspd_alloc(&t->displacement, n, sizeof(double)));
+    TRY(nspd_alloc(&t->force_density, n, sizeof(double)));
+    t->count = cfg->boundary_count;
+    for (int r = 0; r < cfg->boundary_count; r++) {
+        const PdBoundaryRegion *b = &cfg->boundaries[r];
+        for (int d = 0; d < 3; d++) {
+            const size_t k = 3 * (size_t)r + (size_t)d;
+            t->velocity_given[k] = (b->velocity_mask >> d) & 1u;
+            t->displacement_held[k] = (b->displacement_mask >> d) & 1u;
+            t->velocity[k] = b->velocity[d];
+            t->displacement[k] = b->displacement[d];
+            t->force_density[k] = b->force_density[d];
+        }
+    }
+    return NSPD_OK;
 }
 
 /* Steps 5-7 above. `g` are the per-point surface factors (NULL: none). */
@@ -133,6 +158,7 @@ static int build(PdBody *body, PdConfig *cfg) {
     for (int64_t i = 0; i < body->n; i++) body->volume[i] = v_ref;
     body->coef_scale = body->micromodulus * v_ref / cfg->spacing;
     assign_regions(body);
+    TRY(build_boundary_table(body));
 
     TRY(bonds_find(body->n, body->dim, (const double *const *)body->x, body->horizon,
                    &body->bond_first, &body->bond_nbr));
@@ -175,6 +201,11 @@ void pd_body_destroy(PdBody *body) {
     }
     nspd_free(&body->volume);
     nspd_free(&body->region);
+    nspd_free(&body->boundary.velocity_given);
+    nspd_free(&body->boundary.displacement_held);
+    nspd_free(&body->boundary.velocity);
+    nspd_free(&body->boundary.displacement);
+    nspd_free(&body->boundary.force_density);
     nspd_free(&body->initial_bond_volume);
     nspd_free(&body->bond_first);
     nspd_free(&body->bond_nbr);

@@ -33,6 +33,21 @@
 
 #include <stdint.h>
 
+/* The boundary regions of cfg.boundaries as the integrator reads them: plain
+ * arrays built at creation (no shapes, names or pointers to follow, so a
+ * device copy is a copy of five arrays). Entry 3 r + d is component d of
+ * region r; point i belongs to region region[i] (or none if -1). Changing
+ * cfg.boundaries after creation does not reach the integrator: change the
+ * table. */
+typedef struct {
+    int count;                  /* regions */
+    uint8_t *velocity_given;    /* 1: velocity component prescribed */
+    uint8_t *displacement_held; /* 1: displacement component held (velocity 0) */
+    double *velocity;           /* m/s, where given */
+    double *displacement;       /* m, where held */
+    double *force_density;      /* N/m^3 added on the region's points */
+} PdBoundaryTable;
+
 typedef struct {
     PdConfig cfg; /* owned copy of the configuration (shapes included) */
     int dim;
@@ -46,8 +61,9 @@ typedef struct {
      * region force densities on top. */
     double *external[3];
     double *volume;
-    int16_t *region;     /* boundary region index or -1 */
-    int32_t *lattice[3]; /* integer lattice coordinates (for images and symmetry checks) */
+    int16_t *region;          /* boundary region index or -1 */
+    PdBoundaryTable boundary; /* cfg.boundaries for the integrator */
+    int32_t *lattice[3];      /* integer lattice coordinates (for images and symmetry checks) */
 
     int64_t bond_count;
     int64_t *bond_first; /* n + 1 */

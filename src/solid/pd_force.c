@@ -16,40 +16,19 @@
  * (break, then take the force) made one crack tip branch at x = -17 mm while
  * the reference (and this order) runs straight to +-22 mm.
  *
- * The inner loop over a point's bonds is a SIMD reduction: the compiler
- * gathers the neighbours' coordinates (AVX-512 / AVX2 gathers) and sums the
- * lanes in a fixed order, so a point's force is the same whichever thread
- * computes it. The store that breaks a bond is conditional: an
- * unconditional one costs 25 % on the 2D plate (measured). */
+ * The point body, its SIMD reduction over the bonds and the conditional
+ * store that breaks a bond are in bond_force_kernel.h. */
 #include "solid/pd_force.h"
 #include "core/parallel.h"
-
-#include <math.h>
+#include "solid/bond_force_kernel.h"
 
 void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
                         const double *restrict ux, const double *restrict uy,
                         const int64_t *restrict first, const int32_t *restrict nbr,
                         float *restrict coef, double scale, double limit2, double *restrict fx,
                         double *restrict fy) {
-    for (int64_t i = lo; i < hi; i++) {
-        const double xi = x[i], yi = y[i], uxi = ux[i], uyi = uy[i];
-        double sx = 0.0, sy = 0.0;
-        const int64_t b0 = first[i], b1 = first[i + 1];
-#pragma omp simd reduction(+ : sx, sy)
-        for (int64_t b = b0; b < b1; b++) {
-            const int32_t j = nbr[b];
-            float k = coef[b];
-            const double ex = x[j] - xi, ey = y[j] - yi;
-            const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi);
-            const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
-            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
-            if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
-            sx += f * rx;
-            sy += f * ry;
-        }
-        fx[i] = scale * sx;
-        fy[i] = scale * sy;
-    }
+    for (int64_t i = lo; i < hi; i++)
+        bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
 }
 
 void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
@@ -58,27 +37,8 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
                         const int64_t *restrict first, const int32_t *restrict nbr,
                         float *restrict coef, double scale, double limit2, double *restrict fx,
                         double *restrict fy, double *restrict fz) {
-    for (int64_t i = lo; i < hi; i++) {
-        const double xi = x[i], yi = y[i], zi = z[i], uxi = ux[i], uyi = uy[i], uzi = uz[i];
-        double sx = 0.0, sy = 0.0, sz = 0.0;
-        const int64_t b0 = first[i], b1 = first[i + 1];
-#pragma omp simd reduction(+ : sx, sy, sz)
-        for (int64_t b = b0; b < b1; b++) {
-            const int32_t j = nbr[b];
-            float k = coef[b];
-            const double ex = x[j] - xi, ey = y[j] - yi, ez = z[j] - zi;
-            const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi), rz = ez + (uz[j] - uzi);
-            const double e2 = ex * ex + ey * ey + ez * ez, r2 = rx * rx + ry * ry + rz * rz;
-            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
-            if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
-            sx += f * rx;
-            sy += f * ry;
-            sz += f * rz;
-        }
-        fx[i] = scale * sx;
-        fy[i] = scale * sy;
-        fz[i] = scale * sz;
-    }
+    for (int64_t i = lo; i < hi; i++)
+        bond_force_point_3d(i, x, y, z, ux, uy, uz, first, nbr, coef, scale, limit2, fx, fy, fz);
 }
 
 /* Rows per OpenMP chunk: large enough to amortise scheduling, small enough

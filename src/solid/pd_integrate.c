@@ -7,22 +7,24 @@
 #include <math.h>
 #include <stdbool.h>
 
-/* v += a h for every point, then the regions' prescribed velocities. */
+/* v += a h for every point, then the regions' prescribed velocities (from
+ * the flat table body->boundary, not cfg.boundaries). */
 static void kick(PdBody *body, double h) {
     const PdConfig *cfg = &body->cfg;
     const int dim = body->dim;
     const double inv_rho = 1.0 / cfg->density;
-    const PdBoundaryRegion *regions = cfg->boundaries;
+    const PdBoundaryTable *bt = &body->boundary;
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         const int r = body->region[i];
         for (int d = 0; d < dim; d++) {
+            const int k = 3 * r + d; /* read only when r >= 0 */
             double b = body->external[d][i] + cfg->body_force[d];
-            if (r >= 0) b += regions[r].force_density[d];
+            if (r >= 0) b += bt->force_density[k];
             body->v[d][i] += (body->force[d][i] + b) * inv_rho * h;
             if (r >= 0) {
-                if (regions[r].velocity_mask & (1u << d)) body->v[d][i] = regions[r].velocity[d];
-                if (regions[r].displacement_mask & (1u << d)) body->v[d][i] = 0.0;
+                if (bt->velocity_given[k]) body->v[d][i] = bt->velocity[k];
+                if (bt->displacement_held[k]) body->v[d][i] = 0.0;
             }
         }
     }
@@ -33,15 +35,14 @@ static void kick(PdBody *body, double h) {
  * and writes u anyway: a NaN in v reaches u in the same step). */
 static bool drift(PdBody *body, double h) {
     const int dim = body->dim;
-    const PdBoundaryRegion *regions = body->cfg.boundaries;
+    const PdBoundaryTable *bt = &body->boundary;
     bool bad = false;
 #pragma omp parallel for schedule(static) reduction(|| : bad) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
         const int r = body->region[i];
         for (int d = 0; d < dim; d++) {
             double u = body->u[d][i] + body->v[d][i] * h;
-            if (r >= 0 && (regions[r].displacement_mask & (1u << d)))
-                u = regions[r].displacement[d];
+            if (r >= 0 && bt->displacement_held[3 * r + d]) u = bt->displacement[3 * r + d];
             body->u[d][i] = u;
             bad = bad || !isfinite(u);
         }

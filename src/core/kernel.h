@@ -1,0 +1,46 @@
+/* Macros for kernels: point-, cell- or face-wise bodies that compile unchanged
+ * as C (inlined into the OpenMP row loops) and as CUDA device code (called by
+ * one thread per point, cell or face).
+ *
+ * A kernel header (`*_kernel.h`) holds only NSPD_KERNEL functions on plain
+ * numbers and plain arrays: no allocation, no I/O, no globals, no error
+ * returns, and nothing but what a CUDA device function may call (its own
+ * helpers, <math.h>, memcpy). tests/unit/core/cuda_kernels.cu and the
+ * compile-only ctest unit.core.cuda_kernels hold them to that when nvcc is
+ * found. */
+#ifndef NSPD_CORE_KERNEL_H
+#define NSPD_CORE_KERNEL_H
+
+/* NSPD_PRAGMA(x): a #pragma from inside a macro (C99/C++11 _Pragma). */
+#define NSPD_PRAGMA(x) _Pragma(#x)
+
+#ifdef __CUDACC__
+/* __host__ __device__: nvcc refuses a call to a host-only function from a
+ * __global__ function, so every kernel and every helper it calls must be
+ * compiled for both sides. nvcc inlines device functions on its own. */
+#define NSPD_KERNEL static inline __host__ __device__
+/* C++ has no `restrict`; nvcc spells it __restrict__ (same meaning: the
+ * pointer is the only way to the memory it points at in this scope). */
+#define NSPD_RESTRICT __restrict__
+/* nvcc's front end warns (#1675) on `#pragma GCC unroll` in both of its
+ * passes, and GCC, compiling the host pass, warns on nvcc's `#pragma unroll`.
+ * So: nvcc's spelling in the device pass, nothing in the host pass (the CPU
+ * code that counts is the C build, where the GCC spelling applies). */
+#ifdef __CUDA_ARCH__
+#define NSPD_UNROLL(n) NSPD_PRAGMA(unroll n)
+#else
+#define NSPD_UNROLL(n)
+#endif
+#else
+/* always_inline: the kernels are called inside row loops that must
+ * vectorise across cells, faces or bonds, and a call left out of line keeps
+ * such a loop scalar; the attribute takes the decision away from the
+ * compiler's size heuristics (the GKS flux kernel is large). */
+#define NSPD_KERNEL    static inline __attribute__((always_inline))
+#define NSPD_RESTRICT  restrict
+/* Full unrolling of short fixed-count loops inside a kernel, so that the
+ * loop vectorised around the kernel sees straight-line code. */
+#define NSPD_UNROLL(n) NSPD_PRAGMA(GCC unroll n)
+#endif
+
+#endif

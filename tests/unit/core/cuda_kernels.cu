@@ -1,0 +1,86 @@
+/* Every kernel called from device code (compile only: ctest
+ * unit.core.cuda_kernels, tests/unit/core/cuda_kernels.sh). nvcc refuses a
+ * call from a __global__ function to a function that is not
+ * __host__ __device__, so a kernel, or a helper it calls, that lost
+ * NSPD_KERNEL fails here. One thread per face, cell or point, as a CUDA back
+ * end would launch them; the data layouts are only plausible, not the
+ * solver's. A new kernel gets its caller here. */
+#include "flow/gks_kernel.h"
+#include "flow/gks_update_kernel.h"
+#include "flow/recon_kernel.h"
+#include "solid/bond_force_kernel.h"
+
+static __device__ int64_t thread_index(void) {
+    return (int64_t)blockIdx.x * blockDim.x + threadIdx.x;
+}
+
+/* gks_flux_kernel (and through it gks_math.h): face i reads 32 values. */
+__global__ void gks_flux_faces(int64_t n, const double *in, GksParams par, double dt, double *f) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    const double *s = in + 32 * i;
+    gks_flux_kernel(s, s + 4, s + 8, s + 12, s + 16, s + 20, s + 24, s + 28, dt, &par, par.law,
+                    f + 4 * i);
+}
+
+/* recon_limit of n pairs of one-sided slopes. */
+__global__ void recon_limit_pairs(int64_t n, int limiter, const double *a, const double *b,
+                                  double idl, double idr, double *out) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    out[i] = recon_limit(limiter, a[i], b[i], idl, idr);
+}
+
+/* recon_slopes_cell along x of a row of cells 1 .. n. */
+__global__ void recon_slopes_row(int64_t n, int limiter, const double *const *w,
+                                 const uint8_t *kind, double idl, double idr, double hw, double *s,
+                                 int *fallback) {
+    const int64_t i = thread_index() + 1;
+    if (i > n) return;
+    double c[3][4];
+    uint8_t k[3];
+    for (int m = 0; m < 3; m++) {
+        for (int v = 0; v < 4; v++) c[m][v] = w[v][i - 1 + m];
+        k[m] = kind[i - 1 + m];
+    }
+    fallback[i] = recon_slopes_cell(limiter, c, k, idl, idr, hw, s + 4 * i);
+}
+
+/* gks_update_cell for a row of n cells (x faces i, i+1; y faces below and above). */
+__global__ void gks_update_row(int64_t n, const uint8_t *kind, const double *w, const double *fx,
+                               const double *gb, const double *gt, const double *idx, double idy,
+                               double *wn, int *bad) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    double f[2][4], g[2][4];
+    for (int v = 0; v < 4; v++) {
+        f[0][v] = fx[4 * i + v];
+        f[1][v] = fx[4 * (i + 1) + v];
+        g[0][v] = gb[4 * i + v];
+        g[1][v] = gt[4 * i + v];
+    }
+    bad[i] = gks_update_cell(kind[i], w + 4 * i, f, g, idx[i], idy, wn + 4 * i);
+}
+
+/* gks_ghost_face on the x faces 1 .. n of a row. */
+__global__ void gks_ghost_faces_row(int64_t n, GksGhostFaces g, double dt, double *f0, double *f1,
+                                    double *f2, double *f3) {
+    const int64_t i = thread_index() + 1;
+    if (i > n) return;
+    double *const f[4] = {f0, f1, f2, f3};
+    gks_ghost_face(&g, i - 1, i, 0, dt, f, i);
+}
+
+/* bond_force_point_2d / _3d, one thread per point. */
+__global__ void bond_force_points(int64_t n, int dim, const double *x, const double *y,
+                                  const double *z, const double *ux, const double *uy,
+                                  const double *uz, const int64_t *first, const int32_t *nbr,
+                                  float *coef, double scale, double limit2, double *fx, double *fy,
+                                  double *fz) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    if (dim == 2)
+        bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
+    else
+        bond_force_point_3d(i, x, y, z, ux, uy, uz, first, nbr, coef, scale, limit2, fx, fy, fz);
+}
