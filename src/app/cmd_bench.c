@@ -3,9 +3,9 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "core/timer.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 #include "io/json.h"
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_integrate.h"
 
 #include <math.h>
@@ -67,8 +67,8 @@ static int bench_pd(const BenchOptions *opt) {
         (Shape){.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {length, length, 0}};
 
     double t0 = nspd_wall_time();
-    PdBody body;
-    TRY(pd_body_create(&body, &cfg));
+    BondBody body;
+    TRY(bond_body_create(&body, &cfg));
     double setup_s = nspd_wall_time() - t0;
     for (int64_t i = 0; i < body.n; i++) {
         body.u[0][i] = 1e-4 * body.x[0][i];
@@ -99,7 +99,7 @@ static int bench_pd(const BenchOptions *opt) {
         json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
         json_end(&w);
     }
-    pd_body_destroy(&body);
+    bond_body_destroy(&body);
     return status;
 }
 

@@ -72,7 +72,7 @@ static int read_state(CfgNode *map, const char *key, const StateContext *sc, Flo
     return cfg_end_map(m);
 }
 
-static int read_gas(CfgNode *flow, FlowConfig *c) {
+static int read_gas(CfgNode *flow, GksConfig *c) {
     CfgNode *g;
     TRY(cfg_opt_map(flow, "gas", &g));
     if (!g) {
@@ -96,7 +96,7 @@ static int read_gas(CfgNode *flow, FlowConfig *c) {
 /* gas.viscosity needs the free stream when mu comes from a Reynolds number. */
 static int read_viscosity(CfgNode *flow, GksCaseConfig *fc, bool has_reynolds, double mu_inf,
                           double T_inf) {
-    FlowConfig *c = &fc->solver;
+    GksConfig *c = &fc->solver;
     CfgNode *g = cfg_map_find(flow, "gas");
     CfgNode *v;
     TRY(cfg_opt_map(g, "viscosity", &v));
@@ -143,7 +143,7 @@ static int read_viscosity(CfgNode *flow, GksCaseConfig *fc, bool has_reynolds, d
 
 /* free_stream: SI state, or {mach, reynolds, length, density, pressure|temperature, angle_deg}. */
 static int read_free_stream(CfgNode *flow, GksCaseConfig *fc, bool *has_reynolds, double *mu_inf) {
-    FlowConfig *c = &fc->solver;
+    GksConfig *c = &fc->solver;
     *has_reynolds = false;
     CfgNode *f = cfg_map_find(flow, "free_stream");
     if (!f || f->is_null) {
@@ -369,7 +369,7 @@ static int read_field(CfgNode *ini, GksCaseConfig *fc) {
 }
 
 static int read_initial(CfgNode *flow, GksCaseConfig *fc, const StateContext *sc) {
-    FlowConfig *c = &fc->solver;
+    GksConfig *c = &fc->solver;
     CfgNode *ini;
     TRY(cfg_req_map(flow, "initial", &ini));
     if (cfg_map_find(ini, "from")) {
@@ -419,7 +419,7 @@ static int read_initial(CfgNode *flow, GksCaseConfig *fc, const StateContext *sc
     return cfg_end_map(ini);
 }
 
-static int read_numerics(CfgNode *flow, FlowConfig *c) {
+static int read_numerics(CfgNode *flow, GksConfig *c) {
     CfgNode *n;
     TRY(cfg_opt_map(flow, "numerics", &n));
     if (!n) {
@@ -443,8 +443,8 @@ static int read_numerics(CfgNode *flow, FlowConfig *c) {
 int case_read_flow(CfgNode *flow, GksCaseConfig *fc, GhostCouplingConfig *walls) {
     memset(fc, 0, sizeof *fc);
     memset(walls, 0, sizeof *walls);
-    FlowConfig *c = &fc->solver;
-    flow_config_default(c);
+    GksConfig *c = &fc->solver;
+    gks_config_default(c);
     TRY(read_gas(flow, c));
     bool has_reynolds;
     double mu_inf = 0;

@@ -11,7 +11,7 @@
 const char *const FSI_HOLD_NAMES[FSI_HOLD_COUNT + 1] = {"none", "balance", NULL};
 
 /* True if point i still has an intact bond. */
-static bool attached(const PdBody *b, int32_t i) {
+static bool attached(const BondBody *b, int32_t i) {
     for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++)
         if (b->bond_coef[k] != 0.0f) return true;
     return false;
@@ -20,7 +20,7 @@ static bool attached(const PdBody *b, int32_t i) {
 /* This step's interface: the surface loops without debris (points with no
  * intact bond), their markers at the points' current positions and
  * velocities. A loop keeps all its points if fewer than 3 would remain. */
-static void markers_from_points(Fsi *f, const PdBody *body) {
+static void markers_from_points(Fsi *f, const BondBody *body) {
     const PdSurface *all = &f->surface;
     PdSurface *w = &f->wetted;
     int64_t used = 0;
@@ -48,7 +48,7 @@ static void markers_from_points(Fsi *f, const PdBody *body) {
     }
 }
 
-int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flow) {
+int fsi_create(Fsi *f, const FsiConfig *cfg, const BondBody *body, GksSolver *flow) {
     memset(f, 0, sizeof *f);
     f->cfg = *cfg;
     /* neighbouring surface points are 1 or sqrt(2) spacings apart; 2.5
@@ -83,7 +83,7 @@ int fsi_create(Fsi *f, const FsiConfig *cfg, const PdBody *body, FlowSolver *flo
         p->leading_edge = p->trailing_edge = -1;
     }
     markers_from_points(f, body);
-    status = ibm_create(&f->ibm, flow_solver_grid(flow), f->polylines, f->loop_count);
+    status = ibm_create(&f->ibm, gks_solver_grid(flow), f->polylines, f->loop_count);
     if (status == NSPD_OK) ibm_set_ghost_faces(f->ibm, (IbmGhostFaces)cfg->ghost_faces);
     if (status == NSPD_OK) status = ibm_attach(f->ibm, flow);
     if (status == NSPD_OK && cfg->soft_start > 0) ibm_soft_start(f->ibm, flow, cfg->soft_start);
@@ -105,17 +105,17 @@ void fsi_destroy(Fsi *f) {
     memset(f, 0, sizeof *f);
 }
 
-int fsi_move_interface(Fsi *f, const PdBody *body, FlowSolver *flow) {
+int fsi_move_interface(Fsi *f, const BondBody *body, GksSolver *flow) {
     markers_from_points(f, body);
     TRY(ibm_update(f->ibm, f->polylines, f->loop_count, flow));
     return ibm_surface_reserve(f->ibm, &f->loads); /* the marker count may change */
 }
 
-int fsi_apply_loads(Fsi *f, PdBody *body, FlowSolver *flow) {
+int fsi_apply_loads(Fsi *f, BondBody *body, GksSolver *flow) {
     TRY(ibm_surface_compute(f->ibm, flow, &f->cfg.reference, &f->loads));
     /* Parts of the solid outside the flow's box (the panel's clamp below the
      * floor) have no fluid on them: no load. */
-    const Grid *g = flow_solver_grid(flow);
+    const Grid *g = gks_solver_grid(flow);
     for (int k = 0; k < f->loads.n; k++)
         if (f->loads.x[k] < g->ax[0].lo || f->loads.x[k] > g->ax[0].hi ||
             f->loads.y[k] < g->ax[1].lo || f->loads.y[k] > g->ax[1].hi)
@@ -129,7 +129,7 @@ int fsi_apply_loads(Fsi *f, PdBody *body, FlowSolver *flow) {
                              "probably folded or fragmented beyond what the immersed boundary "
                              "resolves",
                              f->loads.x[k], f->loads.y[k], f->loads.p[k], f->loads.tau[k],
-                             flow_solver_time(flow));
+                             gks_solver_time(flow));
     for (int d = 0; d < body->dim; d++)
         memset(body->external[d], 0, (size_t)body->n * sizeof(double));
     /* the segments of the immersed boundary are this step's loops', in order */
@@ -145,7 +145,7 @@ int fsi_apply_loads(Fsi *f, PdBody *body, FlowSolver *flow) {
     return NSPD_OK;
 }
 
-int fsi_advance_solid(Fsi *f, PdBody *body, double dt, double max_substep, double end_time) {
+int fsi_advance_solid(Fsi *f, BondBody *body, double dt, double max_substep, double end_time) {
     int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
     if (n < 1) n = 1;
     double h = dt / (double)n;

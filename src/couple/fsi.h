@@ -45,8 +45,8 @@
 
 #include "couple/ibm.h"
 #include "couple/ibm_surface.h"
-#include "flow/flow_solver.h"
-#include "solid/pd_body.h"
+#include "flow/gks_solver.h"
+#include "solid/bond_body.h"
 #include "solid/pd_surface.h"
 
 typedef enum {
@@ -83,17 +83,17 @@ typedef struct {
  * grid from it and attaches it to the solver (cell kinds, ghost hook,
  * optional soft start). The body must be 2D and lie inside the grid.
  * NSPD_ERR_INPUT for a 3D body or an interface the immersed boundary refuses. */
-int fsi_create(Fsi *fsi, const FsiConfig *cfg, const PdBody *body, FlowSolver *flow);
+int fsi_create(Fsi *fsi, const FsiConfig *cfg, const BondBody *body, GksSolver *flow);
 void fsi_destroy(Fsi *fsi);
 
 /* Step 1 above. */
-int fsi_move_interface(Fsi *fsi, const PdBody *body, FlowSolver *flow);
+int fsi_move_interface(Fsi *fsi, const BondBody *body, GksSolver *flow);
 
 /* Step 3 above: replaces body->external with the fluid's tractions. */
-int fsi_apply_loads(Fsi *fsi, PdBody *body, FlowSolver *flow);
+int fsi_apply_loads(Fsi *fsi, BondBody *body, GksSolver *flow);
 
 /* Step 4 above: advances the solid by dt in sub-steps no longer than
  * `max_substep`; the solid's clock ends exactly on end_time. */
-int fsi_advance_solid(Fsi *fsi, PdBody *body, double dt, double max_substep, double end_time);
+int fsi_advance_solid(Fsi *fsi, BondBody *body, double dt, double max_substep, double end_time);
 
 #endif

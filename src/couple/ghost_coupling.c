@@ -59,7 +59,7 @@ static void ghost_destroy(void *impl) {
 }
 
 /* Fixed bodies: markers, tags and ghost cells once, optional soft start. */
-static int create_rigid(GhostCoupling *g, FlowSolver *solver) {
+static int create_rigid(GhostCoupling *g, GksSolver *solver) {
     const IbmBodySet *set = &g->cfg.bodies;
     if (set->count == 0)
         return NSPD_FAIL(NSPD_ERR_INPUT,
@@ -67,7 +67,7 @@ static int create_rigid(GhostCoupling *g, FlowSolver *solver) {
     TRY(nspd_alloc(&g->bodies, (size_t)set->count, sizeof(IbmPolyline)));
     g->body_count = set->count;
     for (int b = 0; b < set->count; b++) TRY(ibm_body_markers(&set->bodies[b], &g->bodies[b]));
-    TRY(ibm_create(&g->ibm, flow_solver_grid(solver), g->bodies, g->body_count));
+    TRY(ibm_create(&g->ibm, gks_solver_grid(solver), g->bodies, g->body_count));
     ibm_set_ghost_faces(g->ibm, (IbmGhostFaces)g->cfg.fsi.ghost_faces);
     TRY(ibm_attach(g->ibm, solver));
     if (g->cfg.fsi.soft_start > 0) ibm_soft_start(g->ibm, solver, g->cfg.fsi.soft_start);
@@ -75,12 +75,12 @@ static int create_rigid(GhostCoupling *g, FlowSolver *solver) {
 }
 
 static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow) {
-    FlowSolver *solver = gks_flow_solver(flow);
+    GksSolver *solver = gks_flow_solver(flow);
     if (!solver)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "the ghost-cell coupling needs the GKS flow solver, not '%s'",
                          flow_name(flow));
-    PdBody *body = solid ? bond_solid_body(solid) : NULL;
+    BondBody *body = solid ? bond_solid_body(solid) : NULL;
     if (solid && !body)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "the ghost-cell coupling needs a bond-based solid, not '%s'",

@@ -354,19 +354,19 @@ static inline void fill_one(Ibm *ibm, int e, double *const w[4], double gm1, dou
     set_cons(w, G->cell[e], q.p / (R * T), u, v, q.p, gm1);
 }
 
-void ibm_fill_ghosts(void *ctx, FlowSolver *s) {
+void ibm_fill_ghosts(void *ctx, GksSolver *s) {
     Ibm *ibm = ctx;
-    FlowFields f = flow_solver_fields(s);
-    const GksParams *gas = flow_solver_gas(s);
+    GksFields f = gks_solver_fields(s);
+    const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
     const int n = ibm->ghosts.n;
     double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int e = 0; e < n; e++) fill_one(ibm, e, w, gm1, R);
     if (ibm->faces == IBM_FACES_SEALED)
-        flow_solver_set_ghost_walls(s, ibm->slot, ibm->ghosts.wu, ibm->ghosts.wv);
+        gks_solver_set_ghost_walls(s, ibm->slot, ibm->ghosts.wu, ibm->ghosts.wv);
     else
-        flow_solver_set_ghost_walls(s, NULL, NULL, NULL);
+        gks_solver_set_ghost_walls(s, NULL, NULL, NULL);
 }
 
 const char *const IBM_GHOST_FACE_NAMES[IBM_FACES_COUNT + 1] = {"reflected", "sealed", NULL};
@@ -375,30 +375,30 @@ void ibm_set_ghost_faces(Ibm *ibm, IbmGhostFaces faces) {
     ibm->faces = faces;
 }
 
-int ibm_attach(Ibm *ibm, FlowSolver *s) {
-    const Grid *g = flow_solver_grid(s);
+int ibm_attach(Ibm *ibm, GksSolver *s) {
+    const Grid *g = gks_solver_grid(s);
     if (g->nx != ibm->nx || g->ny != ibm->ny || g->size != ibm->cells)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "immersed boundary: built for a %d x %d grid, attached to %d x %d",
                          ibm->nx, ibm->ny, g->nx, g->ny);
-    FlowFields f = flow_solver_fields(s);
+    GksFields f = gks_solver_fields(s);
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
             const int64_t k = grid_index(g, i, j);
             f.kind[k] = ibm->kind[k];
         }
-    flow_solver_set_ghost_hook(s, ibm_fill_ghosts, ibm);
-    flow_solver_fill_boundaries(s);
+    gks_solver_set_ghost_hook(s, ibm_fill_ghosts, ibm);
+    gks_solver_fill_boundaries(s);
     ibm_fill_ghosts(ibm, s);
     return NSPD_OK;
 }
 
-static void soft_start(Ibm *ibm, FlowSolver *s, double length, bool keep_total) {
+static void soft_start(Ibm *ibm, GksSolver *s, double length, bool keep_total) {
     if (!(length > 0.0)) return;
     const Grid *g = ibm->grid;
-    FlowFields f = flow_solver_fields(s);
-    const double gamma = flow_solver_gas(s)->gamma, gm1 = gamma - 1.0;
-    const double cp = gamma * flow_solver_gas(s)->R / gm1;
+    GksFields f = gks_solver_fields(s);
+    const double gamma = gks_solver_gas(s)->gamma, gm1 = gamma - 1.0;
+    const double cp = gamma * gks_solver_gas(s)->R / gm1;
     double box[4];
     walls_box(ibm, box);
     const int i0 = lower_bound(&g->ax[0], box[0] - length);
@@ -421,20 +421,20 @@ static void soft_start(Ibm *ibm, FlowSolver *s, double length, bool keep_total) 
                 set_cons(f.w, k, rho, un, vn, p, gm1);
                 continue;
             }
-            const double T = p / (rho * flow_solver_gas(s)->R);
+            const double T = p / (rho * gks_solver_gas(s)->R);
             const double T0 = T + 0.5 * (u * u + v * v) / cp;
             const double Tn = T0 - 0.5 * (un * un + vn * vn) / cp;
             const double pn = p * pow(Tn / T, gamma / gm1);
-            set_cons(f.w, k, pn / (flow_solver_gas(s)->R * Tn), un, vn, pn, gm1);
+            set_cons(f.w, k, pn / (gks_solver_gas(s)->R * Tn), un, vn, pn, gm1);
         }
     ibm_fill_ghosts(ibm, s);
 }
 
-void ibm_soft_start(Ibm *ibm, FlowSolver *s, double length) {
+void ibm_soft_start(Ibm *ibm, GksSolver *s, double length) {
     soft_start(ibm, s, length, false);
 }
 
-void ibm_soft_start_isentropic(Ibm *ibm, FlowSolver *s, double length) {
+void ibm_soft_start_isentropic(Ibm *ibm, GksSolver *s, double length) {
     soft_start(ibm, s, length, true);
 }
 
@@ -509,10 +509,10 @@ static int cmp_i64(const void *a, const void *b) {
 }
 
 /* Fills the fresh cells listed in list_a[0..n) (flagged in mark, bit 2). */
-static void fill_fresh(Ibm *ibm, FlowSolver *s, int n, IbmStencilSet *tmp) {
+static void fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
     const Grid *g = ibm->grid;
-    FlowFields f = flow_solver_fields(s);
-    const GksParams *gas = flow_solver_gas(s);
+    GksFields f = gks_solver_fields(s);
+    const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
     double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
     /* first all stencils (they read only non-fresh fluid cells), then all values */
@@ -668,7 +668,7 @@ static int queue_reach(Ibm *ibm, int nchanged, int64_t *nq) {
 /* 5b. New kinds of the queued cells (written into `s` too, if given); fresh
  * cells (not fluid -> fluid) get mark bit 2 and go to list_a. *nadd counts
  * the new ghosts. */
-static void update_kinds(Ibm *ibm, FlowSolver *s, int64_t nq, int *nfresh, int *nadd) {
+static void update_kinds(Ibm *ibm, GksSolver *s, int64_t nq, int *nfresh, int *nadd) {
     const Grid *g = ibm->grid;
     IbmUpdateStats *st = &ibm->last;
     *nfresh = *nadd = 0;
@@ -686,7 +686,7 @@ static void update_kinds(Ibm *ibm, FlowSolver *s, int64_t nq, int *nfresh, int *
             ibm->mark[k] |= 2;
             ibm->list_a[(*nfresh)++] = k; /* nfresh <= nchanged: list_a holds it */
         }
-        if (s) flow_solver_fields(s).kind[k] = now;
+        if (s) gks_solver_fields(s).kind[k] = now;
     }
     st->fresh = *nfresh;
 }
@@ -751,7 +751,7 @@ static int rebuild_ghost_list(Ibm *ibm, int64_t nq, int nadd) {
 /* 8. The fresh cells (list_a[0..nfresh)), from their non-fresh fluid
  * neighbours, if there is a solver; then their mark bit is cleared. The
  * spare set serves as scratch space for their stencils (may reallocate). */
-static int fill_fresh_cells(Ibm *ibm, FlowSolver *s, int nfresh) {
+static int fill_fresh_cells(Ibm *ibm, GksSolver *s, int nfresh) {
     if (s && nfresh > 0) {
         TRY(ibm_stencils_reserve(&ibm->spare, nfresh));
         fill_fresh(ibm, s, nfresh, &ibm->spare);
@@ -760,7 +760,7 @@ static int fill_fresh_cells(Ibm *ibm, FlowSolver *s, int nfresh) {
     return NSPD_OK;
 }
 
-int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s) {
+int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, GksSolver *s) {
     if (count != ibm->body_count)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "immersed boundary: %d bodies given to an update of %d; expected the "
@@ -768,7 +768,7 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s) {
                          count, ibm->body_count);
     TRY(check_bodies(bodies, count));
     if (s) {
-        const Grid *sg = flow_solver_grid(s);
+        const Grid *sg = gks_solver_grid(s);
         if (sg->nx != ibm->nx || sg->ny != ibm->ny)
             return NSPD_FAIL(NSPD_ERR_INPUT, "immersed boundary: update with another grid");
     }

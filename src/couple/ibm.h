@@ -16,9 +16,9 @@
  * law rho = p / (R T). ibm_stencil.c documents the degenerate cases.
  *
  * Use from a time loop (fixed bodies):
- *     ibm_create(&ibm, flow_solver_grid(s), bodies, count);   // tags, stencils
+ *     ibm_create(&ibm, gks_solver_grid(s), bodies, count);   // tags, stencils
  *     ibm_attach(ibm, s);           // writes the cell kinds, sets the ghost hook
- *     loop: flow_solver_step(s, dt) // the hook fills the ghost cells
+ *     loop: gks_solver_step(s, dt) // the hook fills the ghost cells
  *           ibm_surface_compute(...) when loads or outputs are due (ibm_surface.h)
  * Moving or deforming bodies: before each flow step, ibm_update(ibm, bodies,
  * count, s) with the polylines at their new positions (same count of bodies;
@@ -36,7 +36,7 @@
 #define NSPD_COUPLE_IBM_H
 
 #include "couple/ibm_body.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -79,7 +79,7 @@ void ibm_destroy(Ibm **ibm);
  * installs ibm_fill_ghosts as its ghost hook and fills the ghost cells once
  * (so that outputs before the first step show them). Fluid cells keep their
  * state. NSPD_ERR_INPUT if the grids differ. */
-int ibm_attach(Ibm *ibm, FlowSolver *s);
+int ibm_attach(Ibm *ibm, GksSolver *s);
 
 /* Moves the walls to `bodies` (same body count as at creation; a body's
  * marker count may change, which re-tags its whole old and new bounding
@@ -95,7 +95,7 @@ int ibm_attach(Ibm *ibm, FlowSolver *s);
  * a time loop allocates only while the walls grow; never shrinks. Pointers
  * from ibm_body_markers_view are invalid afterwards. NSPD_ERR_NOMEM then
  * leaves the Ibm fit only for ibm_destroy. */
-int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s);
+int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, GksSolver *s);
 
 /* Soft start: in every fluid cell within `length` (m) of a wall, replaces
  * the velocity u by u_w + (u - u_w) f(d / length), f(z) = z^2 (3 - 2 z) (d
@@ -110,8 +110,8 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, FlowSolver *s);
  * Both variants start an acoustic transient; on the Ma 0.5 airfoil neither
  * settled faster (the slow part was the transient's return from a far field
  * 10 chords away). Call after ibm_attach and before the first step. */
-void ibm_soft_start(Ibm *ibm, FlowSolver *s, double length);
-void ibm_soft_start_isentropic(Ibm *ibm, FlowSolver *s, double length);
+void ibm_soft_start(Ibm *ibm, GksSolver *s, double length);
+void ibm_soft_start_isentropic(Ibm *ibm, GksSolver *s, double length);
 
 /* What the faces between fluid and ghost cells carry.
  *   REFLECTED  the GKS flux between the fluid cell and the ghost state of
@@ -121,7 +121,7 @@ void ibm_soft_start_isentropic(Ibm *ibm, FlowSolver *s, double length);
  *              or opposite flow (measured: the Ma 2 cylinder from rest at
  *              D/128 reached p < 0 at t = 2.95 in a cell 0.04 h from the
  *              wall, in reversed flow ahead of separation).
- *   SEALED     no mass but what the wall displaces (flow_solver_set_ghost_walls):
+ *   SEALED     no mass but what the wall displaces (gks_solver_set_ghost_walls):
  *              conservative and robust; the mass sees the cell staircase,
  *              a first-order wall (measured: stagnation Cp on a nose of 6
  *              cells' radius erratic by +-4 to 10 %; on a cylinder of 8
@@ -135,7 +135,7 @@ void ibm_set_ghost_faces(Ibm *ibm, IbmGhostFaces faces);
 /* The FlowGhostHook (ctx = the Ibm): sets every ghost cell from the current
  * fluid state (Eqs. 33-39); with SEALED faces, hands the solver each
  * ghost's wall velocity. No allocation; deterministic. */
-void ibm_fill_ghosts(void *ctx, FlowSolver *s);
+void ibm_fill_ghosts(void *ctx, GksSolver *s);
 
 /* Cell kinds (FLOW_CELL_*), indexed with grid_index (interior cells). */
 const uint8_t *ibm_kinds(const Ibm *ibm);

@@ -47,7 +47,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <math.h>
 #include <string.h>

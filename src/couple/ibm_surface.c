@@ -206,13 +206,13 @@ static void body_separation(const Ibm *ibm, const SurfaceFlow *F, const SurfaceB
     }
 }
 
-int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, IbmSurface *o) {
+int ibm_surface_compute(const Ibm *ibm, GksSolver *s, const IbmReference *ref, IbmSurface *o) {
     if (o->cap < ibm->nm || o->body_count < ibm->body_count)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "immersed boundary: surface arrays not reserved for %d segments", ibm->nm);
     o->n = ibm->nm;
-    const FlowFields fields = flow_solver_fields(s);
-    const GksParams *gas = flow_solver_gas(s);
+    const GksFields fields = gks_solver_fields(s);
+    const GksParams *gas = gks_solver_gas(s);
     const double U2 = ref->u * ref->u + ref->v * ref->v, Um = sqrt(U2);
     const double q = 0.5 * ref->rho * U2;
     const SurfaceFlow F = {

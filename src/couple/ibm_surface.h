@@ -85,7 +85,7 @@ void ibm_surface_free(IbmSurface *out);
 /* Computes everything above from the solver's current state. *out must have
  * been reserved for the current segments (NSPD_ERR_INPUT otherwise). No
  * allocation; deterministic (sums in marker order). */
-int ibm_surface_compute(const Ibm *ibm, FlowSolver *s, const IbmReference *ref, IbmSurface *out);
+int ibm_surface_compute(const Ibm *ibm, GksSolver *s, const IbmReference *ref, IbmSurface *out);
 
 /* Lumps the tractions of body b onto its markers: marker k receives half of
  * ds * traction from each of its two segments (N per m of depth). fx, fy

@@ -1,4 +1,4 @@
-/* Cell kinds of the flow grid (uint8 per cell; flow_solver.h says what each
+/* Cell kinds of the flow grid (uint8 per cell; gks_solver.h says what each
  * kind means for the step). A header of its own so that the kernels
  * (recon_kernel.h, gks_update_kernel.h) can test kinds without pulling in the
  * solver's interface. */

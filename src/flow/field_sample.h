@@ -18,7 +18,7 @@
 #ifndef NSPD_FLOW_FIELD_SAMPLE_H
 #define NSPD_FLOW_FIELD_SAMPLE_H
 
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <stdint.h>
 

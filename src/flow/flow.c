@@ -26,12 +26,12 @@ struct Flow {
     void *impl;
 };
 
-void flow_model_config_free(FlowModelConfig *cfg) {
+void flow_config_free(FlowConfig *cfg) {
     if (cfg->method == FLOW_METHOD_GKS) gks_case_config_free(&cfg->gks);
     memset(cfg, 0, sizeof *cfg);
 }
 
-int flow_create(Flow **out, FlowModelConfig *cfg) {
+int flow_create(Flow **out, FlowConfig *cfg) {
     *out = NULL;
     if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||
         !FLOW_METHODS[cfg->method])

@@ -4,7 +4,7 @@
  * which dispatch through the FlowOps table once per step, sample or output;
  * hot loops stay inside a solver. A new solver adds a FlowMethod, its ops
  * table (registered in FLOW_METHODS, flow.c) and its configuration in the
- * FlowModelConfig union; nothing in sim/, case/ output or the probes
+ * FlowConfig union; nothing in sim/, case/ output or the probes
  * changes. A coupling tied to one representation (the ghost-cell immersed
  * boundary needs the GKS grid) reaches the concrete solver through the
  * checked accessor of that solver (gks_flow_solver) and refuses the others
@@ -34,9 +34,9 @@ typedef struct {
         GksCaseConfig gks;    /* FLOW_METHOD_GKS */
         const void *external; /* a registered solver's configuration (borrowed) */
     };
-} FlowModelConfig;
+} FlowConfig;
 
-void flow_model_config_free(FlowModelConfig *cfg);
+void flow_config_free(FlowConfig *cfg);
 
 /* Where the solver's unknowns live, for probes and output. */
 typedef struct {
@@ -63,7 +63,7 @@ typedef struct Flow Flow;
 typedef struct FlowOps {
     const char *name;
     /* Builds the solver from *cfg, taking ownership of its contents. */
-    int (*create)(void **impl, FlowModelConfig *cfg);
+    int (*create)(void **impl, FlowConfig *cfg);
     void (*destroy)(void *impl);
     double (*stable_dt)(const void *impl);
     int (*step)(void *impl, double dt);
@@ -95,7 +95,7 @@ FlowMethod flow_register(const FlowOps *ops);
 
 /* NSPD_ERR_INPUT for an unknown method; otherwise what the solver's create
  * returns. Takes ownership of *cfg. */
-int flow_create(Flow **out, FlowModelConfig *cfg);
+int flow_create(Flow **out, FlowConfig *cfg);
 void flow_destroy(Flow **f);
 
 FlowMethod flow_method(const Flow *f);

@@ -1,9 +1,9 @@
-/* The flow benchmark (flow_bench in flow_solver.h; `nspd bench gks`). */
-#include "flow/flow_solver.h"
+/* The flow benchmark (flow_bench in gks_solver.h; `nspd bench gks`). */
+#include "flow/gks_solver.h"
 
 #include "core/status.h"
 #include "core/timer.h"
-#include "flow/flow_solver_internal.h"
+#include "flow/gks_solver_internal.h"
 
 #include <math.h>
 #include <omp.h>
@@ -16,26 +16,26 @@ int flow_bench(int cells, int threads, int steps, FlowBenchResult *out) {
     const int n = (int)lround(sqrt((double)cells));
     const int saved = omp_get_max_threads();
     omp_set_num_threads(threads);
-    FlowConfig c;
-    flow_config_default(&c);
-    flow_config_uniform_grid(&c, 0.0, 1.0, n, 0.0, 1.0, n);
+    GksConfig c;
+    gks_config_default(&c);
+    gks_config_uniform_grid(&c, 0.0, 1.0, n, 0.0, 1.0, n);
     FlowBc per = {.kind = BC_PERIODIC};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(&c, f, &per);
+    for (int f = 0; f < 4; f++) gks_config_set_bc(&c, f, &per);
     c.viscosity = VISCOSITY_SUTHERLAND;
     c.mu_ref = 1.716e-5 * 1000.0; /* Re = rho U L / mu ~ 1e3 on the unit box */
     c.T_ref = 273.15;
     c.sutherland_S = 110.4;
     c.init_fn = NULL;
     c.initial = (FlowPrim){1.2, 0.0, 0.0, 1.0e5};
-    FlowSolver *s = NULL;
-    int st = flow_solver_create(&s, &c);
+    GksSolver *s = NULL;
+    int st = gks_solver_create(&s, &c);
     if (st < 0) {
         omp_set_num_threads(saved);
         return st;
     }
     /* Taylor-Green vortices at Mach 0.3 */
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     const double c0 = sqrt(1.4 * 1.0e5 / 1.2), U = 0.3 * c0;
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
@@ -47,10 +47,10 @@ int flow_bench(int cells, int threads, int steps, FlowBenchResult *out) {
             const int64_t k = grid_index(g, i, j);
             for (int v = 0; v < 4; v++) f.w[v][k] = w[v];
         }
-    st = flow_solver_step(s, flow_solver_stable_dt(s));
+    st = gks_solver_step(s, gks_solver_stable_dt(s));
     const double t0 = nspd_wall_time();
     for (int k = 0; k < steps && st == NSPD_OK; k++)
-        st = flow_solver_step(s, flow_solver_stable_dt(s));
+        st = gks_solver_step(s, gks_solver_stable_dt(s));
     const double secs = nspd_wall_time() - t0;
     out->cells = (int64_t)n * n;
     out->steps = steps;
@@ -58,7 +58,7 @@ int flow_bench(int cells, int threads, int steps, FlowBenchResult *out) {
     out->seconds = secs;
     out->cell_updates_per_s = secs > 0.0 ? (double)out->cells * steps / secs : 0.0;
     out->bytes_per_cell = (double)s->bytes / (double)out->cells;
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     omp_set_num_threads(saved);
     return st;
 }

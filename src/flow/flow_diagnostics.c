@@ -1,11 +1,11 @@
 /* Diagnostics of the flow operator: primitive fields and conserved totals. */
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
-#include "flow/flow_solver_internal.h"
+#include "flow/gks_solver_internal.h"
 
 #include <math.h>
 
-void flow_solver_primitive(const FlowSolver *s, FlowField field, double *out) {
+void gks_solver_primitive(const GksSolver *s, FlowField field, double *out) {
     const Grid *g = &s->grid;
     const double gamma = s->gas.gamma, R = s->gas.R;
     const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
@@ -45,7 +45,7 @@ void flow_solver_primitive(const FlowSolver *s, FlowField field, double *out) {
 
 /* Deterministic at any thread count: each row is summed in index order by one
  * thread, then the row sums in row order. */
-void flow_solver_totals(const FlowSolver *s, double totals[4]) {
+void gks_solver_totals(const GksSolver *s, double totals[4]) {
     const Grid *g = &s->grid;
     double *rs = s->row_sums;
     const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;

@@ -1,9 +1,9 @@
 /* The initial condition of the flow operator: cell averages of the
  * configured state (uniform, regions or a function) by Gauss-Legendre
  * quadrature, and the isentropic vortex. */
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
-#include "flow/flow_solver_internal.h"
+#include "flow/gks_solver_internal.h"
 
 #include <math.h>
 
@@ -37,7 +37,7 @@ static void gauss_rule(int n, double *x, double *w) {
     }
 }
 
-static void initial_prim(const FlowConfig *cfg, double x, double y, FlowPrim *q) {
+static void initial_prim(const GksConfig *cfg, double x, double y, FlowPrim *q) {
     if (cfg->init_fn) {
         cfg->init_fn(cfg->init_ctx, x, y, q);
         return;
@@ -48,7 +48,7 @@ static void initial_prim(const FlowConfig *cfg, double x, double y, FlowPrim *q)
         if (shapeset_contains(&cfg->regions[r].shapes, pt)) *q = cfg->regions[r].state;
 }
 
-void flow_solver_apply_initial(FlowSolver *s, const FlowConfig *cfg) {
+void gks_solver_apply_initial(GksSolver *s, const GksConfig *cfg) {
     const Grid *g = &s->grid;
     int nq = cfg->init_quadrature;
     nq = nq < 1 ? 1 : nq > 4 ? 4 : nq;
@@ -73,7 +73,7 @@ void flow_solver_apply_initial(FlowSolver *s, const FlowConfig *cfg) {
             for (int v = 0; v < 4; v++) s->w[v][k] = acc[v];
         }
     }
-    flow_solver_fill_boundaries(s);
+    gks_solver_fill_boundaries(s);
 }
 
 void flow_isentropic_vortex(void *ctx, double x, double y, FlowPrim *out) {

@@ -13,10 +13,10 @@
  * face flux is computed once per block (twice on a block boundary, with
  * identical inputs and hence identical bits). All work arrays are allocated
  * at creation for omp_get_max_threads() threads. */
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include "core/status.h"
-#include "flow/flow_solver_internal.h"
+#include "flow/gks_solver_internal.h"
 #include "flow/gks_flux.h"
 #include "flow/gks_update_kernel.h"
 #include "flow/recon.h"
@@ -24,13 +24,13 @@
 #include <math.h>
 #include <omp.h>
 
-void flow_solver_fill_boundaries(FlowSolver *s) {
+void gks_solver_fill_boundaries(GksSolver *s) {
     bc_fill(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind);
 }
 
 /* Signal-speed rate of each cell of row j into rate[0..nx) (0 in non-fluid
  * cells); the law is a constant in each instantiation so the loop vectorises. */
-static inline __attribute__((always_inline)) void dt_rates(const FlowSolver *s, int j, int law,
+static inline __attribute__((always_inline)) void dt_rates(const GksSolver *s, int j, int law,
                                                            double visc_factor, double *rate) {
     const Grid *g = &s->grid;
     const GksParams gas = s->gas;
@@ -54,7 +54,7 @@ static inline __attribute__((always_inline)) void dt_rates(const FlowSolver *s, 
     }
 }
 
-double flow_solver_stable_dt(const FlowSolver *s) {
+double gks_solver_stable_dt(const GksSolver *s) {
     const Grid *g = &s->grid;
     const int law = s->gas.law;
     const double visc_factor =
@@ -99,7 +99,7 @@ static void row_ptrs(const Grid *g, double *const w[4], const int perm[4], int i
 
 /* Slopes along x and y of the cells -1 .. nx of row j into sx[v], sy[v]
  * (cell i at offset GRID_NG + i). */
-static int64_t row_slopes(const FlowSolver *s, int j, double *const sx[4], double *const sy[4]) {
+static int64_t row_slopes(const GksSolver *s, int j, double *const sx[4], double *const sy[4]) {
     const Grid *g = &s->grid;
     static const int id[4] = {0, 1, 2, 3};
     const int n = g->nx + 2, i0 = -1;
@@ -124,7 +124,7 @@ static int64_t row_slopes(const FlowSolver *s, int j, double *const sx[4], doubl
 }
 
 /* The solver's arrays as the ghost-face kernel reads them. */
-static GksGhostFaces ghost_faces(const FlowSolver *s) {
+static GksGhostFaces ghost_faces(const GksSolver *s) {
     return (GksGhostFaces){.kind = s->kind,
                            .wall_slot = s->wall_slot,
                            .wall_u = s->wall_u,
@@ -134,7 +134,7 @@ static GksGhostFaces ghost_faces(const FlowSolver *s) {
 }
 
 /* y-face fluxes between rows j and j+1 (cells 0 .. nx-1) into g[v]. */
-static void row_yflux(const FlowSolver *s, int j, double *const sxl[4], double *const syl[4],
+static void row_yflux(const GksSolver *s, int j, double *const sxl[4], double *const syl[4],
                       double *const sxr[4], double *const syr[4], double dt,
                       double *const gout[4]) {
     const Grid *g = &s->grid;
@@ -169,7 +169,7 @@ static void row_yflux(const FlowSolver *s, int j, double *const sxl[4], double *
 }
 
 /* x-face fluxes of row j: face i (i = 0 .. nx) between cells i-1 and i. */
-static void row_xflux(const FlowSolver *s, int j, double *const sx[4], double *const sy[4],
+static void row_xflux(const GksSolver *s, int j, double *const sx[4], double *const sy[4],
                       double dt, double *const fout[4]) {
     const Grid *g = &s->grid;
     static const int id[4] = {0, 1, 2, 3};
@@ -200,7 +200,7 @@ static void row_xflux(const FlowSolver *s, int j, double *const sx[4], double *c
 
 /* Wn of row j (gks_update_cell per cell); returns non-zero if a fluid cell
  * is not physical. */
-static int row_update(FlowSolver *s, int j, double *const fx[4], double *const gb[4],
+static int row_update(GksSolver *s, int j, double *const fx[4], double *const gb[4],
                       double *const gt[4]) {
     const Grid *g = &s->grid;
     const int64_t base = grid_index(g, 0, j);
@@ -234,7 +234,7 @@ static int row_update(FlowSolver *s, int j, double *const fx[4], double *const g
     return bad;
 }
 
-static void step_block(FlowSolver *s, FlowWork *wk, int j0, int j1, double dt) {
+static void step_block(GksSolver *s, FlowWork *wk, int j0, int j1, double dt) {
     const int ny = s->grid.ny;
     int cur = 0;
     int64_t nb = 0;
@@ -257,7 +257,7 @@ static void step_block(FlowSolver *s, FlowWork *wk, int j0, int j1, double dt) {
     wk->fallbacks = nb;
 }
 
-static int report_bad_cell(const FlowSolver *s) {
+static int report_bad_cell(const GksSolver *s) {
     const Grid *g = &s->grid;
     const double gm1 = s->gas.gamma - 1.0;
     for (int j = 0; j < g->ny; j++)
@@ -277,11 +277,11 @@ static int report_bad_cell(const FlowSolver *s) {
                      (long long)s->steps);
 }
 
-int flow_solver_step(FlowSolver *s, double dt) {
+int gks_solver_step(GksSolver *s, double dt) {
     if (!(dt > 0.0) || !isfinite(dt))
         return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: time step %g at step %lld is not positive", dt,
                          (long long)s->steps);
-    flow_solver_fill_boundaries(s);
+    gks_solver_fill_boundaries(s);
     if (s->hook) s->hook(s->hook_ctx, s);
     int nt = omp_get_max_threads();
     nt = nt > s->nthreads ? s->nthreads : nt;
@@ -315,16 +315,16 @@ int flow_solver_step(FlowSolver *s, double dt) {
     return NSPD_OK;
 }
 
-int flow_solver_advance(FlowSolver *s, double t_end, int64_t max_steps) {
+int gks_solver_advance(GksSolver *s, double t_end, int64_t max_steps) {
     int64_t n = 0;
     while (s->time < t_end && (max_steps <= 0 || n < max_steps)) {
-        double dt = flow_solver_stable_dt(s);
+        double dt = gks_solver_stable_dt(s);
         /* land on t_end without a sliver of a last step */
         if (s->time + dt >= t_end)
             dt = t_end - s->time;
         else if (s->time + 1.5 * dt > t_end)
             dt = 0.5 * (t_end - s->time);
-        TRY(flow_solver_step(s, dt));
+        TRY(gks_solver_step(s, dt));
         n++;
         if (t_end - s->time < 1e-14 * fabs(t_end)) s->time = t_end;
     }

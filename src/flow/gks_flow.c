@@ -21,7 +21,7 @@ enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
 /* The model: the solver, its case and the output scratch (allocated once). */
 typedef struct {
     GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
-    FlowSolver *solver;
+    GksSolver *solver;
     double last_dt; /* s, of the last step; 0 before the first */
     double *cells[GKS_SCRATCH];
     double *kind;   /* cell kinds as a field */
@@ -32,7 +32,7 @@ typedef struct {
 /* The vortex on a periodic box takes its nearest image: its periods are the
  * grid's lengths along the periodic axes. */
 static void vortex_periods(GksCaseConfig *fc) {
-    FlowConfig *c = &fc->solver;
+    GksConfig *c = &fc->solver;
     FlowVortex *vx = &fc->vortex;
     if (c->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC) {
         GridSegment *s = c->segments[0];
@@ -50,7 +50,7 @@ static void vortex_periods(GksCaseConfig *fc) {
 
 static void gks_destroy(void *impl) {
     GksFlow *g = impl;
-    flow_solver_destroy(&g->solver);
+    gks_solver_destroy(&g->solver);
     gks_case_config_free(&g->cfg);
     for (int k = 0; k < GKS_SCRATCH; k++) nspd_free(&g->cells[k]);
     nspd_free(&g->kind);
@@ -59,13 +59,13 @@ static void gks_destroy(void *impl) {
     nspd_free(&g);
 }
 
-static int gks_create(void **impl, FlowModelConfig *mc) {
+static int gks_create(void **impl, FlowConfig *mc) {
     GksFlow *g;
     TRY(nspd_alloc(&g, 1, sizeof *g));
     g->cfg = mc->gks; /* the initial condition needs the vortex at its final address */
     memset(mc, 0, sizeof *mc);
     GksCaseConfig *fc = &g->cfg;
-    FlowConfig *c = &fc->solver;
+    GksConfig *c = &fc->solver;
     if (fc->has_vortex) {
         vortex_periods(fc);
         c->init_fn = flow_isentropic_vortex;
@@ -75,9 +75,9 @@ static int gks_create(void **impl, FlowModelConfig *mc) {
         c->init_fn = flow_field_sample;
         c->init_ctx = &fc->field;
     }
-    int status = flow_solver_create(&g->solver, c);
+    int status = gks_solver_create(&g->solver, c);
     if (status == NSPD_OK) {
-        const Grid *grid = flow_solver_grid(g->solver);
+        const Grid *grid = gks_solver_grid(g->solver);
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
         for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK; k++)
             status = nspd_alloc(&g->cells[k], n, sizeof(double));
@@ -94,29 +94,29 @@ static int gks_create(void **impl, FlowModelConfig *mc) {
 }
 
 static double gks_stable_dt(const void *impl) {
-    return flow_solver_stable_dt(((const GksFlow *)impl)->solver);
+    return gks_solver_stable_dt(((const GksFlow *)impl)->solver);
 }
 
 static int gks_step(void *impl, double dt) {
     GksFlow *g = impl;
-    TRY(flow_solver_step(g->solver, dt));
+    TRY(gks_solver_step(g->solver, dt));
     g->last_dt = dt;
     return NSPD_OK;
 }
 
 static double gks_time(const void *impl) {
-    return flow_solver_time(((const GksFlow *)impl)->solver);
+    return gks_solver_time(((const GksFlow *)impl)->solver);
 }
 
 static FlowMesh gks_mesh(const void *impl) {
-    return (FlowMesh){MESH_GRID, flow_solver_grid(((const GksFlow *)impl)->solver)};
+    return (FlowMesh){MESH_GRID, gks_solver_grid(((const GksFlow *)impl)->solver)};
 }
 
 static void gks_cell_state(const void *impl, int64_t cell, double out[5]) {
     /* the fields are read only here; the accessor is not const-qualified */
-    FlowSolver *solver = ((const GksFlow *)impl)->solver;
-    FlowFields f = flow_solver_fields(solver);
-    const GksParams *gas = flow_solver_gas(solver);
+    GksSolver *solver = ((const GksFlow *)impl)->solver;
+    GksFields f = gks_solver_fields(solver);
+    const GksParams *gas = gks_solver_gas(solver);
     double w[4] = {f.w[0][cell], f.w[1][cell], f.w[2][cell], f.w[3][cell]};
     FlowPrim q;
     flow_cons_to_prim(w, gas->gamma, &q);
@@ -131,7 +131,7 @@ static FlowReference gks_reference(const void *impl) {
     const GksFlow *g = impl;
     const GksCaseConfig *f = &g->cfg;
     const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
-    const GksParams *gas = flow_solver_gas(g->solver);
+    const GksParams *gas = gks_solver_gas(g->solver);
     return (FlowReference){.rho = q->rho,
                            .u = q->u,
                            .v = q->v,
@@ -144,11 +144,11 @@ static FlowReference gks_reference(const void *impl) {
 /* The primitive fields of the interior cells and their kinds, into the
  * output scratch (cells[0..5], blank, kind). */
 static void primitives(GksFlow *gf) {
-    const Grid *g = flow_solver_grid(gf->solver);
+    const Grid *g = gks_solver_grid(gf->solver);
     static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
                                        FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
-    for (int k = 0; k < 6; k++) flow_solver_primitive(gf->solver, order[k], gf->cells[k]);
-    FlowFields f = flow_solver_fields(gf->solver);
+    for (int k = 0; k < 6; k++) gks_solver_primitive(gf->solver, order[k], gf->cells[k]);
+    GksFields f = gks_solver_fields(gf->solver);
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
             uint8_t k = f.kind[grid_index(g, i, j)];
@@ -162,7 +162,7 @@ static void primitives(GksFlow *gf) {
  * (field_sample.h), over the current state. */
 static int gks_sample(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out) {
     GksFlow *gf = impl;
-    const Grid *g = flow_solver_grid(gf->solver);
+    const Grid *g = gks_solver_grid(gf->solver);
     primitives(gf);
     for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++) gf->valid[c] = !gf->blank[c];
     /* a view of the scratch: the source's arrays are read only here */
@@ -187,33 +187,33 @@ static int gks_sample(void *impl, int64_t n, const double *x, const double *y, F
 }
 
 static void gks_totals(const void *impl, double totals[4]) {
-    flow_solver_totals(((const GksFlow *)impl)->solver, totals);
+    gks_solver_totals(((const GksFlow *)impl)->solver, totals);
 }
 
 static void gks_history(const void *impl, Report *row) {
     const GksFlow *g = impl;
     double totals[4];
-    flow_solver_totals(g->solver, totals);
+    gks_solver_totals(g->solver, totals);
     report_real(row, "dt_s", g->last_dt);
     report_precise(row, "mass_kg_per_m", totals[0]);
     report_precise(row, "momentum_x_kg_per_s", totals[1]);
     report_precise(row, "momentum_y_kg_per_s", totals[2]);
     report_precise(row, "energy_J_per_m", totals[3]);
-    report_int(row, "fallbacks", flow_solver_fallbacks_last(g->solver));
+    report_int(row, "fallbacks", gks_solver_fallbacks_last(g->solver));
 }
 
 static void gks_summary(const void *impl, const RunStats *run, Report *out) {
     const GksFlow *g = impl;
-    const Grid *grid = flow_solver_grid(g->solver);
+    const Grid *grid = gks_solver_grid(g->solver);
     double totals[4];
-    flow_solver_totals(g->solver, totals);
+    gks_solver_totals(g->solver, totals);
     int64_t cells = (int64_t)grid->nx * grid->ny;
     report_int(out, "cells", cells);
     report_int(out, "cells_x", grid->nx);
     report_int(out, "cells_y", grid->ny);
     report_real(out, "cell_updates_per_s",
                 run->wall_s > 0 ? (double)cells * (double)run->steps / run->wall_s : 0.0);
-    report_int(out, "fallbacks", flow_solver_fallbacks_total(g->solver));
+    report_int(out, "fallbacks", gks_solver_fallbacks_total(g->solver));
     report_real(out, "mass_kg_per_m", totals[0]);
     report_real(out, "momentum_x_kg_per_s", totals[1]);
     report_real(out, "momentum_y_kg_per_s", totals[2]);
@@ -222,8 +222,8 @@ static void gks_summary(const void *impl, const RunStats *run, Report *out) {
 
 static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
     const GksFlow *gf = impl;
-    const Grid *g = flow_solver_grid(gf->solver);
-    const FlowConfig *c = flow_solver_config(gf->solver);
+    const Grid *g = gks_solver_grid(gf->solver);
+    const GksConfig *c = gks_solver_config(gf->solver);
     int len = 0;
 #define APPEND(...)                                                                                \
     len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
@@ -251,19 +251,19 @@ static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
         APPEND("\n");
     }
     APPEND("CFL time step        %.6g s at the start (CFL %.3g)\n",
-           flow_solver_stable_dt(gf->solver), c->cfl);
+           gks_solver_stable_dt(gf->solver), c->cfl);
     APPEND("memory               %.1f MB in solver arrays (%.0f bytes per cell)\n",
            (double)memory / 1e6, (double)memory / ((double)g->nx * g->ny));
 #undef APPEND
 }
 
 static void gks_brief(const void *impl, char *buf, size_t size) {
-    const Grid *g = flow_solver_grid(((const GksFlow *)impl)->solver);
+    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
     snprintf(buf, size, "%d x %d cells, ", g->nx, g->ny);
 }
 
 static int64_t gks_fallbacks_total(const void *impl) {
-    return flow_solver_fallbacks_total(((const GksFlow *)impl)->solver);
+    return gks_solver_fallbacks_total(((const GksFlow *)impl)->solver);
 }
 
 /* Numerical schlieren (Quirk 1994): S = exp(-k |grad rho| / max |grad rho|),
@@ -291,7 +291,7 @@ static void schlieren(const Grid *g, const double *rho, const uint8_t *solid, do
 
 static void gks_fields(void *impl, FieldSet *out) {
     GksFlow *gf = impl;
-    const Grid *g = flow_solver_grid(gf->solver);
+    const Grid *g = gks_solver_grid(gf->solver);
     const int64_t ncell = (int64_t)g->nx * g->ny;
     primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
     double mach_max = 0.0;
@@ -344,7 +344,7 @@ const FlowOps GKS_FLOW_OPS = {
     .fields = gks_fields,
 };
 
-FlowSolver *gks_flow_solver(Flow *f) {
+GksSolver *gks_flow_solver(Flow *f) {
     GksFlow *g = flow_impl(f, FLOW_METHOD_GKS);
     return g ? g->solver : NULL;
 }

@@ -1,11 +1,11 @@
-/* The GKS flow solver (flow_solver.h) as a flow model: its case
+/* The GKS flow solver (gks_solver.h) as a flow model: its case
  * configuration and the FlowOps table. */
 #ifndef NSPD_FLOW_GKS_FLOW_H
 #define NSPD_FLOW_GKS_FLOW_H
 
 #include "flow/bc.h"
 #include "flow/field_sample.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <stdbool.h>
 
@@ -13,7 +13,7 @@
  * (initial-condition regions and their shapes, the vortex, a field to
  * start from), owned here. */
 typedef struct {
-    FlowConfig solver;
+    GksConfig solver;
     int region_count;
     FlowRegion *regions; /* owned, with their shapes */
     bool has_vortex;
@@ -34,6 +34,6 @@ extern const struct FlowOps GKS_FLOW_OPS;
 typedef struct Flow Flow;
 /* The checked accessor: the GKS solver of a flow, NULL for any other solver
  * (a coupling that needs the grid refuses those at create). */
-FlowSolver *gks_flow_solver(Flow *f);
+GksSolver *gks_flow_solver(Flow *f);
 
 #endif

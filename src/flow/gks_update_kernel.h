@@ -8,7 +8,7 @@
  * length. Only FLUID cells change; a fluid cell whose new state has
  * rho <= 0 or p <= 0 (or NaN) is reported.
  *
- * Sealed ghost faces (flow_solver_set_ghost_walls in flow_solver.h). Across
+ * Sealed ghost faces (gks_solver_set_ghost_walls in gks_solver.h). Across
  * a face between a FLUID cell and a GHOST cell of an immersed wall the mass
  * flux is the one the wall's motion displaces, F_rho' = dt rho_f u_w.n, and
  * the momentum and energy fluxes lose what the removed mass carried,

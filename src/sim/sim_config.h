@@ -65,7 +65,7 @@ typedef struct {
     bool dt_given;
     double safety_factor;    /* dt = safety_factor * stable step */
     SolidConfig solid;       /* kind SOLID_NONE: the case has no solid */
-    FlowModelConfig flow;    /* method FLOW_METHOD_NONE: no flow */
+    FlowConfig flow;         /* method FLOW_METHOD_NONE: no flow */
     CouplingConfig coupling; /* kind COUPLING_NONE: nothing couples (a flow's fixed
                                 bodies are a coupling with rigid walls) */
     OutputConfig output;

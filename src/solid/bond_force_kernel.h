@@ -3,7 +3,7 @@
  *
  *     force_i = scale sum_j |k_ij| (1 - |xi_ij| / |y_ij|) y_ij,
  *     y_ij = xi_ij + u_j - u_i,   xi_ij = x_j - x_i,
- * k_ij = bond_coef (pd_body.h: > 0 breakable, < 0 unbreakable, 0 broken).
+ * k_ij = bond_coef (bond_body.h: > 0 breakable, < 0 unbreakable, 0 broken).
  * A breakable bond whose stretch exceeds s_c (|y|^2 > limit2 |xi|^2) is
  * broken (coef set to 0) after its force is taken: Eq. 17's state is
  * history, used from the next step on.

@@ -2,7 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_diagnostics.h"
 #include "solid/pd_integrate.h"
 
@@ -12,18 +12,18 @@
 
 /* The model: the body and what `nspd info` reports of its start. */
 typedef struct {
-    PdBody body;
+    BondBody body;
     double initial_stable_dt; /* s, at creation */
 } BondSolid;
 
 static int bond_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     BondSolid *bs;
     TRY(nspd_alloc(&bs, 1, sizeof *bs));
-    PdBody *b = &bs->body;
+    BondBody *b = &bs->body;
     /* the body takes its own copy of the configuration */
     PdConfig pd = cfg->bond;
     memset(cfg, 0, sizeof *cfg);
-    int status = pd_body_create(b, &pd);
+    int status = bond_body_create(b, &pd);
     if (status != NSPD_OK) {
         pd_config_free(&pd);
         nspd_free(&bs);
@@ -35,7 +35,7 @@ static int bond_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     return NSPD_OK;
 }
 
-void bond_solid_points_of(PdBody *b, PdPoints *pts) {
+void bond_solid_points_of(BondBody *b, PdPoints *pts) {
     *pts = (PdPoints){.dim = b->dim,
                       .n = b->n,
                       .spacing = b->spacing,
@@ -54,7 +54,7 @@ void bond_solid_points_of(PdBody *b, PdPoints *pts) {
 
 static void bond_destroy(void *impl) {
     BondSolid *bs = impl;
-    pd_body_destroy(&bs->body);
+    bond_body_destroy(&bs->body);
     nspd_free(&bs);
 }
 
@@ -79,7 +79,7 @@ static void bond_damage(const void *impl, double *out) {
 }
 
 static void bond_history(const void *impl, Report *row) {
-    const PdBody *b = &((const BondSolid *)impl)->body;
+    const BondBody *b = &((const BondSolid *)impl)->body;
     double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
     report_real(row, "kinetic_energy_J", ke);
     report_real(row, "elastic_energy_J", we);
@@ -88,7 +88,7 @@ static void bond_history(const void *impl, Report *row) {
 }
 
 static void bond_summary(const void *impl, const RunStats *run, Report *out) {
-    const PdBody *b = &((const BondSolid *)impl)->body;
+    const BondBody *b = &((const BondSolid *)impl)->body;
     report_int(out, "points", b->n);
     report_int(out, "bonds", b->bond_count / 2);
     const int64_t broken = pd_broken_bonds(b);
@@ -111,7 +111,7 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
 }
 
 static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
-    const PdBody *b = &((const BondSolid *)impl)->body;
+    const BondBody *b = &((const BondSolid *)impl)->body;
     int len = 0;
 #define APPEND(...)                                                                                \
     len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
@@ -137,7 +137,7 @@ static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
 }
 
 static void bond_brief(const void *impl, char *buf, size_t size) {
-    const PdBody *b = &((const BondSolid *)impl)->body;
+    const BondBody *b = &((const BondSolid *)impl)->body;
     snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n, (long long)b->bond_count / 2);
 }
 
@@ -157,7 +157,7 @@ const SolidOps BOND_SOLID_OPS = {
     .fields = NULL,
 };
 
-PdBody *bond_solid_body(Solid *s) {
+BondBody *bond_solid_body(Solid *s) {
     BondSolid *bs = solid_impl(s, SOLID_BOND);
     return bs ? &bs->body : NULL;
 }

@@ -1,6 +1,6 @@
 /* What a case file says about a peridynamic body: geometry, material,
  * discretisation, pre-cracks, boundary regions and numerics. Filled by
- * io/case_solid.c, consumed by pd_body_create(). Units are SI. */
+ * io/case_solid.c, consumed by bond_body_create(). Units are SI. */
 #ifndef NSPD_SOLID_PD_CONFIG_H
 #define NSPD_SOLID_PD_CONFIG_H
 

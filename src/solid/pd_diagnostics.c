@@ -5,7 +5,7 @@
 
 #include <math.h>
 
-void pd_damage(const PdBody *body, double *damage) {
+void pd_damage(const BondBody *body, double *damage) {
     const int dim = body->dim;
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
@@ -27,14 +27,14 @@ void pd_damage(const PdBody *body, double *damage) {
     }
 }
 
-int64_t pd_broken_bonds(const PdBody *body) {
+int64_t pd_broken_bonds(const BondBody *body) {
     int64_t broken = 0;
 #pragma omp parallel for schedule(static) reduction(+ : broken) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t b = 0; b < body->bond_count; b++) broken += body->bond_coef[b] == 0.0f;
     return broken / 2;
 }
 
-double pd_kinetic_energy(const PdBody *body) {
+double pd_kinetic_energy(const BondBody *body) {
     double partial[REDUCE_CHUNKS];
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int c = 0; c < REDUCE_CHUNKS; c++) {
@@ -51,7 +51,7 @@ double pd_kinetic_energy(const PdBody *body) {
     return reduce_combine(partial);
 }
 
-double pd_elastic_energy(const PdBody *body) {
+double pd_elastic_energy(const BondBody *body) {
     const int dim = body->dim;
     double partial[REDUCE_CHUNKS];
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
@@ -82,7 +82,7 @@ double pd_elastic_energy(const PdBody *body) {
     return reduce_combine(partial);
 }
 
-void pd_momentum(const PdBody *body, double p[3]) {
+void pd_momentum(const BondBody *body, double p[3]) {
     for (int d = 0; d < 3; d++) {
         double partial[REDUCE_CHUNKS];
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)

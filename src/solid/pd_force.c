@@ -45,7 +45,7 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
  * to balance two threads on a 10^4-point test body. */
 enum { FORCE_BLOCK = 1024 };
 
-void pd_force_compute(PdBody *body) {
+void pd_force_compute(BondBody *body) {
     const int64_t n = body->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
     if (body->dim == 2) {

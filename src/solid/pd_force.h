@@ -2,7 +2,7 @@
 #ifndef NSPD_SOLID_PD_FORCE_H
 #define NSPD_SOLID_PD_FORCE_H
 
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 
 /* Force density on points [lo, hi) of a 2D / 3D body: bond_force_point_2d
  * / _3d (bond_force_kernel.h, which states the formula) for each point.
@@ -22,6 +22,6 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
 
 /* Operator: the force of the whole body into body->force (OpenMP over
  * points, static schedule; bitwise the same at any thread count). */
-void pd_force_compute(PdBody *body);
+void pd_force_compute(BondBody *body);
 
 #endif

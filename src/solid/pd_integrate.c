@@ -9,7 +9,7 @@
 
 /* v += a h for every point, then the regions' prescribed velocities (from
  * the flat table body->boundary, not cfg.boundaries). */
-static void kick(PdBody *body, double h) {
+static void kick(BondBody *body, double h) {
     const PdConfig *cfg = &body->cfg;
     const int dim = body->dim;
     const double inv_rho = 1.0 / cfg->density;
@@ -33,7 +33,7 @@ static void kick(PdBody *body, double h) {
 /* u += v h, then the regions' held displacements. Returns true if any
  * displacement is not finite (the NaN check rides on this pass, which reads
  * and writes u anyway: a NaN in v reaches u in the same step). */
-static bool drift(PdBody *body, double h) {
+static bool drift(BondBody *body, double h) {
     const int dim = body->dim;
     const PdBoundaryTable *bt = &body->boundary;
     bool bad = false;
@@ -50,7 +50,7 @@ static bool drift(PdBody *body, double h) {
     return bad;
 }
 
-static int report_non_finite(const PdBody *body) {
+static int report_non_finite(const BondBody *body) {
     for (int64_t i = 0; i < body->n; i++)
         for (int d = 0; d < body->dim; d++)
             if (!isfinite(body->u[d][i]) || !isfinite(body->v[d][i]))
@@ -63,7 +63,7 @@ static int report_non_finite(const PdBody *body) {
     return NSPD_FAIL(NSPD_ERR_INTERNAL, "non-finite value reported but not found");
 }
 
-int pd_step(PdBody *body, double dt) {
+int pd_step(BondBody *body, double dt) {
     bool bad;
     if (body->cfg.integrator == PD_VELOCITY_VERLET) {
         if (!body->force_valid) pd_force_compute(body);
@@ -84,7 +84,7 @@ int pd_step(PdBody *body, double dt) {
     return NSPD_OK;
 }
 
-double pd_stable_time_step(const PdBody *body) {
+double pd_stable_time_step(const BondBody *body) {
     double min_dt2 = INFINITY;
 #pragma omp parallel for schedule(static) reduction(min                                            \
                                                     : min_dt2) if (body->n >= PARALLEL_MIN_ITEMS)

@@ -2,7 +2,7 @@
 #ifndef NSPD_SOLID_PD_INTEGRATE_H
 #define NSPD_SOLID_PD_INTEGRATE_H
 
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 
 /* Advances the body by dt with its configured integrator:
  *  euler_cromer (Eq. 30):  a = (f(u^n) + b) / rho,  v^{n+1} = v^n + a dt,
@@ -15,12 +15,12 @@
  * with it), displacement u_d = U, v_d = 0.
  * Returns NSPD_ERR_NUMERIC (with the first bad point and its position) if a
  * displacement or velocity is not finite. */
-int pd_step(PdBody *body, double dt);
+int pd_step(BondBody *body, double dt);
 
 /* The stable time step of Silling and Askari (2005):
  *     dt_i = sqrt(2 rho / sum_j k_ij),  dt = min_i dt_i
- * (k_ij as in pd_body.h; broken bonds excluded). Multiply by a safety factor
+ * (k_ij as in bond_body.h; broken bonds excluded). Multiply by a safety factor
  * (0.8 is customary) before use. */
-double pd_stable_time_step(const PdBody *body);
+double pd_stable_time_step(const BondBody *body);
 
 #endif

@@ -51,7 +51,7 @@ typedef struct {
     double spacing;   /* lattice spacing dx, m */
     double thickness; /* 2D: out-of-plane thickness, m; 3D: 1 */
     double *x[3], *u[3], *v[3];
-    double *external[3]; /* force density from outside, N/m^3 (see pd_body.h) */
+    double *external[3]; /* force density from outside, N/m^3 (see bond_body.h) */
     double *volume;
     int32_t *lattice[3];
     const int64_t *family_first; /* the family CSR: neighbours of i are */

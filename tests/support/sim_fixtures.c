@@ -31,14 +31,14 @@ void fixture_sim_text(const char *yaml, Sim *sim) {
     cfg_doc_free(&doc);
 }
 
-PdBody *fixture_body(Sim *sim) {
-    PdBody *b = bond_solid_body(sim->solid);
+BondBody *fixture_body(Sim *sim) {
+    BondBody *b = bond_solid_body(sim->solid);
     assert_non_null(b);
     return b;
 }
 
-FlowSolver *fixture_flow(Sim *sim) {
-    FlowSolver *f = gks_flow_solver(sim->flow);
+GksSolver *fixture_flow(Sim *sim) {
+    GksSolver *f = gks_flow_solver(sim->flow);
     assert_non_null(f);
     return f;
 }

@@ -16,8 +16,8 @@ void fixture_sim_text(const char *yaml, Sim *sim);
 
 /* The concrete models of a simulation, for tests that look inside them
  * (fail the test if the case has no such model). */
-PdBody *fixture_body(Sim *sim);
-FlowSolver *fixture_flow(Sim *sim);
+BondBody *fixture_body(Sim *sim);
+GksSolver *fixture_flow(Sim *sim);
 
 /* The value of summary key `name` of the coupling (fails if absent). */
 double fixture_coupling_summary(Sim *sim, const char *name);

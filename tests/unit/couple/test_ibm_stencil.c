@@ -99,13 +99,13 @@ static void test_weights_singular(void **state) {
 
 /* ------------------------------------------------------- through the Ibm */
 
-static FlowSolver *uniform_solver(int n) {
-    FlowConfig c;
-    flow_config_default(&c);
+static GksSolver *uniform_solver(int n) {
+    GksConfig c;
+    gks_config_default(&c);
     c.gas_constant = 1.0;
-    flow_config_uniform_grid(&c, 0.0, 1.0, n, 0.0, 1.0, n);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    gks_config_uniform_grid(&c, 0.0, 1.0, n, 0.0, 1.0, n);
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     return s;
 }
 
@@ -137,14 +137,14 @@ static void half_plane(double x0, double y0, double tx, double ty, int per_side,
     p->leading_edge = p->trailing_edge = -1;
 }
 
-static void set_state(FlowSolver *s, int64_t k, double rho, double u, double v, double p) {
-    FlowFields f = flow_solver_fields(s);
+static void set_state(GksSolver *s, int64_t k, double rho, double u, double v, double p) {
+    GksFields f = gks_solver_fields(s);
     const double w[4] = {rho, rho * u, rho * v, p / 0.4 + 0.5 * rho * (u * u + v * v)};
     for (int q = 0; q < 4; q++) f.w[q][k] = w[q];
 }
 
-static void get_state(FlowSolver *s, int64_t k, double *rho, double *u, double *v, double *p) {
-    FlowFields f = flow_solver_fields(s);
+static void get_state(GksSolver *s, int64_t k, double *rho, double *u, double *v, double *p) {
+    GksFields f = gks_solver_fields(s);
     *rho = f.w[0][k];
     *u = f.w[1][k] / *rho;
     *v = f.w[2][k] / *rho;
@@ -155,8 +155,8 @@ static void get_state(FlowSolver *s, int64_t k, double *rho, double *u, double *
  * it): u, v, T linear in s with the wall's values at s = 0, p linear in t.
  * Eq. 39 and its extended form reproduce them exactly. */
 static void run_tilted_wall(int thermal) {
-    FlowSolver *s = uniform_solver(48);
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = uniform_solver(48);
+    const Grid *g = gks_solver_grid(s);
     const double ang = 0.37, tx = cos(ang), ty = sin(ang); /* 21 degrees */
     static double buf[1600];
     IbmPolyline p;
@@ -209,7 +209,7 @@ static void run_tilted_wall(int thermal) {
     assert_int_equal(checked + skipped, ibm_ghost_count(ibm));
     assert_true(checked > 3 * skipped);
     ibm_destroy(&ibm);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_tilted_wall_adiabatic(void **state) {
@@ -224,8 +224,8 @@ static void test_tilted_wall_isothermal(void **state) {
 
 /* A uniform state moving with the wall is a solution: every ghost, at every
  * level, must reproduce it (weights sum to one). */
-static void check_uniform(Ibm *ibm, FlowSolver *s, double uw, double vw) {
-    const Grid *g = flow_solver_grid(s);
+static void check_uniform(Ibm *ibm, GksSolver *s, double uw, double vw) {
+    const Grid *g = gks_solver_grid(s);
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) set_state(s, grid_index(g, i, j), 1.3, uw, vw, 0.9);
     assert_ok(ibm_attach(ibm, s));
@@ -276,8 +276,8 @@ static void check_sight(const Ibm *ibm, const Grid *g, const IbmPolyline *b) {
 
 static void test_wall_through_centres(void **state) {
     (void)state;
-    FlowSolver *s = uniform_solver(32);
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = uniform_solver(32);
+    const Grid *g = gks_solver_grid(s);
     /* a rectangle whose bottom edge runs through a row of cell centres */
     const double yc = g->ax[1].center[20];
     IbmBodyConfig bc = {
@@ -320,13 +320,13 @@ static void test_wall_through_centres(void **state) {
     }
     ibm_destroy(&ibm);
     ibm_polyline_free(&p);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_thin_plate(void **state) {
     (void)state;
-    FlowSolver *s = uniform_solver(40);
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = uniform_solver(40);
+    const Grid *g = gks_solver_grid(s);
     /* 0.3 cells thick, slightly tilted: ghosts with three or four non-fluid
      * nodes, fluid cells on the far side of the plate */
     double v[8] = {0.2, 0.5, 0.8, 0.52, 0.8, 0.5275, 0.2, 0.5075};
@@ -353,13 +353,13 @@ static void test_thin_plate(void **state) {
     check_uniform(ibm, s, 0.0, 0.0);
     ibm_destroy(&ibm);
     ibm_polyline_free(&p);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_trailing_edge(void **state) {
     (void)state;
-    FlowSolver *s = uniform_solver(64);
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = uniform_solver(64);
+    const Grid *g = gks_solver_grid(s);
     IbmBodyConfig bc = {.kind = IBM_BODY_NACA,
                         .digits = "0012",
                         .chord = 0.6,
@@ -382,13 +382,13 @@ static void test_trailing_edge(void **state) {
     assert_true(near_te > 0);
     ibm_destroy(&ibm);
     ibm_polyline_free(&p);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_concave_corner(void **state) {
     (void)state;
-    FlowSolver *s = uniform_solver(40);
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = uniform_solver(40);
+    const Grid *g = gks_solver_grid(s);
     /* an L-shaped body whose reflex corner (0.495, 0.495) is 0.3 cells from the
      * centre (0.4875, 0.4875): that ghost's image point has three non-fluid
      * nodes (itself and its two neighbours in the arms) */
@@ -413,7 +413,7 @@ static void test_concave_corner(void **state) {
     assert_true(st.by_case[1] > 0 && st.by_case[2] > 0);
     ibm_destroy(&ibm);
     ibm_polyline_free(&p);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 int main(void) {

@@ -11,12 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const Grid *test_grid(FlowSolver **s, int n, double lo, double hi) {
-    FlowConfig c;
-    flow_config_default(&c);
-    flow_config_uniform_grid(&c, lo, hi, n, lo, hi, n);
-    assert_ok(flow_solver_create(s, &c));
-    return flow_solver_grid(*s);
+static const Grid *test_grid(GksSolver **s, int n, double lo, double hi) {
+    GksConfig c;
+    gks_config_default(&c);
+    gks_config_uniform_grid(&c, lo, hi, n, lo, hi, n);
+    assert_ok(gks_solver_create(s, &c));
+    return gks_solver_grid(*s);
 }
 
 static IbmPolyline poly(int n, double *x, double *y) {
@@ -31,7 +31,7 @@ static IbmPolyline poly(int n, double *x, double *y) {
 
 static void test_inside_edges_vertices(void **state) {
     (void)state;
-    FlowSolver *s = NULL;
+    GksSolver *s = NULL;
     const Grid *g = test_grid(&s, 16, -1.0, 3.0);
     /* a unit square and a diamond (edges at 45 degrees) */
     double sx[4] = {0, 1, 1, 0}, sy[4] = {0, 0, 1, 1};
@@ -58,7 +58,7 @@ static void test_inside_edges_vertices(void **state) {
     for (size_t k = 0; k < sizeof out / sizeof out[0]; k++)
         assert_int_equal(ibm_point_inside(ibm, out[k][0], out[k][1]), 0);
     ibm_destroy(&ibm);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 /* Winding number by brute force (a different formulation: signed angles). */
@@ -90,7 +90,7 @@ static void brute_nearest(const IbmPolyline *b, int nb, double x, double y, doub
 
 static void test_tags_and_nearest(void **state) {
     (void)state;
-    FlowSolver *s = NULL;
+    GksSolver *s = NULL;
     const Grid *g = test_grid(&s, 96, 0.0, 1.0);
     IbmBodyConfig c1 = {
         .kind = IBM_BODY_CIRCLE, .center = {0.3, 0.35}, .radius = 0.17, .markers = 300};
@@ -152,12 +152,12 @@ static void test_tags_and_nearest(void **state) {
     }
     ibm_destroy(&ibm);
     for (int q = 0; q < 3; q++) ibm_polyline_free(&b[q]);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_refused(void **state) {
     (void)state;
-    FlowSolver *s = NULL;
+    GksSolver *s = NULL;
     const Grid *g = test_grid(&s, 8, 0.0, 1.0);
     double x[3] = {0.2, 0.2, 0.6}, y[3] = {0.2, 0.6, 0.2}; /* clockwise */
     IbmPolyline p = poly(3, x, y);
@@ -165,7 +165,7 @@ static void test_refused(void **state) {
     assert_int_equal(ibm_create(&ibm, g, &p, 1), NSPD_ERR_INPUT);
     assert_null(ibm);
     assert_int_equal(ibm_create(&ibm, g, &p, 0), NSPD_ERR_INPUT);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 int main(void) {

@@ -13,9 +13,9 @@
 #include <string.h>
 
 /* Stretched grid on [0, 2] x [0, 1]. */
-static FlowSolver *make_solver(void) {
-    FlowConfig c;
-    flow_config_default(&c);
+static GksSolver *make_solver(void) {
+    GksConfig c;
+    gks_config_default(&c);
     c.gas_constant = 1.0;
     c.x0 = 0.0;
     c.y0 = 0.0;
@@ -24,8 +24,8 @@ static FlowSolver *make_solver(void) {
     c.segments[0][1] = (GridSegment){.length = 0.8, .h_start = 0.01, .h_end = 0.03};
     c.segment_count[1] = 1;
     c.segments[1][0] = (GridSegment){.length = 1.0, .h_start = 0.008, .h_end = 0.015};
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     return s;
 }
 
@@ -67,8 +67,8 @@ static void shift(IbmPolyline *p, const IbmPolyline *ref, double dx, double dy, 
 
 static void test_update_equals_scratch(void **state) {
     (void)state;
-    FlowSolver *s = make_solver();
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = make_solver();
+    const Grid *g = gks_solver_grid(s);
     const IbmBodyConfig cc = {
         .kind = IBM_BODY_CIRCLE, .center = {0.5, 0.5}, .radius = 0.2, .markers = 400};
     const IbmBodyConfig nc = {.kind = IBM_BODY_NACA,
@@ -135,17 +135,17 @@ static void test_update_equals_scratch(void **state) {
         ibm_polyline_free(&ref[q]);
         ibm_polyline_free(&cur[q]);
     }
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 /* A uniform flow moving with a translating body: the cells the body leaves
  * behind become fluid with exactly that state. */
 static void test_fresh_cells(void **state) {
     (void)state;
-    FlowSolver *s = make_solver();
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = make_solver();
+    const Grid *g = gks_solver_grid(s);
     const double U = 0.4, V = 0.1;
-    FlowFields f = flow_solver_fields(s);
+    GksFields f = gks_solver_fields(s);
     for (int j = -2; j < g->ny + 2; j++)
         for (int i = -2; i < g->nx + 2; i++) {
             const int64_t k = grid_index(g, i, j);
@@ -174,7 +174,7 @@ static void test_fresh_cells(void **state) {
         ibm_stats(ibm, &st);
         total_fresh += st.fresh;
         ibm_fill_ghosts(ibm, s);
-        f = flow_solver_fields(s);
+        f = gks_solver_fields(s);
         for (int j = 0; j < g->ny; j++)
             for (int i = 0; i < g->nx; i++) {
                 const int64_t k = grid_index(g, i, j);
@@ -190,16 +190,16 @@ static void test_fresh_cells(void **state) {
     ibm_destroy(&ibm);
     ibm_polyline_free(&ref);
     ibm_polyline_free(&cur);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 /* Surface loads of a body in a fluid at rest at uniform pressure: no force;
  * the tractions carry -(p - p_ambient) n and lump onto the markers. */
 static void test_surface_at_rest(void **state) {
     (void)state;
-    FlowSolver *s = make_solver();
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    GksSolver *s = make_solver();
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     for (int64_t k = 0; k < g->size; k++) {
         f.w[0][k] = 1.0;
         f.w[1][k] = f.w[2][k] = 0.0;
@@ -243,7 +243,7 @@ static void test_surface_at_rest(void **state) {
     ibm_surface_free(&sf);
     ibm_destroy(&ibm);
     ibm_polyline_free(&p);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 int main(void) {

@@ -23,13 +23,13 @@ static void linear(void *ctx, double x, double y, FlowPrim *out) {
 }
 
 static void make(Flow **f) {
-    FlowModelConfig c;
+    FlowConfig c;
     memset(&c, 0, sizeof c);
     c.method = FLOW_METHOD_GKS;
-    FlowConfig *s = &c.gks.solver;
-    flow_config_default(s);
+    GksConfig *s = &c.gks.solver;
+    gks_config_default(s);
     s->gas_constant = 1.0;
-    flow_config_uniform_grid(s, 0.0, 1.0, 16, 0.0, 2.0, 24);
+    gks_config_uniform_grid(s, 0.0, 1.0, 16, 0.0, 2.0, 24);
     s->init_fn = linear;
     s->init_quadrature = 2;
     assert_ok(flow_create(f, &c));
@@ -73,7 +73,7 @@ static void test_sample_is_exact_for_linear_fields(void **state) {
 
 static void test_unknown_method_is_refused(void **state) {
     (void)state;
-    FlowModelConfig c;
+    FlowConfig c;
     memset(&c, 0, sizeof c);
     c.method = FLOW_METHOD_MAX - 1; /* an empty registry slot */
     Flow *f;

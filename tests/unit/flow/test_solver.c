@@ -3,21 +3,21 @@
 #include "test_support.h"
 
 #include "core/status.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static void base_config(FlowConfig *c, int n) {
-    flow_config_default(c);
+static void base_config(GksConfig *c, int n) {
+    gks_config_default(c);
     c->gas_constant = 1.0;
     c->viscosity = VISCOSITY_CONSTANT;
     c->mu_ref = 1e-3;
-    flow_config_uniform_grid(c, 0.0, 1.0, n, 0.0, 1.0, n);
+    gks_config_uniform_grid(c, 0.0, 1.0, n, 0.0, 1.0, n);
     const FlowBc per = {.kind = BC_PERIODIC};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(c, f, &per);
+    for (int f = 0; f < 4; f++) gks_config_set_bc(c, f, &per);
     c->initial = (FlowPrim){1.0, 0.3, 0.1, 1.0};
 }
 
@@ -28,10 +28,10 @@ typedef struct {
     int calls;
 } HookCtx;
 
-static void hook(void *ctx, FlowSolver *s) {
+static void hook(void *ctx, GksSolver *s) {
     ((HookCtx *)ctx)->calls++;
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     const double w[4] = {1.0, 0.3, 0.1, 1.0 / 0.4 + 0.5 * 0.1};
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
@@ -44,9 +44,9 @@ static void hook(void *ctx, FlowSolver *s) {
 /* Cells 4..11 x 4..11 of a 16 x 16 solver: a ring of ghosts round a solid
  * block holding NaN. With `slot` (grid-sized), numbers the ring cells in it
  * (-1 elsewhere). Returns the ring's size. */
-static int make_ring(FlowSolver *s, int32_t *slot) {
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+static int make_ring(GksSolver *s, int32_t *slot) {
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     if (slot)
         for (int64_t k = 0; k < g->size; k++) slot[k] = -1;
     int n = 0;
@@ -65,17 +65,17 @@ static int make_ring(FlowSolver *s, int32_t *slot) {
 
 static void test_kinds_and_hook(void **state) {
     (void)state;
-    FlowConfig c;
+    GksConfig c;
     base_config(&c, 16);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
+    const Grid *g = gks_solver_grid(s);
     make_ring(s, NULL);
     HookCtx ctx = {0};
-    flow_solver_set_ghost_hook(s, hook, &ctx);
-    for (int n = 0; n < 5; n++) assert_ok(flow_solver_step(s, 1e-3));
+    gks_solver_set_ghost_hook(s, hook, &ctx);
+    for (int n = 0; n < 5; n++) assert_ok(gks_solver_step(s, 1e-3));
     assert_int_equal(ctx.calls, 5);
-    FlowFields f = flow_solver_fields(s);
+    GksFields f = gks_solver_fields(s);
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
             const int64_t k = grid_index(g, i, j);
@@ -86,11 +86,11 @@ static void test_kinds_and_hook(void **state) {
             /* a uniform stream around a ghost ring holding the same stream stays uniform */
             if (f.kind[k] == FLOW_CELL_FLUID) assert_close(f.w[0][k], 1.0, 1e-13);
         }
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     assert_null(s);
 }
 
-/* Sealed ghost faces (flow_solver_set_ghost_walls): the same ring with its
+/* Sealed ghost faces (gks_solver_set_ghost_walls): the same ring with its
  * walls at rest. Fluid cell (3, 6) meets the ring only at its right face,
  * and the state is uniform, so one step changes it only by what that face
  * no longer carries: the face keeps the pressure and loses the convected
@@ -99,22 +99,22 @@ static void test_kinds_and_hook(void **state) {
  * With the walls moving with the stream the face carries the stream's flux
  * and nothing changes. */
 static void sealed_ring_step(double wall_u, double wall_v, double out[4]) {
-    FlowConfig c;
+    GksConfig c;
     base_config(&c, 16);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
-    const Grid *g = flow_solver_grid(s);
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
+    const Grid *g = gks_solver_grid(s);
     int32_t *slot = test_malloc((size_t)g->size * sizeof(int32_t));
     double wu[28], wv[28];
     assert_int_equal(make_ring(s, slot), 28);
     for (int e = 0; e < 28; e++) wu[e] = wall_u, wv[e] = wall_v;
     HookCtx ctx = {0};
-    flow_solver_set_ghost_hook(s, hook, &ctx);
-    flow_solver_set_ghost_walls(s, slot, wu, wv);
-    assert_ok(flow_solver_step(s, 1e-3));
-    FlowFields f = flow_solver_fields(s);
+    gks_solver_set_ghost_hook(s, hook, &ctx);
+    gks_solver_set_ghost_walls(s, slot, wu, wv);
+    assert_ok(gks_solver_step(s, 1e-3));
+    GksFields f = gks_solver_fields(s);
     for (int v = 0; v < 4; v++) out[v] = f.w[v][grid_index(g, 3, 6)];
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     test_free(slot);
 }
 
@@ -136,14 +136,14 @@ static void test_sealed_ghost_faces(void **state) {
 
 static void test_numeric_check_names_the_cell(void **state) {
     (void)state;
-    FlowConfig c;
+    GksConfig c;
     base_config(&c, 8);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     f.w[3][grid_index(g, 5, 3)] = -1.0; /* negative energy: p < 0 */
-    const int st = flow_solver_step(s, 1e-4);
+    const int st = gks_solver_step(s, 1e-4);
     assert_int_equal(st, NSPD_ERR_NUMERIC);
     /* the bad cell spoils its stencil: the first bad one in row order is
      * within two cells of it */
@@ -154,54 +154,54 @@ static void test_numeric_check_names_the_cell(void **state) {
     assert_true(abs(i - 5) <= 2 && j >= 1 && j <= 3);
     assert_non_null(strstr(nspd_error_message(), "step 1"));
     nspd_error_clear();
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_accessors_and_dt(void **state) {
     (void)state;
-    FlowConfig c;
+    GksConfig c;
     base_config(&c, 10);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     double out[100], tot[4];
-    flow_solver_primitive(s, FLOW_PRESSURE, out);
+    gks_solver_primitive(s, FLOW_PRESSURE, out);
     assert_close(out[37], 1.0, 1e-14);
-    flow_solver_primitive(s, FLOW_MACH, out);
+    gks_solver_primitive(s, FLOW_MACH, out);
     assert_close(out[0], sqrt(0.1 / 1.4), 1e-14);
-    flow_solver_primitive(s, FLOW_TEMPERATURE, out);
+    gks_solver_primitive(s, FLOW_TEMPERATURE, out);
     assert_close(out[99], 1.0, 1e-14);
-    flow_solver_totals(s, tot);
+    gks_solver_totals(s, tot);
     assert_close(tot[0], 1.0, 1e-14);
     assert_close(tot[1], 0.3, 1e-14);
     /* dt: CFL / ((|u|+c)/dx + (|v|+c)/dy + 2 nu_eff (2/dx^2)) */
     const double cs = sqrt(1.4), h = 0.1, nu = fmax(4.0 / 3.0, 1.4 / 0.72) * 1e-3;
     const double rate = (0.3 + cs) / h + (0.1 + cs) / h + 2.0 * nu * 2.0 / (h * h);
-    assert_close(flow_solver_stable_dt(s), 0.5 / rate, 1e-15);
-    assert_ok(flow_solver_advance(s, 0.05, 0));
-    assert_close(flow_solver_time(s), 0.05, 1e-15);
-    assert_true(flow_solver_step_count(s) > 0);
-    assert_true(flow_solver_fallbacks_total(s) == 0);
-    flow_solver_destroy(&s);
+    assert_close(gks_solver_stable_dt(s), 0.5 / rate, 1e-15);
+    assert_ok(gks_solver_advance(s, 0.05, 0));
+    assert_close(gks_solver_time(s), 0.05, 1e-15);
+    assert_true(gks_solver_step_count(s) > 0);
+    assert_true(gks_solver_fallbacks_total(s) == 0);
+    gks_solver_destroy(&s);
 }
 
 static void test_bad_config(void **state) {
     (void)state;
-    FlowConfig c;
+    GksConfig c;
     base_config(&c, 8);
     c.bc[FLOW_FACE_XHI].seg[0].kind = BC_EXTRAPOLATION;
-    FlowSolver *s = NULL;
-    assert_int_equal(flow_solver_create(&s, &c), NSPD_ERR_INPUT);
+    GksSolver *s = NULL;
+    assert_int_equal(gks_solver_create(&s, &c), NSPD_ERR_INPUT);
     assert_null(s);
     base_config(&c, 8);
     c.cfl = 0.0;
-    assert_int_equal(flow_solver_create(&s, &c), NSPD_ERR_INPUT);
+    assert_int_equal(gks_solver_create(&s, &c), NSPD_ERR_INPUT);
     nspd_error_clear();
 }
 
 /* Initial regions: a rectangle and a disc (later regions win), Gauss-averaged. */
 static void test_initial_regions(void **state) {
     (void)state;
-    FlowConfig c;
+    GksConfig c;
     base_config(&c, 20);
     Shape rect = {.kind = SHAPE_RECTANGLE, .lo = {0.0, 0.0}, .hi = {0.5, 1.0}};
     Shape disc = {.kind = SHAPE_DISC, .center = {0.25, 0.5}, .radius = 0.1};
@@ -210,17 +210,17 @@ static void test_initial_regions(void **state) {
     c.regions = regions;
     c.region_count = 2;
     c.init_quadrature = 3;
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     double rho[400];
-    flow_solver_primitive(s, FLOW_DENSITY, rho);
+    gks_solver_primitive(s, FLOW_DENSITY, rho);
     assert_close(rho[0], 2.0, 1e-14);           /* cell (0, 0): rectangle */
     assert_close(rho[19], 1.0, 1e-14);          /* cell (19, 0): background */
     assert_close(rho[10 * 20 + 4], 5.0, 1e-14); /* (4, 10) centre (0.225, 0.525): disc */
     assert_close(rho[3 * 20 + 19], 1.0, 1e-14);
     /* the cell straddling the disc edge gets a quadrature average */
     assert_true(rho[10 * 20 + 6] > 2.0 && rho[10 * 20 + 6] < 5.0);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_bench_runs(void **state) {

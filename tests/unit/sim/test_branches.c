@@ -12,7 +12,7 @@
 /* Damage 0.5 within one spacing of the crack: the stem along +x from x = 5 mm
  * to the branch point (30 mm, 20 mm), then two branches at +up and -down
  * degrees; 0 elsewhere. */
-static void y_shaped(const PdBody *b, double up, double down, double *damage) {
+static void y_shaped(const BondBody *b, double up, double down, double *damage) {
     const double bx = 0.030, by = 0.020, dx = b->spacing;
     for (int64_t i = 0; i < b->n; i++) {
         double x = b->x[0][i], y = b->x[1][i], d = (double)INFINITY;
@@ -28,8 +28,8 @@ static void y_shaped(const PdBody *b, double up, double down, double *damage) {
 
 static void check(double up, double down) {
     PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4); /* 80 mm x 40 mm */
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     PdPoints pts;
     bond_solid_points_of(&b, &pts);
     double *damage;
@@ -51,7 +51,7 @@ static void check(double up, double down) {
     assert_close(r.point[0], 0.030, 2e-3);
     assert_close(r.point[1], 0.020, 1e-3);
     nspd_free(&damage);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 static void test_symmetric_and_skewed_branches(void **state) {
@@ -63,9 +63,9 @@ static void test_symmetric_and_skewed_branches(void **state) {
 
 /* A 160 x 80 block (spacing 0.5 mm) and its damage field (allocated here):
  * a straight crack, damage 0.5 within 0.5 mm of y = 20 mm. */
-static double *straight_crack_block(PdBody *b) {
+static double *straight_crack_block(BondBody *b) {
     PdConfig cfg = fixture_block(2, 160, 80, 0, 5e-4);
-    assert_ok(pd_body_create(b, &cfg));
+    assert_ok(bond_body_create(b, &cfg));
     double *damage;
     assert_ok(nspd_alloc(&damage, (size_t)b->n, sizeof(double)));
     for (int64_t i = 0; i < b->n; i++) damage[i] = fabs(b->x[1][i] - 0.020) <= 5e-4 ? 0.5 : 0.0;
@@ -74,7 +74,7 @@ static double *straight_crack_block(PdBody *b) {
 
 static void test_straight_crack_does_not_branch(void **state) {
     (void)state;
-    PdBody b;
+    BondBody b;
     double *damage = straight_crack_block(&b);
     PdPoints pts;
     bond_solid_points_of(&b, &pts);
@@ -87,7 +87,7 @@ static void test_straight_crack_does_not_branch(void **state) {
     assert_false(r.branched);
     assert_true(isnan(r.angle_deg));
     nspd_free(&damage);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 /* With `extent` set, the run reports the first measurement whose branches
@@ -95,7 +95,7 @@ static void test_straight_crack_does_not_branch(void **state) {
  * body has broken up and damage is everywhere). */
 static void test_first_branching_is_kept(void **state) {
     (void)state;
-    PdBody b;
+    BondBody b;
     double *damage = straight_crack_block(&b);
     PdPoints pts;
     bond_solid_points_of(&b, &pts);
@@ -140,7 +140,7 @@ static void test_first_branching_is_kept(void **state) {
     assert_true(isnan(t));
     assert_true(fabs(r.angle_deg - 130.0) > 10.0);
     nspd_free(&damage);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 int main(void) {

@@ -32,7 +32,7 @@ typedef struct {
     double *density; /* n * n, for output */
 } UniformFlow;
 
-static int uniform_create(void **impl, FlowModelConfig *cfg) {
+static int uniform_create(void **impl, FlowConfig *cfg) {
     UniformFlow *f;
     TRY(nspd_alloc(&f, 1, sizeof *f));
     f->cfg = *(const UniformConfig *)cfg->external;

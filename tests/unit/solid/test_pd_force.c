@@ -3,7 +3,7 @@
 #include "pd_fixtures.h"
 #include "test_support.h"
 
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_diagnostics.h"
 #include "solid/pd_force.h"
 #include "solid/pd_integrate.h"
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 
 /* Largest |force| component, the scale for round-off comparisons. */
-static double force_scale(const PdBody *b) {
+static double force_scale(const BondBody *b) {
     double m = 0;
     for (int d = 0; d < b->dim; d++)
         for (int64_t i = 0; i < b->n; i++) m = fmax(m, fabs(b->force[d][i]));
@@ -20,7 +20,7 @@ static double force_scale(const PdBody *b) {
 }
 
 /* A smooth, non-trivial displacement field of amplitude 1e-3 dx. */
-static void deform(PdBody *b) {
+static void deform(BondBody *b) {
     for (int64_t i = 0; i < b->n; i++)
         for (int d = 0; d < b->dim; d++)
             b->u[d][i] = 1e-3 * b->spacing * sin(3.1 * b->x[0][i] / b->spacing + d) *
@@ -33,8 +33,8 @@ static void test_rigid_motion_gives_no_force(void **state) {
     (void)state;
     for (int dim = 2; dim <= 3; dim++) {
         PdConfig cfg = fixture_block(dim, 10, 10, 10, 1e-3);
-        PdBody b;
-        assert_ok(pd_body_create(&b, &cfg));
+        BondBody b;
+        assert_ok(bond_body_create(&b, &cfg));
         deform(&b);
         pd_force_compute(&b);
         double reference = force_scale(&b); /* what a real deformation of 1e-3 dx gives */
@@ -49,7 +49,7 @@ static void test_rigid_motion_gives_no_force(void **state) {
         /* round-off of |y| - |xi| at |xi| ~ 3e-3 relative 1e-16, against
          * stretches of 1e-3 in the reference: ratio ~1e-12 */
         assert_true(force_scale(&b) < 1e-9 * reference);
-        pd_body_destroy(&b);
+        bond_body_destroy(&b);
     }
 }
 
@@ -58,8 +58,8 @@ static void test_newtons_third_law(void **state) {
     (void)state;
     for (int dim = 2; dim <= 3; dim++) {
         PdConfig cfg = fixture_block(dim, 12, 9, 7, 1e-3);
-        PdBody b;
-        assert_ok(pd_body_create(&b, &cfg));
+        BondBody b;
+        assert_ok(bond_body_create(&b, &cfg));
         deform(&b);
         pd_force_compute(&b);
         for (int d = 0; d < dim; d++) {
@@ -70,7 +70,7 @@ static void test_newtons_third_law(void **state) {
             }
             assert_true(fabs(sum) < 1e-13 * mag);
         }
-        pd_body_destroy(&b);
+        bond_body_destroy(&b);
     }
 }
 
@@ -81,8 +81,8 @@ static void test_newtons_third_law(void **state) {
 static void test_force_is_energy_gradient(void **state) {
     (void)state;
     PdConfig cfg = fixture_block(2, 10, 10, 0, 1e-3);
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     deform(&b);
     pd_force_compute(&b);
     int64_t probes[3] = {0, b.n / 2, b.n - 7};
@@ -100,7 +100,7 @@ static void test_force_is_energy_gradient(void **state) {
             assert_close(vf, -grad, 1e-6 * fabs(vf) + 1e-9 * fabs(grad));
         }
     }
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 /* A breakable bond stretched past s_c breaks after the step that sees it
@@ -110,8 +110,8 @@ static void test_failure_is_history(void **state) {
     PdConfig cfg = fixture_block(2, 8, 8, 0, 1e-3);
     cfg.failure = true;
     cfg.critical_stretch = 0.01;
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     /* 2 % uniform strain along x: every bond with a large x component breaks */
     for (int64_t i = 0; i < b.n; i++) b.u[0][i] = 0.02 * b.x[0][i];
     pd_force_compute(&b);
@@ -128,16 +128,16 @@ static void test_failure_is_history(void **state) {
             expect += s > 0.01;
         }
     assert_int_equal(broken, expect / 2);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 
     cfg = fixture_block(2, 8, 8, 0, 1e-3);
     cfg.failure = false;
     cfg.critical_stretch = 0.01;
-    assert_ok(pd_body_create(&b, &cfg));
+    assert_ok(bond_body_create(&b, &cfg));
     for (int64_t i = 0; i < b.n; i++) b.u[0][i] = 0.02 * b.x[0][i];
     pd_force_compute(&b);
     assert_int_equal(pd_broken_bonds(&b), 0);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 /* dt = min_i sqrt(2 rho / sum_j k_ij) (Silling and Askari 2005), against a
@@ -147,8 +147,8 @@ static void test_stable_time_step(void **state) {
     (void)state;
     PdConfig cfg = fixture_block(2, 12, 12, 0, 1e-3);
     cfg.surface_correction = PD_SURFACE_NONE;
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     double sum = 0, V = 1e-9, dx = 1e-3, delta = 3.015e-3;
     for (int i = -3; i <= 3; i++)
         for (int j = -3; j <= 3; j++) {
@@ -158,7 +158,7 @@ static void test_stable_time_step(void **state) {
         }
     /* interior points have the largest sum, hence the smallest step */
     assert_close(pd_stable_time_step(&b), sqrt(2 * 8000 / sum), 1e-7 * sqrt(2 * 8000 / sum));
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 int main(void) {

@@ -7,7 +7,7 @@
 #include "core/status.h"
 #include "solid/corrections.h"
 #include "solid/lattice.h"
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_config.h"
 #include "solid/pd_diagnostics.h"
 #include "solid/precrack.h"
@@ -53,8 +53,8 @@ static void test_lattice_fill_and_order(void **state) {
 /* Brute-force neighbour count of every point against the cell list. */
 static void check_neighbours(int dim, int n, int interior_expected) {
     PdConfig cfg = fixture_block(dim, n, n, n, 1e-3);
-    PdBody body;
-    assert_ok(pd_body_create(&body, &cfg));
+    BondBody body;
+    assert_ok(bond_body_create(&body, &cfg));
     double delta = body.horizon;
     int64_t interior = -1;
     for (int64_t i = 0; i < body.n; i++) {
@@ -73,7 +73,7 @@ static void check_neighbours(int dim, int n, int interior_expected) {
         if (inside) interior = count;
     }
     assert_int_equal(interior, interior_expected);
-    pd_body_destroy(&body);
+    bond_body_destroy(&body);
 }
 
 static void test_neighbours_match_brute_force(void **state) {
@@ -130,8 +130,8 @@ static void test_precrack_breaks_crossing_bonds(void **state) {
     assert_ok(nspd_alloc(&cfg.precracks, 1, sizeof(PdPrecrack)));
     cfg.precrack_count = 1;
     cfg.precracks[0] = (PdPrecrack){.a = {0.005, 0.010, 0}, .b = {0.015, 0.010, 0}};
-    PdBody body;
-    assert_ok(pd_body_create(&body, &cfg));
+    BondBody body;
+    assert_ok(bond_body_create(&body, &cfg));
     int64_t broken = 0;
     for (int64_t i = 0; i < body.n; i++)
         for (int64_t b = body.bond_first[i]; b < body.bond_first[i + 1]; b++) {
@@ -153,7 +153,7 @@ static void test_precrack_breaks_crossing_bonds(void **state) {
         assert_true(damage[i] >= 0.0 && damage[i] < 0.5);
     }
     nspd_free(&damage);
-    pd_body_destroy(&body);
+    bond_body_destroy(&body);
 }
 
 /* Energy errors of a 16^dim block under the calibration strain along x:
@@ -164,8 +164,8 @@ static void energy_errors(int dim, PdSurfaceCorrection mode, double *worst, doub
                           double *deep) {
     PdConfig cfg = fixture_block(dim, 16, 16, 16, 1e-3);
     cfg.surface_correction = mode;
-    PdBody body;
-    assert_ok(pd_body_create(&body, &cfg));
+    BondBody body;
+    assert_ok(bond_body_create(&body, &cfg));
     double w_classical = pd_classical_uniaxial_energy(&body.cfg, 1e-3);
     for (int64_t i = 0; i < body.n; i++) body.u[0][i] = 1e-3 * body.x[0][i];
     *worst = *mean = *deep = 0;
@@ -193,7 +193,7 @@ static void energy_errors(int dim, PdSurfaceCorrection mode, double *worst, doub
         *mean += err / (double)body.n;
         if (depth >= 6) *deep = fmax(*deep, err);
     }
-    pd_body_destroy(&body);
+    bond_body_destroy(&body);
 }
 
 /* The energy method makes the deep interior exact (to the float32 storage of

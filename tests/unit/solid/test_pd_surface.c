@@ -4,14 +4,14 @@
 #include "test_support.h"
 
 #include "core/mem.h"
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_surface.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static void check_loops(const PdBody *b, const PdSurface *s) {
+static void check_loops(const BondBody *b, const PdSurface *s) {
     for (int k = 0; k < s->loop_count; k++) {
         int64_t lo = s->loop_start[k], hi = s->loop_start[k + 1];
         double area = 0;
@@ -28,8 +28,8 @@ static void check_loops(const PdBody *b, const PdSurface *s) {
 static void test_rectangle_loop(void **state) {
     (void)state;
     PdConfig cfg = fixture_block(2, 10, 6, 0, 1e-3);
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     PdSurface s;
     assert_ok(pd_surface_trace(&b, &s));
     assert_int_equal(s.loop_count, 1);
@@ -41,7 +41,7 @@ static void test_rectangle_loop(void **state) {
         assert_true(i == 0 || j == 0 || i == 9 || j == 5);
     }
     pd_surface_free(&s);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 static void test_disc_and_two_parts(void **state) {
@@ -53,8 +53,8 @@ static void test_disc_and_two_parts(void **state) {
     cfg.geometry.shapes[0] = (Shape){.kind = SHAPE_DISC, .center = {0, 0, 0}, .radius = 6e-3};
     cfg.geometry.shapes[1] =
         (Shape){.kind = SHAPE_RECTANGLE, .lo = {10e-3, -3e-3}, .hi = {14e-3, 3e-3}};
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     PdSurface s;
     assert_ok(pd_surface_trace(&b, &s));
     assert_int_equal(s.loop_count, 2);
@@ -74,20 +74,20 @@ static void test_disc_and_two_parts(void **state) {
     }
     nspd_free(&on_loop);
     pd_surface_free(&s);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 static void test_thin_strip_goes_out_and_back(void **state) {
     (void)state;
     PdConfig cfg = fixture_block(2, 12, 1, 0, 1e-3);
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     PdSurface s;
     assert_ok(pd_surface_trace(&b, &s));
     assert_int_equal(s.loop_count, 1);
     assert_int_equal(s.length, 2 * 12 - 2);
     pd_surface_free(&s);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 /* A uniform pressure on a closed loop exerts no net force; the force the
@@ -95,8 +95,8 @@ static void test_thin_strip_goes_out_and_back(void **state) {
 static void test_tractions_balance(void **state) {
     (void)state;
     PdConfig cfg = fixture_block(2, 9, 7, 0, 1e-3);
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     for (int64_t i = 0; i < b.n; i++) b.u[1][i] = 1e-4 * sin(b.x[0][i] * 300.0); /* bent */
     PdSurface s;
     assert_ok(pd_surface_trace(&b, &s));
@@ -132,7 +132,7 @@ static void test_tractions_balance(void **state) {
     nspd_free(&x);
     nspd_free(&y);
     pd_surface_free(&s);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 int main(void) {

@@ -19,10 +19,10 @@ static double l1_error(const char *case_file, RiemannState left, RiemannState ri
     SimRunOptions opt = {NULL, false};
     assert_ok(sim_run(&sim, &opt));
     *t = sim.time;
-    const Grid *g = flow_solver_grid(fixture_flow(&sim));
+    const Grid *g = gks_solver_grid(fixture_flow(&sim));
     double *rho;
     assert_ok(nspd_alloc(&rho, (size_t)g->nx * (size_t)g->ny, sizeof(double)));
-    flow_solver_primitive(fixture_flow(&sim), FLOW_DENSITY, rho);
+    gks_solver_primitive(fixture_flow(&sim), FLOW_DENSITY, rho);
     RiemannSolution exact;
     assert_ok(riemann_exact_solve(&left, &right, 1.4, &exact));
     double err = 0.0;

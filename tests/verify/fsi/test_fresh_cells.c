@@ -60,20 +60,20 @@ static const char CASE_SEALED[] = CASE_BODY "coupling: {wall: adiabatic, ghost_f
 static void translating_disc(const char *text, double *worst_mass_out, double *worst_jump_out) {
     Sim sim;
     fixture_sim_text(text, &sim);
-    const Grid *g = flow_solver_grid(fixture_flow(&sim));
+    const Grid *g = gks_solver_grid(fixture_flow(&sim));
     const int64_t ncell = (int64_t)g->nx * g->ny;
     double *p_prev, *p_now;
     assert_ok(nspd_alloc(&p_prev, (size_t)ncell, sizeof(double)));
     assert_ok(nspd_alloc(&p_now, (size_t)ncell, sizeof(double)));
     const double q = 0.5 * 1.0 * 0.2 * 0.2;
     double totals[4], mass0, worst_mass = 0, worst_jump = 0, x0 = fixture_body(&sim)->x[0][0];
-    flow_solver_totals(fixture_flow(&sim), totals);
+    gks_solver_totals(fixture_flow(&sim), totals);
     mass0 = totals[0];
-    flow_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_prev);
+    gks_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_prev);
     while (sim.time < 6.0 - 1e-12) {
         assert_ok(sim_advance(&sim, 1));
-        flow_solver_totals(fixture_flow(&sim), totals);
-        flow_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_now);
+        gks_solver_totals(fixture_flow(&sim), totals);
+        gks_solver_primitive(fixture_flow(&sim), FLOW_PRESSURE, p_now);
         if (sim.time > 2.0) {
             double swept =
                 1.0 * 0.52 * (fixture_body(&sim)->x[0][0] + fixture_body(&sim)->u[0][0] - x0);

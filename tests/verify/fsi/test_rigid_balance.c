@@ -84,7 +84,7 @@ static void test_momentum_exchange(void **state) {
     double worst = 0.0;
     for (int s = 0; s < 20; s++) {
         assert_ok(sim_advance(&sim, 1));
-        const PdBody *b = fixture_body(&sim);
+        const BondBody *b = fixture_body(&sim);
         double received[2] = {0, 0};
         for (int64_t i = 0; i < b->n; i++)
             for (int d = 0; d < 2; d++) received[d] += b->volume[i] * b->external[d][i];

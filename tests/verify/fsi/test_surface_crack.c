@@ -47,7 +47,7 @@ static void test_crack_stays_closed(void **state) {
     fixture_sim_text(CASE, &sim);
     SimRunOptions opt = {NULL, false};
     assert_ok(sim_run(&sim, &opt));
-    const PdBody *b = fixture_body(&sim);
+    const BondBody *b = fixture_body(&sim);
     /* the mouth's opening: the gap between the two points nearest to the
      * left face just above and below the crack */
     double upper = (double)INFINITY, lower = -(double)INFINITY;
@@ -59,7 +59,7 @@ static void test_crack_stays_closed(void **state) {
         else
             lower = fmax(lower, y);
     }
-    const Grid *g = flow_solver_grid(fixture_flow(&sim));
+    const Grid *g = gks_solver_grid(fixture_flow(&sim));
     const uint8_t *kind = ibm_kinds(ghost_coupling_ibm(sim.coupling));
     int inside = 0, fluid = 0;
     for (int j = 0; j < g->ny; j++)

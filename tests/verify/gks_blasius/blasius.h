@@ -15,7 +15,7 @@
 
 #include "core/status.h"
 #include "core/timer.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -33,8 +33,8 @@ typedef struct {
 static int blasius_run(const BlasiusSetup *b, double x_lo, double x_hi, double *worst, double *mean,
                        double *seconds_steps, int verbose) {
     const double U = 0.3, L = 1.0, Re = 1e5, mu = U * L / Re;
-    FlowConfig c;
-    flow_config_default(&c);
+    GksConfig c;
+    gks_config_default(&c);
     c.gamma = 1.4;
     c.gas_constant = 1.0;
     c.viscosity = VISCOSITY_CONSTANT;
@@ -53,24 +53,24 @@ static int blasius_run(const BlasiusSetup *b, double x_lo, double x_hi, double *
     const FlowPrim inf = {1.0, U, 0.0, 1.0 / 1.4};
     const FlowBc far = {.kind = BC_SUBSONIC_INFLOW, .state = inf};
     const FlowBc out = {.kind = BC_SUBSONIC_OUTFLOW, .pressure = inf.p};
-    flow_config_set_bc(&c, FLOW_FACE_XLO, &far);
-    flow_config_set_bc(&c, FLOW_FACE_YHI, &far);
-    flow_config_set_bc(&c, FLOW_FACE_XHI, &out);
+    gks_config_set_bc(&c, FLOW_FACE_XLO, &far);
+    gks_config_set_bc(&c, FLOW_FACE_YHI, &far);
+    gks_config_set_bc(&c, FLOW_FACE_XHI, &out);
     c.bc[FLOW_FACE_YLO].count = 2;
     c.bc[FLOW_FACE_YLO].seg[0] = (FlowBc){.kind = BC_SYMMETRY};
     c.bc[FLOW_FACE_YLO].seg[1] = (FlowBc){.kind = BC_NOSLIP_ADIABATIC, .start = 0.0};
     c.initial = inf;
-    FlowSolver *s = NULL;
-    int st = flow_solver_create(&s, &c);
+    GksSolver *s = NULL;
+    int st = gks_solver_create(&s, &c);
     if (st < 0) return st;
     const double t0 = nspd_wall_time();
-    st = flow_solver_advance(s, b->t_end, 0);
+    st = gks_solver_advance(s, b->t_end, 0);
     if (st < 0) {
-        flow_solver_destroy(&s);
+        gks_solver_destroy(&s);
         return st;
     }
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     const double y1 = g->ax[1].center[0], y2 = g->ax[1].center[1];
     double w = 0.0, sum = 0.0;
     int n = 0;
@@ -100,9 +100,9 @@ static int blasius_run(const BlasiusSetup *b, double x_lo, double x_hi, double *
     *worst = w;
     *mean = n ? sum / n : 0.0;
     seconds_steps[0] = nspd_wall_time() - t0;
-    seconds_steps[1] = (double)flow_solver_step_count(s);
+    seconds_steps[1] = (double)gks_solver_step_count(s);
     seconds_steps[2] = (double)g->nx * g->ny;
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     return NSPD_OK;
 }
 

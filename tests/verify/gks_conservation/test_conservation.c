@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 #include "core/timer.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <math.h>
 #include <omp.h>
@@ -27,44 +27,44 @@ static void init(void *ctx, double x, double y, FlowPrim *q) {
     q->p = 1.0 + 0.5 * exp(-40.0 * ((x - 0.4) * (x - 0.4) + (y - 0.6) * (y - 0.6)));
 }
 
-static FlowSolver *make(int n, int walls) {
-    FlowConfig c;
-    flow_config_default(&c);
+static GksSolver *make(int n, int walls) {
+    GksConfig c;
+    gks_config_default(&c);
     c.gas_constant = 1.0;
     c.viscosity = VISCOSITY_SUTHERLAND;
     c.mu_ref = 2e-3;
     c.T_ref = 1.0;
     c.sutherland_S = 0.4;
     c.prandtl = 0.72;
-    flow_config_uniform_grid(&c, 0.0, 1.0, n, 0.0, 1.0, n);
+    gks_config_uniform_grid(&c, 0.0, 1.0, n, 0.0, 1.0, n);
     if (walls) {
         const FlowBc slip = {.kind = BC_SLIP_WALL}, wall = {.kind = BC_NOSLIP_ADIABATIC};
-        flow_config_set_bc(&c, FLOW_FACE_XLO, &slip);
-        flow_config_set_bc(&c, FLOW_FACE_XHI, &slip);
-        flow_config_set_bc(&c, FLOW_FACE_YLO, &wall);
-        flow_config_set_bc(&c, FLOW_FACE_YHI, &wall);
+        gks_config_set_bc(&c, FLOW_FACE_XLO, &slip);
+        gks_config_set_bc(&c, FLOW_FACE_XHI, &slip);
+        gks_config_set_bc(&c, FLOW_FACE_YLO, &wall);
+        gks_config_set_bc(&c, FLOW_FACE_YHI, &wall);
     } else {
         const FlowBc per = {.kind = BC_PERIODIC};
-        for (int f = 0; f < 4; f++) flow_config_set_bc(&c, f, &per);
+        for (int f = 0; f < 4; f++) gks_config_set_bc(&c, f, &per);
     }
     c.init_fn = init;
     c.init_quadrature = 2;
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     return s;
 }
 
-static void run_steps(FlowSolver *s, int steps) {
-    for (int k = 0; k < steps; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
+static void run_steps(GksSolver *s, int steps) {
+    for (int k = 0; k < steps; k++) assert_ok(gks_solver_step(s, gks_solver_stable_dt(s)));
 }
 
 static void drift(int walls) {
-    FlowSolver *s = make(48, walls);
+    GksSolver *s = make(48, walls);
     double a[4], b[4];
-    flow_solver_totals(s, a);
+    gks_solver_totals(s, a);
     const double t0 = nspd_wall_time();
     run_steps(s, 1000);
-    flow_solver_totals(s, b);
+    gks_solver_totals(s, b);
     /* momentum scale: total |mass| * a velocity of 1 */
     const double scale[4] = {a[0], a[0], a[0], a[3]};
     printf("%s box, 1000 steps (%.2f s): relative drift mass %.2e, x-mom %.2e, y-mom %.2e, "
@@ -79,7 +79,7 @@ static void drift(int walls) {
         if (walls && (v == 1 || v == 2)) continue;
         assert_true(fabs(b[v] - a[v]) <= 1e-13 * scale[v]);
     }
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_periodic_box(void **state) {
@@ -101,15 +101,15 @@ static void test_threads_bitwise(void **state) {
     int64_t size = 0;
     for (int t = 0; t < 2; t++) {
         omp_set_num_threads(t + 1);
-        FlowSolver *p = make(256, 0);
+        GksSolver *p = make(256, 0);
         run_steps(p, 20);
-        const Grid *g = flow_solver_grid(p);
+        const Grid *g = gks_solver_grid(p);
         size = g->size;
         res[t] = malloc(4 * (size_t)size * sizeof(double));
-        FlowFields f = flow_solver_fields(p);
+        GksFields f = gks_solver_fields(p);
         for (int v = 0; v < 4; v++)
             memcpy(res[t] + v * size, f.w[v], (size_t)size * sizeof(double));
-        flow_solver_destroy(&p);
+        gks_solver_destroy(&p);
     }
     omp_set_num_threads(saved);
     assert_true(memcmp(res[0], res[1], 4 * (size_t)size * sizeof(double)) == 0);

@@ -5,7 +5,7 @@
 #define NSPD_TEST_SHOCK_TUBE_H
 
 #include "core/status.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 #include "flow/riemann_exact.h"
 
 #include <math.h>
@@ -48,8 +48,8 @@ static void tube_init(void *ctx, double x, double y, FlowPrim *q) {
  * TUBE_DIAGONAL: the cells i == j against xi = (x + y - 1)/sqrt 2), or -1. */
 static double tube_l1_error(const TubeCase *c, TubeAxis axis, int n, FlowLimiter limiter,
                             const GridSegment *stretched, int nseg, int64_t *fallbacks) {
-    FlowConfig cfg;
-    flow_config_default(&cfg);
+    GksConfig cfg;
+    gks_config_default(&cfg);
     cfg.gamma = 1.4;
     cfg.gas_constant = 1.0;
     cfg.limiter = limiter;
@@ -59,18 +59,18 @@ static double tube_l1_error(const TubeCase *c, TubeAxis axis, int n, FlowLimiter
     const GridSegment full = {.length = 1.0, .cells = n};
     cfg.x0 = cfg.y0 = 0.0;
     TubeInit ti = {c, 1.0, 0.0};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(&cfg, f, &ext);
+    for (int f = 0; f < 4; f++) gks_config_set_bc(&cfg, f, &ext);
     cfg.segment_count[0] = cfg.segment_count[1] = 1;
     if (axis == TUBE_X) {
         cfg.segments[0][0] = full;
         cfg.segments[1][0] = one;
-        flow_config_set_bc(&cfg, FLOW_FACE_YLO, &per);
-        flow_config_set_bc(&cfg, FLOW_FACE_YHI, &per);
+        gks_config_set_bc(&cfg, FLOW_FACE_YLO, &per);
+        gks_config_set_bc(&cfg, FLOW_FACE_YHI, &per);
     } else if (axis == TUBE_Y) {
         cfg.segments[0][0] = one;
         cfg.segments[1][0] = full;
-        flow_config_set_bc(&cfg, FLOW_FACE_XLO, &per);
-        flow_config_set_bc(&cfg, FLOW_FACE_XHI, &per);
+        gks_config_set_bc(&cfg, FLOW_FACE_XLO, &per);
+        gks_config_set_bc(&cfg, FLOW_FACE_XHI, &per);
         ti.nx = 0.0, ti.ny = 1.0;
     } else {
         cfg.segments[0][0] = cfg.segments[1][0] = full;
@@ -83,13 +83,13 @@ static double tube_l1_error(const TubeCase *c, TubeAxis axis, int n, FlowLimiter
     cfg.init_fn = tube_init;
     cfg.init_ctx = &ti;
     cfg.init_quadrature = axis == TUBE_DIAGONAL ? 4 : 1;
-    FlowSolver *s = NULL;
-    if (flow_solver_create(&s, &cfg) < 0) return -1.0;
-    const int st = flow_solver_advance(s, c->t_end, 0);
+    GksSolver *s = NULL;
+    if (gks_solver_create(&s, &cfg) < 0) return -1.0;
+    const int st = gks_solver_advance(s, c->t_end, 0);
     RiemannSolution sol;
     riemann_exact_solve(&c->left, &c->right, 1.4, &sol);
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     double err = 0.0;
     if (axis == TUBE_DIAGONAL) {
         /* diagonal cells: exact average over the cell's extent in xi,
@@ -111,8 +111,8 @@ static double tube_l1_error(const TubeCase *c, TubeAxis axis, int n, FlowLimiter
             err += fabs(f.w[0][k] - ex[0]) * a->width[i];
         }
     }
-    if (fallbacks) *fallbacks = flow_solver_fallbacks_total(s);
-    flow_solver_destroy(&s);
+    if (fallbacks) *fallbacks = gks_solver_fallbacks_total(s);
+    gks_solver_destroy(&s);
     return st < 0 ? -1.0 : err;
 }
 

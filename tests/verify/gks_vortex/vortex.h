@@ -5,7 +5,7 @@
 #ifndef NSPD_TEST_VORTEX_H
 #define NSPD_TEST_VORTEX_H
 
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <math.h>
 
@@ -27,26 +27,26 @@ static FlowVortex vortex_at(double t) {
  * Returns the L1 density error (integral over the box / box area), or -1. */
 static double vortex_l1_error(int n, double t_end, FlowLimiter limiter, int nseg,
                               const GridSegment *segments) {
-    FlowConfig c;
-    flow_config_default(&c);
+    GksConfig c;
+    gks_config_default(&c);
     c.gas_constant = 1.0;
     c.limiter = limiter;
     c.cfl = 0.5;
-    flow_config_uniform_grid(&c, 0.0, 10.0, n, 0.0, 10.0, n);
+    gks_config_uniform_grid(&c, 0.0, 10.0, n, 0.0, 10.0, n);
     if (segments) {
         c.segment_count[0] = c.segment_count[1] = nseg;
         for (int k = 0; k < nseg; k++) c.segments[0][k] = c.segments[1][k] = segments[k];
     }
     const FlowBc per = {.kind = BC_PERIODIC};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(&c, f, &per);
+    for (int f = 0; f < 4; f++) gks_config_set_bc(&c, f, &per);
     FlowVortex v0 = vortex_at(0.0);
     c.init_fn = flow_isentropic_vortex;
     c.init_ctx = &v0;
     c.init_quadrature = 4;
-    FlowSolver *s = NULL;
-    if (flow_solver_create(&s, &c) < 0) return -1.0;
-    if (flow_solver_advance(s, t_end, 0) < 0) {
-        flow_solver_destroy(&s);
+    GksSolver *s = NULL;
+    if (gks_solver_create(&s, &c) < 0) return -1.0;
+    if (gks_solver_advance(s, t_end, 0) < 0) {
+        gks_solver_destroy(&s);
         return -1.0;
     }
     /* exact cell averages: the same quadrature on the translated vortex */
@@ -57,8 +57,8 @@ static double vortex_l1_error(int n, double t_end, FlowLimiter limiter, int nseg
                           0.5 * sqrt(3.0 / 7.0 + 2.0 / 7.0 * sqrt(1.2))};
     const double gw[4] = {(18.0 - sqrt(30.0)) / 72.0, (18.0 + sqrt(30.0)) / 72.0,
                           (18.0 + sqrt(30.0)) / 72.0, (18.0 - sqrt(30.0)) / 72.0};
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     double err = 0.0;
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) {
@@ -72,7 +72,7 @@ static double vortex_l1_error(int n, double t_end, FlowLimiter limiter, int nseg
                 }
             err += fabs(f.w[0][grid_index(g, i, j)] - ex) * g->ax[0].width[i] * g->ax[1].width[j];
         }
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     return err / 100.0;
 }
 

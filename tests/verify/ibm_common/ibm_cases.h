@@ -42,7 +42,7 @@
 #include "core/timer.h"
 #include "couple/ibm.h"
 #include "couple/ibm_surface.h"
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 #include "flow/gks_kernel.h"
 
 #include <math.h>
@@ -54,9 +54,9 @@
 
 /* Free stream and gas of a case at Mach `ma`, Reynolds `re` (reference
  * length 1); sutherland_T <= 0 gives a constant viscosity. */
-static inline void ibm_case_gas(FlowConfig *c, double ma, double re, double sutherland_T,
+static inline void ibm_case_gas(GksConfig *c, double ma, double re, double sutherland_T,
                                 FlowPrim *inf) {
-    flow_config_default(c);
+    gks_config_default(c);
     c->gamma = IBM_GAMMA;
     c->gas_constant = 1.0;
     c->prandtl = 0.72;
@@ -100,8 +100,7 @@ static inline int ibm_case_ladder(GridSegment *seg, double lo, double hi, double
     return q;
 }
 
-static inline void ibm_cylinder_config(FlowConfig *c, double h, double sutherland_T,
-                                       FlowPrim *inf) {
+static inline void ibm_cylinder_config(GksConfig *c, double h, double sutherland_T, FlowPrim *inf) {
     ibm_case_gas(c, 2.0, 300.0, sutherland_T, inf);
     c->x0 = 0.0;
     c->y0 = 0.0;
@@ -115,10 +114,10 @@ static inline void ibm_cylinder_config(FlowConfig *c, double h, double sutherlan
     c->segments[1][2] = (GridSegment){.length = 4.6, .h_start = h, .h_end = 0.5};
     const FlowBc in = {.kind = BC_SUPERSONIC_INFLOW, .state = *inf};
     const FlowBc ex = {.kind = BC_EXTRAPOLATION};
-    flow_config_set_bc(c, FLOW_FACE_XLO, &in);
-    flow_config_set_bc(c, FLOW_FACE_XHI, &ex);
-    flow_config_set_bc(c, FLOW_FACE_YLO, &ex);
-    flow_config_set_bc(c, FLOW_FACE_YHI, &ex);
+    gks_config_set_bc(c, FLOW_FACE_XLO, &in);
+    gks_config_set_bc(c, FLOW_FACE_XHI, &ex);
+    gks_config_set_bc(c, FLOW_FACE_YLO, &ex);
+    gks_config_set_bc(c, FLOW_FACE_YHI, &ex);
 }
 
 /* h_le: spacing of the leading-edge box [-0.03, 0.05] x [-a, a] (the nose
@@ -131,7 +130,7 @@ typedef struct {
     double up, down, half; /* domain extents, chords */
 } NacaGrid;
 
-static inline void ibm_naca_config(FlowConfig *c, const NacaGrid *n, double sutherland_T,
+static inline void ibm_naca_config(GksConfig *c, const NacaGrid *n, double sutherland_T,
                                    FlowPrim *inf) {
     ibm_case_gas(c, 0.5, 5000.0, sutherland_T, inf);
     const double H = fmin(0.5, 0.05 * n->half);
@@ -146,7 +145,7 @@ static inline void ibm_naca_config(FlowConfig *c, const NacaGrid *n, double suth
     c->segment_count[1] =
         ibm_case_ladder(c->segments[1], -n->half, n->half, n->a, n->h_le, H, 6, 6);
     const FlowBc far = {.kind = BC_SUBSONIC_INFLOW, .state = *inf};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(c, f, &far);
+    for (int f = 0; f < 4; f++) gks_config_set_bc(c, f, &far);
 }
 
 /* The markers of a body with spacing about h/2 around it. */
@@ -170,9 +169,9 @@ static inline int ibm_naca_markers(double h, IbmPolyline *p) {
  * ghost values included: near a wall they are the immersed boundary's
  * extrapolations). */
 static inline void ibm_case_interp(void *ctx, double x, double y, FlowPrim *out) {
-    FlowSolver *c = ctx;
-    const Grid *g = flow_solver_grid(c);
-    const FlowFields f = flow_solver_fields(c);
+    GksSolver *c = ctx;
+    const Grid *g = gks_solver_grid(c);
+    const GksFields f = gks_solver_fields(c);
     int ij[2];
     double w[2];
     const double p[2] = {x, y};
@@ -201,27 +200,27 @@ static inline void ibm_case_interp(void *ctx, double x, double y, FlowPrim *out)
         const double wm = ((m & 1) ? w[0] : 1.0 - w[0]) * ((m >> 1) ? w[1] : 1.0 - w[1]);
         for (int v = 0; v < 4; v++) q[v] += wm * f.w[v][grid_index(g, i, j)];
     }
-    flow_cons_to_prim(q, flow_solver_gas(c)->gamma, out);
+    flow_cons_to_prim(q, gks_solver_gas(c)->gamma, out);
 }
 
 /* The cases' flow solver: c at CFL 0.8, started by interpolation of `from`
  * (grid sequencing) when given. NULL on failure. */
-static inline FlowSolver *ibm_case_solver(FlowConfig *c, FlowSolver *from) {
+static inline GksSolver *ibm_case_solver(GksConfig *c, GksSolver *from) {
     c->cfl = 0.8;
     if (from) {
         c->init_fn = ibm_case_interp;
         c->init_ctx = from;
     }
-    FlowSolver *s = NULL;
-    return flow_solver_create(&s, c) == NSPD_OK ? s : NULL;
+    GksSolver *s = NULL;
+    return gks_solver_create(&s, c) == NSPD_OK ? s : NULL;
 }
 
 /* One wall as the attached immersed boundary of s; the flow within
  * soft_start of it starts at rest (0: none, for a flow started from a
  * developed one). NULL on failure. */
-static inline Ibm *ibm_case_body(FlowSolver *s, const IbmPolyline *wall, double soft_start) {
+static inline Ibm *ibm_case_body(GksSolver *s, const IbmPolyline *wall, double soft_start) {
     Ibm *ibm = NULL;
-    if (ibm_create(&ibm, flow_solver_grid(s), wall, 1) != NSPD_OK) return NULL;
+    if (ibm_create(&ibm, gks_solver_grid(s), wall, 1) != NSPD_OK) return NULL;
     if (ibm_attach(ibm, s) != NSPD_OK) {
         ibm_destroy(&ibm);
         return NULL;
@@ -232,22 +231,22 @@ static inline Ibm *ibm_case_body(FlowSolver *s, const IbmPolyline *wall, double 
 
 /* Advances to t_end, printing the coefficients of body 0 every `every`
  * (<= 0: never); leaves the surface of the last state in *sf. */
-static inline int ibm_case_advance(FlowSolver *s, Ibm *ibm, const IbmReference *ref, IbmSurface *sf,
+static inline int ibm_case_advance(GksSolver *s, Ibm *ibm, const IbmReference *ref, IbmSurface *sf,
                                    double t_end, double every, const char *tag) {
-    double next = every > 0.0 ? flow_solver_time(s) + every : HUGE_VAL;
+    double next = every > 0.0 ? gks_solver_time(s) + every : HUGE_VAL;
     const double t0 = nspd_wall_time();
-    while (flow_solver_time(s) < t_end) {
-        double dt = flow_solver_stable_dt(s);
-        if (flow_solver_time(s) + dt > t_end) dt = t_end - flow_solver_time(s);
-        TRY(flow_solver_step(s, dt));
-        if (flow_solver_time(s) >= next - 1e-12 || flow_solver_time(s) >= t_end) {
+    while (gks_solver_time(s) < t_end) {
+        double dt = gks_solver_stable_dt(s);
+        if (gks_solver_time(s) + dt > t_end) dt = t_end - gks_solver_time(s);
+        TRY(gks_solver_step(s, dt));
+        if (gks_solver_time(s) >= next - 1e-12 || gks_solver_time(s) >= t_end) {
             TRY(ibm_surface_compute(ibm, s, ref, sf));
             const IbmBodyForces *F = &sf->forces[0];
             if (every > 0.0)
                 printf("  %s t %6.2f  CD %.4f (p %.4f, v %.4f)  CL %+.2e  Cp_stag %.4f  "
                        "(%lld steps, %.0f s)\n",
-                       tag, flow_solver_time(s), F->cd, F->cd_pressure, F->cd_viscous, F->cl,
-                       F->cp_stagnation, (long long)flow_solver_step_count(s),
+                       tag, gks_solver_time(s), F->cd, F->cd_pressure, F->cd_viscous, F->cl,
+                       F->cp_stagnation, (long long)gks_solver_step_count(s),
                        nspd_wall_time() - t0);
             next += every;
         }
@@ -258,9 +257,9 @@ static inline int ibm_case_advance(FlowSolver *s, Ibm *ibm, const IbmReference *
 /* Bow-shock position on the stagnation line y = yc: the first crossing of
  * the mean of the free-stream and normal-shock densities, scanning from x_min
  * (linear between cell centres, average of the two rows next to yc). */
-static inline double ibm_case_shock_x(FlowSolver *s, double yc, double mach) {
-    const Grid *g = flow_solver_grid(s);
-    const FlowFields f = flow_solver_fields(s);
+static inline double ibm_case_shock_x(GksSolver *s, double yc, double mach) {
+    const Grid *g = gks_solver_grid(s);
+    const GksFields f = gks_solver_fields(s);
     const double gm = IBM_GAMMA, m2 = mach * mach;
     const double ratio = (gm + 1.0) * m2 / ((gm - 1.0) * m2 + 2.0);
     const double mid = 0.5 * (1.0 + ratio);
@@ -289,11 +288,11 @@ static inline double ibm_billig_standoff_over_r(double mach) {
  * by averaging the two cells, stresses by central differences, mu(T) at the
  * face); the caller subtracts d/dt of *momentum (fluid cells' rho u). An
  * estimate of the drag that does not use the wall treatment at all. */
-static inline double ibm_case_box_force(FlowSolver *s, const int box[4], double p_ref,
+static inline double ibm_case_box_force(GksSolver *s, const int box[4], double p_ref,
                                         double *momentum) {
-    const Grid *g = flow_solver_grid(s);
-    const FlowFields f = flow_solver_fields(s);
-    const GksParams *gas = flow_solver_gas(s);
+    const Grid *g = gks_solver_grid(s);
+    const GksFields f = gks_solver_fields(s);
+    const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, *xc = g->ax[0].center, *yc = g->ax[1].center;
 #define IBM_Q(i, j, q)                                                                             \
     (q == 0 ? f.w[0][grid_index(g, i, j)]                                                          \
@@ -356,10 +355,10 @@ static inline double ibm_case_box_force(FlowSolver *s, const int box[4], double 
 
 /* Seconds per ghost fill and per flow step (including its fill), over n of
  * each on the current state (the steps advance it). */
-static inline int ibm_case_fill_cost(FlowSolver *s, Ibm *ibm, int n, double *fill, double *step) {
-    const double dt = flow_solver_stable_dt(s);
+static inline int ibm_case_fill_cost(GksSolver *s, Ibm *ibm, int n, double *fill, double *step) {
+    const double dt = gks_solver_stable_dt(s);
     double t0 = nspd_wall_time();
-    for (int k = 0; k < n; k++) TRY(flow_solver_step(s, dt));
+    for (int k = 0; k < n; k++) TRY(gks_solver_step(s, dt));
     *step = (nspd_wall_time() - t0) / n;
     t0 = nspd_wall_time();
     for (int k = 0; k < 10 * n; k++) ibm_fill_ghosts(ibm, s);

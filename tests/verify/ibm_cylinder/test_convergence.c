@@ -30,10 +30,10 @@ typedef struct {
 
 static void run(int n, double t_end, Row *r) {
     const double h = 1.0 / n;
-    FlowConfig c;
+    GksConfig c;
     FlowPrim inf;
     ibm_cylinder_config(&c, h, IBM_CASE_SUTHERLAND_T, &inf);
-    FlowSolver *s = ibm_case_solver(&c, NULL);
+    GksSolver *s = ibm_case_solver(&c, NULL);
     assert_non_null(s);
     IbmPolyline wall;
     assert_ok(ibm_cylinder_markers(h, &wall));
@@ -50,19 +50,19 @@ static void run(int n, double t_end, Row *r) {
     assert_ok(ibm_case_advance(s, ibm, &ref, &sf, t_end - 0.5, 4.0, tag));
     /* momentum balance over [0.4, 2.9] x [4.9, 7.1] (bow shock and near wake
      * inside), with its unsteady term over the last 0.5 */
-    const Grid *g = flow_solver_grid(s);
+    const Grid *g = gks_solver_grid(s);
     const int box[4] = {grid_axis_cell_of(&g->ax[0], 0.4), grid_axis_cell_of(&g->ax[0], 2.9),
                         grid_axis_cell_of(&g->ax[1], 4.9), grid_axis_cell_of(&g->ax[1], 7.1)};
     double m0, m1;
     ibm_case_box_force(s, box, inf.p, &m0);
-    const double ta = flow_solver_time(s);
+    const double ta = gks_solver_time(s);
     assert_ok(ibm_case_advance(s, ibm, &ref, &sf, t_end, 4.0, tag));
     const double fbox = ibm_case_box_force(s, box, inf.p, &m1);
-    const double dmdt = (m1 - m0) / (flow_solver_time(s) - ta);
+    const double dmdt = (m1 - m0) / (gks_solver_time(s) - ta);
     const IbmBodyForces *F = &sf.forces[0];
     *r = (Row){n,
                (long)g->nx * g->ny,
-               (long)flow_solver_step_count(s),
+               (long)gks_solver_step_count(s),
                F->cd,
                F->cd_pressure,
                F->cd_viscous,
@@ -73,7 +73,7 @@ static void run(int n, double t_end, Row *r) {
     ibm_surface_free(&sf);
     ibm_destroy(&ibm);
     ibm_polyline_free(&wall);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_convergence(void **state) {

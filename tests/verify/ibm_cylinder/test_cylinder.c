@@ -11,10 +11,10 @@
 static void test_cylinder(void **state) {
     (void)state;
     const double h = 1.0 / 32, mach = 2.0;
-    FlowConfig c;
+    GksConfig c;
     FlowPrim inf;
     ibm_cylinder_config(&c, h, IBM_CASE_SUTHERLAND_T, &inf);
-    FlowSolver *s = ibm_case_solver(&c, NULL);
+    GksSolver *s = ibm_case_solver(&c, NULL);
     assert_non_null(s);
     IbmPolyline wall;
     assert_ok(ibm_cylinder_markers(h, &wall));
@@ -22,7 +22,7 @@ static void test_cylinder(void **state) {
     assert_non_null(ibm);
     IbmUpdateStats st;
     ibm_stats(ibm, &st);
-    const Grid *g = flow_solver_grid(s);
+    const Grid *g = gks_solver_grid(s);
     printf("cylinder D/32: %d x %d cells, %d markers, %d ghosts (cases 1/2/3: %d/%d/%d, "
            "extended %d, nearest %d), build %.4f s\n",
            g->nx, g->ny, wall.n, st.ghosts, st.by_case[0], st.by_case[1], st.by_case[2],
@@ -67,7 +67,7 @@ static void test_cylinder(void **state) {
     ibm_surface_free(&sf);
     ibm_destroy(&ibm);
     ibm_polyline_free(&wall);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 int main(void) {

@@ -9,10 +9,10 @@
 
 #include "../ibm_common/ibm_cases.h"
 
-static FlowSolver *solver(double h, FlowSolver *from, FlowPrim *inf) {
-    FlowConfig c;
+static GksSolver *solver(double h, GksSolver *from, FlowPrim *inf) {
+    GksConfig c;
     ibm_cylinder_config(&c, h, IBM_CASE_SUTHERLAND_T, inf);
-    FlowSolver *s = ibm_case_solver(&c, from);
+    GksSolver *s = ibm_case_solver(&c, from);
     assert_non_null(s);
     return s;
 }
@@ -27,7 +27,7 @@ static void test_fine(void **state) {
                               .length = 1.0,
                               .p_ambient = 1.0 / IBM_GAMMA};
     /* coarse start */
-    FlowSolver *cs = solver(1.0 / 32, NULL, &inf);
+    GksSolver *cs = solver(1.0 / 32, NULL, &inf);
     IbmPolyline cw;
     assert_ok(ibm_cylinder_markers(1.0 / 32, &cw));
     Ibm *ci = ibm_case_body(cs, &cw, 0.5);
@@ -38,13 +38,13 @@ static void test_fine(void **state) {
     assert_ok(ibm_case_advance(cs, ci, &ref, &sf, 12.0, 4.0, "D/32"));
     /* fine */
     const double h = 1.0 / 128;
-    FlowSolver *s = solver(h, cs, &inf);
+    GksSolver *s = solver(h, cs, &inf);
     IbmPolyline wall;
     assert_ok(ibm_cylinder_markers(h, &wall));
     Ibm *ibm = ibm_case_body(s, &wall, 0.0);
     assert_non_null(ibm);
     assert_ok(ibm_surface_reserve(ibm, &sf));
-    const Grid *g = flow_solver_grid(s);
+    const Grid *g = gks_solver_grid(s);
     IbmUpdateStats st;
     ibm_stats(ibm, &st);
     printf("D/128: %d x %d cells, %d markers, %d ghosts (cases 1/2/3 %d/%d/%d, extended %d, "
@@ -95,8 +95,8 @@ static void test_fine(void **state) {
     ibm_destroy(&ci);
     ibm_polyline_free(&wall);
     ibm_polyline_free(&cw);
-    flow_solver_destroy(&s);
-    flow_solver_destroy(&cs);
+    gks_solver_destroy(&s);
+    gks_solver_destroy(&cs);
 }
 
 int main(void) {

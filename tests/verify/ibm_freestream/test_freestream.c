@@ -21,8 +21,8 @@
 #include <stdio.h>
 #include <string.h>
 
-static void config(FlowConfig *c, FlowPrim q) {
-    flow_config_default(c);
+static void config(GksConfig *c, FlowPrim q) {
+    gks_config_default(c);
     c->gas_constant = 1.0;
     c->viscosity = VISCOSITY_SUTHERLAND;
     c->mu_ref = 1e-3;
@@ -38,14 +38,14 @@ static void config(FlowConfig *c, FlowPrim q) {
     c->segments[1][0] = (GridSegment){.length = 1.0, .h_start = 0.004};
     c->segments[1][1] = (GridSegment){.length = 1.5, .h_start = 0.004, .h_end = 0.025};
     const FlowBc far = {.kind = BC_SUBSONIC_INFLOW, .state = q};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(c, f, &far);
+    for (int f = 0; f < 4; f++) gks_config_set_bc(c, f, &far);
     c->initial = q;
 }
 
 /* Largest relative deviation of the fluid and ghost cells from q. */
-static double deviation(FlowSolver *s, FlowPrim q) {
-    const Grid *g = flow_solver_grid(s);
-    FlowFields f = flow_solver_fields(s);
+static double deviation(GksSolver *s, FlowPrim q) {
+    const Grid *g = gks_solver_grid(s);
+    GksFields f = gks_solver_fields(s);
     double w0[4];
     flow_prim_to_cons(&q, 1.4, w0);
     const double scale[4] = {w0[0], w0[0] * 1.0, w0[0] * 1.0, w0[3]};
@@ -79,11 +79,11 @@ static void make_bodies(IbmPolyline b[2], double u, double v, int thermal, doubl
 }
 
 /* make_bodies, attached to s with `faces`; the polylines go to b. */
-static Ibm *attach_bodies(FlowSolver *s, IbmGhostFaces faces, IbmPolyline b[2], double u, double v,
+static Ibm *attach_bodies(GksSolver *s, IbmGhostFaces faces, IbmPolyline b[2], double u, double v,
                           int thermal, double T) {
     make_bodies(b, u, v, thermal, T);
     Ibm *ibm = NULL;
-    assert_ok(ibm_create(&ibm, flow_solver_grid(s), b, 2));
+    assert_ok(ibm_create(&ibm, gks_solver_grid(s), b, 2));
     ibm_set_ghost_faces(ibm, faces);
     assert_ok(ibm_attach(ibm, s));
     return ibm;
@@ -92,18 +92,18 @@ static Ibm *attach_bodies(FlowSolver *s, IbmGhostFaces faces, IbmPolyline b[2], 
 static void moving_walls(IbmGhostFaces faces) {
     const double U = 0.8, a = M_PI / 6;
     const FlowPrim q = {1.0, U * cos(a), U * sin(a), 1.0 / 1.4};
-    FlowConfig c;
+    GksConfig c;
     config(&c, q);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     IbmPolyline b[2];
     Ibm *ibm = attach_bodies(s, faces, b, q.u, q.v, IBM_WALL_ADIABATIC, 0.0);
-    const Grid *g = flow_solver_grid(s);
+    const Grid *g = gks_solver_grid(s);
     IbmUpdateStats st;
     ibm_stats(ibm, &st);
     assert_true((int64_t)g->nx * g->ny >= 65536); /* the step runs threaded */
     const double d0 = deviation(s, q);
-    for (int k = 0; k < 50; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
+    for (int k = 0; k < 50; k++) assert_ok(gks_solver_step(s, gks_solver_stable_dt(s)));
     const double d1 = deviation(s, q);
     printf("free stream, walls moving with it, %s ghost faces: %d x %d cells, %d ghosts, %lld "
            "solid; relative deviation after attach %.2e, after 50 steps %.2e\n",
@@ -115,7 +115,7 @@ static void moving_walls(IbmGhostFaces faces) {
     assert_true(d1 < 1e-13);
     ibm_destroy(&ibm);
     for (int k = 0; k < 2; k++) ibm_polyline_free(&b[k]);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 static void test_moving_walls(void **state) {
@@ -128,23 +128,23 @@ static void test_moving_walls(void **state) {
  * Ma 0.6 stream started impulsively, relative to the initial mass. */
 static double mass_drift(IbmGhostFaces faces) {
     const FlowPrim q = {1.0, 0.6 * cos(0.3), 0.6 * sin(0.3), 1.0 / 1.4};
-    FlowConfig c;
+    GksConfig c;
     config(&c, q);
     c.segment_count[0] = c.segment_count[1] = 0;
-    flow_config_uniform_grid(&c, 0.0, 2.0, 160, 0.0, 1.5, 120);
+    gks_config_uniform_grid(&c, 0.0, 2.0, 160, 0.0, 1.5, 120);
     const FlowBc periodic = {.kind = BC_PERIODIC};
-    for (int f = 0; f < 4; f++) flow_config_set_bc(&c, f, &periodic);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    for (int f = 0; f < 4; f++) gks_config_set_bc(&c, f, &periodic);
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     IbmPolyline b[2];
     Ibm *ibm = attach_bodies(s, faces, b, 0.0, 0.0, IBM_WALL_ADIABATIC, 0.0);
     double t0[4], t1[4];
-    flow_solver_totals(s, t0);
-    for (int k = 0; k < 100; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
-    flow_solver_totals(s, t1);
+    gks_solver_totals(s, t0);
+    for (int k = 0; k < 100; k++) assert_ok(gks_solver_step(s, gks_solver_stable_dt(s)));
+    gks_solver_totals(s, t1);
     ibm_destroy(&ibm);
     for (int k = 0; k < 2; k++) ibm_polyline_free(&b[k]);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     return t1[0] / t0[0] - 1.0;
 }
 
@@ -163,19 +163,19 @@ static void test_sealed_conserves_mass(void **state) {
 static void test_rest_isothermal(void **state) {
     (void)state;
     const FlowPrim q = {1.0, 0.0, 0.0, 1.0 / 1.4};
-    FlowConfig c;
+    GksConfig c;
     config(&c, q);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     IbmPolyline b[2]; /* T = p / (rho R) */
     Ibm *ibm = attach_bodies(s, IBM_FACES_REFLECTED, b, 0.0, 0.0, IBM_WALL_ISOTHERMAL, 1.0 / 1.4);
-    for (int k = 0; k < 20; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
+    for (int k = 0; k < 20; k++) assert_ok(gks_solver_step(s, gks_solver_stable_dt(s)));
     const double d = deviation(s, q);
     printf("gas at rest, isothermal walls at rest: relative deviation after 20 steps %.2e\n", d);
     assert_true(d < 1e-13);
     ibm_destroy(&ibm);
     for (int k = 0; k < 2; k++) ibm_polyline_free(&b[k]);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 /* Runs 20 steps from a perturbed stream at `threads` threads; returns rho. */
@@ -183,30 +183,30 @@ static void run_threads(int threads, IbmGhostFaces faces, double *out, int64_t n
     const int saved = omp_get_max_threads();
     omp_set_num_threads(threads);
     const FlowPrim q = {1.0, 0.5, 0.0, 1.0 / 1.4};
-    FlowConfig c;
+    GksConfig c;
     config(&c, q);
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
     IbmPolyline b[2];
     Ibm *ibm = attach_bodies(s, faces, b, 0.0, 0.0, IBM_WALL_ADIABATIC, 0.0);
     ibm_soft_start(ibm, s, 0.1);
-    for (int k = 0; k < 20; k++) assert_ok(flow_solver_step(s, flow_solver_stable_dt(s)));
-    FlowFields f = flow_solver_fields(s);
+    for (int k = 0; k < 20; k++) assert_ok(gks_solver_step(s, gks_solver_stable_dt(s)));
+    GksFields f = gks_solver_fields(s);
     memcpy(out, f.w[0], (size_t)n * sizeof(double));
     ibm_destroy(&ibm);
     for (int k = 0; k < 2; k++) ibm_polyline_free(&b[k]);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
     omp_set_num_threads(saved);
 }
 
 static void test_threads_bitwise(void **state) {
     (void)state;
-    FlowConfig c;
+    GksConfig c;
     config(&c, (FlowPrim){1, 0, 0, 1});
-    FlowSolver *s = NULL;
-    assert_ok(flow_solver_create(&s, &c));
-    const int64_t n = flow_solver_grid(s)->size;
-    flow_solver_destroy(&s);
+    GksSolver *s = NULL;
+    assert_ok(gks_solver_create(&s, &c));
+    const int64_t n = gks_solver_grid(s)->size;
+    gks_solver_destroy(&s);
     double *a = test_malloc((size_t)n * sizeof(double));
     double *b = test_malloc((size_t)n * sizeof(double));
     for (int faces = 0; faces < IBM_FACES_COUNT; faces++) {

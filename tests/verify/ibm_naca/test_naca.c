@@ -19,16 +19,16 @@ static void test_naca_coarse(void **state) {
     (void)state;
     const NacaGrid ng = {
         .h_le = 1.0 / 384, .h_body = 1.0 / 32, .a = 0.02, .up = 4.0, .down = 8.0, .half = 4.0};
-    FlowConfig c;
+    GksConfig c;
     FlowPrim inf;
     ibm_naca_config(&c, &ng, IBM_CASE_SUTHERLAND_T, &inf);
-    FlowSolver *s = ibm_case_solver(&c, NULL);
+    GksSolver *s = ibm_case_solver(&c, NULL);
     assert_non_null(s);
     IbmPolyline wall;
     assert_ok(ibm_naca_markers(ng.h_body / 2, &wall));
     Ibm *ibm = ibm_case_body(s, &wall, 0.1);
     assert_non_null(ibm);
-    const Grid *g = flow_solver_grid(s);
+    const Grid *g = gks_solver_grid(s);
     IbmUpdateStats st;
     ibm_stats(ibm, &st);
     printf("naca coarse: %d x %d cells, %d markers, %d ghosts (cases 1/2/3: %d/%d/%d, "
@@ -60,7 +60,7 @@ static void test_naca_coarse(void **state) {
     ibm_surface_free(&sf);
     ibm_destroy(&ibm);
     ibm_polyline_free(&wall);
-    flow_solver_destroy(&s);
+    gks_solver_destroy(&s);
 }
 
 int main(void) {

@@ -9,11 +9,11 @@
 
 #include "../ibm_common/ibm_cases.h"
 
-static FlowSolver *solver(const NacaGrid *ng, FlowSolver *from) {
-    FlowConfig c;
+static GksSolver *solver(const NacaGrid *ng, GksSolver *from) {
+    GksConfig c;
     FlowPrim inf;
     ibm_naca_config(&c, ng, IBM_CASE_SUTHERLAND_T, &inf);
-    FlowSolver *s = ibm_case_solver(&c, from);
+    GksSolver *s = ibm_case_solver(&c, from);
     assert_non_null(s);
     return s;
 }
@@ -28,7 +28,7 @@ static void test_naca_fine(void **state) {
                               .p_ambient = 1.0 / IBM_GAMMA};
     const NacaGrid coarse = {1.0 / 128, 1.0 / 64, 0.1, 10.0, 20.0, 10.0};
     const NacaGrid fine = {1.0 / 512, 1.0 / 512, 0.1, 10.0, 20.0, 10.0};
-    FlowSolver *cs = solver(&coarse, NULL);
+    GksSolver *cs = solver(&coarse, NULL);
     IbmPolyline cw;
     assert_ok(ibm_naca_markers(1.0 / 128, &cw));
     Ibm *ci = ibm_case_body(cs, &cw, 0.1);
@@ -38,13 +38,13 @@ static void test_naca_fine(void **state) {
     assert_ok(ibm_surface_reserve(ci, &sf));
     assert_ok(ibm_case_advance(cs, ci, &ref, &sf, 12.0, 4.0, "c/64"));
 
-    FlowSolver *s = solver(&fine, cs);
+    GksSolver *s = solver(&fine, cs);
     IbmPolyline wall;
     assert_ok(ibm_naca_markers(1.0 / 1024, &wall));
     Ibm *ibm = ibm_case_body(s, &wall, 0.0);
     assert_non_null(ibm);
     assert_ok(ibm_surface_reserve(ibm, &sf));
-    const Grid *g = flow_solver_grid(s);
+    const Grid *g = gks_solver_grid(s);
     IbmUpdateStats st;
     ibm_stats(ibm, &st);
     printf("c/512: %d x %d cells, %d markers, %d ghosts (cases 1/2/3 %d/%d/%d, extended %d, "
@@ -85,8 +85,8 @@ static void test_naca_fine(void **state) {
     ibm_destroy(&ci);
     ibm_polyline_free(&wall);
     ibm_polyline_free(&cw);
-    flow_solver_destroy(&s);
-    flow_solver_destroy(&cs);
+    gks_solver_destroy(&s);
+    gks_solver_destroy(&cs);
 }
 
 int main(void) {

@@ -11,7 +11,7 @@
 #include "pd_fixtures.h"
 #include "test_support.h"
 
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_diagnostics.h"
 #include "solid/pd_integrate.h"
 
@@ -21,8 +21,8 @@
  * over the first and last fifth of the run. */
 static void run(double dt_factor, int64_t steps, double *worst, double *early, double *late) {
     PdConfig cfg = fixture_block(2, 16, 16, 0, 1e-3);
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     double L = 16e-3;
     for (int64_t i = 0; i < b.n; i++) {
         double x = b.x[0][i] / L - 0.5, y = b.x[1][i] / L - 0.5;
@@ -39,7 +39,7 @@ static void run(double dt_factor, int64_t steps, double *worst, double *early, d
         if (s <= steps / 5) *early = fmax(*early, err);
         if (s > steps - steps / 5) *late = fmax(*late, err);
     }
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 static void test_energy_bounded_and_second_order(void **state) {

@@ -18,12 +18,12 @@
 #include "pd_fixtures.h"
 #include "test_support.h"
 
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "solid/pd_integrate.h"
 
 #include <math.h>
 
-static double right_centroid(const PdBody *b, double x0) {
+static double right_centroid(const BondBody *b, double x0) {
     double num = 0, den = 0;
     for (int64_t i = 0; i < b->n; i++) {
         if (b->x[0][i] < x0) continue;
@@ -38,8 +38,8 @@ static void test_bar_wave_speed(void **state) {
     (void)state;
     const double dx = 1e-3, width = 60 * dx;
     PdConfig cfg = fixture_block(2, 2000, 20, 0, dx);
-    PdBody b;
-    assert_ok(pd_body_create(&b, &cfg));
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
     const double x0 = 700 * dx, c0 = pd_bar_wave_speed(&b.cfg);
     for (int64_t i = 0; i < b.n; i++) {
         double s = (b.x[0][i] - x0) / width;
@@ -68,7 +68,7 @@ static void test_bar_wave_speed(void **state) {
     print_message("pulse speed %.2f m/s, bar speed sqrt(E/rho) %.2f m/s: %+.3f %%\n", speed, c0,
                   100 * (speed / c0 - 1));
     assert_true(fabs(speed / c0 - 1) < 0.02);
-    pd_body_destroy(&b);
+    bond_body_destroy(&b);
 }
 
 int main(void) {

@@ -66,8 +66,8 @@ static double max_tip_offset(const char *dir) {
 }
 
 /* Index of the lattice point mirrored in x and/or y (-1 if absent). */
-static int64_t mirror(const PdBody *b, const int64_t *grid, int32_t lo[2], int32_t n[2], int64_t i,
-                      bool mx, bool my) {
+static int64_t mirror(const BondBody *b, const int64_t *grid, int32_t lo[2], int32_t n[2],
+                      int64_t i, bool mx, bool my) {
     int32_t ix = b->lattice[0][i] - lo[0], iy = b->lattice[1][i] - lo[1];
     if (mx) ix = n[0] - 1 - ix;
     if (my) iy = n[1] - 1 - iy;
@@ -79,7 +79,7 @@ static void test_straight_symmetric_crack(void **state) {
     Sim sim;
     const char *dir = test_scratch_dir("pd_plate");
     run_coarse(&sim, 2, dir);
-    const PdBody *b = fixture_body(&sim);
+    const BondBody *b = fixture_body(&sim);
     double *damage;
     assert_ok(nspd_alloc(&damage, (size_t)b->n, sizeof(double)));
     pd_damage(b, damage);
@@ -147,7 +147,7 @@ static void test_threads_bitwise(void **state) {
     Sim one, two;
     run_coarse(&one, 1, NULL);
     run_coarse(&two, 2, NULL);
-    const PdBody *a = fixture_body(&one), *b = fixture_body(&two);
+    const BondBody *a = fixture_body(&one), *b = fixture_body(&two);
     assert_int_equal(a->n, b->n);
     for (int d = 0; d < 2; d++) {
         assert_memory_equal(a->u[d], b->u[d], (size_t)a->n * sizeof(double));

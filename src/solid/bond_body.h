@@ -26,8 +26,8 @@
  *              because both evaluate bitwise the same stretch.
  * The reference bond vector is recomputed from x (cheaper than storing it:
  * the gather is in cache after Morton ordering). */
-#ifndef NSPD_SOLID_PD_BODY_H
-#define NSPD_SOLID_PD_BODY_H
+#ifndef NSPD_SOLID_BOND_BODY_H
+#define NSPD_SOLID_BOND_BODY_H
 
 #include "solid/pd_config.h"
 
@@ -79,15 +79,15 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
-} PdBody;
+} BondBody;
 
 /* Builds the body: lattice points inside the geometry, Morton ordering,
  * bonds within the horizon, volume and surface corrections, pre-cracks,
  * boundary regions and initial velocities. Takes ownership of *cfg (its
  * shapes and arrays) and zeroes it. NSPD_ERR_INPUT if the geometry holds
  * no point; NSPD_ERR_NOMEM. */
-int pd_body_create(PdBody *body, PdConfig *cfg);
-void pd_body_destroy(PdBody *body);
+int bond_body_create(BondBody *body, PdConfig *cfg);
+void bond_body_destroy(BondBody *body);
 
 /* Bytes of bond storage per bond (neighbour index + coefficient), and of
  * row offsets per point. */

@@ -1,4 +1,4 @@
-/* What the files of the flow operator share (flow_solver.c: configuration,
+/* What the files of the flow operator share (gks_solver.c: configuration,
  * create/destroy, accessors; flow_initial.c; flow_step.c; flow_diagnostics.c;
  * flow_bench.c): the solver's struct and the constants of its loops.
  *
@@ -7,10 +7,10 @@
  * The step reads W and writes Wn, then swaps the two: no cell is read after
  * it is overwritten, whatever the thread layout. All work arrays are
  * allocated at creation for omp_get_max_threads() threads. */
-#ifndef NSPD_FLOW_FLOW_SOLVER_INTERNAL_H
-#define NSPD_FLOW_FLOW_SOLVER_INTERNAL_H
+#ifndef NSPD_FLOW_GKS_SOLVER_INTERNAL_H
+#define NSPD_FLOW_GKS_SOLVER_INTERNAL_H
 
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -44,8 +44,8 @@ typedef struct {
     int bad;
 } FlowWork;
 
-struct FlowSolver {
-    FlowConfig cfg;
+struct GksSolver {
+    GksConfig cfg;
     Grid grid;
     GksParams gas;
     double *w[4], *wn[4];
@@ -57,7 +57,7 @@ struct FlowSolver {
     FlowWork *work;
     FlowGhostHook hook;
     void *hook_ctx;
-    const int32_t *wall_slot; /* flow_solver_set_ghost_walls */
+    const int32_t *wall_slot; /* gks_solver_set_ghost_walls */
     const double *wall_u, *wall_v;
     double time;
     int64_t steps;

@@ -17,7 +17,7 @@
  *     at the bond midpoint so both ends agree);
  *  6. pre-cracks: crossing bonds set to 0 (broken);
  *  7. the damage denominator sum_j nu_ij V_j over the initial family. */
-#include "solid/pd_body.h"
+#include "solid/bond_body.h"
 #include "core/parallel.h"
 
 #include "core/mem.h"
@@ -30,7 +30,7 @@
 #include <math.h>
 #include <string.h>
 
-static int alloc_points(PdBody *body) {
+static int alloc_points(BondBody *body) {
     size_t n = (size_t)body->n;
     for (int d = 0; d < 3; d++) {
         TRY(nspd_alloc(&body->u[d], n, sizeof(double)));
@@ -44,7 +44,7 @@ static int alloc_points(PdBody *body) {
     return NSPD_OK;
 }
 
-static void assign_regions(PdBody *body) {
+static void assign_regions(BondBody *body) {
     const PdConfig *cfg = &body->cfg;
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < body->n; i++) {
@@ -63,8 +63,8 @@ static void assign_regions(PdBody *body) {
     }
 }
 
-/* Flattens cfg.boundaries into body->boundary (pd_body.h). */
-static int build_boundary_table(PdBody *body) {
+/* Flattens cfg.boundaries into body->boundary (bond_body.h). */
+static int build_boundary_table(BondBody *body) {
     const PdConfig *cfg = &body->cfg;
     PdBoundaryTable *t = &body->boundary;
     const size_t n = 3 * (size_t)cfg->boundary_count;
@@ -89,7 +89,7 @@ static int build_boundary_table(PdBody *body) {
 }
 
 /* Steps 5-7 above. `g` are the per-point surface factors (NULL: none). */
-static void assign_coefficients(PdBody *body, double *const g[3]) {
+static void assign_coefficients(BondBody *body, double *const g[3]) {
     const PdConfig *cfg = &body->cfg;
     const int dim = body->dim;
     const double dx = body->spacing, horizon = body->horizon;
@@ -133,7 +133,7 @@ static void assign_coefficients(PdBody *body, double *const g[3]) {
     }
 }
 
-static int build(PdBody *body, PdConfig *cfg) {
+static int build(BondBody *body, PdConfig *cfg) {
     memset(body, 0, sizeof *body);
     body->cfg = *cfg;
     memset(cfg, 0, sizeof *cfg);
@@ -184,13 +184,13 @@ static int build(PdBody *body, PdConfig *cfg) {
     return NSPD_OK;
 }
 
-int pd_body_create(PdBody *body, PdConfig *cfg) {
+int bond_body_create(BondBody *body, PdConfig *cfg) {
     int status = build(body, cfg);
-    if (status != NSPD_OK) pd_body_destroy(body);
+    if (status != NSPD_OK) bond_body_destroy(body);
     return status;
 }
 
-void pd_body_destroy(PdBody *body) {
+void bond_body_destroy(BondBody *body) {
     for (int d = 0; d < 3; d++) {
         nspd_free(&body->x[d]);
         nspd_free(&body->u[d]);

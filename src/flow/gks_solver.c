@@ -1,12 +1,12 @@
 /* The flow operator: configuration defaults, create/destroy and accessors.
- * The struct and its invariants are in flow_solver_internal.h; the initial
+ * The struct and its invariants are in gks_solver_internal.h; the initial
  * condition in flow_initial.c, the step in flow_step.c, diagnostics in
  * flow_diagnostics.c, the benchmark in flow_bench.c. */
-#include "flow/flow_solver.h"
+#include "flow/gks_solver.h"
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "flow/flow_solver_internal.h"
+#include "flow/gks_solver_internal.h"
 #include "flow/gks_flux.h"
 
 #include <omp.h>
@@ -15,7 +15,7 @@
 const char *const FLOW_LIMITER_NAMES[LIMITER_COUNT + 1] = {"van_leer", "van_albada", "none",
                                                            "first_order", NULL};
 
-void flow_config_default(FlowConfig *c) {
+void gks_config_default(GksConfig *c) {
     memset(c, 0, sizeof *c);
     c->gamma = 1.4;
     c->gas_constant = 287.0;
@@ -34,8 +34,8 @@ void flow_config_default(FlowConfig *c) {
     c->init_quadrature = 1;
 }
 
-void flow_config_uniform_grid(FlowConfig *c, double x0, double x1, int nx, double y0, double y1,
-                              int ny) {
+void gks_config_uniform_grid(GksConfig *c, double x0, double x1, int nx, double y0, double y1,
+                             int ny) {
     c->x0 = x0;
     c->y0 = y0;
     c->segment_count[0] = c->segment_count[1] = 1;
@@ -43,7 +43,7 @@ void flow_config_uniform_grid(FlowConfig *c, double x0, double x1, int nx, doubl
     c->segments[1][0] = (GridSegment){.length = y1 - y0, .cells = ny};
 }
 
-void flow_config_set_bc(FlowConfig *c, int face, const FlowBc *bc) {
+void gks_config_set_bc(GksConfig *c, int face, const FlowBc *bc) {
     c->bc[face].count = 1;
     c->bc[face].seg[0] = *bc;
     c->bc[face].seg[0].start = 0.0;
@@ -51,54 +51,54 @@ void flow_config_set_bc(FlowConfig *c, int face, const FlowBc *bc) {
 
 /* ------------------------------------------------------------ accessors */
 
-FlowFields flow_solver_fields(FlowSolver *s) {
-    FlowFields f;
+GksFields gks_solver_fields(GksSolver *s) {
+    GksFields f;
     for (int v = 0; v < 4; v++) f.w[v] = s->w[v];
     f.kind = s->kind;
     return f;
 }
-const Grid *flow_solver_grid(const FlowSolver *s) {
+const Grid *gks_solver_grid(const GksSolver *s) {
     return &s->grid;
 }
-const GksParams *flow_solver_gas(const FlowSolver *s) {
+const GksParams *gks_solver_gas(const GksSolver *s) {
     return &s->gas;
 }
-const FlowConfig *flow_solver_config(const FlowSolver *s) {
+const GksConfig *gks_solver_config(const GksSolver *s) {
     return &s->cfg;
 }
-void flow_solver_set_ghost_hook(FlowSolver *s, FlowGhostHook hook, void *ctx) {
+void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx) {
     s->hook = hook;
     s->hook_ctx = ctx;
 }
-void flow_solver_set_ghost_walls(FlowSolver *s, const int32_t *slot, const double *u,
-                                 const double *v) {
+void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double *u,
+                                const double *v) {
     s->wall_slot = slot;
     s->wall_u = u;
     s->wall_v = v;
 }
-double flow_solver_time(const FlowSolver *s) {
+double gks_solver_time(const GksSolver *s) {
     return s->time;
 }
-int64_t flow_solver_step_count(const FlowSolver *s) {
+int64_t gks_solver_step_count(const GksSolver *s) {
     return s->steps;
 }
-int64_t flow_solver_fallbacks_last(const FlowSolver *s) {
+int64_t gks_solver_fallbacks_last(const GksSolver *s) {
     return s->fallbacks_last;
 }
-int64_t flow_solver_fallbacks_total(const FlowSolver *s) {
+int64_t gks_solver_fallbacks_total(const GksSolver *s) {
     return s->fallbacks_total;
 }
 
 /* ------------------------------------------------------ create/destroy */
 
-static int alloc_counted(FlowSolver *s, void *out, size_t count, size_t size) {
+static int alloc_counted(GksSolver *s, void *out, size_t count, size_t size) {
     TRY(nspd_alloc(out, count, size));
     s->bytes += count * size;
     return NSPD_OK;
 }
 
 /* The configuration's numbers, checked before anything is allocated. */
-static int check_config(const FlowConfig *cfg) {
+static int check_config(const GksConfig *cfg) {
     if (!(cfg->gamma > 1.0 && cfg->gamma < 3.0))
         return NSPD_FAIL(NSPD_ERR_INPUT, "flow: gamma must be in (1, 3) (got %g)", cfg->gamma);
     if (!(cfg->gas_constant > 0.0))
@@ -121,7 +121,7 @@ static int check_config(const FlowConfig *cfg) {
 }
 
 /* The kernel's gas parameters from the configuration. */
-static void set_gas(GksParams *gas, const FlowConfig *cfg) {
+static void set_gas(GksParams *gas, const GksConfig *cfg) {
     gks_params_default(gas, cfg->gamma, cfg->gas_constant);
     gas->law = cfg->viscosity;
     gas->mu_ref = cfg->mu_ref;
@@ -134,7 +134,7 @@ static void set_gas(GksParams *gas, const FlowConfig *cfg) {
 }
 
 /* State, kinds, half widths and row sums. */
-static int alloc_state(FlowSolver *s) {
+static int alloc_state(GksSolver *s) {
     const Grid *g = &s->grid;
     for (int v = 0; v < 4; v++) {
         TRY(alloc_counted(s, &s->w[v], (size_t)g->size, sizeof(double)));
@@ -152,7 +152,7 @@ static int alloc_state(FlowSolver *s) {
 
 /* The WALL_* flags of every cell along each box face, from the segment of
  * the face's boundary condition that covers it. */
-static int build_walls(FlowSolver *s, const FlowConfig *cfg) {
+static int build_walls(GksSolver *s, const GksConfig *cfg) {
     const Grid *g = &s->grid;
     for (int face = 0; face < 4; face++) {
         const GridAxis *along = &g->ax[face < 2 ? 1 : 0];
@@ -174,7 +174,7 @@ static int build_walls(FlowSolver *s, const FlowConfig *cfg) {
 }
 
 /* The step's work space: one block of rows per thread (FlowWork). */
-static int alloc_work(FlowSolver *s) {
+static int alloc_work(GksSolver *s) {
     s->nthreads = omp_get_max_threads();
     TRY(nspd_alloc(&s->work, (size_t)s->nthreads, sizeof(FlowWork)));
     const size_t row = (size_t)s->grid.stride;
@@ -195,20 +195,20 @@ static int alloc_work(FlowSolver *s) {
 }
 
 /* Everything after the grid; on failure the caller destroys the solver. */
-static int build(FlowSolver *s, const FlowConfig *cfg) {
+static int build(GksSolver *s, const GksConfig *cfg) {
     TRY(bc_validate(&s->grid, cfg->bc));
     set_gas(&s->gas, cfg);
     TRY(alloc_state(s));
     TRY(build_walls(s, cfg));
     TRY(alloc_work(s));
-    flow_solver_apply_initial(s, cfg);
+    gks_solver_apply_initial(s, cfg);
     return NSPD_OK;
 }
 
-int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
+int gks_solver_create(GksSolver **out, const GksConfig *cfg) {
     *out = NULL;
     TRY(check_config(cfg));
-    FlowSolver *s = NULL;
+    GksSolver *s = NULL;
     TRY(nspd_alloc(&s, 1, sizeof *s));
     s->cfg = *cfg;
     s->cfg.regions = NULL; /* borrowed only during create */
@@ -222,15 +222,15 @@ int flow_solver_create(FlowSolver **out, const FlowConfig *cfg) {
         return st;
     }
     if ((st = build(s, cfg)) < 0) {
-        flow_solver_destroy(&s);
+        gks_solver_destroy(&s);
         return st;
     }
     *out = s;
     return NSPD_OK;
 }
 
-void flow_solver_destroy(FlowSolver **sp) {
-    FlowSolver *s = *sp;
+void gks_solver_destroy(GksSolver **sp) {
+    GksSolver *s = *sp;
     if (!s) return;
     for (int v = 0; v < 4; v++) {
         nspd_free(&s->w[v]);

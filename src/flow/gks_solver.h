@@ -1,9 +1,9 @@
 /* The compressible flow operator: grid + state + GKS step.
  *
- * A FlowSolver owns a stretched Cartesian grid, the conservative state
+ * A GksSolver owns a stretched Cartesian grid, the conservative state
  * (rho, rho u, rho v, rho E; one array per variable, with ghost layers), a
  * per-cell kind array and the work space of one time step. One call of
- * flow_solver_step advances the state by dt with the single-stage gas-kinetic
+ * gks_solver_step advances the state by dt with the single-stage gas-kinetic
  * scheme (the flux is integrated in time, second order):
  *     W_i^{n+1} = W_i^n - (1/V_i) sum_faces (\int_0^dt F dt) |face|          (paper 000 Eq. 20)
  *
@@ -24,9 +24,9 @@
  * are bitwise identical at any thread count.
  *
  * Thread safety: one solver per thread of the caller; the step itself is
- * OpenMP-parallel. No allocation happens after flow_solver_create. */
-#ifndef NSPD_FLOW_FLOW_SOLVER_H
-#define NSPD_FLOW_FLOW_SOLVER_H
+ * OpenMP-parallel. No allocation happens after gks_solver_create. */
+#ifndef NSPD_FLOW_GKS_SOLVER_H
+#define NSPD_FLOW_GKS_SOLVER_H
 
 #include "core/shape.h"
 #include "flow/bc.h"
@@ -51,10 +51,10 @@ typedef struct {
 /* Initial condition as a function: the primitive state at (x, y). */
 typedef void (*FlowInitFn)(void *ctx, double x, double y, FlowPrim *out);
 
-typedef struct FlowSolver FlowSolver;
+typedef struct GksSolver GksSolver;
 /* Called in every step after the box ghost layers are filled and before the
  * fluxes: sets the state of GHOST cells (immersed boundary). */
-typedef void (*FlowGhostHook)(void *ctx, FlowSolver *solver);
+typedef void (*FlowGhostHook)(void *ctx, GksSolver *solver);
 
 typedef struct {
     /* grid: segments per axis from (x0, y0) */
@@ -79,42 +79,42 @@ typedef struct {
      * (1 = cell centre; up to 4). */
     FlowPrim initial;
     int region_count;
-    const FlowRegion *regions; /* borrowed during flow_solver_create only */
+    const FlowRegion *regions; /* borrowed during gks_solver_create only */
     FlowInitFn init_fn;
     void *init_ctx;
     int init_quadrature;
-} FlowConfig;
+} GksConfig;
 
 /* Defaults: air (gamma 1.4, R 287, Pr 0.72), inviscid, van Leer, CFL 0.5,
  * C = 1, eps = 0, extrapolation on all faces, no grid segments. */
-void flow_config_default(FlowConfig *c);
+void gks_config_default(GksConfig *c);
 /* Convenience: a uniform nx x ny grid on [x0,x1] x [y0,y1]. */
-void flow_config_uniform_grid(FlowConfig *c, double x0, double x1, int nx, double y0, double y1,
-                              int ny);
+void gks_config_uniform_grid(GksConfig *c, double x0, double x1, int nx, double y0, double y1,
+                             int ny);
 /* Sets every segment of a face to one condition. */
-void flow_config_set_bc(FlowConfig *c, int face, const FlowBc *bc);
+void gks_config_set_bc(GksConfig *c, int face, const FlowBc *bc);
 
 /* Builds the solver and applies the initial condition. Allocates everything
  * the steps need (work space for omp_get_max_threads() threads).
  * NSPD_ERR_INPUT for an inconsistent configuration, NSPD_ERR_NOMEM. */
-int flow_solver_create(FlowSolver **out, const FlowConfig *cfg);
-void flow_solver_destroy(FlowSolver **s);
+int gks_solver_create(GksSolver **out, const GksConfig *cfg);
+void gks_solver_destroy(GksSolver **s);
 
 /* Re-applies an initial condition from cfg (its IC fields only). */
-void flow_solver_apply_initial(FlowSolver *s, const FlowConfig *cfg);
+void gks_solver_apply_initial(GksSolver *s, const GksConfig *cfg);
 
 /* The current fields: pointers into the solver, valid until the next step
  * (the step swaps buffers). Index with grid_index(). */
 typedef struct {
     double *w[4];  /* rho, rho u, rho v, rho E */
     uint8_t *kind; /* FLOW_CELL_* */
-} FlowFields;
-FlowFields flow_solver_fields(FlowSolver *s);
-const Grid *flow_solver_grid(const FlowSolver *s);
-const GksParams *flow_solver_gas(const FlowSolver *s);
-const FlowConfig *flow_solver_config(const FlowSolver *s);
+} GksFields;
+GksFields gks_solver_fields(GksSolver *s);
+const Grid *gks_solver_grid(const GksSolver *s);
+const GksParams *gks_solver_gas(const GksSolver *s);
+const GksConfig *gks_solver_config(const GksSolver *s);
 
-void flow_solver_set_ghost_hook(FlowSolver *s, FlowGhostHook hook, void *ctx);
+void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx);
 
 /* Sealed ghost faces (immersed boundary; set by the ghost hook, valid until
  * its next call): slot[k] (indexed with grid_index) is the index of ghost
@@ -130,32 +130,32 @@ void flow_solver_set_ghost_hook(FlowSolver *s, FlowGhostHook hook, void *ctx);
  * the wall cannot drain into the body. The price: for mass the wall is the
  * cell staircase, a first-order geometry (docs/VALIDATION.md). NULL slot:
  * the faces carry the GKS flux of the reflected ghost state (Eq. 39). */
-void flow_solver_set_ghost_walls(FlowSolver *s, const int32_t *slot, const double *u,
-                                 const double *v);
+void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double *u,
+                                const double *v);
 
 /* Fills the box ghost layers now (the step does it itself; for output). */
-void flow_solver_fill_boundaries(FlowSolver *s);
+void gks_solver_fill_boundaries(GksSolver *s);
 
 /* Largest stable dt: CFL / max over fluid cells of
  *   (|u| + c)/dx + (|v| + c)/dy + 2 nu_eff (1/dx^2 + 1/dy^2),
  * nu_eff = max(4/3, gamma/Pr) mu / rho. */
-double flow_solver_stable_dt(const FlowSolver *s);
+double gks_solver_stable_dt(const GksSolver *s);
 
 /* One step of size dt (s). NSPD_ERR_NUMERIC if a fluid cell ends with NaN,
  * rho <= 0 or p <= 0; the message names the first such cell (row-major
  * order), its centre and the step. */
-int flow_solver_step(FlowSolver *s, double dt);
+int gks_solver_step(GksSolver *s, double dt);
 
 /* Steps with the stable dt until time t_end (the last step is shortened to
  * land on it) or max_steps steps (<= 0: no limit). */
-int flow_solver_advance(FlowSolver *s, double t_end, int64_t max_steps);
+int gks_solver_advance(GksSolver *s, double t_end, int64_t max_steps);
 
-double flow_solver_time(const FlowSolver *s);
-int64_t flow_solver_step_count(const FlowSolver *s);
+double gks_solver_time(const GksSolver *s);
+int64_t gks_solver_step_count(const GksSolver *s);
 /* First-order fallbacks (cell-directions whose limited slopes would have made
  * rho or p negative at a face) in the last step, and in all steps so far. */
-int64_t flow_solver_fallbacks_last(const FlowSolver *s);
-int64_t flow_solver_fallbacks_total(const FlowSolver *s);
+int64_t gks_solver_fallbacks_last(const GksSolver *s);
+int64_t gks_solver_fallbacks_total(const GksSolver *s);
 
 typedef enum {
     FLOW_DENSITY = 0,
@@ -169,10 +169,10 @@ typedef enum {
 
 /* Writes a primitive field of the interior cells into out[nx * ny], x
  * fastest, no ghosts (non-fluid cells included as stored). */
-void flow_solver_primitive(const FlowSolver *s, FlowField field, double *out);
+void gks_solver_primitive(const GksSolver *s, FlowField field, double *out);
 
 /* Integrals over the fluid cells: mass (kg/m), x and y momentum, energy (J/m). */
-void flow_solver_totals(const FlowSolver *s, double totals[4]);
+void gks_solver_totals(const GksSolver *s, double totals[4]);
 
 /* The isentropic vortex (Yee et al.): a free-stream (rho_inf, u_inf, v_inf,
  * p_inf) carrying a vortex of strength `strength` centred at (x0, y0), with
