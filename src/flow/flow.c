@@ -95,6 +95,13 @@ int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSample
     return f->ops->sample(f->impl, n, x, y, out);
 }
 
+int flow_set_sources(Flow *f, FlowSources *src) {
+    if (!f->ops->set_sources)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the '%s' flow solver takes no sources",
+                         f->ops->name);
+    return f->ops->set_sources(f->impl, src);
+}
+
 void flow_totals(const Flow *f, double totals[4]) {
     f->ops->totals(f->impl, totals);
 }

@@ -58,6 +58,20 @@ typedef struct {
     double *rho, *u, *v, *p;
 } FlowSamples;
 
+/* Forces and power a coupling puts into the gas at points, for the next
+ * steps: point k at (x[k], y[k]) gives the gas the force (force_x[k],
+ * force_y[k]) and the power power[k], per metre of depth (N/m, W/m; power
+ * NULL: none). The power is all the energy the gas receives: the work of
+ * the force on the moving gas is the caller's to include. The solver
+ * spreads each onto the cell or node that holds the point, in point order
+ * (the same bits on any thread count). */
+typedef struct {
+    int64_t n;
+    const double *x, *y;
+    const double *force_x, *force_y, *power;
+    int64_t outside; /* out: points with no gas there (off the mesh, in a body): dropped */
+} FlowSources;
+
 typedef struct Flow Flow;
 
 typedef struct FlowOps {
@@ -76,6 +90,9 @@ typedef struct FlowOps {
      * read the flow where a solid's points are); NULL: not supported (an
      * input error when asked) */
     int (*sample)(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out);
+    /* replaces the sources of the next steps (NULL src: none); NULL op:
+     * the solver takes none (an input error when asked) */
+    int (*set_sources)(void *impl, FlowSources *src);
     /* integrals of mass, x and y momentum, energy over the fluid */
     void (*totals)(const void *impl, double totals[4]);
     void (*history)(const void *impl, Report *row);
@@ -107,6 +124,7 @@ FlowMesh flow_mesh(const Flow *f);
 void flow_cell_state(const Flow *f, int64_t cell, double out[5]);
 FlowReference flow_reference(const Flow *f);
 int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out);
+int flow_set_sources(Flow *f, FlowSources *src);
 void flow_totals(const Flow *f, double totals[4]);
 void flow_history(const Flow *f, Report *row);
 void flow_summary(const Flow *f, const RunStats *run, Report *out);

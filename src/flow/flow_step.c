@@ -277,6 +277,20 @@ static int report_bad_cell(const GksSolver *s) {
                      (long long)s->steps);
 }
 
+/* dt times the volume sources into the new state of the fluid cells: each
+ * cell on its own, so any thread count gives the same bits. */
+static void add_sources(GksSolver *s, double dt) {
+    const Grid *g = &s->grid;
+    const int64_t n = (int64_t)g->nx * g->ny;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_CELLS)
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            const int64_t c = grid_index(g, i, j);
+            if (s->kind[c] != FLOW_CELL_FLUID) continue;
+            for (int k = 0; k < 3; k++) s->wn[k + 1][c] += dt * s->source[k][c];
+        }
+}
+
 int gks_solver_step(GksSolver *s, double dt) {
     if (!(dt > 0.0) || !isfinite(dt))
         return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: time step %g at step %lld is not positive", dt,
@@ -296,6 +310,7 @@ int gks_solver_step(GksSolver *s, double dt) {
         wk->fallbacks = 0;
         step_block(s, wk, (int)((int64_t)ny * t / n), (int)((int64_t)ny * (t + 1) / n), dt);
     }
+    if (s->has_sources) add_sources(s, dt);
     int bad = 0;
     int64_t nb = 0;
     for (int t = 0; t < nt; t++) {

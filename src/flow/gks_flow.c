@@ -186,6 +186,39 @@ static int gks_sample(void *impl, int64_t n, const double *x, const double *y, F
     return NSPD_OK;
 }
 
+/* Each point's force and power, over the area of the cell that holds it,
+ * into the solver's source arrays. */
+static int gks_set_sources(void *impl, FlowSources *src) {
+    GksSolver *solver = ((GksFlow *)impl)->solver;
+    if (!src) {
+        gks_solver_clear_sources(solver);
+        return NSPD_OK;
+    }
+    double *cell[3];
+    TRY(gks_solver_source_cells(solver, cell));
+    const Grid *g = gks_solver_grid(solver);
+    const uint8_t *kind = gks_solver_fields(solver).kind;
+    src->outside = 0;
+    for (int64_t k = 0; k < src->n; k++) {
+        const double x = src->x[k], y = src->y[k];
+        if (!(x >= g->ax[0].lo && x <= g->ax[0].hi && y >= g->ax[1].lo && y <= g->ax[1].hi)) {
+            src->outside++;
+            continue;
+        }
+        const int i = grid_axis_cell_of(&g->ax[0], x), j = grid_axis_cell_of(&g->ax[1], y);
+        const int64_t c = grid_index(g, i, j);
+        if (kind[c] != FLOW_CELL_FLUID) {
+            src->outside++;
+            continue;
+        }
+        const double inv_area = g->ax[0].inv_width[i] * g->ax[1].inv_width[j];
+        cell[0][c] += src->force_x[k] * inv_area;
+        cell[1][c] += src->force_y[k] * inv_area;
+        if (src->power) cell[2][c] += src->power[k] * inv_area;
+    }
+    return NSPD_OK;
+}
+
 static void gks_totals(const void *impl, double totals[4]) {
     gks_solver_totals(((const GksFlow *)impl)->solver, totals);
 }
@@ -335,6 +368,7 @@ const FlowOps GKS_FLOW_OPS = {
     .cell_state = gks_cell_state,
     .reference = gks_reference,
     .sample = gks_sample,
+    .set_sources = gks_set_sources,
     .totals = gks_totals,
     .history = gks_history,
     .summary = gks_summary,

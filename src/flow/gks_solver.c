@@ -70,6 +70,20 @@ void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx) {
     s->hook = hook;
     s->hook_ctx = ctx;
 }
+int gks_solver_source_cells(GksSolver *s, double *out[3]) {
+    for (int k = 0; k < 3; k++) {
+        if (!s->source[k]) TRY(nspd_alloc(&s->source[k], (size_t)s->grid.size, sizeof(double)));
+        memset(s->source[k], 0, (size_t)s->grid.size * sizeof(double));
+        out[k] = s->source[k];
+    }
+    s->has_sources = true;
+    return NSPD_OK;
+}
+
+void gks_solver_clear_sources(GksSolver *s) {
+    s->has_sources = false;
+}
+
 void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double *u,
                                 const double *v) {
     s->wall_slot = slot;
@@ -240,6 +254,7 @@ void gks_solver_destroy(GksSolver **sp) {
     nspd_free(&s->half_w[0]);
     nspd_free(&s->half_w[1]);
     nspd_free(&s->row_sums);
+    for (int k = 0; k < 3; k++) nspd_free(&s->source[k]);
     for (int face = 0; face < 4; face++) nspd_free(&s->wall[face]);
     if (s->work)
         for (int t = 0; t < s->nthreads; t++) nspd_free(&s->work[t].block);

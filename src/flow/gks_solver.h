@@ -133,6 +133,15 @@ void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx);
 void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double *u,
                                 const double *v);
 
+/* Volume sources for the next steps (a coupling's forces on the gas): the
+ * per-cell arrays (index with grid_index) of x and y momentum (N/m^3) and
+ * energy (W/m^3), zeroed, for the caller to fill; every later step adds
+ * dt times them to the fluid cells' momentum and energy after the fluxes
+ * (first order in time, as the coupling that sets them). The first call
+ * allocates (3 doubles per cell); gks_solver_clear_sources stops them. */
+int gks_solver_source_cells(GksSolver *s, double *out[3]);
+void gks_solver_clear_sources(GksSolver *s);
+
 /* Fills the box ghost layers now (the step does it itself; for output). */
 void gks_solver_fill_boundaries(GksSolver *s);
 

@@ -12,6 +12,7 @@
 
 #include "flow/gks_solver.h"
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -57,6 +58,9 @@ struct GksSolver {
     FlowWork *work;
     FlowGhostHook hook;
     void *hook_ctx;
+    double *source[3]; /* per cell: x, y momentum (N/m^3) and energy (W/m^3) sources;
+                          allocated by the first gks_solver_source_cells */
+    bool has_sources;
     const int32_t *wall_slot; /* gks_solver_set_ghost_walls */
     const double *wall_u, *wall_v;
     double time;
