@@ -79,6 +79,10 @@ double coupling_solid_dt_limit(const Coupling *c, const Solid *solid) {
     return c->ops->solid_dt_limit ? c->ops->solid_dt_limit(c->impl, solid) : (double)INFINITY;
 }
 
+void coupling_loads(const Coupling *c, CouplingLoads *out) {
+    c->ops->loads(c->impl, out);
+}
+
 int coupling_history(Coupling *c, Solid *solid, Flow *flow, double time, Report *row) {
     return c->ops->history(c->impl, solid, flow, time, row);
 }

@@ -40,6 +40,11 @@ typedef struct {
 
 void coupling_config_free(CouplingConfig *cfg);
 
+/* What the flow did to the solid in the last step. */
+typedef struct {
+    double force_on_solid[2]; /* N per m of depth */
+} CouplingLoads;
+
 typedef struct Coupling Coupling;
 
 typedef struct CouplingOps {
@@ -51,6 +56,7 @@ typedef struct CouplingOps {
     int (*after_flow)(void *impl, Solid *solid, Flow *flow, double dt);
     /* the longest solid sub-step the coupling allows (INFINITY: no limit) */
     double (*solid_dt_limit)(const void *impl, const Solid *solid);
+    void (*loads)(const void *impl, CouplingLoads *out);
     /* the loads of the current state as history columns (and the running
      * time averages, from average_from on) */
     int (*history)(void *impl, Solid *solid, Flow *flow, double time, Report *row);
@@ -70,6 +76,7 @@ const char *coupling_name(const Coupling *c);
 int coupling_before_flow(Coupling *c, Solid *solid, Flow *flow);
 int coupling_after_flow(Coupling *c, Solid *solid, Flow *flow, double dt);
 double coupling_solid_dt_limit(const Coupling *c, const Solid *solid);
+void coupling_loads(const Coupling *c, CouplingLoads *out);
 int coupling_history(Coupling *c, Solid *solid, Flow *flow, double time, Report *row);
 int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out);
 int coupling_fields(Coupling *c, Solid *solid, Flow *flow, FieldSet *out);

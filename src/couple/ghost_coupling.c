@@ -121,6 +121,13 @@ static int ghost_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     return fsi_apply_loads(&g->fsi, bond_solid_body(solid), gks_flow_solver(flow));
 }
 
+static void ghost_loads(const void *impl, CouplingLoads *out) {
+    const GhostCoupling *g = impl;
+    /* rigid walls pass nothing on */
+    out->force_on_solid[0] = g->rigid ? 0.0 : g->fsi.force_on_solid[0];
+    out->force_on_solid[1] = g->rigid ? 0.0 : g->fsi.force_on_solid[1];
+}
+
 /* The surface loads of the current state. */
 static int surface_loads(GhostCoupling *g, Flow *flow, const IbmSurface **out) {
     IbmSurface *s = surface_of(g);
@@ -227,6 +234,7 @@ const CouplingOps GHOST_COUPLING_OPS = {
     .before_flow = ghost_before_flow,
     .after_flow = ghost_after_flow,
     .solid_dt_limit = NULL,
+    .loads = ghost_loads,
     .history = ghost_history,
     .summary = ghost_summary,
     .fields = ghost_fields,
@@ -240,9 +248,4 @@ const Ibm *ghost_coupling_ibm(Coupling *c) {
 const IbmSurface *ghost_coupling_surface(Coupling *c) {
     GhostCoupling *g = coupling_impl(c, COUPLING_GHOST_CELL);
     return g ? surface_of(g) : NULL;
-}
-
-const Fsi *ghost_coupling_fsi(Coupling *c) {
-    GhostCoupling *g = coupling_impl(c, COUPLING_GHOST_CELL);
-    return g && !g->rigid ? &g->fsi : NULL;
 }

@@ -24,11 +24,9 @@ struct CouplingOps;
 extern const struct CouplingOps GHOST_COUPLING_OPS;
 
 /* Views for tests and tools (NULL if the coupling is not a ghost-cell one):
- * the immersed boundary, the surface loads of the last computation, and the
- * two-way state (NULL for rigid bodies). */
+ * the immersed boundary and the surface loads of the last computation. */
 typedef struct Coupling Coupling;
 const Ibm *ghost_coupling_ibm(Coupling *c);
 const IbmSurface *ghost_coupling_surface(Coupling *c);
-const Fsi *ghost_coupling_fsi(Coupling *c);
 
 #endif

@@ -78,6 +78,11 @@ static void bond_damage(const void *impl, double *out) {
     pd_damage(&((const BondSolid *)impl)->body, out);
 }
 
+static double bond_modulus(const void *impl, int64_t i) {
+    (void)i; /* one material per body */
+    return ((const BondSolid *)impl)->body.cfg.youngs_modulus;
+}
+
 static void bond_history(const void *impl, Report *row) {
     const BondBody *b = &((const BondSolid *)impl)->body;
     double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
@@ -150,6 +155,7 @@ const SolidOps BOND_SOLID_OPS = {
     .time = bond_time,
     .set_time = bond_set_time,
     .damage = bond_damage,
+    .modulus = bond_modulus,
     .history = bond_history,
     .summary = bond_summary,
     .info = bond_info,

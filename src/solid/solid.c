@@ -121,6 +121,10 @@ void solid_current_positions(Solid *s, const double *out[3]) {
     }
 }
 
+double solid_modulus(const Solid *s, int64_t i) {
+    return s->ops->modulus(s->impl, i);
+}
+
 void solid_history(const Solid *s, Report *row) {
     s->ops->history(s->impl, row);
 }

@@ -70,7 +70,8 @@ typedef struct {
     int (*step)(void *impl, double dt);    /* force + integration, one step */
     double (*time)(const void *impl);
     void (*set_time)(void *impl, double t);
-    void (*damage)(const void *impl, double *out); /* per point, 0..1 */
+    void (*damage)(const void *impl, double *out);  /* per point, 0..1 */
+    double (*modulus)(const void *impl, int64_t i); /* Young's modulus at point i, Pa */
     void (*history)(const void *impl, Report *row);
     void (*summary)(const void *impl, const RunStats *run, Report *out);
     void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
@@ -106,6 +107,9 @@ const double *solid_damage(Solid *s);
 /* Current positions x + u (for outputs and pictures), into the handle's
  * scratch; valid until the next call. */
 void solid_current_positions(Solid *s, const double *out[3]);
+
+/* Young's modulus at point i, Pa (a penalty coupling's stiffness scale). */
+double solid_modulus(const Solid *s, int64_t i);
 
 void solid_history(const Solid *s, Report *row);
 void solid_summary(const Solid *s, const RunStats *run, Report *out);

@@ -14,6 +14,7 @@
 #include "sim/sim.h"
 #include "solid/solid.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -221,6 +222,12 @@ static void rigid_damage(const void *impl, double *out) {
     for (int i = 0; i < ((const RigidSolid *)impl)->cfg.n; i++) out[i] = 0.0;
 }
 
+static double rigid_modulus(const void *impl, int64_t i) {
+    (void)impl;
+    (void)i;
+    return INFINITY;
+}
+
 static void rigid_history(const void *impl, Report *row) {
     report_real(row, "rigid_displacement_m", ((const RigidSolid *)impl)->u[0][0]);
 }
@@ -248,6 +255,7 @@ static const SolidOps RIGID_SOLID_OPS = {
     .time = rigid_time,
     .set_time = rigid_set_time,
     .damage = rigid_damage,
+    .modulus = rigid_modulus,
     .history = rigid_history,
     .summary = rigid_summary,
     .info = rigid_info,
@@ -295,6 +303,11 @@ static double counter_limit(const void *impl, const Solid *solid) {
     return 0.02; /* tighter than the solid's own 0.8 x 0.05 s */
 }
 
+static void counter_loads(const void *impl, CouplingLoads *out) {
+    (void)impl;
+    out->force_on_solid[0] = out->force_on_solid[1] = 0.0;
+}
+
 static int counter_history(void *impl, Solid *solid, Flow *flow, double time, Report *row) {
     (void)solid;
     (void)flow;
@@ -325,6 +338,7 @@ static const CouplingOps COUNTER_OPS = {
     .before_flow = counter_before,
     .after_flow = counter_after,
     .solid_dt_limit = counter_limit,
+    .loads = counter_loads,
     .history = counter_history,
     .summary = counter_summary,
     .fields = counter_fields,
