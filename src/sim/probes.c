@@ -46,19 +46,6 @@ static int sort_members(ProbeState *p, const PdPoints *body) {
     return NSPD_OK;
 }
 
-/* Index of the cell of a sorted face array holding x (clamped to the grid). */
-static int cell_of(const GridAxis *a, double x) {
-    int lo = 0, hi = a->n;
-    while (hi - lo > 1) {
-        int mid = (lo + hi) / 2;
-        if (a->face[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 static int setup_flow(ProbeState *p, const Flow *flow) {
     const ProbeConfig *c = p->cfg;
     const FlowMesh mesh = flow_mesh(flow);
@@ -72,7 +59,7 @@ static int setup_flow(ProbeState *p, const Flow *flow) {
             return NSPD_FAIL(NSPD_ERR_INPUT,
                              "probe '%s': at[%d] = %g is outside the flow grid [%g, %g]", c->name,
                              d, c->at[d], g->ax[d].lo, g->ax[d].hi);
-    int i = cell_of(&g->ax[0], c->at[0]), j = cell_of(&g->ax[1], c->at[1]);
+    int i = grid_axis_cell_of(&g->ax[0], c->at[0]), j = grid_axis_cell_of(&g->ax[1], c->at[1]);
     if (c->kind == PROBE_POINT) {
         p->point = grid_index(g, i, j);
         return NSPD_OK;
