@@ -22,14 +22,20 @@ static void linear(void *ctx, double x, double y, FlowPrim *out) {
     *out = (FlowPrim){1.0 + 0.5 * x + 0.25 * y, 0.2, -0.05, 1.5};
 }
 
-static void make(Flow **f) {
-    FlowConfig c;
-    memset(&c, 0, sizeof c);
-    c.method = FLOW_METHOD_GKS;
-    GksConfig *s = &c.gks.solver;
+/* A GKS flow configuration with R = 1 on an nx x ny grid over [0, lx] x [0, ly]. */
+static GksConfig *gks(FlowConfig *c, int nx, int ny, double lx, double ly) {
+    memset(c, 0, sizeof *c);
+    c->method = FLOW_METHOD_GKS;
+    GksConfig *s = &c->gks.solver;
     gks_config_default(s);
     s->gas_constant = 1.0;
-    gks_config_uniform_grid(s, 0.0, 1.0, 16, 0.0, 2.0, 24);
+    gks_config_uniform_grid(s, 0.0, lx, nx, 0.0, ly, ny);
+    return s;
+}
+
+static void make(Flow **f) {
+    FlowConfig c;
+    GksConfig *s = gks(&c, 16, 24, 1.0, 2.0);
     s->init_fn = linear;
     s->init_quadrature = 2;
     assert_ok(flow_create(f, &c));
@@ -80,12 +86,7 @@ static void test_sample_is_exact_for_linear_fields(void **state) {
 static void test_sources_push_the_gas(void **state) {
     (void)state;
     FlowConfig c;
-    memset(&c, 0, sizeof c);
-    c.method = FLOW_METHOD_GKS;
-    GksConfig *s = &c.gks.solver;
-    gks_config_default(s);
-    s->gas_constant = 1.0;
-    gks_config_uniform_grid(s, 0.0, 1.0, 8, 0.0, 0.5, 4);
+    GksConfig *s = gks(&c, 8, 4, 1.0, 0.5);
     const FlowBc per = {.kind = BC_PERIODIC};
     for (int face = 0; face < 4; face++) gks_config_set_bc(s, face, &per);
     s->initial = (FlowPrim){1.0, 0.0, 0.0, 1.0};
