@@ -97,8 +97,7 @@ int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSample
 
 int flow_set_sources(Flow *f, FlowSources *src) {
     if (!f->ops->set_sources)
-        return NSPD_FAIL(NSPD_ERR_INPUT, "the '%s' flow solver takes no sources",
-                         f->ops->name);
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the '%s' flow solver takes no sources", f->ops->name);
     return f->ops->set_sources(f->impl, src);
 }
 
