@@ -4,6 +4,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "io/cfg_read.h"
+#include "io/xy_read.h"
 
 #include <errno.h>
 #include <math.h>
@@ -23,73 +24,20 @@ static int read_markers(CfgNode *item, const char *key, int64_t def, int64_t lo,
     return NSPD_OK;
 }
 
-/* Parses "x, y" or "x y" (with optional trailing text after a '#'). */
-static int parse_pair(char *line, double *x, double *y) {
-    char *hash = strchr(line, '#');
-    if (hash) *hash = '\0';
-    for (char *c = line; *c; c++)
-        if (*c == ',' || *c == ';' || *c == '\t' || *c == '\r' || *c == '\n') *c = ' ';
-    char *end;
-    errno = 0;
-    *x = strtod(line, &end);
-    if (end == line) return -1;
-    char *p = end;
-    *y = strtod(p, &end);
-    if (end == p || errno == ERANGE) return -1;
-    while (*end == ' ') end++;
-    if (*end != '\0' || !isfinite(*x) || !isfinite(*y)) return -1;
-    return 0;
-}
-
-static int blank(const char *s) {
-    for (; *s; s++)
-        if (*s == '#')
-            return 1;
-        else if (*s != ' ' && *s != '\t' && *s != '\r' && *s != '\n')
-            return 0;
-    return 1;
-}
-
 static int read_csv(CfgNode *item, IbmBodyConfig *b) {
     const char *file;
     TRY(cfg_req_string(item, "file", &file));
     cfg_resolve_path(cfg_map_find(item, "file"), file, b->path, sizeof b->path);
-    FILE *fp = fopen(b->path, "r");
-    if (!fp)
+    int n;
+    XyReadError err;
+    const int st = xy_read_file(b->path, &b->vertices, &n, &err);
+    if (st == NSPD_ERR_IO)
         return cfg_fail_at(item, "file", "cannot read '%s' (%s); expected a CSV file of x, y",
-                           b->path, strerror(errno));
-    char line[512];
-    int lineno = 0, n = 0, cap = 0, st = NSPD_OK, data_lines = 0;
-    while (fgets(line, sizeof line, fp)) {
-        lineno++;
-        if (blank(line)) continue;
-        char copy[512];
-        snprintf(copy, sizeof copy, "%s", line);
-        double x, y;
-        if (parse_pair(line, &x, &y) < 0) {
-            if (data_lines == 0) { /* a header line */
-                data_lines = -1;
-                continue;
-            }
-            copy[strcspn(copy, "\r\n")] = '\0';
-            st = cfg_fail_at(item, "file",
-                             "%s:%d: '%s' is not a vertex; expected two numbers x, y per line",
-                             b->path, lineno, copy);
-            break;
-        }
-        data_lines = data_lines < 0 ? 1 : data_lines + 1;
-        if (n == cap) {
-            const int nc = cap ? 2 * cap : 64;
-            if ((st = nspd_realloc(&b->vertices, 2 * (size_t)cap, 2 * (size_t)nc, sizeof(double))) <
-                0)
-                break;
-            cap = nc;
-        }
-        b->vertices[2 * n] = x;
-        b->vertices[2 * n + 1] = y;
-        n++;
-    }
-    fclose(fp);
+                           b->path, strerror(err.os_error));
+    if (st == NSPD_ERR_INPUT)
+        return cfg_fail_at(item, "file",
+                           "%s:%d: '%s' is not a vertex; expected two numbers x, y per line",
+                           b->path, err.line, err.text);
     TRY(st);
     b->vertex_count = n;
     if (n < 3)

@@ -276,14 +276,10 @@ int case_read(const char *path, char *const *overrides, int override_count, CfgD
 }
 
 int case_write_resolved(const CfgDoc *doc, const char *path) {
-    FILE *f = fopen(path, "w");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
-    fprintf(f,
-            "# The resolved case: the file %s with every --set override and every default\n"
-            "# written out. `nspd run` on this file repeats the run exactly.\n",
-            doc->file);
-    int status = cfg_doc_write(doc, f);
-    if (fclose(f) != 0 && status == NSPD_OK)
-        status = NSPD_FAIL(NSPD_ERR_IO, "cannot finish writing '%s'", path);
-    return status;
+    char header[4096 + 256];
+    snprintf(header, sizeof header,
+             "# The resolved case: the file %s with every --set override and every default\n"
+             "# written out. `nspd run` on this file repeats the run exactly.\n",
+             doc->file);
+    return cfg_doc_save(doc, path, header);
 }

@@ -5,6 +5,7 @@
 
 #include "core/status.h"
 
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <yaml.h>
@@ -546,4 +547,14 @@ int cfg_doc_write(const CfgDoc *doc, FILE *out) {
     yaml_emitter_delete(&e);
     if (!ok) return NSPD_FAIL(NSPD_ERR_IO, "cannot write the resolved case");
     return NSPD_OK;
+}
+
+int cfg_doc_save(const CfgDoc *doc, const char *path, const char *header) {
+    FILE *f = fopen(path, "w");
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s' (%s)", path, strerror(errno));
+    fputs(header, f);
+    int status = cfg_doc_write(doc, f);
+    if (fclose(f) != 0 && status == NSPD_OK)
+        status = NSPD_FAIL(NSPD_ERR_IO, "cannot finish writing '%s' (%s)", path, strerror(errno));
+    return status;
 }

@@ -59,6 +59,9 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment);
 /* Writes the tree as YAML (the resolved case: file values, overrides and the
  * defaults the schema filled in). */
 int cfg_doc_write(const CfgDoc *doc, FILE *out);
+/* Writes `header` (comment lines, each starting with '#') and the document
+ * to `path`. NSPD_ERR_IO, with the OS's reason, if it cannot. */
+int cfg_doc_save(const CfgDoc *doc, const char *path, const char *header);
 
 CfgNode *cfg_map_find(const CfgNode *map, const char *key);
 /* Adds key -> new scalar / empty collection to a map, or a scalar to a
