@@ -43,4 +43,15 @@
 #define NSPD_UNROLL(n) NSPD_PRAGMA(GCC unroll n)
 #endif
 
+/* NSPD_IVDEP, before a row loop: GCC may vectorise it without proving that
+ * its stores do not alias its loads (the `restrict` row pointers say so).
+ * Only GCC knows `#pragma GCC ivdep`; clang (and clang-tidy) would warn on
+ * it as unknown, so other compilers get nothing, which is what they made of
+ * the pragma anyway. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
+#define NSPD_IVDEP NSPD_PRAGMA(GCC ivdep)
+#else
+#define NSPD_IVDEP
+#endif
+
 #endif

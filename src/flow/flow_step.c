@@ -15,6 +15,7 @@
  * at creation for omp_get_max_threads() threads. */
 #include "flow/gks_solver.h"
 
+#include "core/kernel.h"
 #include "core/status.h"
 #include "flow/gks_solver_internal.h"
 #include "flow/gks_flux.h"
@@ -42,7 +43,7 @@ static inline __attribute__((always_inline)) void dt_rates(const GksSolver *s, i
     const uint8_t *restrict kd = s->kind + base;
     const double *restrict idx = g->ax[0].inv_width;
     double *restrict out = rate;
-#pragma GCC ivdep
+    NSPD_IVDEP
     for (int i = 0; i < g->nx; i++) {
         const double ir = 1.0 / r[i], u = mx[i] * ir, v = my[i] * ir;
         const double p = gm1 * (e[i] - 0.5 * (mx[i] * u + my[i] * v));
@@ -218,7 +219,7 @@ static int row_update(GksSolver *s, int j, double *const fx[4], double *const gb
     const double *restrict t0 = gt[0], *restrict t1 = gt[1], *restrict t2 = gt[2],
                            *restrict t3 = gt[3];
     int bad = 0;
-#pragma GCC ivdep
+    NSPD_IVDEP
     for (int i = 0; i < g->nx; i++) {
         const double w[4] = {o0[i], o1[i], o2[i], o3[i]};
         const double fx2[2][4] = {{f0[i], f1[i], f2[i], f3[i]},

@@ -9,6 +9,8 @@
  * zero flux through a select (never a multiply: their inputs may be garbage). */
 #include "flow/gks_flux.h"
 
+#include "core/kernel.h"
+
 #include <stddef.h>
 
 double gks_internal_dof(double gamma) {
@@ -57,7 +59,7 @@ flux_row(int n, const GksRowSide *restrict L, const GksRowSide *restrict R,
     const double idcs = 1.0 / (dls + drs);
     /* GCC ivdep, not omp simd: GCC lowers omp simd before inlining and then
      * cannot vectorise the kernel's local arrays; the plain vectoriser can. */
-#pragma GCC ivdep
+    NSPD_IVDEP
     for (int k = 0; k < n; k++) {
         const double dl = per_face ? dla[k] : dls, dr = per_face ? dra[k] : drs;
         const double idc = per_face ? idca[k] : idcs;

@@ -3,6 +3,7 @@
  * a compile-time constant of an always-inline body. */
 #include "flow/recon.h"
 
+#include "core/kernel.h"
 #include "flow/recon_kernel.h"
 
 #include <stddef.h>
@@ -26,7 +27,7 @@ RECON_INLINE int64_t slopes(int n, int limiter, const double *const wm[4],
                            *restrict p3 = wp[3];
     double *restrict s0 = s[0], *restrict s1 = s[1], *restrict s2 = s[2], *restrict s3 = s[3];
     int64_t fallbacks = 0;
-#pragma GCC ivdep
+    NSPD_IVDEP
     for (int k = 0; k < n; k++) {
         const double idl = per_cell ? idla[k] : idls, idr = per_cell ? idra[k] : idrs;
         const double hw = per_cell ? hwa[k] : hws;
