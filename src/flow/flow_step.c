@@ -31,8 +31,8 @@ void gks_solver_fill_boundaries(GksSolver *s) {
 
 /* Signal-speed rate of each cell of row j into rate[0..nx) (0 in non-fluid
  * cells); the law is a constant in each instantiation so the loop vectorises. */
-static inline __attribute__((always_inline)) void dt_rates(const GksSolver *s, int j, int law,
-                                                           double visc_factor, double *rate) {
+static inline __attribute__((always_inline)) void
+dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double *rate) {
     const Grid *g = &s->grid;
     const GksParams gas = s->gas;
     const double gamma = gas.gamma, gm1 = gamma - 1.0, iR = 1.0 / gas.R;
@@ -57,7 +57,7 @@ static inline __attribute__((always_inline)) void dt_rates(const GksSolver *s, i
 
 double gks_solver_stable_dt(const GksSolver *s) {
     const Grid *g = &s->grid;
-    const int law = s->gas.law;
+    const ViscosityLaw law = s->gas.law;
     const double visc_factor =
         law == VISCOSITY_NONE ? 0.0 : 2.0 * fmax(4.0 / 3.0, s->gas.gamma / s->cfg.prandtl);
     double rmax = 0.0;

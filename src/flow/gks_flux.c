@@ -31,7 +31,7 @@ void gks_params_default(GksParams *p, double gamma, double R) {
 void gks_flux_face(const double wl[4], const double nl[4], const double tl[4], const double wr[4],
                    const double nr[4], const double tr[4], const double n0[4], const double t0[4],
                    double dt, const GksParams *p, double f[4]) {
-    gks_flux_kernel(wl, nl, tl, wr, nr, tr, n0, t0, dt, p, (int)p->law, f);
+    gks_flux_kernel(wl, nl, tl, wr, nr, tr, n0, t0, dt, p, p->law, f);
 }
 
 /* Row body shared by the two entry points; per_face selects the geometry
@@ -39,8 +39,8 @@ void gks_flux_face(const double wl[4], const double nl[4], const double tl[4], c
 static inline __attribute__((always_inline)) void
 flux_row(int n, const GksRowSide *restrict L, const GksRowSide *restrict R,
          const double *restrict dla, const double *restrict dra, const double *restrict idca,
-         double dls, double drs, int per_face, double dt, const GksParams *restrict p, int law,
-         double *const f[4]) {
+         double dls, double drs, int per_face, double dt, const GksParams *restrict p,
+         ViscosityLaw law, double *const f[4]) {
     const double *restrict lw0 = L->w[0], *restrict lw1 = L->w[1], *restrict lw2 = L->w[2],
                            *restrict lw3 = L->w[3];
     const double *restrict rw0 = R->w[0], *restrict rw1 = R->w[1], *restrict rw2 = R->w[2],

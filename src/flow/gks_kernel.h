@@ -100,7 +100,7 @@ typedef struct {
 /* mu(T), Pa s. `law` is a compile-time constant at every vectorised call
  * site (the row loops are instantiated per law), so the switch folds away and
  * no unused law is evaluated. */
-NSPD_KERNEL double gks_viscosity(const GksParams *p, double T, int law) {
+NSPD_KERNEL double gks_viscosity(const GksParams *p, double T, ViscosityLaw law) {
     switch (law) {
     case VISCOSITY_CONSTANT:
         return p->mu_ref;
@@ -286,7 +286,7 @@ NSPD_KERNEL void gks_side_flux(const GksSide *s, double c0, double c1, double c2
 NSPD_KERNEL void gks_flux_kernel(const double wl[4], const double nl[4], const double tl[4],
                                  const double wr[4], const double nr[4], const double tr[4],
                                  const double n0[4], const double t0[4], double dt,
-                                 const GksParams *par, int law, double f[4]) {
+                                 const GksParams *par, ViscosityLaw law, double f[4]) {
     const double K = par->K;
     GksSide L, R;
     gks_side_init(&L, wl, nl, tl, par, 1.0);

@@ -13,7 +13,7 @@
 
 /* The body shared by both directions: cell k has neighbours m (minus) and p
  * (plus). per_cell selects array or scalar geometry. */
-RECON_INLINE int64_t slopes(int n, int limiter, const double *const wm[4],
+RECON_INLINE int64_t slopes(int n, FlowLimiter limiter, const double *const wm[4],
                             const double *const w0[4], const double *const wp[4],
                             const uint8_t *restrict km, const uint8_t *restrict k0,
                             const uint8_t *restrict kp, const double *restrict idla,
@@ -45,7 +45,7 @@ RECON_INLINE int64_t slopes(int n, int limiter, const double *const wm[4],
     return fallbacks;
 }
 
-int64_t recon_slopes_x(int n, int limiter, const double *const w[4], const uint8_t *kind,
+int64_t recon_slopes_x(int n, FlowLimiter limiter, const double *const w[4], const uint8_t *kind,
                        const double *inv_dl, const double *inv_dr, const double *half_width,
                        double *const s[4]) {
     const double *wm[4], *wp[4];
@@ -69,10 +69,10 @@ int64_t recon_slopes_x(int n, int limiter, const double *const w[4], const uint8
     }
 }
 
-int64_t recon_slopes_y(int n, int limiter, const double *const wm[4], const double *const w0[4],
-                       const double *const wp[4], const uint8_t *km, const uint8_t *k0,
-                       const uint8_t *kp, double inv_dl, double inv_dr, double half_width,
-                       double *const s[4]) {
+int64_t recon_slopes_y(int n, FlowLimiter limiter, const double *const wm[4],
+                       const double *const w0[4], const double *const wp[4], const uint8_t *km,
+                       const uint8_t *k0, const uint8_t *kp, double inv_dl, double inv_dr,
+                       double half_width, double *const s[4]) {
     switch (limiter) {
     case LIMITER_VAN_LEER:
         return slopes(n, LIMITER_VAN_LEER, wm, w0, wp, km, k0, kp, NULL, NULL, NULL, inv_dl, inv_dr,

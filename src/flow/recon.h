@@ -23,22 +23,24 @@
 #ifndef NSPD_FLOW_RECON_H
 #define NSPD_FLOW_RECON_H
 
+#include "flow/recon_kernel.h" /* FlowLimiter */
+
 #include <stdint.h>
 
 /* Slopes along x of n consecutive cells of a row. w[v], kind, inv_dl,
  * inv_dr, half_width point at the first cell; its neighbours at -1 and +1
  * are read. s[v][k] receives the slope of cell k. Returns the number of
  * cells that fell back to first order. */
-int64_t recon_slopes_x(int n, int limiter, const double *const w[4], const uint8_t *kind,
+int64_t recon_slopes_x(int n, FlowLimiter limiter, const double *const w[4], const uint8_t *kind,
                        const double *inv_dl, const double *inv_dr, const double *half_width,
                        double *const s[4]);
 
 /* Slopes along y of n consecutive cells of row j: wm, w0, wp are rows j-1,
  * j, j+1 (pointers at the first cell), with their kinds; geometry is one
  * value for the row. */
-int64_t recon_slopes_y(int n, int limiter, const double *const wm[4], const double *const w0[4],
-                       const double *const wp[4], const uint8_t *km, const uint8_t *k0,
-                       const uint8_t *kp, double inv_dl, double inv_dr, double half_width,
-                       double *const s[4]);
+int64_t recon_slopes_y(int n, FlowLimiter limiter, const double *const wm[4],
+                       const double *const w0[4], const double *const wp[4], const uint8_t *km,
+                       const uint8_t *k0, const uint8_t *kp, double inv_dl, double inv_dr,
+                       double half_width, double *const s[4]);
 
 #endif

@@ -27,7 +27,7 @@ typedef enum {
  * side); wl = 1/dl and wr = 1/dr weigh the unlimited central slope. The
  * row loops pass `limiter` as a compile-time constant, so the switch folds
  * and the loop vectorises. The 1e-300 keeps 0/0 (a = b = 0) at 0. */
-NSPD_KERNEL double recon_limit(int limiter, double a, double b, double wl, double wr) {
+NSPD_KERNEL double recon_limit(FlowLimiter limiter, double a, double b, double wl, double wr) {
     switch (limiter) {
     case LIMITER_VAN_LEER:
         return (a * fabs(b) + fabs(a) * b) / (fabs(a) + fabs(b) + 1e-300);
@@ -50,7 +50,7 @@ NSPD_KERNEL double recon_limit(int limiter, double a, double b, double wl, doubl
  *   hw                 half the cell width, m (face states are W -+ s hw)
  * Returns 1 if positivity sent the cell back to first order, else 0 (a
  * zero slope in or next to a SOLID cell is not counted). */
-NSPD_KERNEL int recon_slopes_cell(int limiter, const double w[3][4], const uint8_t kind[3],
+NSPD_KERNEL int recon_slopes_cell(FlowLimiter limiter, const double w[3][4], const uint8_t kind[3],
                                   double idl, double idr, double hw, double s[4]) {
     double sl[4], lo[4], hi[4];
     for (int v = 0; v < 4; v++) {

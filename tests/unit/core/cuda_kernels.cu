@@ -24,7 +24,7 @@ __global__ void gks_flux_faces(int64_t n, const double *in, GksParams par, doubl
 }
 
 /* recon_limit of n pairs of one-sided slopes. */
-__global__ void recon_limit_pairs(int64_t n, int limiter, const double *a, const double *b,
+__global__ void recon_limit_pairs(int64_t n, FlowLimiter limiter, const double *a, const double *b,
                                   double idl, double idr, double *out) {
     const int64_t i = thread_index();
     if (i >= n) return;
@@ -32,7 +32,7 @@ __global__ void recon_limit_pairs(int64_t n, int limiter, const double *a, const
 }
 
 /* recon_slopes_cell along x of a row of cells 1 .. n. */
-__global__ void recon_slopes_row(int64_t n, int limiter, const double *const *w,
+__global__ void recon_slopes_row(int64_t n, FlowLimiter limiter, const double *const *w,
                                  const uint8_t *kind, double idl, double idr, double hw, double *s,
                                  int *fallback) {
     const int64_t i = thread_index() + 1;
