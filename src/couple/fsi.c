@@ -10,17 +10,11 @@
 
 const char *const FSI_HOLD_NAMES[FSI_HOLD_COUNT + 1] = {"none", "balance", NULL};
 
-/* True if point i still has an intact bond. */
-static bool attached(const BondBody *b, int32_t i) {
-    for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++)
-        if (b->bond_coef[k] != 0.0f) return true;
-    return false;
-}
-
 /* This step's interface: the surface loops without debris (points with no
  * intact bond), their markers at the points' current positions and
  * velocities. A loop keeps all its points if fewer than 3 would remain. */
-static void markers_from_points(Fsi *f, const BondBody *body) {
+static void markers_from_points(Fsi *f, const Solid *solid) {
+    const PdPoints *body = solid_points_const(solid);
     const PdSurface *all = &f->surface;
     PdSurface *w = &f->wetted;
     int64_t used = 0;
@@ -28,7 +22,7 @@ static void markers_from_points(Fsi *f, const BondBody *body) {
         int64_t lo = all->loop_start[k], hi = all->loop_start[k + 1], start = used;
         w->loop_start[k] = used;
         for (int64_t m = lo; m < hi; m++)
-            if (attached(body, all->point[m])) w->point[used++] = all->point[m];
+            if (solid_attached(solid, all->point[m])) w->point[used++] = all->point[m];
         if (used - start < 3) { /* keep the loop whole rather than lose the body */
             used = start;
             for (int64_t m = lo; m < hi; m++) w->point[used++] = all->point[m];
@@ -48,7 +42,8 @@ static void markers_from_points(Fsi *f, const BondBody *body) {
     }
 }
 
-int fsi_create(Fsi *f, const FsiConfig *cfg, const BondBody *body, GksSolver *flow) {
+int fsi_create(Fsi *f, const FsiConfig *cfg, const Solid *solid, GksSolver *flow) {
+    const PdPoints *body = solid_points_const(solid);
     memset(f, 0, sizeof *f);
     f->cfg = *cfg;
     /* neighbouring surface points are 1 or sqrt(2) spacings apart; 2.5
@@ -82,7 +77,7 @@ int fsi_create(Fsi *f, const FsiConfig *cfg, const BondBody *body, GksSolver *fl
         p->wall_temperature = cfg->wall_temperature;
         p->leading_edge = p->trailing_edge = -1;
     }
-    markers_from_points(f, body);
+    markers_from_points(f, solid);
     status = ibm_create(&f->ibm, gks_solver_grid(flow), f->polylines, f->loop_count);
     if (status == NSPD_OK) ibm_set_ghost_faces(f->ibm, (IbmGhostFaces)cfg->ghost_faces);
     if (status == NSPD_OK) status = ibm_attach(f->ibm, flow);
@@ -105,13 +100,14 @@ void fsi_destroy(Fsi *f) {
     memset(f, 0, sizeof *f);
 }
 
-int fsi_move_interface(Fsi *f, const BondBody *body, GksSolver *flow) {
-    markers_from_points(f, body);
+int fsi_move_interface(Fsi *f, const Solid *solid, GksSolver *flow) {
+    markers_from_points(f, solid);
     TRY(ibm_update(f->ibm, f->polylines, f->loop_count, flow));
     return ibm_surface_reserve(f->ibm, &f->loads); /* the marker count may change */
 }
 
-int fsi_apply_loads(Fsi *f, BondBody *body, GksSolver *flow) {
+int fsi_apply_loads(Fsi *f, Solid *solid, GksSolver *flow) {
+    PdPoints *body = solid_points(solid);
     TRY(ibm_surface_compute(f->ibm, flow, &f->cfg.reference, &f->loads));
     /* Parts of the solid outside the flow's box (the panel's clamp below the
      * floor) have no fluid on them: no load. */
@@ -136,21 +132,11 @@ int fsi_apply_loads(Fsi *f, BondBody *body, GksSolver *flow) {
     pd_surface_apply_tractions(body, &f->wetted, f->loads.fx, f->loads.fy, f->force_on_solid);
     if (f->cfg.hold == FSI_HOLD_BALANCE) {
         double volume = 0.0; /* per unit depth */
-        for (int64_t i = 0; i < body->n; i++) volume += body->volume[i] / body->cfg.thickness;
+        for (int64_t i = 0; i < body->n; i++) volume += body->volume[i] / body->thickness;
         for (int d = 0; d < 2; d++) {
             double b = -f->force_on_solid[d] / volume;
             for (int64_t i = 0; i < body->n; i++) body->external[d][i] += b;
         }
     }
-    return NSPD_OK;
-}
-
-int fsi_advance_solid(Fsi *f, BondBody *body, double dt, double max_substep, double end_time) {
-    int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
-    if (n < 1) n = 1;
-    double h = dt / (double)n;
-    for (int64_t k = 0; k < n; k++) TRY(pd_step(body, h));
-    body->time = end_time; /* the same clock as the flow, not a sum of n rounded steps */
-    f->substeps = n;
     return NSPD_OK;
 }

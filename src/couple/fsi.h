@@ -1,10 +1,11 @@
-/* Two-way coupling of the GKS flow and a 2D PD solid through the ghost-cell
+/* Two-way coupling of the GKS flow and a 2D PD solid (any model: it reads the
+ * solid's PdPoints and asks it which points are still attached) through the ghost-cell
  * immersed boundary (paper 000 Sec. 3.3.4 and Fig. 3).
  *
  * The interface is the solid's own surface (solid/pd_surface.h): one closed
  * polyline per surface loop, whose markers are the surface points at their
  * current positions and whose wall velocities are the points' velocities.
- * Per fluid step (sim/sim.c):
+ * Per fluid step (through couple/ghost_coupling.c, called by sim/sim.c):
  *   1. fsi_move_interface: markers <- points; ibm_update re-tags the cells
  *      near the moved walls, fills the cells the solid uncovered ("fresh"
  *      cells, by interpolation from fluid neighbours) and rebuilds the ghost
@@ -15,7 +16,8 @@
  *      computed, become force densities on the surface points
  *      (pd_surface_apply_tractions: traction x segment length x thickness /
  *      point volume, half to each end);
- *   4. the PD sub-steps: n = ceil(dt_fluid / dt_pd) steps of dt_fluid / n,
+ *   4. (the driver's solid_advance) the PD sub-steps: n = ceil(dt_fluid /
+ *      dt_pd) steps of dt_fluid / n,
  *      with the load held over the sub-steps (the flow state it comes from
  *      is the one at the end of the fluid step: a first-order, explicit,
  *      loosely coupled scheme, as in the paper), so both clocks end on the
@@ -30,7 +32,8 @@
  * the body does not translate (its rotation is not removed). The gas keeps
  * the free-stream velocity relative to the body, as in a wind tunnel.
  *
- * Debris: a surface point that has lost all its bonds belongs to no body; it
+ * Debris: a surface point that is no longer attached (bond PD: it has lost
+ * all its bonds) belongs to no body; it
  * leaves the interface (its loop joins its neighbours) and takes no load, so
  * that a point knocked off the surface does not drag the wall after it.
  *
@@ -46,8 +49,8 @@
 #include "couple/ibm.h"
 #include "couple/ibm_surface.h"
 #include "flow/gks_solver.h"
-#include "solid/bond_body.h"
 #include "solid/pd_surface.h"
+#include "solid/solid.h"
 
 typedef enum {
     FSI_HOLD_NONE = 0, /* the solid moves freely under the fluid's load */
@@ -83,17 +86,14 @@ typedef struct {
  * grid from it and attaches it to the solver (cell kinds, ghost hook,
  * optional soft start). The body must be 2D and lie inside the grid.
  * NSPD_ERR_INPUT for a 3D body or an interface the immersed boundary refuses. */
-int fsi_create(Fsi *fsi, const FsiConfig *cfg, const BondBody *body, GksSolver *flow);
+int fsi_create(Fsi *fsi, const FsiConfig *cfg, const Solid *solid, GksSolver *flow);
 void fsi_destroy(Fsi *fsi);
 
 /* Step 1 above. */
-int fsi_move_interface(Fsi *fsi, const BondBody *body, GksSolver *flow);
+int fsi_move_interface(Fsi *fsi, const Solid *solid, GksSolver *flow);
 
-/* Step 3 above: replaces body->external with the fluid's tractions. */
-int fsi_apply_loads(Fsi *fsi, BondBody *body, GksSolver *flow);
-
-/* Step 4 above: advances the solid by dt in sub-steps no longer than
- * `max_substep`; the solid's clock ends exactly on end_time. */
-int fsi_advance_solid(Fsi *fsi, BondBody *body, double dt, double max_substep, double end_time);
+/* Step 3 above: replaces the solid's external force density with the
+ * fluid's tractions. */
+int fsi_apply_loads(Fsi *fsi, Solid *solid, GksSolver *flow);
 
 #endif

@@ -3,7 +3,6 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "couple/coupling.h"
-#include "solid/bond_solid.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -80,11 +79,9 @@ static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *fl
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "the ghost-cell coupling needs the GKS flow solver, not '%s'",
                          flow_name(flow));
-    BondBody *body = solid ? bond_solid_body(solid) : NULL;
-    if (solid && !body)
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "the ghost-cell coupling needs a bond-based solid, not '%s'",
-                         solid_name(solid));
+    if (solid && solid_points(solid)->dim != 2)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the ghost-cell coupling needs a 2D solid, not %dD",
+                         solid_points(solid)->dim);
     GhostCoupling *g;
     TRY(nspd_alloc(&g, 1, sizeof *g));
     g->cfg = cfg->ghost;
@@ -95,7 +92,7 @@ static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *fl
     if (g->rigid) {
         status = create_rigid(g, solver);
     } else {
-        status = fsi_create(&g->fsi, &g->cfg.fsi, body, solver);
+        status = fsi_create(&g->fsi, &g->cfg.fsi, solid, solver);
         g->body_count = g->fsi.loop_count;
     }
     if (status == NSPD_OK)
@@ -111,14 +108,14 @@ static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *fl
 static int ghost_before_flow(void *impl, Solid *solid, Flow *flow) {
     GhostCoupling *g = impl;
     if (g->rigid) return NSPD_OK;
-    return fsi_move_interface(&g->fsi, bond_solid_body(solid), gks_flow_solver(flow));
+    return fsi_move_interface(&g->fsi, solid, gks_flow_solver(flow));
 }
 
 static int ghost_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     (void)dt;
     GhostCoupling *g = impl;
     if (g->rigid) return NSPD_OK;
-    return fsi_apply_loads(&g->fsi, bond_solid_body(solid), gks_flow_solver(flow));
+    return fsi_apply_loads(&g->fsi, solid, gks_flow_solver(flow));
 }
 
 static void ghost_loads(const void *impl, CouplingLoads *out) {

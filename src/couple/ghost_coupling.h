@@ -4,9 +4,9 @@
  *   - rigid fixed bodies (flow.bodies), when the case has no solid: the
  *     walls stay where they are, the flow feels them, and their loads are
  *     measured (force coefficients, surface pressure and friction).
- * It needs the GKS grid (gks_flow_solver) and the bonds of a bond-based
- * solid (bond_solid_body); other models are refused at create with an
- * input error. */
+ * It needs the GKS grid (gks_flow_solver) and a 2D solid (any model: the
+ * walls are its PdPoints' surface, debris its detached points); other flows
+ * and 3D solids are refused at create with an input error. */
 #ifndef NSPD_COUPLE_GHOST_COUPLING_H
 #define NSPD_COUPLE_GHOST_COUPLING_H
 

@@ -83,6 +83,13 @@ static double bond_modulus(const void *impl, int64_t i) {
     return ((const BondSolid *)impl)->body.cfg.youngs_modulus;
 }
 
+static bool bond_attached(const void *impl, int64_t i) {
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++)
+        if (b->bond_coef[k] != 0.0f) return true; /* 0: broken (bond_body.h) */
+    return false;
+}
+
 static void bond_history(const void *impl, Report *row) {
     const BondBody *b = &((const BondSolid *)impl)->body;
     double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
@@ -156,6 +163,7 @@ const SolidOps BOND_SOLID_OPS = {
     .set_time = bond_set_time,
     .damage = bond_damage,
     .modulus = bond_modulus,
+    .attached = bond_attached,
     .history = bond_history,
     .summary = bond_summary,
     .info = bond_info,

@@ -33,7 +33,7 @@ static int64_t pix(const LatticeImage *im, int i, int j) {
     return (int64_t)j * im->nx + i;
 }
 
-static int image_build(const BondBody *b, LatticeImage *im) {
+static int image_build(const PdPoints *b, LatticeImage *im) {
     int32_t imax = INT32_MIN, jmax = INT32_MIN;
     im->imin = im->jmin = INT32_MAX;
     for (int64_t p = 0; p < b->n; p++) {
@@ -125,7 +125,7 @@ static int64_t trace(const LatticeImage *im, int part, int64_t start, int32_t *o
     }
 }
 
-int pd_surface_trace(const BondBody *body, PdSurface *s) {
+int pd_surface_trace(const PdPoints *body, PdSurface *s) {
     memset(s, 0, sizeof *s);
     if (body->dim != 2)
         return NSPD_FAIL(NSPD_ERR_INPUT, "a PD surface for the immersed boundary needs a 2D body");
@@ -190,7 +190,7 @@ void pd_surface_free(PdSurface *s) {
     memset(s, 0, sizeof *s);
 }
 
-void pd_surface_positions(const BondBody *b, const PdSurface *s, double *x, double *y, double *vx,
+void pd_surface_positions(const PdPoints *b, const PdSurface *s, double *x, double *y, double *vx,
                           double *vy) {
     for (int64_t m = 0; m < s->length; m++) {
         int32_t i = s->point[m];
@@ -201,10 +201,10 @@ void pd_surface_positions(const BondBody *b, const PdSurface *s, double *x, doub
     }
 }
 
-void pd_surface_apply_tractions(BondBody *b, const PdSurface *s, const double *tx, const double *ty,
+void pd_surface_apply_tractions(PdPoints *b, const PdSurface *s, const double *tx, const double *ty,
                                 double total[2]) {
     total[0] = total[1] = 0.0;
-    const double depth = b->cfg.thickness;
+    const double depth = b->thickness;
     for (int k = 0; k < s->loop_count; k++) {
         int64_t lo = s->loop_start[k], hi = s->loop_start[k + 1];
         for (int64_t m = lo; m < hi; m++) {

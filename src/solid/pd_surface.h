@@ -17,7 +17,7 @@
 #ifndef NSPD_SOLID_PD_SURFACE_H
 #define NSPD_SOLID_PD_SURFACE_H
 
-#include "solid/bond_body.h"
+#include "solid/solid.h"
 
 typedef struct {
     int loop_count;
@@ -29,13 +29,13 @@ typedef struct {
 /* Traces the outer boundary of each connected part of a 2D body's lattice
  * (Moore-neighbour tracing with Jacob's stopping rule). NSPD_ERR_INPUT for a
  * 3D body. Allocates the arrays of *surface. */
-int pd_surface_trace(const BondBody *body, PdSurface *surface);
+int pd_surface_trace(const PdPoints *body, PdSurface *surface);
 void pd_surface_free(PdSurface *surface);
 
 /* Current positions and velocities of the surface points, loop by loop, into
  * caller arrays of surface->length entries (the polylines the immersed
  * boundary needs each step). */
-void pd_surface_positions(const BondBody *body, const PdSurface *surface, double *x, double *y,
+void pd_surface_positions(const PdPoints *body, const PdSurface *surface, double *x, double *y,
                           double *vx, double *vy);
 
 /* Adds surface tractions to the body's external force density. traction_x/y
@@ -47,7 +47,7 @@ void pd_surface_positions(const BondBody *body, const PdSurface *surface, double
  * round-off. Segment lengths are taken in the current configuration. Writes
  * the total force per unit depth it applied into total[2] (N/m). Adds to
  * `external`: clear it first if the tractions replace earlier ones. */
-void pd_surface_apply_tractions(BondBody *body, const PdSurface *surface, const double *traction_x,
+void pd_surface_apply_tractions(PdPoints *body, const PdSurface *surface, const double *traction_x,
                                 const double *traction_y, double total[2]);
 
 #endif

@@ -125,6 +125,10 @@ double solid_modulus(const Solid *s, int64_t i) {
     return s->ops->modulus(s->impl, i);
 }
 
+bool solid_attached(const Solid *s, int64_t i) {
+    return s->ops->attached ? s->ops->attached(s->impl, i) : true;
+}
+
 void solid_history(const Solid *s, Report *row) {
     s->ops->history(s->impl, row);
 }

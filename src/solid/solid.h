@@ -72,6 +72,10 @@ typedef struct {
     void (*set_time)(void *impl, double t);
     void (*damage)(const void *impl, double *out);  /* per point, 0..1 */
     double (*modulus)(const void *impl, int64_t i); /* Young's modulus at point i, Pa */
+    /* true while point i belongs to the body (bond PD: it keeps an intact
+     * bond); a detached point is debris, which no wall follows. NULL: a
+     * model whose points never detach */
+    bool (*attached)(const void *impl, int64_t i);
     void (*history)(const void *impl, Report *row);
     void (*summary)(const void *impl, const RunStats *run, Report *out);
     void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
@@ -110,6 +114,8 @@ void solid_current_positions(Solid *s, const double *out[3]);
 
 /* Young's modulus at point i, Pa (a penalty coupling's stiffness scale). */
 double solid_modulus(const Solid *s, int64_t i);
+/* True while point i belongs to the body (not debris). */
+bool solid_attached(const Solid *s, int64_t i);
 
 void solid_history(const Solid *s, Report *row);
 void solid_summary(const Solid *s, const RunStats *run, Report *out);

@@ -5,6 +5,7 @@
 
 #include "core/mem.h"
 #include "solid/bond_body.h"
+#include "solid/bond_solid.h"
 #include "solid/pd_surface.h"
 
 #include <math.h>
@@ -30,8 +31,10 @@ static void test_rectangle_loop(void **state) {
     PdConfig cfg = fixture_block(2, 10, 6, 0, 1e-3);
     BondBody b;
     assert_ok(bond_body_create(&b, &cfg));
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
     PdSurface s;
-    assert_ok(pd_surface_trace(&b, &s));
+    assert_ok(pd_surface_trace(&pts, &s));
     assert_int_equal(s.loop_count, 1);
     assert_int_equal(s.length, 2 * (10 + 6) - 4); /* every edge point once */
     check_loops(&b, &s);
@@ -55,8 +58,10 @@ static void test_disc_and_two_parts(void **state) {
         (Shape){.kind = SHAPE_RECTANGLE, .lo = {10e-3, -3e-3}, .hi = {14e-3, 3e-3}};
     BondBody b;
     assert_ok(bond_body_create(&b, &cfg));
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
     PdSurface s;
-    assert_ok(pd_surface_trace(&b, &s));
+    assert_ok(pd_surface_trace(&pts, &s));
     assert_int_equal(s.loop_count, 2);
     check_loops(&b, &s);
     /* every loop point lacks one of its 4 lattice neighbours; every point
@@ -82,8 +87,10 @@ static void test_thin_strip_goes_out_and_back(void **state) {
     PdConfig cfg = fixture_block(2, 12, 1, 0, 1e-3);
     BondBody b;
     assert_ok(bond_body_create(&b, &cfg));
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
     PdSurface s;
-    assert_ok(pd_surface_trace(&b, &s));
+    assert_ok(pd_surface_trace(&pts, &s));
     assert_int_equal(s.loop_count, 1);
     assert_int_equal(s.length, 2 * 12 - 2);
     pd_surface_free(&s);
@@ -97,15 +104,17 @@ static void test_tractions_balance(void **state) {
     PdConfig cfg = fixture_block(2, 9, 7, 0, 1e-3);
     BondBody b;
     assert_ok(bond_body_create(&b, &cfg));
+    PdPoints pts;
+    bond_solid_points_of(&b, &pts);
     for (int64_t i = 0; i < b.n; i++) b.u[1][i] = 1e-4 * sin(b.x[0][i] * 300.0); /* bent */
     PdSurface s;
-    assert_ok(pd_surface_trace(&b, &s));
+    assert_ok(pd_surface_trace(&pts, &s));
     double *tx, *ty, *x, *y;
     assert_ok(nspd_alloc(&tx, (size_t)s.length, sizeof(double)));
     assert_ok(nspd_alloc(&ty, (size_t)s.length, sizeof(double)));
     assert_ok(nspd_alloc(&x, (size_t)s.length, sizeof(double)));
     assert_ok(nspd_alloc(&y, (size_t)s.length, sizeof(double)));
-    pd_surface_positions(&b, &s, x, y, NULL, NULL);
+    pd_surface_positions(&pts, &s, x, y, NULL, NULL);
     const double p = 1e5;
     for (int64_t m = 0; m < s.length; m++) { /* -p n, n = outward normal of a CCW loop */
         int64_t next = m + 1 < s.length ? m + 1 : 0;
@@ -114,7 +123,7 @@ static void test_tractions_balance(void **state) {
         ty[m] = p * dx / len;
     }
     double total[2];
-    pd_surface_apply_tractions(&b, &s, tx, ty, total);
+    pd_surface_apply_tractions(&pts, &s, tx, ty, total);
     double scale = p * 32e-3; /* pressure x perimeter */
     assert_true(fabs(total[0]) < 1e-13 * scale && fabs(total[1]) < 1e-13 * scale);
     /* a traction along +x: the points get thickness x sum t |seg| */
@@ -123,7 +132,7 @@ static void test_tractions_balance(void **state) {
         ty[m] = 0;
     }
     memset(b.external[0], 0, (size_t)b.n * sizeof(double));
-    pd_surface_apply_tractions(&b, &s, tx, ty, total);
+    pd_surface_apply_tractions(&pts, &s, tx, ty, total);
     double received = 0;
     for (int64_t i = 0; i < b.n; i++) received += b.volume[i] * b.external[0][i];
     assert_close(received, b.cfg.thickness * total[0], 1e-12 * fabs(received));
