@@ -121,7 +121,7 @@ static void segment_loads(const Ibm *ibm, const SurfaceFlow *F, const SurfaceBod
             const double ut2 = (q2.u - uw) * tx + (q2.v - vw) * ty;
             dudn = (4.0 * ut1 - ut2) / (2.0 * d);
         }
-        tau = gks_viscosity(F->gas, Twall, (int)F->gas->law) * dudn;
+        tau = gks_viscosity(F->gas, Twall, F->gas->law) * dudn;
     }
     const int up = ((k - (B->te - B->fb)) % n + n) % n < B->span;
     o->body[sg] = B->b;

@@ -311,7 +311,7 @@ static inline double ibm_case_box_force(GksSolver *s, const int box[4], double p
             }
             const double r = 0.5 * (m[0][0] + m[1][0]), u = 0.5 * (m[0][1] + m[1][1]);
             const double p = 0.5 * (m[0][3] + m[1][3]);
-            const double mu = gks_viscosity(gas, p / (r * gas->R), (int)gas->law);
+            const double mu = gks_viscosity(gas, p / (r * gas->R), gas->law);
             const double dudx = (m[1][1] - m[0][1]) / (xc[i] - xc[i - 1]);
             const double dvdy = 0.5 *
                                 (IBM_Q(i, j + 1, 2) - IBM_Q(i, j - 1, 2) + IBM_Q(i - 1, j + 1, 2) -
@@ -332,7 +332,7 @@ static inline double ibm_case_box_force(GksSolver *s, const int box[4], double p
             const double p =
                 0.5 * gm1 * (f.w[3][grid_index(g, i, j - 1)] + f.w[3][grid_index(g, i, j)]) -
                 0.25 * gm1 * (r0 * (u0 * u0 + v0 * v0) + r1 * (u1 * u1 + v1 * v1));
-            const double mu = gks_viscosity(gas, p / (r * gas->R), (int)gas->law);
+            const double mu = gks_viscosity(gas, p / (r * gas->R), gas->law);
             const double dudy = (u1 - u0) / (yc[j] - yc[j - 1]);
             const double dvdx = 0.5 *
                                 (IBM_Q(i + 1, j, 2) - IBM_Q(i - 1, j, 2) + IBM_Q(i + 1, j - 1, 2) -
