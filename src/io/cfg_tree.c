@@ -53,6 +53,18 @@ static int node_append(CfgNode *parent, CfgNode *child) {
     return NSPD_OK;
 }
 
+/* Puts `node` (key and all) in the place of `old` under old's parent, and
+ * frees `old`. */
+static void node_replace(CfgNode *old, CfgNode *node) {
+    CfgNode *parent = old->parent;
+    node->key = old->key;
+    old->key = NULL;
+    node->index = old->index;
+    node->parent = parent;
+    parent->child[old->index] = node;
+    node_free(old);
+}
+
 static bool scalar_is_null(const char *text, bool quoted) {
     return !quoted && (text[0] == '\0' || strcmp(text, "~") == 0 || strcmp(text, "null") == 0 ||
                        strcmp(text, "Null") == 0 || strcmp(text, "NULL") == 0);
@@ -117,7 +129,7 @@ void cfg_node_path(const CfgNode *node, char *buf, int size) {
 }
 
 void cfg_node_where(const CfgNode *node, char *buf, int size) {
-    while (node && node->origin == CFG_FROM_DEFAULT && node->parent) node = node->parent;
+    while (node->origin == CFG_FROM_DEFAULT && node->parent) node = node->parent;
     if (node->origin == CFG_FROM_OVERRIDE) {
         /* the node inherits the text of the --set that created it */
         snprintf(buf, (size_t)size, "--set %s", node->file);
@@ -414,8 +426,10 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
                          assignment);
     if (!value) {
         value = node_new(CFG_SCALAR, text, 0, 0, CFG_FROM_OVERRIDE);
-        if (!value || !(value->text = dup_string("")))
+        if (!value || !(value->text = dup_string(""))) {
+            node_free(value);
             return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+        }
         value->is_null = true;
     }
     mark_origin(value, text);
@@ -455,12 +469,7 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
         }
         if (!next) { /* last segment: put the value here */
             if (child) {
-                value->key = child->key;
-                child->key = NULL;
-                value->index = child->index;
-                value->parent = node;
-                node->child[child->index] = value;
-                node_free(child);
+                node_replace(child, value);
             } else {
                 value->key = dup_string(segment);
                 if (!value->key || node_append(node, value) != NSPD_OK) {
