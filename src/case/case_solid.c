@@ -18,7 +18,7 @@ static int read_components(CfgNode *map, const char *key, int dim, unsigned *mas
     TRY(cfg_opt_map(map, key, &node));
     *mask = 0;
     if (!node) return NSPD_OK;
-    for (int d = 0; d < dim; d++) {
+    for (int d = 0; d < dim && d < 3; d++) { /* dim <= 3: AXES has 3 */
         bool given;
         TRY(cfg_maybe_double(node, AXES[d], &value[d], &given));
         if (given) *mask |= 1u << d;

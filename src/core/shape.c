@@ -102,7 +102,7 @@ bool shapeset_bounds(const ShapeSet *set, int dim, double lo[3], double hi[3]) {
         if (set->shapes[i].subtract) continue;
         double slo[3], shi[3];
         shape_bounds(&set->shapes[i], slo, shi);
-        for (int d = 0; d < dim; d++) {
+        for (int d = 0; d < dim && d < 3; d++) { /* dim <= 3: slo, shi have 3 */
             lo[d] = any ? fmin(lo[d], slo[d]) : slo[d];
             hi[d] = any ? fmax(hi[d], shi[d]) : shi[d];
         }

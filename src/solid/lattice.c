@@ -51,6 +51,8 @@ static int compare_keys(const void *a, const void *b) {
 
 int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, const double *origin) {
     lattice_free(lat);
+    if (dim != 2 && dim != 3)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "lattice_fill: dim is %d; expected 2 or 3", dim);
     double lo[3], hi[3];
     if (!shapeset_bounds(geometry, dim, lo, hi))
         return NSPD_FAIL(NSPD_ERR_INPUT, "the solid geometry adds no shape");

@@ -18,7 +18,7 @@ typedef struct {
  * points per axis as cells of size dx fit in it (for a box, the points sit
  * half a spacing inside its faces). `dim` is 2 or 3 (z = 0 in 2D). `lat`
  * must be zeroed or hold a previous lattice. NSPD_ERR_INPUT if no point
- * falls inside; NSPD_ERR_NOMEM. */
+ * falls inside; NSPD_ERR_NOMEM; NSPD_ERR_INTERNAL for another dim. */
 int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, const double *origin);
 void lattice_free(Lattice *lat);
 
