@@ -20,7 +20,7 @@ typedef struct {
 } BenchOptions;
 
 static bool parse(int argc, char **argv, BenchOptions *opt) {
-    for (int i = 0; i < argc; i++) {
+    for (int i = 0; i < argc; i += 2) { /* an option and its value */
         const char *a = argv[i];
         long value = i + 1 < argc ? strtol(argv[i + 1], NULL, 10) : 0;
         if ((strcmp(a, "--points") == 0 || strcmp(a, "--cells") == 0) && value > 0) {
@@ -36,7 +36,6 @@ static bool parse(int argc, char **argv, BenchOptions *opt) {
                     a);
             return false;
         }
-        i++;
     }
     return true;
 }

@@ -103,7 +103,7 @@ static void ghost_state(const FlowBc *bc, double gamma, double R, int outward, i
     const double ut_im = normal_axis == 0 ? im->v : im->u;
     const double un_in = outward * (normal_axis == 0 ? in->u : in->v);
     const double ut_in = normal_axis == 0 ? in->v : in->u;
-    double rho = im->rho, un = un_im, ut = ut_im, p = im->p;
+    double rho = im->rho, un, ut = ut_im, p = im->p; /* every case that breaks sets un */
     const double gm1 = gamma - 1.0;
     switch (bc->kind) {
     case BC_SUPERSONIC_INFLOW:

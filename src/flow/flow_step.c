@@ -55,6 +55,13 @@ dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double
     }
 }
 
+/* Threads for a team: OpenMP's current maximum, at most the work spaces
+ * allocated at creation. */
+static int team_size(const GksSolver *s) {
+    const int nt = omp_get_max_threads();
+    return nt > s->nthreads ? s->nthreads : nt;
+}
+
 double gks_solver_stable_dt(const GksSolver *s) {
     const Grid *g = &s->grid;
     const ViscosityLaw law = s->gas.law;
@@ -62,9 +69,7 @@ double gks_solver_stable_dt(const GksSolver *s) {
         law == VISCOSITY_NONE ? 0.0 : 2.0 * fmax(4.0 / 3.0, s->gas.gamma / s->cfg.prandtl);
     double rmax = 0.0;
     const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
-    int nt = omp_get_max_threads();
-    nt = nt > s->nthreads ? s->nthreads : nt;
-#pragma omp parallel num_threads(nt) if (big) reduction(max : rmax)
+#pragma omp parallel num_threads(team_size(s)) if (big) reduction(max : rmax)
     {
         /* the x-flux row of this thread's work space is free between steps */
         double *rate = s->work[omp_get_thread_num()].fx[0];
@@ -298,8 +303,7 @@ int gks_solver_step(GksSolver *s, double dt) {
                          (long long)s->steps);
     gks_solver_fill_boundaries(s);
     if (s->hook) s->hook(s->hook_ctx, s);
-    int nt = omp_get_max_threads();
-    nt = nt > s->nthreads ? s->nthreads : nt;
+    int nt = team_size(s);
     const int ny = s->grid.ny;
     nt = nt > ny ? ny : nt;
     if ((int64_t)s->grid.nx * ny < PARALLEL_MIN_CELLS) nt = 1;
