@@ -31,6 +31,8 @@ void nspd_log_file(LogLevel level, const char *fmt, ...) {
     va_list args;
     va_start(args, fmt);
     fputs(prefix[level], log_file);
+    /* va_start above; clang-tidy 14 false positive in multi-file runs (llvm-project#40656)
+     * NOLINTNEXTLINE(clang-analyzer-valist.Uninitialized) */
     vfprintf(log_file, fmt, args);
     fputc('\n', log_file);
     va_end(args);
@@ -42,6 +44,8 @@ void nspd_log(LogLevel level, const char *fmt, ...) {
     if (level >= console_level) {
         va_start(args, fmt);
         fputs(prefix[level], stderr);
+        /* va_start above; clang-tidy 14 false positive in multi-file runs (llvm-project#40656)
+         * NOLINTNEXTLINE(clang-analyzer-valist.Uninitialized) */
         vfprintf(stderr, fmt, args);
         fputc('\n', stderr);
         va_end(args);
@@ -49,6 +53,8 @@ void nspd_log(LogLevel level, const char *fmt, ...) {
     if (log_file) {
         va_start(args, fmt);
         fputs(prefix[level], log_file);
+        /* va_start above; clang-tidy 14 false positive in multi-file runs (llvm-project#40656)
+         * NOLINTNEXTLINE(clang-analyzer-valist.Uninitialized) */
         vfprintf(log_file, fmt, args);
         fputc('\n', log_file);
         va_end(args);
