@@ -16,7 +16,10 @@
 #include <omp.h>
 #include <stdio.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 int exit_status_of(int status) {
     switch (status) {
@@ -143,11 +146,16 @@ int cmd_info(int argc, char **argv) {
     return 0;
 }
 
-/* Output files nspd writes, for --force to clear before a new run. */
+/* Output files nspd writes, for --force to clear before a new run: every
+ * series of docs/CASES.md, and any "*.part" a stopped run left half
+ * written (io/out_file.h). */
 static bool is_output_file(const char *name) {
-    static const char *const exact[] = {"case.yaml",    "log.txt",   "history.csv",
-                                        "summary.json", "solid.pvd", NULL};
-    static const char *const prefix[] = {"solid_", "damage_", "line_", NULL};
+    static const char *const exact[] = {"case.yaml", "log.txt",  "history.csv", "summary.json",
+                                        "solid.pvd", "flow.pvd", NULL};
+    static const char *const prefix[] = {"solid_", "damage_",    "line_",    "flow_",
+                                         "mach_",  "schlieren_", "surface_", NULL};
+    const size_t len = strlen(name);
+    if (len > 5 && strcmp(name + len - 5, ".part") == 0) return true;
     for (int i = 0; exact[i]; i++)
         if (strcmp(name, exact[i]) == 0) return true;
     for (int i = 0; prefix[i]; i++)
@@ -170,16 +178,49 @@ static int make_dirs(const char *path) {
     return NSPD_OK;
 }
 
-static int prepare_dir(const char *dir, bool force) {
+/* Takes the directory's lock (DIR/.nspd.lock, an flock held until the
+ * process ends, so a killed run releases it): a second run into a
+ * directory a live run is writing is refused, --force or not. */
+static int lock_dir(const char *dir, int *fd) {
+    char path[4200];
+    snprintf(path, sizeof path, "%s/.nspd.lock", dir);
+    *fd = open(path, O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (*fd < 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s' (%s)", path, strerror(errno));
+    if (flock(*fd, LOCK_EX | LOCK_NB) != 0) {
+        const int busy = errno == EWOULDBLOCK;
+        char pid[32] = "";
+        const ssize_t n = read(*fd, pid, sizeof pid - 1);
+        pid[n > 0 ? n : 0] = '\0';
+        pid[strcspn(pid, "\n")] = '\0';
+        close(*fd);
+        *fd = -1;
+        if (busy)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "output directory '%s' is in use by a running nspd (pid %s); "
+                             "expected another directory (-o DIR) or the end of that run",
+                             dir, pid[0] ? pid : "unknown");
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot lock '%s' (%s)", path, strerror(errno));
+    }
+    char pid[32];
+    const int len = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
+    if (ftruncate(*fd, 0) != 0 || write(*fd, pid, (size_t)len) != len) {
+        /* the pid is for the message of a refused second run only */
+    }
+    return NSPD_OK;
+}
+
+static int prepare_dir(const char *dir, bool force, int *lock_fd) {
     struct stat st;
     if (stat(dir, &st) == 0) {
         if (!S_ISDIR(st.st_mode))
             return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' exists and is not a directory", dir);
-        if (!force)
+        if (!force) /* refused with nothing written, not even the lock */
             return NSPD_FAIL(NSPD_ERR_INPUT,
                              "output directory '%s' exists; expected a new directory (use "
                              "--force to replace its results, or -o DIR)",
                              dir);
+        /* a live run's directory is refused before any of its files is touched */
+        TRY(lock_dir(dir, lock_fd));
         DIR *d = opendir(dir);
         if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
         struct dirent *e;
@@ -192,7 +233,8 @@ static int prepare_dir(const char *dir, bool force) {
         closedir(d);
         return NSPD_OK;
     }
-    return make_dirs(dir);
+    TRY(make_dirs(dir));
+    return lock_dir(dir, lock_fd);
 }
 
 int cmd_run(int argc, char **argv) {
@@ -208,7 +250,8 @@ int cmd_run(int argc, char **argv) {
     else
         snprintf(dir, sizeof dir, "out/%s", sim.cfg.name);
     char path[8192];
-    status = prepare_dir(dir, opt.force);
+    int lock_fd = -1;
+    status = prepare_dir(dir, opt.force, &lock_fd);
     if (status == NSPD_OK) {
         snprintf(path, sizeof path, "%s/case.yaml", dir);
         status = case_write_resolved(&doc, path);
@@ -241,5 +284,6 @@ int cmd_run(int argc, char **argv) {
     nspd_log_close();
     sim_destroy(&sim);
     cfg_doc_free(&doc);
+    if (lock_fd >= 0) close(lock_fd); /* releases the directory */
     return code;
 }

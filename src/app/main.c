@@ -1,6 +1,7 @@
 /* The nspd command: dispatches to the subcommands. */
 #include "app/commands.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -31,6 +32,9 @@ int main(int argc, char **argv) {
         usage(stderr);
         return 2;
     }
+    /* past a file-size limit (ulimit -f, a quota) the write fails with EFBIG
+     * and nspd says so, instead of the process dying of SIGXFSZ */
+    signal(SIGXFSZ, SIG_IGN);
     const char *cmd = argv[1];
     if (strcmp(cmd, "run") == 0) return cmd_run(argc - 2, argv + 2);
     if (strcmp(cmd, "check") == 0) return cmd_check(argc - 2, argv + 2);

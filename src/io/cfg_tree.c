@@ -4,6 +4,7 @@
 #include "io/cfg_tree.h"
 
 #include "core/status.h"
+#include "io/out_file.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -559,11 +560,13 @@ int cfg_doc_write(const CfgDoc *doc, FILE *out) {
 }
 
 int cfg_doc_save(const CfgDoc *doc, const char *path, const char *header) {
-    FILE *f = fopen(path, "w");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s' (%s)", path, strerror(errno));
-    fputs(header, f);
-    int status = cfg_doc_write(doc, f);
-    if (fclose(f) != 0 && status == NSPD_OK)
-        status = NSPD_FAIL(NSPD_ERR_IO, "cannot finish writing '%s' (%s)", path, strerror(errno));
-    return status;
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    fputs(header, out.f);
+    int status = cfg_doc_write(doc, out.f);
+    if (status != NSPD_OK) {
+        out_file_abort(&out);
+        return status;
+    }
+    return out_file_close(&out, 0);
 }

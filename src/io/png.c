@@ -2,6 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "io/out_file.h"
 
 #include <png.h>
 #include <stdio.h>
@@ -43,14 +44,15 @@ void image_colorbar(Image *img, ColormapKind kind, int x0, int y0, int x1, int y
 }
 
 int image_write_png(const Image *img, const char *path) {
-    FILE *f = fopen(path, "wb");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
     png_infop info = png ? png_create_info_struct(png) : NULL;
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        fclose(f);
-        return NSPD_FAIL(NSPD_ERR_IO, "cannot write PNG '%s'", path);
+        /* libpng's write error (a full disk): the close names the OS's reason */
+        return out_file_close(&out, 1);
     }
     png_init_io(png, f);
     png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8,
@@ -62,6 +64,5 @@ int image_write_png(const Image *img, const char *path) {
         png_write_row(png, img->rgb + 3 * (size_t)y * (size_t)img->width);
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
-    if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot finish writing '%s'", path);
-    return NSPD_OK;
+    return out_file_close(&out, 0);
 }

@@ -2,6 +2,7 @@
 
 #include "core/status.h"
 #include "io/json.h"
+#include "io/out_file.h"
 #include "io/render.h"
 
 #include <errno.h>
@@ -13,7 +14,8 @@ int history_open(HistoryFile *h, const char *dir) {
     memset(h, 0, sizeof *h);
     snprintf(h->path, sizeof h->path, "%s/history.csv", dir);
     h->file = fopen(h->path, "w");
-    if (!h->file) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", h->path);
+    if (!h->file)
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s' (%s)", h->path, strerror(errno));
     return NSPD_OK;
 }
 
@@ -53,7 +55,9 @@ int history_write(HistoryFile *h, const Report *row) {
         }
     }
     fputc('\n', h->file);
-    if (fflush(h->file) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write history.csv");
+    if (fflush(h->file) != 0 || ferror(h->file))
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s' (%s)", h->path,
+                         strerror(errno ? errno : EIO));
     return NSPD_OK;
 }
 
@@ -66,8 +70,9 @@ int summary_write(const char *dir, const Report *summary) {
     TRY(check_capacity(summary, "summary keys"));
     char path[4096];
     snprintf(path, sizeof path, "%s/summary.json", dir);
-    FILE *f = fopen(path, "w");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
     JsonWriter w;
     json_begin(&w, f);
     for (int k = 0; k < summary->n; k++) {
@@ -90,8 +95,7 @@ int summary_write(const char *dir, const Report *summary) {
         }
     }
     json_end(&w);
-    if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
-    return NSPD_OK;
+    return out_file_close(&out, 0);
 }
 
 static int write_vtk(const char *dir, int index, double t, const FieldSet *fs, PvdSeries *pvd) {
@@ -152,8 +156,9 @@ static int write_picture(const char *dir, int index, const FieldSet *fs, const P
 int table_write(const char *dir, int index, double t, const TableRef *tab) {
     char path[4096];
     snprintf(path, sizeof path, "%s/%s_%05d.csv", dir, tab->file, index);
-    FILE *f = fopen(path, "w");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
     fprintf(f, "# t = %.9g s\n%s\n", t, tab->header);
     for (int64_t r = 0; r < tab->rows; r++) {
         for (int c = 0; c < tab->ncol; c++) {
@@ -168,8 +173,7 @@ int table_write(const char *dir, int index, double t, const TableRef *tab) {
         }
         fputc('\n', f);
     }
-    if (fclose(f) != 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
-    return NSPD_OK;
+    return out_file_close(&out, 0);
 }
 
 int field_set_write(const char *dir, int index, double t, const FieldSet *fs,

@@ -1,6 +1,7 @@
 #include "io/vtk.h"
 
 #include "core/status.h"
+#include "io/out_file.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,15 +47,11 @@ static int write_soa(FILE *f, int64_t n, int components, const double *const dat
     return 0;
 }
 
-static int finish(FILE *f, const char *path, int write_error) {
-    if (fclose(f) != 0 || write_error) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s'", path);
-    return NSPD_OK;
-}
-
 int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
                      const VtkField *fields, int field_count) {
-    FILE *f = fopen(path, "wb");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
     uint64_t offset = 0;
     fprintf(f,
             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
@@ -100,14 +97,15 @@ int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
         err = fwrite(tbuf, 1, count, f) != count;
     }
     fprintf(f, "\n  </AppendedData>\n</VTKFile>\n");
-    return finish(f, path, err);
+    return out_file_close(&out, err);
 }
 
 int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
                           const double *yf, const double *zf, const VtkField *fields,
                           int field_count) {
-    FILE *f = fopen(path, "wb");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", path);
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
     int64_t cells = (int64_t)nx * ny * nz;
     uint64_t offset = 0;
     fprintf(f,
@@ -138,7 +136,7 @@ int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double
         err = write_soa(f, counts[a], 1, one);
     }
     fprintf(f, "\n  </AppendedData>\n</VTKFile>\n");
-    return finish(f, path, err);
+    return out_file_close(&out, err);
 }
 
 int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_name) {
@@ -158,15 +156,16 @@ int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_na
     memcpy(s->files[s->count], file_name, len);
     s->times[s->count++] = time;
 
-    FILE *f = fopen(pvd_path, "w");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s'", pvd_path);
+    OutFile out;
+    TRY(out_file_open(&out, pvd_path));
+    FILE *f = out.f;
     fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" "
                "byte_order=\"LittleEndian\">\n  <Collection>\n");
     for (int i = 0; i < s->count; i++)
         fprintf(f, "    <DataSet timestep=\"%.12g\" part=\"0\" file=\"%s\"/>\n", s->times[i],
                 s->files[i]);
     fprintf(f, "  </Collection>\n</VTKFile>\n");
-    return finish(f, pvd_path, 0);
+    return out_file_close(&out, 0);
 }
 
 void pvd_free(PvdSeries *s) {

@@ -9,6 +9,7 @@
 #include "sim/sim_output.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* The time step, fixed here once: the model that sets the pace (the flow if
@@ -134,16 +135,16 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
     const OutputConfig *out = &sim->cfg.output;
     double t0 = nspd_wall_time();
     TRY(sim_output_open(sim));
-    TRY(sim_output_history(sim));
-    TRY(sim_output_fields(sim));
+    /* a failure from here on still ends with summary.json saying why */
+    int status = sim_output_history(sim);
+    if (status == NSPD_OK) status = sim_output_fields(sim);
     sim->next_history = out->history_interval;
     sim->next_field = out->field_interval;
 
     Progress progress;
     double end = sim->flow ? sim->cfg.end_time : (double)sim->steps * sim->dt;
     progress_start(&progress, stderr, end, opt->progress);
-    int status = NSPD_OK;
-    while (!finished(sim)) {
+    while (status == NSPD_OK && !finished(sim)) {
         status = sim_step(sim);
         if (status != NSPD_OK) break;
         const double t = sim->time;
@@ -167,9 +168,18 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
     }
     progress_finish(&progress, sim->step, sim->time);
     sim->wall_s = nspd_wall_time() - t0;
-    int summary = sim_output_summary(sim, status);
+    /* the failure that stopped the run, kept across the summary's writing
+     * (which records it as the reason the run is incomplete) */
+    char reason[1024];
+    snprintf(reason, sizeof reason, "%s", status != NSPD_OK ? nspd_error_message() : "");
+    int summary = sim_output_summary(sim, status, reason);
     sim_output_close(sim);
-    if (status != NSPD_OK) return status;
+    if (status != NSPD_OK) {
+        /* writing the summary may have recorded another message: the run's is the one to show */
+        if (strcmp(nspd_error_message(), reason) != 0)
+            return nspd_error(status, __FILE__, __LINE__, "%s", reason);
+        return status;
+    }
     TRY(summary);
     return sim->interrupted ? NSPD_FAIL(NSPD_ERR_INTERRUPTED, "interrupted by the user") : NSPD_OK;
 }

@@ -71,7 +71,7 @@ int sim_output_fields(Sim *sim) {
     return NSPD_OK;
 }
 
-int sim_output_summary(Sim *sim, int run_status) {
+int sim_output_summary(Sim *sim, int run_status, const char *reason) {
     if (!sim->dir) return NSPD_OK;
     static const char *const PART_KEYS[SIM_PART_COUNT] = {"flow_s", "solid_s", "coupling_s"};
     const bool part_present[SIM_PART_COUNT] = {sim->flow != NULL, sim->solid != NULL,
@@ -88,6 +88,8 @@ int sim_output_summary(Sim *sim, int run_status) {
     report_int(r, "threads", omp_get_max_threads());
     report_bool(r, "completed", run_status == NSPD_OK && !sim->interrupted);
     report_bool(r, "interrupted", sim->interrupted);
+    if (run_status != NSPD_OK && run_status != NSPD_ERR_INTERRUPTED)
+        report_text(r, "stopped_by", reason);
     if (sim->solid) {
         report_real(r, "dt_s", sim->dt);
         report_real(r, "stable_dt_s", sim->stable_dt);

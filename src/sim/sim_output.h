@@ -9,8 +9,9 @@
 int sim_output_open(Sim *sim);    /* history.csv and its header */
 int sim_output_history(Sim *sim); /* one history row (and the probes) */
 int sim_output_fields(Sim *sim);  /* VTK, PNG and line files of the current state */
-/* summary.json; `status` is the run's outcome so far */
-int sim_output_summary(Sim *sim, int status);
+/* summary.json; `status` is the run's outcome so far and `reason` its
+ * message when it failed (written as "stopped_by") */
+int sim_output_summary(Sim *sim, int status, const char *reason);
 void sim_output_close(Sim *sim);
 
 #endif
