@@ -112,6 +112,8 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
     return cfg_end_map(item);
 }
 
+enum { CASE_MAX_HISTORY_ROWS = 10000000, CASE_MAX_FIELD_OUTPUTS = 99999 };
+
 static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
     CfgNode *o;
     TRY(cfg_opt_map(root, "output", &o));
@@ -129,6 +131,22 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
     TRY(cfg_opt_double(o, "history_interval", cfg->end_time / 200, &out->history_interval));
     TRY(cfg_check_positive(o, "history_interval", out->history_interval,
                            "seconds between history rows"));
+    /* counts that follow from the input are bounded before anything is
+     * allocated: the probes keep a record per history row, and field files
+     * are numbered with five digits */
+    const double rows = cfg->end_time / out->history_interval;
+    if (!(rows <= CASE_MAX_HISTORY_ROWS))
+        return cfg_fail_at(o, "history_interval",
+                           "%g s gives %.3g history rows over time.end = %g s; expected at most "
+                           "%.0e rows (a larger interval)",
+                           out->history_interval, rows, cfg->end_time,
+                           (double)CASE_MAX_HISTORY_ROWS);
+    const double fields = cfg->end_time / out->field_interval;
+    if (!(fields <= CASE_MAX_FIELD_OUTPUTS))
+        return cfg_fail_at(o, "field_interval",
+                           "%g s gives %.3g field outputs over time.end = %g s; expected at most "
+                           "%d (a larger interval)",
+                           out->field_interval, fields, cfg->end_time, CASE_MAX_FIELD_OUTPUTS);
     TRY(cfg_opt_bool(o, "vtk", true, &out->vtk));
     TRY(cfg_opt_bool(o, "png", true, &out->png));
     int64_t pixels;

@@ -142,10 +142,18 @@ void cfg_node_where(const CfgNode *node, char *buf, int size) {
 
 /* ------------------------------------------------------------ parsing */
 
+/* Maps and sequences nest at most this deep. A case file needs 6 levels;
+ * the limit keeps the recursive reader (and every walk of the tree) within
+ * its stack whatever a file holds: a file nested 100,000 levels once
+ * crashed `nspd check`. */
+enum { CFG_MAX_DEPTH = 64 };
+
 typedef struct {
     yaml_parser_t parser;
     const char *file;
     CfgOrigin origin;
+    int depth; /* of the collection being read */
+    bool depth_exceeded;
 } Reader;
 
 static int syntax_error(Reader *r) {
@@ -246,10 +254,19 @@ static int parse_node(Reader *r, yaml_event_t *event, CfgNode **out) {
     case YAML_SEQUENCE_START_EVENT: {
         bool is_map = event->type == YAML_MAPPING_START_EVENT;
         yaml_event_delete(event);
+        if (r->depth >= CFG_MAX_DEPTH) {
+            r->depth_exceeded = true;
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "%s:%d:%d: maps and lists nested more than %d deep; expected a case "
+                             "file (its sections nest a few levels)",
+                             r->file, line, col, CFG_MAX_DEPTH);
+        }
         CfgNode *node = node_new(is_map ? CFG_MAP : CFG_SEQ, r->file, line, col, r->origin);
         if (!node) break;
+        r->depth++;
         int status =
             parse_children(r, node, is_map ? YAML_MAPPING_END_EVENT : YAML_SEQUENCE_END_EVENT);
+        r->depth--;
         if (status != NSPD_OK) {
             node_free(node);
             return status;
@@ -420,6 +437,11 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
     yaml_parser_set_input_string(&r.parser, (const unsigned char *)value_text, strlen(value_text));
     int status = parse_document(&r, &value);
     yaml_parser_delete(&r.parser);
+    if (status != NSPD_OK && r.depth_exceeded)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "--set %s: the value's lists and maps are nested more than %d deep; "
+                         "expected a number, word, or [list]",
+                         assignment, CFG_MAX_DEPTH);
     if (status != NSPD_OK)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "--set %s: the value is not valid YAML; expected a "

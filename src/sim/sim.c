@@ -15,7 +15,11 @@
 /* The time step, fixed here once: the model that sets the pace (the flow if
  * there is one, else the solid) gives its stable step; a given time.dt
  * replaces it (with a warning when it exceeds the stable one). */
-static void choose_pace(Sim *sim) {
+/* More steps than this are an input mistake (a time.end in the wrong unit),
+ * not a run: about a year of steps at 3e4 steps/s. */
+enum { SIM_MAX_STEPS = 1000000000 };
+
+static int choose_pace(Sim *sim) {
     const SimConfig *c = &sim->cfg;
     if (sim->solid) {
         double stable = solid_stable_dt(sim->solid);
@@ -38,8 +42,14 @@ static void choose_pace(Sim *sim) {
                      sim->stable_dt);
         sim->dt = c->dt_given ? c->dt : sim->stable_dt;
     }
-    sim->steps = (int64_t)ceil(c->end_time / sim->dt - 1e-9);
-    if (sim->steps < 1) sim->steps = 1;
+    const double steps = ceil(c->end_time / sim->dt - 1e-9);
+    if (!(steps <= SIM_MAX_STEPS))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "time.end = %g s needs %.3g steps of %g s; expected at most %.0e steps "
+                         "(a shorter time.end or a coarser case)",
+                         c->end_time, steps, sim->dt, (double)SIM_MAX_STEPS);
+    sim->steps = steps < 1 ? 1 : (int64_t)steps;
+    return NSPD_OK;
 }
 
 int sim_create(Sim *sim, SimConfig *cfg) {
@@ -57,8 +67,8 @@ int sim_create(Sim *sim, SimConfig *cfg) {
         status = coupling_create(&sim->coupling, &c->coupling, sim->solid, sim->flow);
     }
     if (status == NSPD_OK) status = nspd_alloc(&sim->report, 1, sizeof *sim->report);
+    if (status == NSPD_OK) status = choose_pace(sim);
     if (status == NSPD_OK) {
-        choose_pace(sim);
         int max_samples = (int)(c->end_time / c->output.history_interval) + 4;
         status = probes_create(&sim->probes, &c->output,
                                sim->solid ? solid_points_const(sim->solid) : NULL, sim->flow,

@@ -56,6 +56,21 @@ check "initial.from: not a .vtr" "flow.initial.from: .*expected a .vtr written b
     "$nspd" run "$cyl" -o "$work/result" --set "flow.initial={from: $cyl}"
 check "initial.from with a state" "flow.initial.state: given together with 'from'" \
     "$nspd" check "$cyl" --set "flow.initial={from: nothere.vtr, state: free_stream}"
+# hostile input (issue 12): a case nested 100,000 levels deep crashed the
+# reader; a step or history count past 2^31 wrapped into an absurd allocation
+python3 -c "print('a: ' + '[' * 100000 + ']' * 100000)" >"$work/deep.yaml" 2>/dev/null ||
+    awk 'BEGIN { s = "a: "; for (i = 0; i < 100000; i++) s = s "["; for (i = 0; i < 100000; i++) s = s "]"; print s }' >"$work/deep.yaml"
+check "nested 100,000 deep" "deep.yaml:1:67: maps and lists nested more than 64 deep" \
+    "$nspd" check "$work/deep.yaml"
+check "deep --set value" "nested more than 64 deep" \
+    "$nspd" check "$src/cases/sod.yaml" --set "time.end=$(printf '%0.s[' $(seq 70))1$(printf '%0.s]' $(seq 70))"
+check "history rows past the limit" "plate_crack.yaml:[0-9]+:[0-9]+: output.history_interval: .* 1.5e\+10 history rows" \
+    "$nspd" info "$src/cases/plate_crack.yaml" --set time.end=1e3
+check "field outputs past the limit" "output.field_interval: .* field outputs" \
+    "$nspd" check "$src/cases/sod.yaml" --set output.field_interval=1e-9
+check "steps past the limit" "time.end = 1000 s needs 7.48e\+10 steps" \
+    "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/result" --set time.end=1e3 \
+    --set output.history_interval=1e-3 --set output.field_interval=1
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"

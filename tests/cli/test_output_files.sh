@@ -74,7 +74,7 @@ fi
 
 # 3. A live run's directory is refused, whatever --force says.
 live="$work/live"
-"$nspd" run "$src/cases/plate_crack.yaml" -o "$live" --quiet --set time.end=1.0 \
+"$nspd" run "$src/cases/plate_crack.yaml" -o "$live" --quiet --set time.end=1.0 --set output.history_interval=1e-3 \
     --set output.field_interval=1.0 &
 pid=$!
 i=0

@@ -47,7 +47,7 @@ if "$nspd" run "$out/case.yaml" -o "$out" --quiet --force; then ok; else fail "-
 [ -e "$out/my_notes.txt" ] && ok || fail "--force removed a file that nspd did not write"
 
 # Ctrl-C: finish the step, write outputs, exit 130
-"$nspd" run "$src/cases/plate_crack.yaml" -o "$work/stopped" --quiet --set time.end=1.0 \
+"$nspd" run "$src/cases/plate_crack.yaml" -o "$work/stopped" --quiet --set time.end=1.0 --set output.history_interval=1e-3 \
     --set output.field_interval=1.0 &
 pid=$!
 i=0
