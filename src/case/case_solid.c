@@ -162,6 +162,26 @@ static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
     return NSPD_OK;
 }
 
+/* The lattice sites in the geometry's box bound the points the body can
+ * have, and the builder scans them all (a byte each): a spacing far too
+ * small for the geometry (a unit slip, 1e-8 m for 1e-4) is refused here,
+ * saying how many there would be, before anything is allocated. */
+enum { CASE_MAX_LATTICE_SITES = 1 << 30 }; /* 1.07e9: 8.6 GB of point positions in 3D alone */
+
+static int check_lattice_size(CfgNode *s, const PdConfig *cfg) {
+    double lo[3], hi[3];
+    if (!shapeset_bounds(&cfg->geometry, cfg->dim, lo, hi)) return NSPD_OK; /* said later */
+    double sites = 1.0;
+    for (int d = 0; d < cfg->dim && d < 3; d++)
+        sites *= floor((hi[d] - lo[d]) / cfg->spacing) + 1.0;
+    if (!(sites <= CASE_MAX_LATTICE_SITES))
+        return cfg_fail_at(s, "spacing",
+                           "%g m puts %.3g lattice sites in the geometry's bounding box; "
+                           "expected at most %.3g (a larger spacing)",
+                           cfg->spacing, sites, (double)CASE_MAX_LATTICE_SITES);
+    return NSPD_OK;
+}
+
 int case_read_solid(CfgNode *s, PdConfig *cfg) {
     memset(cfg, 0, sizeof *cfg);
     int model;
@@ -189,6 +209,7 @@ int case_read_solid(CfgNode *s, PdConfig *cfg) {
     }
     TRY(read_material(s, cfg));
     TRY(case_read_shapes(s, "geometry", cfg->dim, true, &cfg->geometry));
+    TRY(check_lattice_size(s, cfg));
     TRY(read_failure(s, cfg));
     TRY(read_precracks(s, cfg));
     TRY(read_boundaries(s, cfg));

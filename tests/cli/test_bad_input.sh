@@ -68,6 +68,8 @@ check "history rows past the limit" "plate_crack.yaml:[0-9]+:[0-9]+: output.hist
     "$nspd" info "$src/cases/plate_crack.yaml" --set time.end=1e3
 check "field outputs past the limit" "output.field_interval: .* field outputs" \
     "$nspd" check "$src/cases/sod.yaml" --set output.field_interval=1e-9
+check "spacing far too small" "solid.spacing: 1e-08 m puts 2.53e\+13 lattice sites" \
+    "$nspd" check "$src/cases/plate_crack.yaml" --set solid.spacing=1e-8
 check "steps past the limit" "time.end = 1000 s needs 7.48e\+10 steps" \
     "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/result" --set time.end=1e3 \
     --set output.history_interval=1e-3 --set output.field_interval=1
