@@ -147,6 +147,15 @@ void cfg_node_where(const CfgNode *node, char *buf, int size) {
  * its stack whatever a file holds: a file nested 100,000 levels once
  * crashed `nspd check`. */
 enum { CFG_MAX_DEPTH = 64 };
+/* The other bounds on what a case file may hold, each far above what a case
+ * needs (the largest case file is 3 kB; long polygons come from their own
+ * CSV files): what a generated or corrupted file can make the reader
+ * allocate stays small. */
+enum {
+    CFG_MAX_FILE_BYTES = 16 << 20, /* 16 MiB */
+    CFG_MAX_SCALAR = 4096,         /* characters in one value */
+    CFG_MAX_ITEMS = 100000,        /* entries in one list or map */
+};
 
 typedef struct {
     yaml_parser_t parser;
@@ -182,6 +191,13 @@ static int parse_children(Reader *r, CfgNode *node, yaml_event_type_t end) {
         if (event.type == end) {
             yaml_event_delete(&event);
             return NSPD_OK;
+        }
+        if (node->count >= CFG_MAX_ITEMS) {
+            yaml_event_delete(&event);
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "%s:%d:%d: more than %d entries in one %s; expected a case file",
+                             r->file, node->line, node->col, CFG_MAX_ITEMS,
+                             node->kind == CFG_MAP ? "map" : "list");
         }
         char *key = NULL;
         int key_line = 0, key_col = 0;
@@ -236,6 +252,13 @@ static int parse_node(Reader *r, yaml_event_t *event, CfgNode **out) {
     *out = NULL;
     switch (event->type) {
     case YAML_SCALAR_EVENT: {
+        if (event->data.scalar.length > CFG_MAX_SCALAR) {
+            const size_t length = event->data.scalar.length;
+            yaml_event_delete(event);
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "%s:%d:%d: a value of %zu characters; expected at most %d", r->file,
+                             line, col, length, CFG_MAX_SCALAR);
+        }
         CfgNode *node = node_new(CFG_SCALAR, r->file, line, col, r->origin);
         if (!node) break;
         node->text = dup_string((const char *)event->data.scalar.value);
@@ -376,6 +399,15 @@ int cfg_doc_load_file(CfgDoc *doc, const char *path) {
     unsigned char *text = malloc(cap);
     while (text) {
         length += fread(text + length, 1, cap - length, f);
+        /* stop reading as soon as the file is known to be too large */
+        if (length > CFG_MAX_FILE_BYTES) {
+            free(text);
+            fclose(f);
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "%s: larger than %d MiB; expected a case file (a few kB; long "
+                             "polygons go in CSV files of their own)",
+                             path, CFG_MAX_FILE_BYTES >> 20);
+        }
         if (length < cap) break;
         cap *= 2;
         unsigned char *grown = realloc(text, cap);

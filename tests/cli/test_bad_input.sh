@@ -64,6 +64,14 @@ check "nested 100,000 deep" "deep.yaml:1:67: maps and lists nested more than 64 
     "$nspd" check "$work/deep.yaml"
 check "deep --set value" "nested more than 64 deep" \
     "$nspd" check "$src/cases/sod.yaml" --set "time.end=$(printf '%0.s[' $(seq 70))1$(printf '%0.s]' $(seq 70))"
+awk 'BEGIN { print "name: big"; for (i = 0; i < 300000; i++) printf "# %060d\n", i }' >"$work/big.yaml"
+check "a 19 MB case file" "big.yaml: larger than 16 MiB" "$nspd" check "$work/big.yaml"
+awk 'BEGIN { s = "name: "; for (i = 0; i < 5000; i++) s = s "x"; print s }' >"$work/long.yaml"
+check "a 5000-character value" "long.yaml:1:7: a value of 5000 characters; expected at most 4096" \
+    "$nspd" check "$work/long.yaml"
+awk 'BEGIN { s = "a: [0"; for (i = 0; i < 100000; i++) s = s ",0"; print s "]" }' >"$work/list.yaml"
+check "a list of 100,001 entries" "list.yaml:1:4: more than 100000 entries in one list" \
+    "$nspd" check "$work/list.yaml"
 check "history rows past the limit" "plate_crack.yaml:[0-9]+:[0-9]+: output.history_interval: .* 1.5e\+10 history rows" \
     "$nspd" info "$src/cases/plate_crack.yaml" --set time.end=1e3
 check "field outputs past the limit" "output.field_interval: .* field outputs" \
