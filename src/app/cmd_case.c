@@ -56,6 +56,7 @@ static int load(const CaseOptions *opt, CfgDoc *doc, Sim *sim) {
     int status = case_read(opt->case_path, opt->overrides, opt->override_count, doc, &cfg);
     if (status == NSPD_ERR_IO) status = NSPD_ERR_INPUT;
     if (status != NSPD_OK) return status;
+    cfg.max_memory_bytes = opt->max_memory_mb * 1e6;
     status = sim_create(sim, &cfg);
     if (status != NSPD_OK) {
         sim_config_free(&cfg);
@@ -138,6 +139,9 @@ int cmd_info(int argc, char **argv) {
                                 : "CFL; it follows the flow");
     printf("steps                %s%lld to t = %.6g s\n", sim.flow ? "about " : "",
            (long long)sim.steps, sim.flow ? sim.cfg.end_time : (double)sim.steps * sim.dt);
+    printf("memory estimate      %.1f MB before building (%.1f MB allocated after; the case is "
+           "refused before building if the estimate exceeds this machine or --max-memory)\n",
+           sim.estimate_bytes / 1e6, (double)memory / 1e6);
     printf("threads              %d\n", omp_get_max_threads());
     printf("setup                %.3g s\n", setup_s);
     printf("estimated run time   %s (%.3g s per step, outputs excluded)\n", eta, step_s);

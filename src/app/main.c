@@ -11,6 +11,8 @@ static void usage(FILE *out) {
           "commands:\n"
           "  run CASE.yaml [-o DIR] [--force] [--set key=value ...] [--quiet]\n"
           "                         run a case; results go to DIR (default out/<case name>)\n"
+          "  (run, check, info also take --threads T and --max-memory MB: refuse a case\n"
+          "   whose memory estimate exceeds MB; default this machine's memory)\n"
           "  check CASE.yaml [--set key=value ...]\n"
           "                         validate a case file; write nothing\n"
           "  info CASE.yaml [--set key=value ...]\n"

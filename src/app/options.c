@@ -42,6 +42,15 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
                 return false;
             }
             opt->threads = atoi(argv[++i]);
+        } else if (strcmp(a, "--max-memory") == 0) {
+            char *end = NULL;
+            const double mb = i + 1 < argc ? strtod(argv[i + 1], &end) : 0.0;
+            if (i + 1 >= argc || end == argv[i + 1] || *end != '\0' || !(mb > 0)) {
+                fprintf(stderr, "nspd %s: --max-memory needs a positive number of MB\n", command);
+                return false;
+            }
+            opt->max_memory_mb = mb;
+            i++;
         } else if (a[0] == '-') {
             fprintf(stderr, "nspd %s: unknown option '%s'\n", command, a);
             return false;

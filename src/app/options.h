@@ -11,6 +11,8 @@ typedef struct {
     const char *out_dir; /* -o */
     bool force, quiet;
     int threads; /* --threads, 0 = OpenMP default */
+    double
+        max_memory_mb; /* --max-memory: the case's estimate may not exceed it; 0: the machine's */
     char *overrides[MAX_OVERRIDES];
     int override_count;
 } CaseOptions;

@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <sys/resource.h>
 
 enum { HEADER = 64 };
@@ -77,4 +78,9 @@ double nspd_peak_rss_mb(void) {
 
 void nspd_mem_fail_after(long n) {
     fail_countdown = n;
+}
+
+double nspd_mem_physical_bytes(void) {
+    const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && size > 0 ? (double)pages * (double)size : 0.0;
 }

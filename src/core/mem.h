@@ -22,7 +22,8 @@ void nspd_free(void *pp);
 
 size_t nspd_mem_live_bytes(void);
 size_t nspd_mem_peak_bytes(void);
-double nspd_peak_rss_mb(void); /* the process's peak resident set (getrusage) */
+double nspd_peak_rss_mb(void);        /* the process's peak resident set (getrusage) */
+double nspd_mem_physical_bytes(void); /* this machine's memory (0 if unknown) */
 
 /* Test hook: the allocation after `n` more successful ones fails; n < 0 turns
  * injection off. */

@@ -31,6 +31,14 @@ void flow_config_free(FlowConfig *cfg) {
     memset(cfg, 0, sizeof *cfg);
 }
 
+FlowEstimate flow_estimate(const FlowConfig *cfg) {
+    const FlowEstimate none = {0, 0};
+    if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||
+        !FLOW_METHODS[cfg->method] || !FLOW_METHODS[cfg->method]->estimate)
+        return none;
+    return FLOW_METHODS[cfg->method]->estimate(cfg);
+}
+
 int flow_create(Flow **out, FlowConfig *cfg) {
     *out = NULL;
     if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||

@@ -74,8 +74,16 @@ typedef struct {
 
 typedef struct Flow Flow;
 
+/* What a flow will need, estimated from its configuration alone. */
+typedef struct {
+    double cells; /* or nodes */
+    double bytes;
+} FlowEstimate;
+
 typedef struct FlowOps {
     const char *name;
+    /* the estimate of a configuration of this solver (no allocation) */
+    FlowEstimate (*estimate)(const FlowConfig *cfg);
     /* Builds the solver from *cfg, taking ownership of its contents. */
     int (*create)(void **impl, FlowConfig *cfg);
     void (*destroy)(void *impl);
@@ -109,6 +117,9 @@ typedef struct FlowOps {
  * safe): its method number, or FLOW_METHOD_NONE when the registry is full.
  * How a model outside the tree - or a test - plugs in. */
 FlowMethod flow_register(const FlowOps *ops);
+
+/* The estimate of *cfg by its solver (zeros for an unknown method). */
+FlowEstimate flow_estimate(const FlowConfig *cfg);
 
 /* NSPD_ERR_INPUT for an unknown method; otherwise what the solver's create
  * returns. Takes ownership of *cfg. */

@@ -5,6 +5,7 @@
 #include "flow/flow.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -46,6 +47,24 @@ static void vortex_periods(GksCaseConfig *fc) {
         vx->period_y = 0;
         for (int k = 0; k < c->segment_count[1]; k++) vx->period_y += s[k].length;
     }
+}
+
+/* Cells from the grid's segments (no axis built); bytes: the solver's
+ * padded state (two copies of four fields and the kinds: 65 per cell with
+ * its ghost layers), its row work space (28 rows per thread), and the
+ * model's output scratch (66 per interior cell: seven fields, the kinds as
+ * a field, two masks). */
+static FlowEstimate gks_estimate(const FlowConfig *mc) {
+    const GksConfig *c = &mc->gks.solver;
+    FlowEstimate e = {0, 0};
+    const int nx = grid_segments_spacing(c->segment_count[0], c->segments[0], NULL, 0);
+    const int ny = grid_segments_spacing(c->segment_count[1], c->segments[1], NULL, 0);
+    if (nx <= 0 || ny <= 0) return e; /* the solver's create says what is wrong */
+    e.cells = (double)nx * (double)ny;
+    const double stride = (double)((nx + 2 * GRID_NG + 7) / 8 * 8);
+    const double padded = stride * (double)(ny + 2 * GRID_NG);
+    e.bytes = 65.0 * padded + 28.0 * 8.0 * stride * (double)omp_get_max_threads() + 66.0 * e.cells;
+    return e;
 }
 
 static void gks_destroy(void *impl) {
@@ -359,6 +378,7 @@ static void gks_fields(void *impl, FieldSet *out) {
 
 const FlowOps GKS_FLOW_OPS = {
     .name = "gks",
+    .estimate = gks_estimate,
     .create = gks_create,
     .destroy = gks_destroy,
     .stable_dt = gks_stable_dt,

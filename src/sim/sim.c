@@ -52,13 +52,33 @@ static int choose_pace(Sim *sim) {
     return NSPD_OK;
 }
 
+/* The memory the case will need, estimated from its configuration by each
+ * model, against this machine's memory (or --max-memory): a case that
+ * cannot fit is refused before anything is built. */
+static int check_memory(Sim *sim) {
+    const SimConfig *c = &sim->cfg;
+    const SolidEstimate s = solid_estimate(&c->solid);
+    const FlowEstimate f = flow_estimate(&c->flow);
+    sim->estimate_bytes = s.bytes + f.bytes;
+    const bool given = c->max_memory_bytes > 0;
+    const double limit = given ? c->max_memory_bytes : nspd_mem_physical_bytes();
+    if (limit <= 0 || sim->estimate_bytes <= limit) return NSPD_OK;
+    return NSPD_FAIL(NSPD_ERR_INPUT,
+                     "the case needs about %.3g GB (%.3g points, %.3g bonds, %.3g cells) and %s "
+                     "%.3g GB; expected a coarser case%s",
+                     sim->estimate_bytes / 1e9, s.points, s.bonds / 2, f.cells,
+                     given ? "--max-memory allows" : "this machine has", limit / 1e9,
+                     given ? " or a larger --max-memory" : "");
+}
+
 int sim_create(Sim *sim, SimConfig *cfg) {
     memset(sim, 0, sizeof *sim);
     sim->cfg = *cfg;
     memset(cfg, 0, sizeof *cfg);
     SimConfig *c = &sim->cfg;
-    int status = NSPD_OK;
-    if (c->solid.kind != SOLID_NONE) status = solid_create(&sim->solid, &c->solid);
+    int status = check_memory(sim);
+    if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
+        status = solid_create(&sim->solid, &c->solid);
     if (status == NSPD_OK && c->flow.method != FLOW_METHOD_NONE)
         status = flow_create(&sim->flow, &c->flow);
     if (status == NSPD_OK && c->coupling.kind != COUPLING_NONE) {

@@ -29,15 +29,16 @@ enum { SIM_PART_FLOW = 0, SIM_PART_SOLID = 1, SIM_PART_COUPLING = 2, SIM_PART_CO
 
 typedef struct {
     SimConfig cfg;
-    Solid *solid;         /* NULL: no solid */
-    Flow *flow;           /* NULL: no flow */
-    Coupling *coupling;   /* NULL: nothing coupled */
-    double dt;            /* the last step taken (without a flow: the fixed step) */
-    double stable_dt;     /* the pacing model's stable step at the start (flow: CFL) */
-    double solid_substep; /* with a flow: the longest solid sub-step */
-    int64_t steps;        /* planned steps (with a flow: estimated from the first step) */
-    int64_t step;         /* steps taken */
-    double time;          /* simulated time, s */
+    Solid *solid;          /* NULL: no solid */
+    Flow *flow;            /* NULL: no flow */
+    Coupling *coupling;    /* NULL: nothing coupled */
+    double dt;             /* the last step taken (without a flow: the fixed step) */
+    double stable_dt;      /* the pacing model's stable step at the start (flow: CFL) */
+    double solid_substep;  /* with a flow: the longest solid sub-step */
+    double estimate_bytes; /* the memory the case was estimated to need before it was built */
+    int64_t steps;         /* planned steps (with a flow: estimated from the first step) */
+    int64_t step;          /* steps taken */
+    double time;           /* simulated time, s */
     ProbeState *probes;
 
     /* output state */

@@ -69,6 +69,7 @@ typedef struct {
     CouplingConfig coupling; /* kind COUPLING_NONE: nothing couples (a flow's fixed
                                 bodies are a coupling with rigid walls) */
     OutputConfig output;
+    double max_memory_bytes; /* the estimate's limit (--max-memory); 0: this machine's memory */
 } SimConfig;
 
 void sim_config_free(SimConfig *cfg);

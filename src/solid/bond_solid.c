@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "solid/bond_body.h"
+#include "solid/lattice.h"
 #include "solid/pd_diagnostics.h"
 #include "solid/pd_integrate.h"
 
@@ -50,6 +51,33 @@ void bond_solid_points_of(BondBody *b, PdPoints *pts) {
         pts->external[d] = b->external[d];
         pts->lattice[d] = b->lattice[d];
     }
+}
+
+/* Points: the lattice sites inside the geometry (sampled); bonds: the
+ * family of an interior point, |xi| <= delta on the lattice, for every
+ * point (an upper bound: surface points have fewer). Bytes: what
+ * bond_body.c allocates per point (158: positions, displacements,
+ * velocities, forces, external forces, lattice indices, volume, region,
+ * damage denominator, row offsets) and per bond (8), plus the building's
+ * peak (a byte per lattice site and 16 per point while ordering them, or
+ * 24 per point of surface factors). */
+static SolidEstimate bond_estimate(const SolidConfig *sc) {
+    const PdConfig *cfg = &sc->bond;
+    SolidEstimate e = {0, 0, 0};
+    double sites, fraction;
+    if (!lattice_estimate(&cfg->geometry, cfg->dim, cfg->spacing, &sites, &fraction)) return e;
+    e.points = ceil(sites * fraction);
+    const double m = cfg->horizon_factor;
+    const int reach = (int)floor(m);
+    double family = 0;
+    for (int k = cfg->dim == 3 ? -reach : 0; k <= (cfg->dim == 3 ? reach : 0); k++)
+        for (int j = -reach; j <= reach; j++)
+            for (int i = -reach; i <= reach; i++)
+                if ((i || j || k) && (double)(i * i + j * j + k * k) <= m * m) family += 1;
+    e.bonds = e.points * family;
+    const double per_point = 158.0, build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
+    e.bytes = per_point * e.points + (double)PD_BYTES_PER_BOND * e.bonds + build;
+    return e;
 }
 
 static void bond_destroy(void *impl) {
@@ -155,6 +183,7 @@ static void bond_brief(const void *impl, char *buf, size_t size) {
 
 const SolidOps BOND_SOLID_OPS = {
     .name = "bond",
+    .estimate = bond_estimate,
     .create = bond_create,
     .destroy = bond_destroy,
     .stable_dt = bond_stable_dt,

@@ -154,3 +154,35 @@ void lattice_free(Lattice *lat) {
     }
     lat->n = 0;
 }
+
+bool lattice_estimate(const ShapeSet *geometry, int dim, double dx, double *sites,
+                      double *inside_fraction) {
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    if (!shapeset_bounds(geometry, dim, lo, hi)) return false;
+    double count[3] = {1, 1, 1};
+    *sites = 1.0;
+    for (int d = 0; d < dim && d < 3; d++) {
+        count[d] = fmax(1.0, floor((hi[d] - lo[d]) / dx + 1e-6));
+        *sites *= count[d];
+    }
+    /* a sub-lattice of at most ~100 (3D) or ~1000 (2D) sites per axis */
+    const double per_axis = dim == 3 ? 100.0 : 1000.0;
+    double step[3], n[3] = {1, 1, 1};
+    for (int d = 0; d < 3; d++) {
+        step[d] = fmax(1.0, ceil(count[d] / per_axis));
+        n[d] = d < dim ? ceil(count[d] / step[d]) : 1.0;
+    }
+    int64_t in = 0, total = 0;
+    for (int64_t k = 0; k < (int64_t)n[2]; k++)
+        for (int64_t j = 0; j < (int64_t)n[1]; j++)
+            for (int64_t i = 0; i < (int64_t)n[0]; i++) {
+                const int64_t idx[3] = {i, j, k};
+                double p[3] = {0, 0, 0};
+                for (int d = 0; d < dim && d < 3; d++)
+                    p[d] = lo[d] + (0.5 + (double)idx[d] * step[d]) * dx;
+                in += shapeset_contains(geometry, p);
+                total++;
+            }
+    *inside_fraction = total ? (double)in / (double)total : 0.0;
+    return true;
+}

@@ -4,6 +4,7 @@
 
 #include "core/shape.h"
 
+#include <stdbool.h>
 #include <stdint.h>
 
 typedef struct {
@@ -20,6 +21,13 @@ typedef struct {
  * must be zeroed or hold a previous lattice. NSPD_ERR_INPUT if no point
  * falls inside; NSPD_ERR_NOMEM; NSPD_ERR_INTERNAL for another dim. */
 int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, const double *origin);
+/* The lattice sites in the geometry's bounding box and the fraction of them
+ * inside it, estimated from at most about 10^6 evenly strided sites without
+ * allocating (the memory estimate a case is checked against before it is
+ * built). False if the geometry adds no shape. */
+bool lattice_estimate(const ShapeSet *geometry, int dim, double dx, double *sites,
+                      double *inside_fraction);
+
 void lattice_free(Lattice *lat);
 
 /* Morton key of non-negative lattice indices (2D: 32 bits per axis, 3D: 21). */

@@ -37,6 +37,17 @@ void solid_config_free(SolidConfig *cfg) {
     memset(cfg, 0, sizeof *cfg);
 }
 
+SolidEstimate solid_estimate(const SolidConfig *cfg) {
+    const SolidEstimate none = {0, 0, 0};
+    if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_MAX || !SOLID_MODELS[cfg->kind] ||
+        !SOLID_MODELS[cfg->kind]->estimate)
+        return none;
+    SolidEstimate e = SOLID_MODELS[cfg->kind]->estimate(cfg);
+    e.bytes +=
+        e.points * (double)(sizeof(double) * 4); /* the handle's damage and position scratch */
+    return e;
+}
+
 int solid_create(Solid **out, SolidConfig *cfg) {
     *out = NULL;
     if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_MAX || !SOLID_MODELS[cfg->kind])

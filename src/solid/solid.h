@@ -60,8 +60,17 @@ typedef struct {
 
 typedef struct Solid Solid;
 
+/* What a solid will need, estimated from its configuration alone (nothing
+ * built or allocated): checked against the machine before it is built. */
+typedef struct {
+    double points, bonds; /* bonds: each counted from both ends, as stored */
+    double bytes;         /* peak while it is built and run */
+} SolidEstimate;
+
 typedef struct {
     const char *name;
+    /* the estimate of a configuration of this model (no allocation) */
+    SolidEstimate (*estimate)(const SolidConfig *cfg);
     /* Builds the model from *cfg (taking ownership, zeroing it) and points
      * `pts` at its points. */
     int (*create)(void **impl, PdPoints *pts, SolidConfig *cfg);
@@ -88,6 +97,9 @@ typedef struct {
 /* Adds a model to the registry (before any solid is created; not thread
  * safe): its kind, or SOLID_NONE when the registry is full. */
 SolidKind solid_register(const SolidOps *ops);
+
+/* The estimate of *cfg by its model (zeros for an unknown kind). */
+SolidEstimate solid_estimate(const SolidConfig *cfg);
 
 /* NSPD_ERR_INPUT for an unknown kind; otherwise what the model's create
  * returns. Takes ownership of *cfg. */

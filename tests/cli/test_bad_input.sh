@@ -78,6 +78,11 @@ check "field outputs past the limit" "output.field_interval: .* field outputs" \
     "$nspd" check "$src/cases/sod.yaml" --set output.field_interval=1e-9
 check "spacing far too small" "solid.spacing: 1e-08 m puts 2.53e\+13 lattice sites" \
     "$nspd" check "$src/cases/plate_crack.yaml" --set solid.spacing=1e-8
+# 9.9e8 points need about 400 GB, more than any machine this runs on
+check "more memory than the machine" "the case needs about [0-9.]+ GB \\(9.[0-9]+e\\+08 points.* and this machine has" \
+    "$nspd" check "$src/cases/plate_crack.yaml" --set solid.spacing=1.6e-6
+check "more memory than --max-memory" "and --max-memory allows 0.05 GB" \
+    "$nspd" info "$src/cases/plate_crack.yaml" --max-memory 50
 check "steps past the limit" "time.end = 1000 s needs 7.48e\+10 steps" \
     "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/result" --set time.end=1e3 \
     --set output.history_interval=1e-3 --set output.field_interval=1
