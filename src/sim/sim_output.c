@@ -44,8 +44,10 @@ int sim_output_fields(Sim *sim) {
     const FieldOutputOptions opt = {out->vtk, out->png, out->png_max_pixels};
     FieldSet solid_set, flow_set, coupling_set;
     const FieldSet *overlay = NULL;
+    /* one damage field for the solid's files and the line probes */
+    const double *damage = damage_if(sim, true);
     if (sim->solid) {
-        solid_fields(sim->solid, &solid_set);
+        solid_fields(sim->solid, damage, &solid_set);
         TRY(field_set_write(sim->dir, sim->field_index, sim->time, &solid_set, NULL, &opt,
                             &sim->pvd[0]));
         overlay = &solid_set;
@@ -61,7 +63,6 @@ int sim_output_fields(Sim *sim) {
         TRY(field_set_write(sim->dir, sim->field_index, sim->time, &coupling_set, NULL, &opt,
                             NULL));
     }
-    const double *damage = damage_if(sim, true);
     for (int k = 0; k < sim->cfg.output.probe_count; k++) {
         const TableRef *t = probe_line_table(
             &sim->probes[k], sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow);

@@ -156,9 +156,8 @@ void solid_brief(const Solid *s, char *buf, size_t size) {
     s->ops->brief(s->impl, buf, size);
 }
 
-void solid_fields(Solid *s, FieldSet *out) {
+void solid_fields(Solid *s, const double *damage, FieldSet *out) {
     const PdPoints *p = &s->points;
-    const double *damage = solid_damage(s);
     memset(out, 0, sizeof *out);
     out->series = "solid";
     out->mesh = MESH_POINTS;

@@ -134,8 +134,9 @@ void solid_summary(const Solid *s, const RunStats *run, Report *out);
 void solid_info(const Solid *s, size_t memory_bytes, char *buf, size_t size);
 void solid_brief(const Solid *s, char *buf, size_t size);
 /* The fields and pictures of the current state (displacement, velocity,
- * damage, volume on the current positions). */
-void solid_fields(Solid *s, FieldSet *out);
+ * damage, volume on the current positions); `damage` is solid_damage's
+ * array of this state, computed once by the caller, who needs it too. */
+void solid_fields(Solid *s, const double *damage, FieldSet *out);
 
 /* The concrete model if the solid is of `kind`, else NULL: for the couplings
  * tied to one representation (they refuse other kinds at create). */
