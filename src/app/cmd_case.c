@@ -152,12 +152,12 @@ int cmd_info(int argc, char **argv) {
 
 /* Output files nspd writes, for --force to clear before a new run: every
  * series of docs/CASES.md, and any "*.part" a stopped run left half
- * written (io/out_file.h). */
+ * written (core/out_file.h). */
 static bool is_output_file(const char *name) {
     static const char *const exact[] = {"case.yaml", "log.txt",  "history.csv", "summary.json",
                                         "solid.pvd", "flow.pvd", NULL};
-    static const char *const prefix[] = {"solid_", "damage_",    "line_",    "flow_",
-                                         "mach_",  "schlieren_", "surface_", NULL};
+    static const char *const prefix[] = {"solid_",     "damage_",  "line_",       "flow_", "mach_",
+                                         "schlieren_", "surface_", "checkpoint_", NULL};
     const size_t len = strlen(name);
     if (len > 5 && strcmp(name + len - 5, ".part") == 0) return true;
     for (int i = 0; exact[i]; i++)
@@ -241,6 +241,31 @@ static int prepare_dir(const char *dir, bool force, int *lock_fd) {
     return lock_dir(dir, lock_fd);
 }
 
+/* --resume: the directory of the run to continue, locked; its log goes on. */
+static int reopen_dir(const char *dir, int *lock_fd) {
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "cannot resume: output directory '%s' does not exist; expected the "
+                         "directory of the run to continue (-o DIR)",
+                         dir);
+    TRY(lock_dir(dir, lock_fd));
+    /* what a killed run left half written is never a result */
+    DIR *d = opendir(dir);
+    if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
+    struct dirent *e;
+    char path[8192];
+    while ((e = readdir(d))) {
+        const size_t len = strlen(e->d_name);
+        if (len > 5 && strcmp(e->d_name + len - 5, ".part") == 0) {
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            remove(path);
+        }
+    }
+    closedir(d);
+    return NSPD_OK;
+}
+
 int cmd_run(int argc, char **argv) {
     CaseOptions opt;
     if (!options_parse(argc, argv, true, "run", &opt)) return EXIT_BAD_INPUT;
@@ -255,19 +280,23 @@ int cmd_run(int argc, char **argv) {
         snprintf(dir, sizeof dir, "out/%s", sim.cfg.name);
     char path[8192];
     int lock_fd = -1;
-    status = prepare_dir(dir, opt.force, &lock_fd);
-    if (status == NSPD_OK) {
+    status = case_resolved_hash(&doc, &sim.case_hash);
+    if (status == NSPD_OK)
+        status = opt.resume ? reopen_dir(dir, &lock_fd) : prepare_dir(dir, opt.force, &lock_fd);
+    if (status == NSPD_OK && !opt.resume) {
         snprintf(path, sizeof path, "%s/case.yaml", dir);
         status = case_write_resolved(&doc, path);
     }
     if (status == NSPD_OK) {
         snprintf(path, sizeof path, "%s/log.txt", dir);
-        status = nspd_log_open(path);
+        status = nspd_log_open(path, opt.resume);
     }
+    if (status == NSPD_OK && opt.quiet) nspd_log_set_console_level(LOG_WARN);
+    if (status == NSPD_OK)
+        nspd_log(LOG_INFO, "nspd %s: case '%s' from %s -> %s%s", NSPD_VERSION, sim.cfg.name,
+                 opt.case_path, dir, opt.resume ? " (resumed)" : "");
+    if (status == NSPD_OK && opt.resume) status = sim_resume(&sim, dir);
     if (status == NSPD_OK) {
-        if (opt.quiet) nspd_log_set_console_level(LOG_WARN);
-        nspd_log(LOG_INFO, "nspd %s: case '%s' from %s -> %s", NSPD_VERSION, sim.cfg.name,
-                 opt.case_path, dir);
         char what[256];
         describe(&sim, what, sizeof what);
         nspd_log(LOG_INFO, "%s, %d threads", what, omp_get_max_threads());

@@ -34,6 +34,8 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
             opt->out_dir = argv[++i];
         } else if (allow_output && strcmp(a, "--force") == 0) {
             opt->force = true;
+        } else if (allow_output && strcmp(a, "--resume") == 0) {
+            opt->resume = true;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             opt->quiet = true;
         } else if (strcmp(a, "--threads") == 0) {
@@ -64,7 +66,13 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
     }
     if (!opt->case_path) {
         fprintf(stderr, "nspd %s: which case? usage: nspd %s CASE.yaml%s [--set key=value ...]\n",
-                command, command, allow_output ? " [-o DIR] [--force]" : "");
+                command, command, allow_output ? " [-o DIR] [--force | --resume]" : "");
+        return false;
+    }
+    if (opt->force && opt->resume) {
+        fprintf(stderr,
+                "nspd %s: --force (start again) and --resume (continue) exclude each other\n",
+                command);
         return false;
     }
     if (opt->threads > 0) omp_set_num_threads(opt->threads);

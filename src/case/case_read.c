@@ -1,5 +1,6 @@
 #include "case/case_read.h"
 
+#include "core/hash.h"
 #include "core/mem.h"
 #include "core/status.h"
 #include "case/case_flow.h"
@@ -9,6 +10,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int read_time(CfgNode *root, SimConfig *cfg) {
@@ -147,6 +149,20 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
                            "%g s gives %.3g field outputs over time.end = %g s; expected at most "
                            "%d (a larger interval)",
                            out->field_interval, fields, cfg->end_time, CASE_MAX_FIELD_OUTPUTS);
+    /* checkpoints (sim/sim_checkpoint.c): by simulated time, by wall time */
+    TRY(cfg_opt_double(o, "checkpoint_interval", 0.0, &out->checkpoint_interval));
+    TRY(cfg_check_range(o, "checkpoint_interval", out->checkpoint_interval, 0.0, 1e300,
+                        "seconds of simulated time between checkpoints, 0 for none"));
+    if (out->checkpoint_interval > 0 &&
+        !(cfg->end_time / out->checkpoint_interval <= CASE_MAX_FIELD_OUTPUTS))
+        return cfg_fail_at(o, "checkpoint_interval",
+                           "%g s gives %.3g checkpoints over time.end = %g s; expected at most "
+                           "%d (a larger interval)",
+                           out->checkpoint_interval, cfg->end_time / out->checkpoint_interval,
+                           cfg->end_time, CASE_MAX_FIELD_OUTPUTS);
+    TRY(cfg_opt_double(o, "checkpoint_wall_interval", 3600.0, &out->checkpoint_wall_interval));
+    TRY(cfg_check_range(o, "checkpoint_wall_interval", out->checkpoint_wall_interval, 0.0, 1e300,
+                        "seconds of wall-clock time between checkpoints, 0 for none"));
     TRY(cfg_opt_bool(o, "vtk", true, &out->vtk));
     TRY(cfg_opt_bool(o, "png", true, &out->png));
     int64_t pixels;
@@ -290,6 +306,18 @@ int case_read(const char *path, char *const *overrides, int override_count, CfgD
         sim_config_free(cfg);
         cfg_doc_free(doc);
     }
+    return status;
+}
+
+int case_resolved_hash(const CfgDoc *doc, uint64_t *hash) {
+    char *text = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
+    if (!f) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+    const int status = cfg_doc_write(doc, f);
+    fclose(f);
+    if (status == NSPD_OK) *hash = hash64(text, size);
+    free(text);
     return status;
 }
 

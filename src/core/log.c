@@ -12,9 +12,9 @@ void nspd_log_set_console_level(LogLevel level) {
     console_level = level;
 }
 
-int nspd_log_open(const char *path) {
+int nspd_log_open(const char *path, bool append) {
     nspd_log_close();
-    log_file = fopen(path, "w");
+    log_file = fopen(path, append ? "a" : "w");
     if (!log_file) return NSPD_FAIL(NSPD_ERR_IO, "cannot create log file '%s'", path);
     return NSPD_OK;
 }

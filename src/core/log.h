@@ -5,10 +5,14 @@
 #ifndef NSPD_CORE_LOG_H
 #define NSPD_CORE_LOG_H
 
+#include <stdbool.h>
+
 typedef enum { LOG_DEBUG = 0, LOG_INFO = 1, LOG_WARN = 2, LOG_ERROR = 3, LOG_QUIET = 4 } LogLevel;
 
 void nspd_log_set_console_level(LogLevel level);
-int nspd_log_open(const char *path); /* NSPD_ERR_IO if the file cannot be created */
+/* append: continue an existing log (a resumed run). NSPD_ERR_IO if the file
+ * cannot be created. */
+int nspd_log_open(const char *path, bool append);
 void nspd_log_close(void);
 void nspd_log(LogLevel level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* To the log file only (no-op when none is open). */

@@ -16,19 +16,22 @@ void progress_format_duration(double seconds, char *buf, int size) {
     }
 }
 
-void progress_start(Progress *p, FILE *stream, double end_time, bool enabled) {
+void progress_start(Progress *p, FILE *stream, double start_time, double end_time, bool enabled) {
     p->stream = stream;
     p->enabled = enabled;
     p->live = enabled && isatty(fileno(stream));
     p->end_time = end_time;
+    p->start_fraction = end_time > 0 ? start_time / end_time : 0.0;
     p->wall_start = nspd_wall_time();
     p->last_draw = -1.0;
-    p->last_decile = 0;
+    p->last_decile = (int)(p->start_fraction * 10.0 + 1e-9);
 }
 
 static void draw(Progress *p, int64_t step, double time, double fraction, bool final) {
     double elapsed = nspd_wall_time() - p->wall_start;
-    double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : -1.0;
+    /* the rate of this process (a resumed run started part way) */
+    const double done = fraction - p->start_fraction;
+    double eta = done > 0 ? elapsed * (1.0 - fraction) / done : -1.0;
     char eta_text[32], elapsed_text[32];
     progress_format_duration(final ? 0.0 : eta, eta_text, sizeof eta_text);
     progress_format_duration(elapsed, elapsed_text, sizeof elapsed_text);

@@ -71,8 +71,19 @@ int coupling_before_flow(Coupling *c, Solid *solid, Flow *flow) {
     return c->ops->before_flow(c->impl, solid, flow);
 }
 
+/* A load that is not finite would wreck the solid silently: whatever the
+ * coupling, the run stops there and says so (a coupling may say more
+ * first: the ghost-cell one names the surface point). */
 int coupling_after_flow(Coupling *c, Solid *solid, Flow *flow, double dt) {
-    return c->ops->after_flow(c->impl, solid, flow, dt);
+    TRY(c->ops->after_flow(c->impl, solid, flow, dt));
+    CouplingLoads loads;
+    coupling_loads(c, &loads);
+    if (isfinite(loads.force_on_solid[0]) && isfinite(loads.force_on_solid[1])) return NSPD_OK;
+    return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                     "the %s coupling's load on the solid is not finite (%g, %g) N/m at "
+                     "t = %g s: the flow next to the solid has broken down",
+                     c->ops->name, loads.force_on_solid[0], loads.force_on_solid[1],
+                     flow_time(flow));
 }
 
 double coupling_solid_dt_limit(const Coupling *c, const Solid *solid) {
@@ -93,6 +104,12 @@ int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out) {
 
 int coupling_fields(Coupling *c, Solid *solid, Flow *flow, FieldSet *out) {
     return c->ops->fields(c->impl, solid, flow, out);
+}
+
+int coupling_checkpoint(Coupling *c, Checkpoint *ck) {
+    if (!c->ops->checkpoint)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the coupling '%s' cannot be checkpointed", c->ops->name);
+    return c->ops->checkpoint(c->impl, ck);
 }
 
 void *coupling_impl(Coupling *c, CouplingKind kind) {

@@ -63,6 +63,10 @@ typedef struct CouplingOps {
     int (*summary)(void *impl, Solid *solid, Flow *flow, Report *out);
     /* tables of the current state (surface pressure and friction) */
     int (*fields)(void *impl, Solid *solid, Flow *flow, FieldSet *out);
+    /* writes or reads (checkpoint_reading) what the coupling carries from
+     * step to step (called after the solid's and the flow's, which it may
+     * read); NULL: it cannot be checkpointed */
+    int (*checkpoint)(void *impl, Checkpoint *ck);
 } CouplingOps;
 
 /* Adds a coupling to the registry (before any is created; not thread safe):
@@ -80,6 +84,10 @@ void coupling_loads(const Coupling *c, CouplingLoads *out);
 int coupling_history(Coupling *c, Solid *solid, Flow *flow, double time, Report *row);
 int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out);
 int coupling_fields(Coupling *c, Solid *solid, Flow *flow, FieldSet *out);
+/* Writes or reads the coupling's state (CouplingOps.checkpoint):
+ * NSPD_ERR_INPUT for a coupling that cannot be checkpointed. */
+int coupling_checkpoint(Coupling *c, Checkpoint *ck);
+
 /* The concrete coupling if it is of `kind`, else NULL. */
 void *coupling_impl(Coupling *c, CouplingKind kind);
 

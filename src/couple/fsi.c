@@ -10,6 +10,20 @@
 
 const char *const FSI_HOLD_NAMES[FSI_HOLD_COUNT + 1] = {"none", "balance", NULL};
 
+/* The polylines of the wetted loops, over the marker arrays. */
+static void polylines_from_markers(Fsi *f) {
+    const PdSurface *w = &f->wetted;
+    for (int k = 0; k < f->loop_count; k++) {
+        int64_t lo = w->loop_start[k];
+        IbmPolyline *p = &f->polylines[k];
+        p->n = (int)(w->loop_start[k + 1] - lo);
+        p->x = f->mx + lo;
+        p->y = f->my + lo;
+        p->vx = f->mvx + lo;
+        p->vy = f->mvy + lo;
+    }
+}
+
 /* This step's interface: the surface loops without debris (points with no
  * intact bond), their markers at the points' current positions and
  * velocities. A loop keeps all its points if fewer than 3 would remain. */
@@ -31,15 +45,7 @@ static void markers_from_points(Fsi *f, const Solid *solid) {
     w->loop_start[all->loop_count] = used;
     w->length = used;
     pd_surface_positions(body, w, f->mx, f->my, f->mvx, f->mvy);
-    for (int k = 0; k < f->loop_count; k++) {
-        int64_t lo = w->loop_start[k];
-        IbmPolyline *p = &f->polylines[k];
-        p->n = (int)(w->loop_start[k + 1] - lo);
-        p->x = f->mx + lo;
-        p->y = f->my + lo;
-        p->vx = f->mvx + lo;
-        p->vy = f->mvy + lo;
-    }
+    polylines_from_markers(f);
 }
 
 int fsi_create(Fsi *f, const FsiConfig *cfg, const Solid *solid, GksSolver *flow) {
@@ -139,4 +145,32 @@ int fsi_apply_loads(Fsi *f, Solid *solid, GksSolver *flow) {
         }
     }
     return NSPD_OK;
+}
+
+/* The walls the flow last saw are the markers of the last
+ * fsi_move_interface, the solid's state one step back: they are kept, not
+ * recomputed from the solid, so that the next move uncovers the same fresh
+ * cells. Read back, the immersed boundary moves to them without touching
+ * the flow (whose cell kinds the flow's own checkpoint restores): the same
+ * bits as if it had been built on them (ibm_update). */
+int fsi_checkpoint(Fsi *f, Checkpoint *ck) {
+    PdSurface *w = &f->wetted;
+    const int64_t cap = f->surface.length;
+    TRY(checkpoint_io(ck, "fsi.loop_start", w->loop_start,
+                      (size_t)(f->loop_count + 1) * sizeof(int64_t)));
+    int64_t len = w->length;
+    TRY(checkpoint_io_array(ck, "fsi.points", w->point, sizeof(int32_t), &len, cap));
+    w->length = len;
+    TRY(checkpoint_io_array(ck, "fsi.mx", f->mx, sizeof(double), &len, cap));
+    TRY(checkpoint_io_array(ck, "fsi.my", f->my, sizeof(double), &len, cap));
+    TRY(checkpoint_io_array(ck, "fsi.mvx", f->mvx, sizeof(double), &len, cap));
+    TRY(checkpoint_io_array(ck, "fsi.mvy", f->mvy, sizeof(double), &len, cap));
+    TRY(checkpoint_io(ck, "fsi.force_on_solid", f->force_on_solid, sizeof f->force_on_solid));
+    TRY(checkpoint_io_int64(ck, "fsi.substeps", &f->substeps));
+    if (!checkpoint_reading(ck)) return NSPD_OK;
+    if (w->length != w->loop_start[f->loop_count])
+        return NSPD_FAIL(NSPD_ERR_INPUT, "checkpoint: the interface's loops do not add up");
+    polylines_from_markers(f);
+    TRY(ibm_update(f->ibm, f->polylines, f->loop_count, NULL));
+    return ibm_surface_reserve(f->ibm, &f->loads);
 }

@@ -96,4 +96,8 @@ int fsi_move_interface(Fsi *fsi, const Solid *solid, GksSolver *flow);
  * fluid's tractions. */
 int fsi_apply_loads(Fsi *fsi, Solid *solid, GksSolver *flow);
 
+/* Writes or reads the interface's state (core/checkpoint.h); read back, the
+ * immersed boundary stands where it stood when the checkpoint was written. */
+int fsi_checkpoint(Fsi *fsi, Checkpoint *ck);
+
 #endif

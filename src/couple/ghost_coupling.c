@@ -224,6 +224,16 @@ static int ghost_fields(void *impl, Solid *solid, Flow *flow, FieldSet *out) {
     return NSPD_OK;
 }
 
+/* The time sums of the coefficients and, coupled to a solid, the
+ * interface (fsi_checkpoint); fixed bodies never move. */
+static int ghost_checkpoint(void *impl, Checkpoint *ck) {
+    GhostCoupling *g = impl;
+    TRY(checkpoint_io(ck, "ghost.coef_sum", g->coef_sum,
+                      (size_t)g->body_count * 6 * sizeof(double)));
+    TRY(checkpoint_io_int64(ck, "ghost.coef_samples", &g->coef_samples));
+    return g->rigid ? NSPD_OK : fsi_checkpoint(&g->fsi, ck);
+}
+
 const CouplingOps GHOST_COUPLING_OPS = {
     .name = "ghost_cell",
     .create = ghost_create,
@@ -235,6 +245,7 @@ const CouplingOps GHOST_COUPLING_OPS = {
     .history = ghost_history,
     .summary = ghost_summary,
     .fields = ghost_fields,
+    .checkpoint = ghost_checkpoint,
 };
 
 const Ibm *ghost_coupling_ibm(Coupling *c) {

@@ -137,6 +137,13 @@ void flow_fields(Flow *f, FieldSet *out) {
     f->ops->fields(f->impl, out);
 }
 
+int flow_checkpoint(Flow *f, Checkpoint *ck) {
+    if (!f->ops->checkpoint)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the flow solver '%s' cannot be checkpointed",
+                         f->ops->name);
+    return f->ops->checkpoint(f->impl, ck);
+}
+
 void *flow_impl(Flow *f, FlowMethod method) {
     return f && f->method == method ? f->impl : NULL;
 }

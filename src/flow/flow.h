@@ -12,6 +12,7 @@
 #ifndef NSPD_FLOW_FLOW_H
 #define NSPD_FLOW_FLOW_H
 
+#include "core/checkpoint.h"
 #include "core/fields.h"
 #include "core/report.h"
 #include "flow/gks_flow.h"
@@ -111,6 +112,10 @@ typedef struct FlowOps {
     /* the fields and pictures of the current state, into the solver's own
      * scratch (no allocation) */
     void (*fields)(void *impl, FieldSet *out);
+    /* writes or reads (checkpoint_reading) everything a step changes, so a
+     * solver built from the same case continues bit for bit; NULL: the
+     * solver cannot be checkpointed */
+    int (*checkpoint)(void *impl, Checkpoint *ck);
 } FlowOps;
 
 /* Adds a solver to the registry (before any flow is created; not thread
@@ -143,6 +148,10 @@ void flow_info(const Flow *f, size_t memory_bytes, char *buf, size_t size);
 void flow_brief(const Flow *f, char *buf, size_t size);
 int64_t flow_fallbacks_total(const Flow *f);
 void flow_fields(Flow *f, FieldSet *out);
+
+/* Writes or reads the flow's state (FlowOps.checkpoint): NSPD_ERR_INPUT
+ * for a solver that cannot be checkpointed. */
+int flow_checkpoint(Flow *f, Checkpoint *ck);
 
 /* The concrete solver if the flow is of `method`, else NULL. */
 void *flow_impl(Flow *f, FlowMethod method);

@@ -242,6 +242,12 @@ static void gks_totals(const void *impl, double totals[4]) {
     gks_solver_totals(((const GksFlow *)impl)->solver, totals);
 }
 
+static int gks_checkpoint(void *impl, Checkpoint *ck) {
+    GksFlow *g = impl;
+    TRY(gks_solver_checkpoint(g->solver, ck));
+    return checkpoint_io_double(ck, "gks.last_dt", &g->last_dt);
+}
+
 static void gks_history(const void *impl, Report *row) {
     const GksFlow *g = impl;
     double totals[4];
@@ -396,6 +402,7 @@ const FlowOps GKS_FLOW_OPS = {
     .brief = gks_brief,
     .fallbacks_total = gks_fallbacks_total,
     .fields = gks_fields,
+    .checkpoint = gks_checkpoint,
 };
 
 GksSolver *gks_flow_solver(Flow *f) {

@@ -103,6 +103,36 @@ int64_t gks_solver_fallbacks_total(const GksSolver *s) {
     return s->fallbacks_total;
 }
 
+/* The state a step changes: the conservative fields (ghost layers too),
+ * the cell kinds (an immersed boundary changes them), the sources a
+ * coupling holds over the steps, the clock and the counters. */
+int gks_solver_checkpoint(GksSolver *s, Checkpoint *ck) {
+    const size_t n = (size_t)s->grid.size;
+    static const char *const W[4] = {"gks.rho", "gks.rho_u", "gks.rho_v", "gks.rho_e"};
+    for (int v = 0; v < 4; v++) TRY(checkpoint_io(ck, W[v], s->w[v], n * sizeof(double)));
+    /* The next-state buffer too: a step writes its interior only, so after
+     * the swap the box ghost layers of W hold the values of two steps back
+     * until the next step refills them, and what reads W between steps (a
+     * coupling's surface loads near a box face, the outputs) sees those. */
+    static const char *const WN[4] = {"gks.next_rho", "gks.next_rho_u", "gks.next_rho_v",
+                                      "gks.next_rho_e"};
+    for (int v = 0; v < 4; v++) TRY(checkpoint_io(ck, WN[v], s->wn[v], n * sizeof(double)));
+    TRY(checkpoint_io(ck, "gks.kind", s->kind, n));
+    int has = s->has_sources;
+    TRY(checkpoint_io_int(ck, "gks.has_sources", &has));
+    if (has) {
+        double *src[3];
+        if (checkpoint_reading(ck)) TRY(gks_solver_source_cells(s, src));
+        static const char *const S[3] = {"gks.source_x", "gks.source_y", "gks.source_e"};
+        for (int k = 0; k < 3; k++) TRY(checkpoint_io(ck, S[k], s->source[k], n * sizeof(double)));
+    }
+    s->has_sources = has != 0;
+    TRY(checkpoint_io_double(ck, "gks.time", &s->time));
+    TRY(checkpoint_io_int64(ck, "gks.steps", &s->steps));
+    TRY(checkpoint_io_int64(ck, "gks.fallbacks_last", &s->fallbacks_last));
+    return checkpoint_io_int64(ck, "gks.fallbacks_total", &s->fallbacks_total);
+}
+
 /* ------------------------------------------------------ create/destroy */
 
 static int alloc_counted(GksSolver *s, void *out, size_t count, size_t size) {

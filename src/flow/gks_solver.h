@@ -28,6 +28,7 @@
 #ifndef NSPD_FLOW_GKS_SOLVER_H
 #define NSPD_FLOW_GKS_SOLVER_H
 
+#include "core/checkpoint.h"
 #include "core/shape.h"
 #include "flow/bc.h"
 #include "flow/cell_kind.h"
@@ -160,6 +161,8 @@ int gks_solver_step(GksSolver *s, double dt);
 int gks_solver_advance(GksSolver *s, double t_end, int64_t max_steps);
 
 double gks_solver_time(const GksSolver *s);
+/* Writes or reads the solver's state (core/checkpoint.h). */
+int gks_solver_checkpoint(GksSolver *s, Checkpoint *ck);
 int64_t gks_solver_step_count(const GksSolver *s);
 /* First-order fallbacks (cell-directions whose limited slopes would have made
  * rho or p negative at a face) in the last step, and in all steps so far. */

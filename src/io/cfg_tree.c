@@ -4,7 +4,7 @@
 #include "io/cfg_tree.h"
 
 #include "core/status.h"
-#include "io/out_file.h"
+#include "core/out_file.h"
 
 #include <errno.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "io/out_file.h"
+#include "core/out_file.h"
 
 #include <png.h>
 #include <stdio.h>

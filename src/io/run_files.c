@@ -2,13 +2,15 @@
 
 #include "core/status.h"
 #include "io/json.h"
-#include "io/out_file.h"
+#include "core/out_file.h"
 #include "io/render.h"
 
 #include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 int history_open(HistoryFile *h, const char *dir) {
     memset(h, 0, sizeof *h);
@@ -16,6 +18,37 @@ int history_open(HistoryFile *h, const char *dir) {
     h->file = fopen(h->path, "w");
     if (!h->file)
         return NSPD_FAIL(NSPD_ERR_IO, "cannot create '%s' (%s)", h->path, strerror(errno));
+    return NSPD_OK;
+}
+
+int history_resume(HistoryFile *h, const char *dir, int64_t bytes) {
+    memset(h, 0, sizeof *h);
+    snprintf(h->path, sizeof h->path, "%s/history.csv", dir);
+    struct stat st;
+    if (stat(h->path, &st) != 0)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "cannot resume: '%s' is missing (%s)", h->path,
+                         strerror(errno));
+    if ((int64_t)st.st_size < bytes)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "cannot resume: '%s' has %lld bytes, fewer than the %lld the checkpoint "
+                         "counted (was it edited or replaced?)",
+                         h->path, (long long)st.st_size, (long long)bytes);
+    /* the rows after the checkpoint (a run killed later) are written again */
+    if (truncate(h->path, (off_t)bytes) != 0)
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot truncate '%s' (%s)", h->path, strerror(errno));
+    h->file = fopen(h->path, "a");
+    if (!h->file)
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot append to '%s' (%s)", h->path, strerror(errno));
+    h->header_written = bytes > 0;
+    return NSPD_OK;
+}
+
+int history_bytes(HistoryFile *h, int64_t *bytes) {
+    *bytes = 0;
+    if (!h->file) return NSPD_OK;
+    const long at = fflush(h->file) == 0 ? ftell(h->file) : -1;
+    if (at < 0) return NSPD_FAIL(NSPD_ERR_IO, "cannot write '%s' (%s)", h->path, strerror(errno));
+    *bytes = at;
     return NSPD_OK;
 }
 

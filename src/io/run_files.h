@@ -25,6 +25,12 @@ int history_open(HistoryFile *h, const char *dir);
 /* Appends one row: the first call writes the header (the items' names). */
 int history_write(HistoryFile *h, const Report *row);
 void history_close(HistoryFile *h);
+/* Reopens dir/history.csv to continue a run from a checkpoint: cut back to
+ * the `bytes` it had then (rows written after it are written again), then
+ * appended to. NSPD_ERR_INPUT if it is missing or shorter. */
+int history_resume(HistoryFile *h, const char *dir, int64_t bytes);
+/* Flushes the file and gives its length (0 when none is open). */
+int history_bytes(HistoryFile *h, int64_t *bytes);
 
 /* Writes dir/summary.json with the items in order. */
 int summary_write(const char *dir, const Report *summary);

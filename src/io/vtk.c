@@ -1,7 +1,7 @@
 #include "io/vtk.h"
 
 #include "core/status.h"
-#include "io/out_file.h"
+#include "core/out_file.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -139,7 +139,7 @@ int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double
     return out_file_close(&out, err);
 }
 
-int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_name) {
+int pvd_append(PvdSeries *s, double time, const char *file_name) {
     if (s->count == s->cap) {
         int cap = s->cap ? 2 * s->cap : 16;
         double *times = realloc(s->times, (size_t)cap * sizeof *times);
@@ -155,7 +155,10 @@ int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_na
     if (!s->files[s->count]) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
     memcpy(s->files[s->count], file_name, len);
     s->times[s->count++] = time;
+    return NSPD_OK;
+}
 
+int pvd_write(const PvdSeries *s, const char *pvd_path) {
     OutFile out;
     TRY(out_file_open(&out, pvd_path));
     FILE *f = out.f;
@@ -166,6 +169,11 @@ int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_na
                 s->files[i]);
     fprintf(f, "  </Collection>\n</VTKFile>\n");
     return out_file_close(&out, 0);
+}
+
+int pvd_add(PvdSeries *s, const char *pvd_path, double time, const char *file_name) {
+    TRY(pvd_append(s, time, file_name));
+    return pvd_write(s, pvd_path);
 }
 
 void pvd_free(PvdSeries *s) {

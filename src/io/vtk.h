@@ -35,6 +35,10 @@ typedef struct {
 } PvdSeries;
 
 int pvd_add(PvdSeries *series, const char *pvd_path, double time, const char *file_name);
+/* The two halves of pvd_add: an entry added in memory; the file rewritten
+ * whole from the entries. */
+int pvd_append(PvdSeries *series, double time, const char *file_name);
+int pvd_write(const PvdSeries *series, const char *pvd_path);
 void pvd_free(PvdSeries *series);
 
 #endif

@@ -549,3 +549,25 @@ int probes_summary(ProbeState *probes, int count, const PdPoints *body, const do
     }
     return NSPD_OK;
 }
+
+/* What the probes carry from sample to sample: the crack tip's history,
+ * the largest displacement and the first branch measurement. */
+int probes_checkpoint(ProbeState *probes, int count, Checkpoint *ck) {
+    for (int k = 0; k < count; k++) {
+        ProbeState *p = &probes[k];
+        /* samples counts the point probes' samples too; the crack tip's
+         * arrays hold the first `capacity` */
+        TRY(checkpoint_io_int(ck, "probe.samples", &p->samples));
+        if (p->samples < 0)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "checkpoint: %d probe samples", p->samples);
+        const size_t kept = (size_t)(p->samples < p->capacity ? p->samples : p->capacity);
+        TRY(checkpoint_io(ck, "probe.times", p->times, kept * sizeof(double)));
+        TRY(checkpoint_io(ck, "probe.along", p->along, kept * sizeof(double)));
+        TRY(checkpoint_io(ck, "probe.last_tip", p->last_tip, sizeof p->last_tip));
+        TRY(checkpoint_io_double(ck, "probe.dx_max", &p->dx_max));
+        TRY(checkpoint_io_double(ck, "probe.t_dx_max", &p->t_dx_max));
+        TRY(checkpoint_io(ck, "probe.first_branch", &p->first_branch, sizeof p->first_branch));
+        TRY(checkpoint_io_double(ck, "probe.t_first_branch", &p->t_first_branch));
+    }
+    return NSPD_OK;
+}

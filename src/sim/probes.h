@@ -4,6 +4,7 @@
 #ifndef NSPD_SIM_PROBES_H
 #define NSPD_SIM_PROBES_H
 
+#include "core/checkpoint.h"
 #include "core/fields.h"
 #include "core/report.h"
 #include "flow/flow.h"
@@ -94,5 +95,8 @@ double probe_crack_speed(const ProbeState *p);
  * branch angle; per crack tip probe its last position and speed. */
 int probes_summary(ProbeState *probes, int count, const PdPoints *body, const double *damage,
                    Report *out);
+
+/* Writes or reads what the probes carry between samples (core/checkpoint.h). */
+int probes_checkpoint(ProbeState *probes, int count, Checkpoint *ck);
 
 #endif

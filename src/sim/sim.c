@@ -160,44 +160,114 @@ static bool due(double time, double next, double dt) {
     return time >= next - 1e-6 * dt;
 }
 
-int sim_run(Sim *sim, const SimRunOptions *opt) {
-    sim->dir = opt->dir;
+/* A checkpoint is due by the simulated-time schedule or the wall clock. */
+static bool checkpoint_due(Sim *sim) {
     const OutputConfig *out = &sim->cfg.output;
-    double t0 = nspd_wall_time();
-    TRY(sim_output_open(sim));
-    /* a failure from here on still ends with summary.json saying why */
-    int status = sim_output_history(sim);
-    if (status == NSPD_OK) status = sim_output_fields(sim);
+    bool due_now = false;
+    if (out->checkpoint_interval > 0 && due(sim->time, sim->next_checkpoint, sim->dt)) {
+        due_now = true;
+        while (due(sim->time, sim->next_checkpoint, sim->dt))
+            sim->next_checkpoint += out->checkpoint_interval;
+    }
+    if (out->checkpoint_wall_interval > 0 &&
+        nspd_wall_time() - sim->checkpoint_wall >= out->checkpoint_wall_interval)
+        due_now = true;
+    return due_now;
+}
+
+/* A resumed run continues its files from where the checkpoint left them:
+ * history.csv cut back to its length then, the .pvd series listing only
+ * the files up to it. */
+static int resume_outputs(Sim *sim) {
+    if (!sim->dir) return NSPD_OK;
+    TRY(history_resume(&sim->history, sim->dir, sim->history_bytes));
+    static const char *const SERIES[2] = {"solid", "flow"};
+    for (int k = 0; k < 2; k++) {
+        if (sim->pvd[k].count == 0) continue;
+        char path[4200];
+        snprintf(path, sizeof path, "%s/%s.pvd", sim->dir, SERIES[k]);
+        TRY(pvd_write(&sim->pvd[k], path));
+    }
+    return NSPD_OK;
+}
+
+/* A new run writes its initial state. */
+static int initial_outputs(Sim *sim) {
+    const OutputConfig *out = &sim->cfg.output;
     sim->next_history = out->history_interval;
     sim->next_field = out->field_interval;
+    sim->next_checkpoint = out->checkpoint_interval;
+    TRY(sim_output_history(sim));
+    return sim_output_fields(sim);
+}
+
+/* One step's outputs: those due, a checkpoint if due (or asked for by a
+ * signal), then, when stopping on a signal, the rest of the outputs of this
+ * state (after the checkpoint, which resumes as if they were never
+ * written). */
+static int step_outputs(Sim *sim, bool last) {
+    const OutputConfig *out = &sim->cfg.output;
+    const double t = sim->time;
+    const bool history = due(t, sim->next_history, sim->dt) || last;
+    const bool fields = due(t, sim->next_field, sim->dt) || last;
+    if (history) {
+        TRY(sim_output_history(sim));
+        while (due(t, sim->next_history, sim->dt)) sim->next_history += out->history_interval;
+    }
+    if (fields) {
+        TRY(sim_output_fields(sim));
+        while (due(t, sim->next_field, sim->dt)) sim->next_field += out->field_interval;
+    }
+    if (!last && (checkpoint_due(sim) || sim->interrupted)) TRY(sim_checkpoint_write(sim));
+    if (sim->interrupted && !history) TRY(sim_output_history(sim));
+    if (sim->interrupted && !fields) TRY(sim_output_fields(sim));
+    return NSPD_OK;
+}
+
+int sim_run(Sim *sim, const SimRunOptions *opt) {
+    sim->dir = opt->dir;
+    /* a resumed run's wall time continues the time already spent */
+    sim->wall_start = nspd_wall_time() - sim->wall_s;
+    sim->checkpoint_wall = nspd_wall_time();
+    int status = NSPD_OK;
+    if (sim->resumed) {
+        TRY(resume_outputs(sim));
+    } else {
+        TRY(sim_output_open(sim));
+        /* a failure from here on still ends with summary.json saying why */
+        status = initial_outputs(sim);
+    }
 
     Progress progress;
     double end = sim->flow ? sim->cfg.end_time : (double)sim->steps * sim->dt;
-    progress_start(&progress, stderr, end, opt->progress);
+    double start = sim->flow ? sim->time : (double)sim->step * sim->dt;
+    progress_start(&progress, stderr, start, end, opt->progress);
     while (status == NSPD_OK && !finished(sim)) {
         status = sim_step(sim);
+        if (status == NSPD_ERR_NUMERIC) { /* a blow-up: say which step it was */
+            char what[1024];
+            snprintf(what, sizeof what, "%s", nspd_error_message());
+            status =
+                NSPD_FAIL(NSPD_ERR_NUMERIC,
+                          "%s (in step %lld, from t = %g s; the outputs written before are kept)",
+                          what, (long long)sim->step + 1, sim->time);
+        }
         if (status != NSPD_OK) break;
-        const double t = sim->time;
         const bool last = finished(sim);
         sim->interrupted = interrupt_requested() && !last;
-        if (due(t, sim->next_history, sim->dt) || last || sim->interrupted) {
-            status = sim_output_history(sim);
-            while (due(t, sim->next_history, sim->dt)) sim->next_history += out->history_interval;
-        }
-        if (status == NSPD_OK && (due(t, sim->next_field, sim->dt) || last || sim->interrupted)) {
-            status = sim_output_fields(sim);
-            while (due(t, sim->next_field, sim->dt)) sim->next_field += out->field_interval;
-        }
+        status = step_outputs(sim, last);
         if (status != NSPD_OK) break;
-        progress_update(&progress, sim->step, t);
+        progress_update(&progress, sim->step, sim->time);
         if (sim->interrupted) {
-            nspd_log(LOG_WARN, "interrupted at step %lld (t = %g s): outputs written",
-                     (long long)sim->step, t);
+            nspd_log(LOG_WARN,
+                     "stopped by %s at step %lld (t = %g s): checkpoint and outputs written; "
+                     "continue with the same command and --resume",
+                     interrupt_reason(), (long long)sim->step, sim->time);
             break;
         }
     }
     progress_finish(&progress, sim->step, sim->time);
-    sim->wall_s = nspd_wall_time() - t0;
+    sim->wall_s = nspd_wall_time() - sim->wall_start;
     /* the failure that stopped the run, kept across the summary's writing
      * (which records it as the reason the run is incomplete) */
     char reason[1024];

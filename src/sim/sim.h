@@ -25,6 +25,8 @@ typedef struct {
     bool progress;   /* progress line on stderr */
 } SimRunOptions;
 
+enum { SIM_CHECKPOINTS_KEPT = 2 };
+
 enum { SIM_PART_FLOW = 0, SIM_PART_SOLID = 1, SIM_PART_COUPLING = 2, SIM_PART_COUNT = 3 };
 
 typedef struct {
@@ -48,9 +50,18 @@ typedef struct {
     PvdSeries pvd[2]; /* solid, flow */
     int field_index;
     double next_field, next_history;
-    double wall_s;
+    double wall_s;                 /* wall time of the run, resumed parts included */
+    double wall_start;             /* when the run would have started, had it never stopped */
     double part_s[SIM_PART_COUNT]; /* wall time in the flow, the solid, the coupling */
     bool interrupted;
+
+    /* checkpoints (sim_checkpoint.c) */
+    uint64_t case_hash;     /* of the resolved case, recorded in each checkpoint */
+    bool resumed;           /* the state was read from a checkpoint: continue its files */
+    double next_checkpoint; /* simulated time of the next scheduled one */
+    double checkpoint_wall; /* wall time of the last one (or of the start) */
+    int64_t history_bytes;  /* history.csv's length at the checkpoint read */
+    int checkpoints_written;
 } Sim;
 
 /* Builds everything the case describes (takes ownership of *cfg, zeroing
@@ -64,6 +75,17 @@ void sim_destroy(Sim *sim);
  * cleanly after the current step on Ctrl-C (then NSPD_ERR_INTERRUPTED,
  * with all outputs written and summary.json marked "interrupted"). */
 int sim_run(Sim *sim, const SimRunOptions *opt);
+
+/* Writes DIR/checkpoint_<step>.nspd of the current state (after the
+ * step's outputs), keeping the newest SIM_CHECKPOINTS_KEPT. */
+int sim_checkpoint_write(Sim *sim);
+
+/* Reads the newest whole checkpoint in `dir` into a simulation just built
+ * from the same case (sim->case_hash set), so that sim_run continues the
+ * run and its files there. NSPD_ERR_INPUT when there is none, or it was
+ * written for another case, binary or layout (a damaged newest one is
+ * passed over for the one before, with a warning). */
+int sim_resume(Sim *sim, const char *dir);
 
 /* Advances `steps` steps (or to the end time) with no output (tests,
  * `nspd info` timing). */

@@ -52,6 +52,10 @@ typedef struct {
     double field_interval;   /* s between VTK/PNG outputs */
     double average_from;     /* s: force coefficients are averaged from this time on */
     double history_interval; /* s between history.csv rows */
+    /* checkpoints: s of simulated time between them (0: none), s of wall
+     * time between them (0: none); one is also written when the run is
+     * interrupted (Ctrl-C, SIGTERM, SIGUSR1) */
+    double checkpoint_interval, checkpoint_wall_interval;
     bool vtk, png;
     int png_max_pixels; /* longest side of a PNG */
     int probe_count;

@@ -118,6 +118,31 @@ static bool bond_attached(const void *impl, int64_t i) {
     return false;
 }
 
+/* The state a step changes: displacements, velocities, forces (velocity
+ * Verlet reuses the last one), the external loads a coupling holds over
+ * the sub-steps, the bonds (0: broken), the clock and step count. */
+static int bond_checkpoint(void *impl, Checkpoint *ck) {
+    BondBody *b = &((BondSolid *)impl)->body;
+    const size_t n = (size_t)b->n * sizeof(double);
+    static const char *const NAMES[4][3] = {{"bond.u0", "bond.u1", "bond.u2"},
+                                            {"bond.v0", "bond.v1", "bond.v2"},
+                                            {"bond.force0", "bond.force1", "bond.force2"},
+                                            {"bond.external0", "bond.external1", "bond.external2"}};
+    for (int d = 0; d < b->dim; d++) {
+        TRY(checkpoint_io(ck, NAMES[0][d], b->u[d], n));
+        TRY(checkpoint_io(ck, NAMES[1][d], b->v[d], n));
+        TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
+        TRY(checkpoint_io(ck, NAMES[3][d], b->external[d], n));
+    }
+    TRY(checkpoint_io(ck, "bond.coef", b->bond_coef, (size_t)b->bond_count * sizeof(float)));
+    TRY(checkpoint_io_int64(ck, "bond.step", &b->step));
+    TRY(checkpoint_io_double(ck, "bond.time", &b->time));
+    int valid = b->force_valid;
+    TRY(checkpoint_io_int(ck, "bond.force_valid", &valid));
+    b->force_valid = valid != 0;
+    return NSPD_OK;
+}
+
 static void bond_history(const void *impl, Report *row) {
     const BondBody *b = &((const BondSolid *)impl)->body;
     double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
@@ -198,6 +223,7 @@ const SolidOps BOND_SOLID_OPS = {
     .info = bond_info,
     .brief = bond_brief,
     .fields = NULL,
+    .checkpoint = bond_checkpoint,
 };
 
 BondBody *bond_solid_body(Solid *s) {

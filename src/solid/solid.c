@@ -4,7 +4,9 @@
 #include "core/status.h"
 #include "solid/bond_solid.h"
 
+#include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* The registry: one ops table per SolidKind; solid_register fills the
@@ -105,13 +107,49 @@ void solid_set_time(Solid *s, double t) {
     s->ops->set_time(s->impl, t);
 }
 
+/* The first point (lowest index: the same on any thread count) whose
+ * displacement or velocity is not finite or whose speed is a runaway's. */
+static int check_points(const Solid *s) {
+    const PdPoints *p = &s->points;
+    const double limit2 = SOLID_RUNAWAY_SPEED * SOLID_RUNAWAY_SPEED;
+    int64_t first = p->n;
+#pragma omp parallel for schedule(static) reduction(min : first) if (p->n >= 65536)
+    for (int64_t i = 0; i < p->n; i++) {
+        double u2 = 0.0, v2 = 0.0;
+        for (int d = 0; d < p->dim; d++) {
+            u2 += p->u[d][i] * p->u[d][i];
+            v2 += p->v[d][i] * p->v[d][i];
+        }
+        /* NaN fails every comparison: !(x <= limit) catches it */
+        if (!(u2 <= DBL_MAX) || !(v2 <= limit2)) first = i < first ? i : first;
+    }
+    if (first == p->n) return NSPD_OK;
+    const int64_t i = first;
+    double speed = 0.0, disp = 0.0;
+    for (int d = 0; d < p->dim; d++) {
+        speed += p->v[d][i] * p->v[d][i];
+        disp += p->u[d][i] * p->u[d][i];
+    }
+    char where[128];
+    if (p->dim == 3)
+        snprintf(where, sizeof where, "(%g, %g, %g)", p->x[0][i], p->x[1][i], p->x[2][i]);
+    else
+        snprintf(where, sizeof where, "(%g, %g)", p->x[0][i], p->x[1][i]);
+    return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                     "the solid blew up by t = %g s: point %lld at %s m has displacement %g m "
+                     "and speed %g m/s (limit %g m/s); expected a smaller time step (time.dt, "
+                     "time.safety_factor)",
+                     solid_time(s), (long long)i, where, sqrt(disp), sqrt(speed),
+                     SOLID_RUNAWAY_SPEED);
+}
+
 int solid_advance(Solid *s, double dt, double max_substep) {
     int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
     if (n < 1) n = 1;
     double h = dt / (double)n;
     for (int64_t k = 0; k < n; k++) TRY(s->ops->step(s->impl, h));
     s->last_substeps = n;
-    return NSPD_OK;
+    return check_points(s);
 }
 
 int64_t solid_last_substeps(const Solid *s) {
@@ -180,6 +218,14 @@ void solid_fields(Solid *s, const double *damage, FieldSet *out) {
                                                       .hi = 1.0,
                                                       .map = COLORMAP_VIRIDIS,
                                                       .overlay_map = COLORMAP_INFERNO};
+}
+
+int solid_checkpoint(Solid *s, Checkpoint *ck) {
+    if (!s->ops->checkpoint)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the solid model '%s' cannot be checkpointed",
+                         s->ops->name);
+    TRY(checkpoint_io_int64(ck, "solid.last_substeps", &s->last_substeps));
+    return s->ops->checkpoint(s->impl, ck);
 }
 
 void *solid_impl(Solid *s, SolidKind kind) {

@@ -16,6 +16,7 @@
 #ifndef NSPD_SOLID_SOLID_H
 #define NSPD_SOLID_SOLID_H
 
+#include "core/checkpoint.h"
 #include "core/fields.h"
 #include "core/report.h"
 #include "solid/pd_config.h"
@@ -92,6 +93,10 @@ typedef struct {
     /* optional (NULL: none): fields beyond the shared ones (stress, plastic
      * strain), appended to *out */
     void (*fields)(const void *impl, FieldSet *out);
+    /* writes or reads (checkpoint_reading) everything a step changes, so a
+     * model built from the same case continues bit for bit; NULL: the model
+     * cannot be checkpointed */
+    int (*checkpoint)(void *impl, Checkpoint *ck);
 } SolidOps;
 
 /* Adds a model to the registry (before any solid is created; not thread
@@ -113,8 +118,14 @@ const PdPoints *solid_points_const(const Solid *s);
 double solid_stable_dt(const Solid *s);
 double solid_time(const Solid *s);
 void solid_set_time(Solid *s, double t);
-/* Advances by dt in n = ceil(dt / max_substep) equal sub-steps (n >= 1). */
+/* Advances by dt in n = ceil(dt / max_substep) equal sub-steps (n >= 1),
+ * then checks the points: NSPD_ERR_NUMERIC naming the first point whose
+ * displacement or velocity is not finite or whose speed exceeds
+ * SOLID_RUNAWAY_SPEED (a blown-up integration), with its coordinates. */
 int solid_advance(Solid *s, double dt, double max_substep);
+/* m/s: no material point of a physical run moves this fast (meteoroid
+ * impacts are below 1e5 m/s); a point that does has blown up. */
+#define SOLID_RUNAWAY_SPEED 1e6
 int64_t solid_last_substeps(const Solid *s);
 
 /* The damage field (0..1 per point), computed into the handle's scratch
@@ -137,6 +148,10 @@ void solid_brief(const Solid *s, char *buf, size_t size);
  * damage, volume on the current positions); `damage` is solid_damage's
  * array of this state, computed once by the caller, who needs it too. */
 void solid_fields(Solid *s, const double *damage, FieldSet *out);
+
+/* Writes or reads the solid's state (solid.h SolidOps.checkpoint):
+ * NSPD_ERR_INPUT for a model that cannot be checkpointed. */
+int solid_checkpoint(Solid *s, Checkpoint *ck);
 
 /* The concrete model if the solid is of `kind`, else NULL: for the couplings
  * tied to one representation (they refuse other kinds at create). */

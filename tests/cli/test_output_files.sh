@@ -1,4 +1,4 @@
-# Output files never lie (io/out_file.h): a write that fails - past a file
+# Output files never lie (core/out_file.h): a write that fails - past a file
 # size limit, on a full disk - leaves no partial file under a result's name,
 # the .pvd lists only complete files, the message gives the OS's reason,
 # the run stops with status 1 and summary.json says it is incomplete and

@@ -60,5 +60,18 @@ status=$?
 grep -q '"interrupted": true' "$work/stopped/summary.json" 2>/dev/null && ok || fail "summary not marked interrupted"
 [ -s "$work/stopped/solid_00001.vtu" ] && ok || fail "no final field output after Ctrl-C"
 
+# A solid that blows up (a time step 10x the stable one) stops the run where
+# it happens: status 1, the point, its coordinates and the step named, the
+# outputs before kept, summary.json incomplete and why.
+"$nspd" run "$src/cases/plate_crack.yaml" -o "$work/blowup" --quiet --set solid.spacing=5e-4 \
+    --set solid.thickness=5e-4 --set time.dt=1e-6 --set time.end=1e-4 2>"$work/err"
+status=$?
+[ $status -eq 1 ] && ok || fail "blown-up solid: exit $status, expected 1"
+grep -q "the solid blew up by t = .*: point [0-9]* at (.*) m has displacement .* (in step [0-9]*, from t" \
+    "$work/err" && ok || fail "blown-up solid: message '$(cat "$work/err")'"
+grep -q '"completed": false' "$work/blowup/summary.json" && grep -q '"stopped_by": "the solid blew up' \
+    "$work/blowup/summary.json" && ok || fail "blown-up solid: summary.json does not say why it stopped"
+[ -s "$work/blowup/solid_00000.vtu" ] && ok || fail "blown-up solid: the outputs before were not kept"
+
 echo "$((count - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -34,24 +34,10 @@ if [ "$mode" = check ] && [ "$(cat "$data/MACHINE" 2>/dev/null)" != "$signature"
     exit 77
 fi
 
-# The runs: one line each, "case|override;override;...". The resolutions are
-# the coarse ones the verify tests use, shortened so all of them take well
-# under a minute on two cores.
-runs() {
-    cat <<'RUNS'
-plate_crack|solid.spacing=5e-4;solid.thickness=5e-4;time.dt=6.6835e-8;solid.material.critical_stretch=0.02;solid.geometry=[{shape: rectangle, min: [-0.025, -0.0265], max: [0.025, 0.0265]}];output.probes.1.region=[{shape: rectangle, min: [-0.025, 0.0], max: [0.025, 5.0e-4]}];time.end=8.35e-6;output.field_interval=4.175e-6;output.history_interval=3.3417e-7
-block_3d|solid.spacing=1e-3;time.end=2e-6;output.field_interval=1e-6;output.history_interval=2e-7
-sod|flow.grid.x.segments=[{length: 1.0, cells: 100}];output.field_interval=0.1
-lax|flow.grid.x.segments=[{length: 1.0, cells: 100}];output.field_interval=0.07
-vortex|flow.grid.x.segments=[{length: 10.0, cells: 24}];flow.grid.y.segments=[{length: 10.0, cells: 24}];time.end=1.0;output.field_interval=0.5
-couette|flow.grid.y.segments=[{length: 1.0, cells: 16}];time.end=2.0;output.field_interval=1.0
-blasius|flow.grid.x.segments=[{length: 1.0, spacing_start: 0.2, spacing_end: 0.05}, {length: 1.0, spacing_start: 0.05, spacing_end: 0.1}];flow.grid.y.segments=[{length: 1.2, spacing_start: 0.01, spacing_end: 0.2}];time.end=0.5;output.field_interval=0.25
-cylinder_ma2_re300|flow.grid.x.segments=[{length: 0.6, spacing_start: 0.08, spacing_end: 0.0625}, {length: 2.2, spacing: 0.0625}, {length: 7.2, spacing_start: 0.0625, spacing_end: 0.5}];flow.grid.y.segments=[{length: 4.6, spacing_start: 0.5, spacing_end: 0.0625}, {length: 2.8, spacing: 0.0625}, {length: 4.6, spacing_start: 0.0625, spacing_end: 0.5}];flow.bodies.0.markers=104;time.end=1.0;output.average_from=0.5;output.field_interval=0.5
-naca0012_ma05_re5000|flow.grid.x.segments=[{length: 9.97, spacing_start: 0.5, spacing_end: 0.0625}, {length: 1.33, spacing: 0.0625}, {length: 18.7, spacing_start: 0.0625, spacing_end: 0.5}];flow.grid.y.segments=[{length: 9.7, spacing_start: 0.5, spacing_end: 0.0625}, {length: 0.6, spacing: 0.0625}, {length: 9.7, spacing_start: 0.0625, spacing_end: 0.5}];flow.bodies.0.markers=100;time.end=0.5;output.average_from=0.25;output.field_interval=0.25
-panel_shock|solid.spacing=2.5e-4;solid.thickness=2.5e-4;solid.geometry=[{shape: rectangle, min: [0.1, -7.5e-4], max: [0.101, 0.05]}];flow.grid.x.segments=[{length: 0.095, spacing_start: 2.0e-3, spacing_end: 5.0e-4}, {length: 0.02, spacing: 5.0e-4}, {length: 0.185, spacing_start: 5.0e-4, spacing_end: 2.0e-3}];flow.grid.y.segments=[{length: 0.065, spacing: 2.0e-3}];time.end=2.0e-4;output.history_interval=2.0e-5;output.field_interval=1.0e-4
-cylinder_crack_ma17|solid.spacing=0.025;flow.grid.x.segments=[{length: 1.3, spacing_start: 0.5, spacing_end: 0.0625}, {length: 1.4, spacing: 0.0625}, {length: 7.3, spacing_start: 0.0625, spacing_end: 0.5}];flow.grid.y.segments=[{length: 5.3, spacing_start: 0.5, spacing_end: 0.0625}, {length: 1.4, spacing: 0.0625}, {length: 5.3, spacing_start: 0.0625, spacing_end: 0.5}];time.end=2e-3;output.field_interval=1e-3;output.history_interval=2e-4
-RUNS
-}
+# The runs: tests/golden/runs.txt, one line each, "case|override;override;...".
+# The resolutions are the coarse ones the verify tests use, shortened so all
+# of them take well under a minute on two cores (tests/cli/test_resume.sh
+# runs some of them too).
 
 # Runs one case into $2 with the overrides of its line ($1).
 run_case() {
@@ -88,7 +74,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 count=0
-runs >"$work/runs"
+cp "$src/tests/golden/runs.txt" "$work/runs"
 while IFS= read -r line; do
     name=${line%%|*}
     count=$((count + 1))

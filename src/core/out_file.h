@@ -8,8 +8,8 @@
  *
  * history.csv is the one output that is not written this way: it grows by a
  * row per sample while the run goes on (io/run_files.h). */
-#ifndef NSPD_IO_OUT_FILE_H
-#define NSPD_IO_OUT_FILE_H
+#ifndef NSPD_CORE_OUT_FILE_H
+#define NSPD_CORE_OUT_FILE_H
 
 #include <stdio.h>
 

@@ -1,4 +1,4 @@
-#include "io/out_file.h"
+#include "core/out_file.h"
 
 #include "core/status.h"
 

@@ -1,0 +1,188 @@
+# ctest-labels: release
+# A run stopped by a signal (SIGTERM, SIGUSR1: checkpoint, outputs, exit
+# 130) or killed outright (SIGKILL at a random step) and continued with
+# `nspd run ... --resume` ends with every file bit for bit as the run that
+# was never stopped: history.csv, every field file, picture, table and
+# .pvd series, and summary.json but for the keys that measure the machine.
+# The stopped runs use 2 threads and the resumed ones 1 (or the other way
+# round): a checkpoint does not depend on the thread count. Three kinds of
+# run: solid only (plate), flow only (cylinder, a fixed body), coupled
+# (panel). Then the refusals: another case, another binary, no checkpoint,
+# and a damaged newest checkpoint (the one before is used).
+# Release build only: the runs are ~10 s in all here, minutes under ASan
+# (tests/unit/core/test_checkpoint.c covers the file format there).
+#   usage: test_resume.sh NSPD SOURCE_DIR
+set -u
+nspd=$1
+src=$2
+work=$(mktemp -d)
+trap '[ -n "${NSPD_KEEP_WORK:-}" ] && echo "kept $work" || rm -rf "$work"' EXIT
+failures=0
+count=0
+ok() { count=$((count + 1)); }
+fail() { count=$((count + 1)); failures=$((failures + 1)); echo "FAIL $*"; }
+random() { echo $(($(od -An -N2 -tu2 /dev/urandom) % $1)); }
+
+# The coarse runs of the golden set (tests/golden/runs.txt), lengthened and
+# checkpointed by the overrides after the case name, which come last and win.
+case_args() {
+    name=$1
+    shift
+    line=$(grep "^$name|" "$src/tests/golden/runs.txt")
+    set -- "$src/cases/$name.yaml" --quiet
+    old_ifs=$IFS
+    IFS=';'
+    for s in ${line#*|}; do set -- "$@" --set "$s"; done
+    IFS=$old_ifs
+    printf '%s\n' "$@"
+}
+
+# nspd run with the case's arguments (one per line in $work/args.$1) and
+# the options given, replacing the calling (sub)shell: `start` leaves the
+# pid of nspd itself in $pid, for the signals.
+exec_run() {
+    name=$1
+    shift
+    IFS='
+'
+    set -f
+    set -- "$@" $(cat "$work/args.$name")
+    exec "$nspd" run "$@"
+}
+run() { (exec_run "$@"); }
+start() {
+    exec_run "$@" &
+    pid=$!
+}
+
+# Waits until the run pid in dir has written n checkpoints (its log says
+# so, a line each) or has ended.
+wait_checkpoints() {
+    dir=$1 n=$2 pid=$3
+    while kill -0 "$pid" 2>/dev/null; do
+        c=$(grep -c '^checkpoint at step' "$dir/log.txt" 2>/dev/null)
+        [ "${c:-0}" -ge "$n" ] && return 0
+        sleep 0.01
+    done
+    return 1
+}
+
+# Every file of the uninterrupted run ($1) is in $2, the same bytes;
+# summary.json the same but for the machine's keys; nothing else but
+# checkpoints and the log in $2.
+same_results() {
+    a=$1 b=$2 what=$3
+    bad=""
+    for f in $(ls "$a"); do
+        case "$f" in checkpoint_* | log.txt) continue ;; esac
+        if [ "$f" = summary.json ]; then
+            for d in "$a" "$b"; do
+                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|threads|peak_rss_mb|[a-z_]+_per_s)":' \
+                    "$d/summary.json" >"$d.summary"
+            done
+            cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
+        else
+            cmp -s "$a/$f" "$b/$f" || bad="$bad $f"
+        fi
+    done
+    extra=$(ls "$b" | grep -v -e '^checkpoint_' -e '^log.txt$' | while read -r f; do
+        [ -e "$a/$f" ] || echo "$f"
+    done)
+    if [ -z "$bad$extra" ]; then
+        ok
+    else
+        fail "$what: differs from the uninterrupted run in:$bad${extra:+; extra files: $extra}"
+    fi
+}
+
+# One kind of run: uninterrupted (1 thread), stopped by $signal after the
+# first checkpoint and resumed (2 threads, then 1), killed by SIGKILL at a
+# random moment after a random checkpoint and resumed (1 thread, then 2).
+check_kind() {
+    name=$1 signal=$2
+    shift 2
+    { case_args "$name"; for s in "$@"; do printf -- '--set\n%s\n' "$s"; done; } >"$work/args.$name"
+    run "$name" -o "$work/$name.ref" --threads 1 || { fail "$name: the uninterrupted run failed"; return; }
+
+    start "$name" -o "$work/$name.sig" --threads 2
+    if wait_checkpoints "$work/$name.sig" 1 "$pid"; then
+        kill -s "$signal" "$pid"
+        wait "$pid"
+        st=$?
+        [ "$st" -eq 130 ] && ok || fail "$name: stopped by $signal, exit status $st; expected 130"
+        grep -q "stopped by SIG$signal" "$work/$name.sig/log.txt" && ok ||
+            fail "$name: the log does not say it was stopped by $signal"
+        run "$name" -o "$work/$name.sig" --threads 1 --resume &&
+            same_results "$work/$name.ref" "$work/$name.sig" "$name ($signal, resumed)" ||
+            fail "$name: the resumed run failed after $signal"
+    else
+        fail "$name: the run ended before its first checkpoint; lengthen it"
+    fi
+
+    k=$(($(random 3) + 1))
+    delay=$(random 100) # ms
+    start "$name" -o "$work/$name.kill" --threads 1
+    if wait_checkpoints "$work/$name.kill" "$k" "$pid"; then
+        sleep "0.$(printf %03d "$delay")"
+        kill -KILL "$pid"
+        wait "$pid"
+        last=$(tail -1 "$work/$name.kill/history.csv" | cut -d, -f1)
+        run "$name" -o "$work/$name.kill" --threads 2 --resume &&
+            same_results "$work/$name.ref" "$work/$name.kill" \
+                "$name (SIGKILL $delay ms after checkpoint $k, last row step $last, resumed)" ||
+            fail "$name: the resumed run failed after SIGKILL"
+    else
+        fail "$name: the run ended before checkpoint $k; lengthen it"
+    fi
+}
+
+check_kind plate_crack TERM time.end=3.34e-5 output.checkpoint_interval=2e-6
+check_kind cylinder_ma2_re300 USR1 time.end=3.0 output.checkpoint_interval=0.2
+check_kind panel_shock TERM time.end=3.0e-4 output.checkpoint_interval=2.0e-5
+
+# --- refusals, each with exit status 2 and nothing changed
+name=plate_crack
+dir=$work/$name.sig
+before=$(cat "$dir/history.csv" | cksum)
+run "$name" -o "$dir" --resume --set solid.material.density=8001 2>"$work/err"
+st=$?
+[ "$st" -eq 2 ] && grep -q "written for another case" "$work/err" && ok ||
+    fail "another case: exit $st, $(cat "$work/err")"
+mkdir -p "$work/bin"
+cp "$nspd" "$work/bin/nspd" && printf 'x' >>"$work/bin/nspd" # another binary, still runnable
+(nspd=$work/bin/nspd && exec_run "$name" -o "$dir" --resume) 2>"$work/err"
+st=$?
+[ "$st" -eq 2 ] && grep -q "another nspd binary" "$work/err" && ok ||
+    fail "another binary: exit $st, $(cat "$work/err")"
+[ "$(cat "$dir/history.csv" | cksum)" = "$before" ] && ok || fail "a refused resume changed history.csv"
+mkdir -p "$work/empty"
+run "$name" -o "$work/empty" --resume 2>"$work/err"
+st=$?
+[ "$st" -eq 2 ] && grep -q "holds no checkpoint" "$work/err" && ok ||
+    fail "no checkpoint: exit $st, $(cat "$work/err")"
+run "$name" -o "$work/missing" --resume 2>"$work/err"
+st=$?
+[ "$st" -eq 2 ] && grep -q "does not exist" "$work/err" && ok ||
+    fail "no directory: exit $st, $(cat "$work/err")"
+run "$name" -o "$work/x" --resume --force 2>"$work/err"
+[ $? -eq 2 ] && ok || fail "--resume with --force accepted"
+
+# A damaged newest checkpoint: the one before it continues the run.
+start "$name" -o "$work/dmg" --threads 2
+if wait_checkpoints "$work/dmg" 2 "$pid"; then
+    kill -TERM "$pid"
+    wait "$pid"
+    newest=$(ls "$work/dmg" | grep '^checkpoint_' | sort | tail -1)
+    size=$(wc -c <"$work/dmg/$newest")
+    printf 'X' | dd of="$work/dmg/$newest" bs=1 seek=$((size / 2)) conv=notrunc 2>/dev/null
+    run "$name" -o "$work/dmg" --threads 1 --resume 2>"$work/err" &&
+        same_results "$work/$name.ref" "$work/dmg" "$name (damaged newest checkpoint)" ||
+        fail "damaged newest checkpoint: the resumed run failed: $(cat "$work/err")"
+    grep -q "passing over.*damaged" "$work/dmg/log.txt" && ok ||
+        fail "damaged newest checkpoint: the log does not say it was passed over"
+else
+    fail "the run ended before its second checkpoint"
+fi
+
+echo "$((count - failures)) of $count checks passed"
+[ "$failures" -eq 0 ]
