@@ -214,6 +214,7 @@ int sim_resume(Sim *sim, const char *dir) {
                          "the directory of a run that wrote one (output.checkpoint_interval, "
                          "output.checkpoint_wall_interval, or stopped by a signal)",
                          dir);
+    const double t0 = nspd_wall_time();
     for (int k = 0; k < count; k++) {
         char path[4200];
         checkpoint_path(dir, steps[k], path, sizeof path);
@@ -234,8 +235,8 @@ int sim_resume(Sim *sim, const char *dir) {
         }
         TRY(checkpoint_close(&ck));
         sim->resumed = true;
-        nspd_log(LOG_INFO, "resuming from %s: step %lld, t = %g s", path, (long long)sim->step,
-                 sim->time);
+        nspd_log(LOG_INFO, "resuming from %s: step %lld, t = %g s (read in %.2f s)", path,
+                 (long long)sim->step, sim->time, nspd_wall_time() - t0);
         return NSPD_OK;
     }
     return NSPD_OK;
