@@ -15,7 +15,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-enum { MAX_INPUT = 1 << 20 }; /* the corpora hold files of at most 64 kB */
+enum { REPLAY_MAX_BYTES = 1 << 20 }; /* the corpora hold files of at most 64 kB */
 
 static int replay_file(const char *path) {
     FILE *f = fopen(path, "rb");
@@ -23,16 +23,16 @@ static int replay_file(const char *path) {
         fprintf(stderr, "replay: cannot open '%s'\n", path);
         return -1;
     }
-    unsigned char *data = malloc(MAX_INPUT);
+    unsigned char *data = malloc(REPLAY_MAX_BYTES);
     if (!data) {
         fclose(f);
         return -1;
     }
-    const size_t size = fread(data, 1, MAX_INPUT, f);
+    const size_t size = fread(data, 1, REPLAY_MAX_BYTES, f);
     const int bad = ferror(f) || !feof(f);
     fclose(f);
     if (bad) {
-        fprintf(stderr, "replay: cannot read '%s' whole (over %d bytes?)\n", path, MAX_INPUT);
+        fprintf(stderr, "replay: cannot read '%s' whole (over %d bytes?)\n", path, REPLAY_MAX_BYTES);
         free(data);
         return -1;
     }
