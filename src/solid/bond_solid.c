@@ -128,7 +128,7 @@ static int bond_checkpoint(void *impl, Checkpoint *ck) {
                                             {"bond.v0", "bond.v1", "bond.v2"},
                                             {"bond.force0", "bond.force1", "bond.force2"},
                                             {"bond.external0", "bond.external1", "bond.external2"}};
-    for (int d = 0; d < b->dim; d++) {
+    for (int d = 0; d < b->dim && d < 3; d++) { /* dim is 2 or 3 */
         TRY(checkpoint_io(ck, NAMES[0][d], b->u[d], n));
         TRY(checkpoint_io(ck, NAMES[1][d], b->v[d], n));
         TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
