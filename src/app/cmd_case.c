@@ -153,18 +153,37 @@ int cmd_info(int argc, char **argv) {
 /* Output files nspd writes, for --force to clear before a new run: every
  * series of docs/CASES.md, and any "*.part" a stopped run left half
  * written (core/out_file.h). */
+static bool is_part_file(const char *name) {
+    const size_t len = strlen(name);
+    return len > 5 && strcmp(name + len - 5, ".part") == 0;
+}
+
 static bool is_output_file(const char *name) {
     static const char *const exact[] = {"case.yaml", "log.txt",  "history.csv", "summary.json",
                                         "solid.pvd", "flow.pvd", NULL};
     static const char *const prefix[] = {"solid_",     "damage_",  "line_",       "flow_", "mach_",
                                          "schlieren_", "surface_", "checkpoint_", NULL};
-    const size_t len = strlen(name);
-    if (len > 5 && strcmp(name + len - 5, ".part") == 0) return true;
+    if (is_part_file(name)) return true;
     for (int i = 0; exact[i]; i++)
         if (strcmp(name, exact[i]) == 0) return true;
     for (int i = 0; prefix[i]; i++)
         if (strncmp(name, prefix[i], strlen(prefix[i])) == 0) return true;
     return false;
+}
+
+/* Removes the files of dir whose names `match`. */
+static int remove_files(const char *dir, bool (*match)(const char *name)) {
+    DIR *d = opendir(dir);
+    if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
+    struct dirent *e;
+    char path[8192];
+    while ((e = readdir(d)))
+        if (match(e->d_name)) {
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            remove(path);
+        }
+    closedir(d);
+    return NSPD_OK;
 }
 
 static int make_dirs(const char *path) {
@@ -225,17 +244,7 @@ static int prepare_dir(const char *dir, bool force, int *lock_fd) {
                              dir);
         /* a live run's directory is refused before any of its files is touched */
         TRY(lock_dir(dir, lock_fd));
-        DIR *d = opendir(dir);
-        if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
-        struct dirent *e;
-        char path[8192];
-        while ((e = readdir(d)))
-            if (is_output_file(e->d_name)) {
-                snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-                remove(path);
-            }
-        closedir(d);
-        return NSPD_OK;
+        return remove_files(dir, is_output_file);
     }
     TRY(make_dirs(dir));
     return lock_dir(dir, lock_fd);
@@ -251,19 +260,7 @@ static int reopen_dir(const char *dir, int *lock_fd) {
                          dir);
     TRY(lock_dir(dir, lock_fd));
     /* what a killed run left half written is never a result */
-    DIR *d = opendir(dir);
-    if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
-    struct dirent *e;
-    char path[8192];
-    while ((e = readdir(d))) {
-        const size_t len = strlen(e->d_name);
-        if (len > 5 && strcmp(e->d_name + len - 5, ".part") == 0) {
-            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-            remove(path);
-        }
-    }
-    closedir(d);
-    return NSPD_OK;
+    return remove_files(dir, is_part_file);
 }
 
 int cmd_run(int argc, char **argv) {
