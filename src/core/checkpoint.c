@@ -8,7 +8,9 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 static const char MAGIC[8] = {'N', 'S', 'P', 'D', 'C', 'K', 'P', 'T'};
 enum { STREAM_BUFFER = 1 << 20 };
@@ -138,6 +140,22 @@ int checkpoint_open(Checkpoint **out, const char *path, CheckpointHeader *header
     return NSPD_OK;
 }
 
+/* fsync of the directory holding `path` (its new entry); best effort: some
+ * file systems refuse it, and the file itself is already on the disk. */
+static void sync_directory(const char *path) {
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        *slash = '\0';
+    else
+        snprintf(dir, sizeof dir, ".");
+    const int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    (void)fsync(fd);
+    close(fd);
+}
+
 int checkpoint_close(Checkpoint **p) {
     Checkpoint *ck = *p;
     if (!ck) return NSPD_OK;
@@ -153,7 +171,12 @@ int checkpoint_close(Checkpoint **p) {
     } else {
         const uint64_t sum = hash64_final(&ck->hash);
         if (!ck->failed && fwrite(&sum, sizeof sum, 1, ck->out.f) != 1) ck->failed = true;
+        /* on the disk before it takes the real name, and the name with it:
+         * a checkpoint is what a crash of the machine leaves to resume from */
+        if (!ck->failed && (fflush(ck->out.f) != 0 || fsync(fileno(ck->out.f)) != 0))
+            ck->failed = true;
         status = out_file_close(&ck->out, ck->failed);
+        if (status == NSPD_OK) sync_directory(ck->path);
     }
     nspd_free(p);
     return status;

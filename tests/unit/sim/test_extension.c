@@ -344,6 +344,27 @@ static const CouplingOps COUNTER_OPS = {
     .fields = counter_fields,
 };
 
+/* The same coupling, whose load on the solid stops being finite after its
+ * third step (a broken-down flow next to the solid). */
+static void nan_loads(const void *impl, CouplingLoads *out) {
+    const bool broken = ((const Counter *)impl)->after >= 3;
+    out->force_on_solid[0] = broken ? (double)NAN : 0.0;
+    out->force_on_solid[1] = 0.0;
+}
+
+static const CouplingOps NAN_LOADS_OPS = {
+    .name = "nan_loads",
+    .create = counter_create,
+    .destroy = counter_destroy,
+    .before_flow = counter_before,
+    .after_flow = counter_after,
+    .solid_dt_limit = counter_limit,
+    .loads = nan_loads,
+    .history = counter_history,
+    .summary = counter_summary,
+    .fields = counter_fields,
+};
+
 /* ------------------------------------------------ the tests */
 
 static const UniformConfig UNIFORM = {4, 1.2, 3.0, 1e5};
@@ -419,10 +440,59 @@ static void test_ghost_cells_refuse_another_flow(void **state) {
     assert_non_null(strstr(nspd_error_message(), "GKS"));
 }
 
+/* A load that is not finite stops the run in the step it appears, whatever
+ * the coupling, and summary.json says why. */
+static void test_non_finite_load_stops_the_run(void **state) {
+    (void)state;
+    SimConfig c;
+    config(&c, flow_register(&UNIFORM_FLOW_OPS), solid_register(&RIGID_SOLID_OPS),
+           coupling_register(&NAN_LOADS_OPS));
+    Sim sim;
+    assert_ok(sim_create(&sim, &c));
+    const char *dir = test_scratch_dir("extension_nan");
+    SimRunOptions opt = {dir, false};
+    assert_int_equal(sim_run(&sim, &opt), NSPD_ERR_NUMERIC);
+    assert_int_equal(sim.step, 2); /* the third step failed */
+    assert_non_null(strstr(nspd_error_message(),
+                           "the nan_loads coupling's load on the solid is not finite (nan, 0)"));
+    assert_non_null(strstr(nspd_error_message(), "in step 3, from t = 0.2 s"));
+    sim_destroy(&sim);
+    char path[4200];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    char *summary = test_read_file(path);
+    assert_non_null(summary);
+    assert_non_null(strstr(summary, "\"completed\": false"));
+    assert_non_null(strstr(summary, "\"stopped_by\": \"the nan_loads coupling"));
+    free(summary);
+}
+
+/* A model without a checkpoint operation: asking for a checkpoint is an
+ * input error that names it, and nothing is left behind. */
+static void test_checkpoint_of_a_model_without_one(void **state) {
+    (void)state;
+    SimConfig c;
+    config(&c, flow_register(&UNIFORM_FLOW_OPS), SOLID_NONE, COUPLING_NONE);
+    Sim sim;
+    assert_ok(sim_create(&sim, &c));
+    const char *dir = test_scratch_dir("extension_checkpoint");
+    sim.dir = dir;
+    assert_int_equal(sim_checkpoint_write(&sim), NSPD_ERR_INPUT);
+    assert_non_null(
+        strstr(nspd_error_message(), "the flow solver 'uniform' cannot be checkpointed"));
+    char path[4200];
+    snprintf(path, sizeof path, "%s/checkpoint_000000000000.nspd.part", dir);
+    assert_null(test_read_file(path));
+    snprintf(path, sizeof path, "%s/checkpoint_000000000000.nspd", dir);
+    assert_null(test_read_file(path));
+    sim_destroy(&sim);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_registered_models_run_unchanged),
         cmocka_unit_test(test_ghost_cells_refuse_another_flow),
+        cmocka_unit_test(test_non_finite_load_stops_the_run),
+        cmocka_unit_test(test_checkpoint_of_a_model_without_one),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
