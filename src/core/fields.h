@@ -24,12 +24,15 @@ typedef struct {
     const double *data[3];
 } FieldRef;
 
-/* A picture series <file>_NNNNN.png of one field over [lo, hi]. On a grid,
- * `overlay_file` (if set) asks for a second picture, <overlay_file>_NNNNN.png,
- * with the first picture of a coupled points mesh drawn on top, coloured with
- * that picture's `overlay_map`, in a window round those points. */
+/* A picture series <file>_NNNNN.png of one field over [lo, hi], its colour
+ * bar labelled "label [units]" ("Mach number [-]", "pressure [Pa]"). On a
+ * grid, `overlay_file` (if set) asks for a second picture,
+ * <overlay_file>_NNNNN.png, with the first picture of a coupled points mesh
+ * drawn on top, coloured with that picture's `overlay_map` and labelled
+ * with its label and units on a second bar, in a window round those points. */
 typedef struct {
     const char *file;
+    const char *label, *units;
     const double *values;
     double lo, hi;
     ColormapKind map;

@@ -374,13 +374,20 @@ static void gks_fields(void *impl, FieldSet *out) {
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         out->field[out->field_count++] = fields[k];
     out->picture[out->picture_count++] = (PictureRef){.file = "mach",
+                                                      .label = "Mach number",
+                                                      .units = "-",
                                                       .values = c[5],
                                                       .lo = 0.0,
                                                       .hi = mach_max > 0 ? mach_max : 1.0,
                                                       .map = COLORMAP_VIRIDIS,
                                                       .overlay_file = "mach_damage"};
-    out->picture[out->picture_count++] = (PictureRef){
-        .file = "schlieren", .values = c[6], .lo = 0.0, .hi = 1.0, .map = COLORMAP_GRAY};
+    out->picture[out->picture_count++] = (PictureRef){.file = "schlieren",
+                                                      .label = "schlieren exp(-15 |∇ρ| / max |∇ρ|)",
+                                                      .units = "-",
+                                                      .values = c[6],
+                                                      .lo = 0.0,
+                                                      .hi = 1.0,
+                                                      .map = COLORMAP_GRAY};
 }
 
 const FlowOps GKS_FLOW_OPS = {

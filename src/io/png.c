@@ -34,15 +34,6 @@ void image_fill_rect(Image *img, int x0, int y0, int x1, int y1, const uint8_t r
         }
 }
 
-void image_colorbar(Image *img, ColormapKind kind, int x0, int y0, int x1, int y1) {
-    for (int y = y0; y < y1; y++) {
-        uint8_t rgb[3];
-        colormap_rgb(kind, 1.0 - (double)(y - y0) / (double)(y1 - y0 - 1 > 0 ? y1 - y0 - 1 : 1),
-                     rgb);
-        image_fill_rect(img, x0, y, x1, y + 1, rgb);
-    }
-}
-
 int image_write_png(const Image *img, const char *path) {
     OutFile out;
     TRY(out_file_open(&out, path));

@@ -3,9 +3,26 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "core/search.h" /* the cell of a pixel */
-#include "io/png.h"
+#include "io/figure.h"
 
 #include <math.h>
+
+enum { WHITE = 0xffffff, GREY = 0x808080 }; /* no data; a body's cells */
+
+/* The figure of a plot raster and its colour scale(s). */
+static Figure figure_of(const RenderOptions *opt, const uint32_t *plot, int w, int h, double x0,
+                        double y_top, double scale) {
+    Figure fig = {.title = opt->title,
+                  .w = w,
+                  .h = h,
+                  .plot = plot,
+                  .x0 = x0,
+                  .y_top = y_top,
+                  .pixels_per_m = scale,
+                  .bar_count = 1};
+    fig.bar[0] = (FigureScale){opt->label, opt->units, opt->vmin, opt->vmax, opt->colormap};
+    return fig;
+}
 
 int render_points_png(const char *path, int64_t n, const double *const pos[2], const double *values,
                       double spacing, const RenderOptions *opt) {
@@ -25,8 +42,6 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
     double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     double scale = opt->max_pixels / extent; /* pixels per metre */
     int w = (int)ceil((hi[0] - lo[0]) * scale), h = (int)ceil((hi[1] - lo[1]) * scale);
-    int margin = 8, bar = 16, gap = 12;
-    int width = w + 2 * margin + gap + bar, height = h + 2 * margin;
 
     /* per-pixel maximum of the normalised value; -1 = no point */
     float *best;
@@ -46,29 +61,30 @@ int render_points_png(const char *path, int64_t n, const double *const pos[2], c
             for (int x = x0 < 0 ? 0 : x0; x < x1 && x < w; x++)
                 if (t > best[(int64_t)y * w + x]) best[(int64_t)y * w + x] = t;
     }
-    Image img;
-    const uint8_t white[3] = {255, 255, 255};
-    int status = image_create(&img, width, height, white);
-    if (status == NSPD_OK) {
-        for (int y = 0; y < h; y++)
-            for (int x = 0; x < w; x++) {
-                float t = best[(int64_t)y * w + x];
-                if (t < 0) continue;
-                uint8_t rgb[3];
-                colormap_rgb(opt->colormap, (double)t, rgb);
-                image_fill_rect(&img, margin + x, margin + y, margin + x + 1, margin + y + 1, rgb);
-            }
-        image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,
-                       margin + h);
-        status = image_write_png(&img, path);
-        image_destroy(&img);
+    uint32_t *plot;
+    int status = nspd_alloc(&plot, (size_t)w * (size_t)h, sizeof(uint32_t));
+    if (status != NSPD_OK) {
+        nspd_free(&best);
+        return status;
+    }
+    for (int64_t p = 0; p < (int64_t)w * h; p++) {
+        uint8_t rgb[3];
+        if (best[p] < 0) {
+            plot[p] = WHITE;
+            continue;
+        }
+        colormap_rgb(opt->colormap, (double)best[p], rgb);
+        plot[p] = figure_pixel(rgb);
     }
     nspd_free(&best);
+    Figure fig = figure_of(opt, plot, w, h, lo[0], hi[1], scale);
+    status = figure_write_png(path, &fig);
+    nspd_free(&plot);
     return status;
 }
 
-/* Draws overlay points onto the plot area of img (origin at the margin). */
-static void draw_points(Image *img, int margin, int w, int h, double x0, double ytop, double scale,
+/* Draws overlay points into the plot raster. */
+static void draw_points(uint32_t *plot, int w, int h, double x0, double ytop, double scale,
                         const RenderPoints *pts) {
     double range = pts->vmax > pts->vmin ? pts->vmax - pts->vmin : 1.0;
     for (int64_t i = 0; i < pts->n; i++) {
@@ -84,7 +100,9 @@ static void draw_points(Image *img, int margin, int w, int h, double x0, double 
         yb = yb > h ? h : yb;
         uint8_t rgb[3];
         colormap_rgb(pts->colormap, (pts->values[i] - pts->vmin) / range, rgb);
-        image_fill_rect(img, margin + xa, margin + ya, margin + xb, margin + yb, rgb);
+        const uint32_t px = figure_pixel(rgb);
+        for (int y = ya; y < yb; y++)
+            for (int x = xa; x < xb; x++) plot[(int64_t)y * w + x] = px;
     }
 }
 
@@ -103,15 +121,12 @@ int render_grid_png(const char *path, int nx, int ny, const double *xf, const do
     int w = (int)ceil(lx * scale), h = (int)ceil(ly * scale);
     if (w < 1) w = 1;
     if (h < 1) h = 1;
-    int margin = 8, bar = 16, gap = 12;
-    Image img;
-    const uint8_t white[3] = {255, 255, 255}, grey[3] = {128, 128, 128};
-    int bars = overlay ? 2 : 1;
-    TRY(image_create(&img, w + 2 * margin + bars * (gap + bar), h + 2 * margin, white));
+    uint32_t *plot;
+    TRY(nspd_alloc(&plot, (size_t)w * (size_t)h, sizeof(uint32_t)));
     int *column;
     int status = nspd_alloc(&column, (size_t)w, sizeof(int));
     if (status != NSPD_OK) {
-        image_destroy(&img);
+        nspd_free(&plot);
         return status;
     }
     for (int x = 0; x < w; x++) column[x] = search_bracket(xf, 0, nx, x0 + (x + 0.5) / scale);
@@ -120,29 +135,24 @@ int render_grid_png(const char *path, int nx, int ny, const double *xf, const do
         int j = search_bracket(yf, 0, ny, y1 - (y + 0.5) / scale);
         for (int x = 0; x < w; x++) {
             int64_t cell = (int64_t)j * nx + column[x];
-            uint8_t rgb[3];
-            if (mask && mask[cell]) {
-                rgb[0] = grey[0];
-                rgb[1] = grey[1];
-                rgb[2] = grey[2];
-            } else {
+            uint32_t px = GREY;
+            if (!mask || !mask[cell]) {
+                uint8_t rgb[3];
                 colormap_rgb(opt->colormap, (values[cell] - opt->vmin) / range, rgb);
+                px = figure_pixel(rgb);
             }
-            uint8_t *p =
-                img.rgb + 3 * ((size_t)(margin + y) * (size_t)img.width + (size_t)(margin + x));
-            p[0] = rgb[0];
-            p[1] = rgb[1];
-            p[2] = rgb[2];
+            plot[(int64_t)y * w + x] = px;
         }
     }
-    if (overlay) draw_points(&img, margin, w, h, x0, y1, scale, overlay);
-    image_colorbar(&img, opt->colormap, margin + w + gap, margin, margin + w + gap + bar,
-                   margin + h);
-    if (overlay)
-        image_colorbar(&img, overlay->colormap, margin + w + 2 * gap + bar, margin,
-                       margin + w + 2 * gap + 2 * bar, margin + h);
-    status = image_write_png(&img, path);
+    if (overlay) draw_points(plot, w, h, x0, y1, scale, overlay);
+    Figure fig = figure_of(opt, plot, w, h, x0, y1, scale);
+    if (overlay) {
+        fig.bar_count = 2;
+        fig.bar[1] = (FigureScale){overlay->label, overlay->units, overlay->vmin, overlay->vmax,
+                                   overlay->colormap};
+    }
+    status = figure_write_png(path, &fig);
     nspd_free(&column);
-    image_destroy(&img);
+    nspd_free(&plot);
     return status;
 }

@@ -3,6 +3,7 @@
 #include "core/status.h"
 #include "io/json.h"
 #include "core/out_file.h"
+#include "io/figure.h" /* figure_format_time */
 #include "io/render.h"
 
 #include <errno.h>
@@ -163,11 +164,24 @@ static void overlay_window(const FieldSet *pts, double window[4]) {
     window[3] = hi[1] + size;
 }
 
-static int write_picture(const char *dir, int index, const FieldSet *fs, const PictureRef *pic,
-                         const FieldSet *overlay, int max_pixels) {
-    char path[4096];
+/* A picture's title: "plate_crack - damage - t = 16.7 µs". */
+static void picture_title(char *buf, size_t size, const char *case_name, const char *what,
+                          double t) {
+    char when[64];
+    figure_format_time(t, when, sizeof when);
+    snprintf(buf, size, "%s%s%s - t = %s", case_name ? case_name : "", case_name ? " - " : "", what,
+             when);
+}
+
+static int write_picture(const char *dir, int index, double t, const FieldSet *fs,
+                         const PictureRef *pic, const FieldSet *overlay,
+                         const FieldOutputOptions *opt) {
+    char path[4096], title[512];
+    const char *label = pic->label ? pic->label : pic->file;
     snprintf(path, sizeof path, "%s/%s_%05d.png", dir, pic->file, index);
-    RenderOptions ro = {pic->lo, pic->hi, pic->map, max_pixels, {0, 0, 0, 0}};
+    picture_title(title, sizeof title, opt->case_name, label, t);
+    RenderOptions ro = {pic->lo,      pic->hi, pic->map, opt->png_max_pixels,
+                        {0, 0, 0, 0}, title,   label,    pic->units};
     if (fs->mesh == MESH_POINTS)
         return render_points_png(path, fs->n, fs->position, pic->values, fs->spacing, &ro);
     TRY(render_grid_png(path, fs->nx, fs->ny, fs->face[0], fs->face[1], pic->values, fs->blank, &ro,
@@ -176,11 +190,16 @@ static int write_picture(const char *dir, int index, const FieldSet *fs, const P
         overlay->picture_count == 0)
         return NSPD_OK;
     const PictureRef *top = &overlay->picture[0];
-    RenderPoints pts = {overlay->n,      {overlay->position[0], overlay->position[1]},
-                        top->values,     overlay->spacing,
-                        top->lo,         top->hi,
-                        top->overlay_map};
+    const char *top_label = top->label ? top->label : top->file;
+    RenderPoints pts = {overlay->n,       {overlay->position[0], overlay->position[1]},
+                        top->values,      overlay->spacing,
+                        top->lo,          top->hi,
+                        top->overlay_map, top_label,
+                        top->units};
     snprintf(path, sizeof path, "%s/%s_%05d.png", dir, pic->overlay_file, index);
+    char what[256];
+    snprintf(what, sizeof what, "%s with %s", label, top_label);
+    picture_title(title, sizeof title, opt->case_name, what, t);
     overlay_window(overlay, ro.window);
     return render_grid_png(path, fs->nx, fs->ny, fs->face[0], fs->face[1], pic->values, fs->blank,
                            &ro, &pts);
@@ -213,7 +232,7 @@ int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
                     const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd) {
     if (fs->mesh != MESH_NONE && opt->vtk) TRY(write_vtk(dir, index, t, fs, pvd));
     for (int k = 0; k < fs->picture_count && opt->png && fs->mesh != MESH_NONE; k++)
-        TRY(write_picture(dir, index, fs, &fs->picture[k], overlay, opt->png_max_pixels));
+        TRY(write_picture(dir, index, t, fs, &fs->picture[k], overlay, opt));
     for (int k = 0; k < fs->table_count; k++) TRY(table_write(dir, index, t, &fs->table[k]));
     return NSPD_OK;
 }

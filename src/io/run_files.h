@@ -38,10 +38,12 @@ int summary_write(const char *dir, const Report *summary);
 typedef struct {
     bool vtk, png;
     int png_max_pixels;
+    const char *case_name; /* the pictures' titles begin with it (NULL: none) */
 } FieldOutputOptions;
 
 /* Writes the files of one output (index) of a field set at time t:
- * its VTK file (added to *pvd), its pictures and its tables. `overlay`
+ * its VTK file (added to *pvd), its pictures (titled "case - field - t = ...")
+ * and its tables. `overlay`
  * (NULL: none) is the points mesh drawn on the pictures that ask for it. */
 int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
                     const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd);

@@ -41,7 +41,7 @@ int sim_output_history(Sim *sim) {
 int sim_output_fields(Sim *sim) {
     if (!sim->dir) return NSPD_OK;
     const OutputConfig *out = &sim->cfg.output;
-    const FieldOutputOptions opt = {out->vtk, out->png, out->png_max_pixels};
+    const FieldOutputOptions opt = {out->vtk, out->png, out->png_max_pixels, sim->cfg.name};
     FieldSet solid_set, flow_set, coupling_set;
     const FieldSet *overlay = NULL;
     /* one damage field for the solid's files and the line probes */

@@ -213,6 +213,8 @@ void solid_fields(Solid *s, const double *damage, FieldSet *out) {
     out->field[out->field_count++] = (FieldRef){"volume", 1, {p->volume, NULL, NULL}};
     if (s->ops->fields) s->ops->fields(s->impl, out);
     out->picture[out->picture_count++] = (PictureRef){.file = "damage",
+                                                      .label = "damage",
+                                                      .units = "-",
                                                       .values = damage,
                                                       .lo = 0.0,
                                                       .hi = 1.0,
