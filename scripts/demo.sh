@@ -17,8 +17,11 @@ h=0.015625 # D/64
     --set flow.grid.y.segments.0.spacing_end=$h --set flow.grid.y.segments.1.spacing=$h \
     --set flow.grid.y.segments.2.spacing_start=$h \
     --set output.field_interval=1e-3
+"$nspd" movie "$out" --field mach_damage
+report_cylinder=$("$nspd" report "$out")
 echo
 echo "results in $out/:"
+echo "  mach_damage.mp4         the movie: the shock, the wake and the cracks, 1 ms a frame"
 echo "  mach_damage_00020.png   Mach number with the cylinder's damage on top at t = 20 ms"
 echo "                          (mach_damage_00000..20: every millisecond)"
 echo "  damage_00020.png        the cracks alone; schlieren_*.png: density gradients"
@@ -31,9 +34,16 @@ echo
 
 out=out/plate_crack
 "$nspd" run cases/plate_crack.yaml -o "$out" --force
+"$nspd" movie "$out" --field damage
+report_plate=$("$nspd" report "$out")
 echo
 echo "results in $out/:"
+echo "  damage.mp4              the movie of the crack running and branching"
 echo "  damage_00010.png        the crack at t = 16.7 us (damage_00000..10: every 1.67 us)"
 echo "  solid.pvd               open in ParaView: displacement, velocity, damage per point"
 echo "  summary.json            crack_tip_x_m, crack_speed_m_per_s, timings"
 sed -n 's/.*"\(crack_tip_x_m\|crack_speed_m_per_s\|wall_s\)": \(.*\),*/  \1 = \2/p' "$out/summary.json"
+echo
+echo "one page per run (open in a browser):"
+echo "  $report_cylinder"
+echo "  $report_plate"

@@ -2,7 +2,8 @@
 # Installs the Debian packages a make target needs, and nothing else.
 #   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cairo and a font for the
 #                              pictures' text, cmocka, VTK for Python (the tests open our
-#                              .vtu/.vtr files with VTK's own readers)
+#                              .vtu/.vtr files with VTK's own readers), ffmpeg (movies),
+#                              Chromium (tests/cli/test_report.sh opens report.html in it)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine
 #   scripts/deps.sh fuzz       + clang, libFuzzer (libclang-rt-14-dev), OpenMP for clang (make fuzz)
@@ -10,7 +11,7 @@
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9"
+want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 ffmpeg chromium"
 for group in "$@"; do
     case "$group" in
     build) ;;

@@ -164,6 +164,9 @@ static bool is_output_file(const char *name) {
     static const char *const prefix[] = {"solid_",     "damage_",  "line_",       "flow_", "mach_",
                                          "schlieren_", "surface_", "checkpoint_", NULL};
     if (is_part_file(name)) return true;
+    const size_t len = strlen(name); /* nspd movie's and nspd report's */
+    if ((len > 4 && strcmp(name + len - 4, ".mp4") == 0) || strcmp(name, "report.html") == 0)
+        return true;
     for (int i = 0; exact[i]; i++)
         if (strcmp(name, exact[i]) == 0) return true;
     for (int i = 0; prefix[i]; i++)

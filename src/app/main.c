@@ -9,8 +9,9 @@ static void usage(FILE *out) {
     fputs("usage: nspd <command> [options]\n"
           "\n"
           "commands:\n"
-          "  run CASE.yaml [-o DIR] [--force] [--set key=value ...] [--quiet]\n"
-          "                         run a case; results go to DIR (default out/<case name>)\n"
+          "  run CASE.yaml [-o DIR] [--force | --resume] [--set key=value ...] [--quiet]\n"
+          "                         run a case; results go to DIR (default out/<case name>);\n"
+          "                         --resume continues it from its last checkpoint\n"
           "  (run, check, info also take --threads T and --max-memory MB: refuse a case\n"
           "   whose memory estimate exceeds MB; default this machine's memory)\n"
           "  check CASE.yaml [--set key=value ...]\n"
@@ -21,6 +22,10 @@ static void usage(FILE *out) {
           "                         PD force + integration throughput, one JSON object\n"
           "  bench gks [--cells N] [--threads T] [--steps S]\n"
           "                         viscous GKS flow step throughput, one JSON object\n"
+          "  movie OUTDIR [--field NAME] [--fps N]\n"
+          "                         MP4 movies of a run's picture series (ffmpeg)\n"
+          "  report OUTDIR [--frame N]\n"
+          "                         OUTDIR/report.html: one self-contained page of the run\n"
           "  riemann [--left R,U,P] [--right R,U,P] [--time T] [--cells N] ...\n"
           "                         exact shock-tube solution as CSV (the reference)\n"
           "  version                print the version\n"
@@ -42,6 +47,8 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "check") == 0) return cmd_check(argc - 2, argv + 2);
     if (strcmp(cmd, "info") == 0) return cmd_info(argc - 2, argv + 2);
     if (strcmp(cmd, "bench") == 0) return cmd_bench(argc - 2, argv + 2);
+    if (strcmp(cmd, "movie") == 0) return cmd_movie(argc - 2, argv + 2);
+    if (strcmp(cmd, "report") == 0) return cmd_report(argc - 2, argv + 2);
     if (strcmp(cmd, "riemann") == 0) return cmd_riemann(argc - 2, argv + 2);
     if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
         printf("nspd %s\n", NSPD_VERSION);

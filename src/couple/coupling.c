@@ -32,6 +32,14 @@ void coupling_config_free(CouplingConfig *cfg) {
     memset(cfg, 0, sizeof *cfg);
 }
 
+CouplingEstimate coupling_estimate(const CouplingConfig *cfg, const FlowEstimate *flow) {
+    const CouplingEstimate none = {0};
+    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX ||
+        !COUPLING_MODELS[cfg->kind] || !COUPLING_MODELS[cfg->kind]->estimate)
+        return none;
+    return COUPLING_MODELS[cfg->kind]->estimate(cfg, flow);
+}
+
 int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow) {
     *out = NULL;
     if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX || !COUPLING_MODELS[cfg->kind])

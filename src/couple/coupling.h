@@ -47,8 +47,17 @@ typedef struct {
 
 typedef struct Coupling Coupling;
 
+/* What a coupling will need beside its models, estimated from the
+ * configurations alone (nothing built). */
+typedef struct {
+    double bytes;
+} CouplingEstimate;
+
 typedef struct CouplingOps {
     const char *name;
+    /* the estimate for a flow of estimate *flow (NULL op: nothing beyond
+     * the models) */
+    CouplingEstimate (*estimate)(const CouplingConfig *cfg, const FlowEstimate *flow);
     /* solid may be NULL (rigid walls); takes ownership of *cfg's contents */
     int (*create)(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow);
     void (*destroy)(void *impl);
@@ -73,6 +82,8 @@ typedef struct CouplingOps {
  * its kind, or COUPLING_NONE when the registry is full. */
 CouplingKind coupling_register(const CouplingOps *ops);
 
+/* The estimate of *cfg by its coupling (zero for an unknown kind). */
+CouplingEstimate coupling_estimate(const CouplingConfig *cfg, const FlowEstimate *flow);
 int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow);
 void coupling_destroy(Coupling **c);
 CouplingKind coupling_kind(const Coupling *c);

@@ -32,7 +32,7 @@ void flow_config_free(FlowConfig *cfg) {
 }
 
 FlowEstimate flow_estimate(const FlowConfig *cfg) {
-    const FlowEstimate none = {0, 0};
+    const FlowEstimate none = {0, 0, 0};
     if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||
         !FLOW_METHODS[cfg->method] || !FLOW_METHODS[cfg->method]->estimate)
         return none;

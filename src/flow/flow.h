@@ -78,6 +78,9 @@ typedef struct Flow Flow;
 /* What a flow will need, estimated from its configuration alone. */
 typedef struct {
     double cells; /* or nodes */
+    /* cells with the layers of ghosts and padding that per-cell arrays
+     * hold (what a coupling sizes its own per-cell arrays by) */
+    double stored_cells;
     double bytes;
 } FlowEstimate;
 

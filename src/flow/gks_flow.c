@@ -56,13 +56,14 @@ static void vortex_periods(GksCaseConfig *fc) {
  * a field, two masks). */
 static FlowEstimate gks_estimate(const FlowConfig *mc) {
     const GksConfig *c = &mc->gks.solver;
-    FlowEstimate e = {0, 0};
+    FlowEstimate e = {0, 0, 0};
     const int nx = grid_segments_spacing(c->segment_count[0], c->segments[0], NULL, 0);
     const int ny = grid_segments_spacing(c->segment_count[1], c->segments[1], NULL, 0);
     if (nx <= 0 || ny <= 0) return e; /* the solver's create says what is wrong */
     e.cells = (double)nx * (double)ny;
     const double stride = (double)((nx + 2 * GRID_NG + 7) / 8 * 8);
     const double padded = stride * (double)(ny + 2 * GRID_NG);
+    e.stored_cells = padded;
     e.bytes = 65.0 * padded + 28.0 * 8.0 * stride * (double)omp_get_max_threads() + 66.0 * e.cells;
     return e;
 }

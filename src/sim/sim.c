@@ -59,7 +59,8 @@ static int check_memory(Sim *sim) {
     const SimConfig *c = &sim->cfg;
     const SolidEstimate s = solid_estimate(&c->solid);
     const FlowEstimate f = flow_estimate(&c->flow);
-    sim->estimate_bytes = s.bytes + f.bytes;
+    const CouplingEstimate k = coupling_estimate(&c->coupling, &f);
+    sim->estimate_bytes = s.bytes + f.bytes + k.bytes;
     const bool given = c->max_memory_bytes > 0;
     const double limit = given ? c->max_memory_bytes : nspd_mem_physical_bytes();
     if (limit <= 0 || sim->estimate_bytes <= limit) return NSPD_OK;
