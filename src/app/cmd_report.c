@@ -14,6 +14,7 @@
 #include "core/out_file.h"
 #include "core/status.h"
 #include "io/cfg_tree.h"
+#include "io/units.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -72,23 +73,6 @@ static bool base64_file(FILE *out, const char *path) {
     const bool ok = !ferror(in);
     fclose(in);
     return ok;
-}
-
-/* The unit of a summary key, from its suffix (nspd names keys so). */
-static const char *unit_of(const char *key) {
-    static const char *const SUFFIX[][2] = {{"_m_per_s", "m/s"},   {"_kg_per_m3", "kg/m³"},
-                                            {"_kg_per_m", "kg/m"}, {"_kg_per_s", "kg/(m s)"},
-                                            {"_J_per_m", "J/m"},   {"_N_per_m", "N/m"},
-                                            {"_per_s", "1/s"},     {"_deg", "°"},
-                                            {"_mb", "MB"},         {"_Pa", "Pa"},
-                                            {"_J", "J"},           {"_K", "K"},
-                                            {"_s", "s"},           {"_m", "m"}};
-    const size_t len = strlen(key);
-    for (size_t k = 0; k < sizeof SUFFIX / sizeof SUFFIX[0]; k++) {
-        const size_t l = strlen(SUFFIX[k][0]);
-        if (len > l && strcmp(key + len - l, SUFFIX[k][0]) == 0) return SUFFIX[k][1];
-    }
-    return "";
 }
 
 static const char *scalar(const CfgNode *map, const char *key) {
@@ -221,7 +205,7 @@ static void summary_table(FILE *f, const CfgNode *summary) {
         fputs("</td><td class=\"num\">", f);
         html_text(f, n->is_null ? "-" : n->text);
         fputs("</td><td>", f);
-        html_text(f, unit_of(n->key));
+        html_text(f, units_of_key(n->key));
         fputs("</td></tr>\n", f);
     }
     fputs("</table>\n", f);

@@ -11,6 +11,7 @@ int cmd_bench(int argc, char **argv);
 int cmd_riemann(int argc, char **argv);
 int cmd_movie(int argc, char **argv);
 int cmd_report(int argc, char **argv);
+int cmd_plot(int argc, char **argv);
 
 /* Maps an NspdStatus to the exit status above. */
 int exit_status_of(int status);

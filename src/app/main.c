@@ -24,6 +24,8 @@ static void usage(FILE *out) {
           "                         viscous GKS flow step throughput, one JSON object\n"
           "  movie OUTDIR [--field NAME] [--fps N]\n"
           "                         MP4 movies of a run's picture series (ffmpeg)\n"
+          "  plot OUTDIR [COLUMN ...] [--svg]\n"
+          "                         history.csv's columns against time: history_<column>.png\n"
           "  report OUTDIR [--frame N]\n"
           "                         OUTDIR/report.html: one self-contained page of the run\n"
           "  riemann [--left R,U,P] [--right R,U,P] [--time T] [--cells N] ...\n"
@@ -48,6 +50,7 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "info") == 0) return cmd_info(argc - 2, argv + 2);
     if (strcmp(cmd, "bench") == 0) return cmd_bench(argc - 2, argv + 2);
     if (strcmp(cmd, "movie") == 0) return cmd_movie(argc - 2, argv + 2);
+    if (strcmp(cmd, "plot") == 0) return cmd_plot(argc - 2, argv + 2);
     if (strcmp(cmd, "report") == 0) return cmd_report(argc - 2, argv + 2);
     if (strcmp(cmd, "riemann") == 0) return cmd_riemann(argc - 2, argv + 2);
     if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {

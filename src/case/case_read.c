@@ -165,6 +165,7 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
                         "seconds of wall-clock time between checkpoints, 0 for none"));
     TRY(cfg_opt_bool(o, "vtk", true, &out->vtk));
     TRY(cfg_opt_bool(o, "png", true, &out->png));
+    TRY(cfg_opt_bool(o, "plots", true, &out->plots));
     int64_t pixels;
     TRY(cfg_opt_int(o, "png_max_pixels", 1000, &pixels));
     TRY(cfg_check_range(o, "png_max_pixels", (double)pixels, 16, 8192,

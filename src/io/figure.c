@@ -1,9 +1,11 @@
 #include "io/figure.h"
 
+#include "core/out_file.h"
 #include "core/status.h"
 #include "io/colormap.h"
 #include "io/png.h"
 
+#include <cairo-svg.h>
 #include <cairo.h>
 #include <fontconfig/fontconfig.h>
 #include <math.h>
@@ -403,6 +405,182 @@ int figure_write_png(const char *path, const Figure *fig) {
         draw_bar(cr, fig, &p, b);
         cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
     }
+    int status = NSPD_OK;
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+        status = NSPD_FAIL(NSPD_ERR_NOMEM, "cannot draw '%s': %s", path,
+                           cairo_status_to_string(cairo_status(cr)));
+    cairo_destroy(cr);
+    Image img = {0};
+    if (status == NSPD_OK) status = surface_to_image(page, &img);
+    cairo_surface_destroy(page);
+    if (status == NSPD_OK) status = image_write_png(&img, path);
+    image_destroy(&img);
+    return status;
+}
+
+/* ---------------------------------------------------------- line plots */
+
+/* The time unit that reads best for a span (s): "s", "ms", "µs" or "ns",
+ * and its number per second. */
+static void time_unit(double span, const char **unit, double *per_s) {
+    static const char *const NAMES[] = {"s", "ms", "µs", "ns"};
+    double scale = 1.0;
+    int k = 0;
+    while (k < 3 && span > 0.0 && span * scale < 1.0) {
+        scale *= 1e3;
+        k++;
+    }
+    *unit = NAMES[k];
+    *per_s = scale;
+}
+
+/* [lo, hi] of the finite values of v (NaN, NaN when there are none). */
+static void finite_range(const double *v, int64_t n, double *lo, double *hi) {
+    *lo = (double)INFINITY;
+    *hi = -(double)INFINITY;
+    for (int64_t i = 0; i < n; i++)
+        if (isfinite(v[i])) {
+            *lo = fmin(*lo, v[i]);
+            *hi = fmax(*hi, v[i]);
+        }
+    if (*lo > *hi) *lo = *hi = (double)NAN;
+}
+
+/* A constant (or empty) series still gets an axis around its value. */
+static void open_range(double *lo, double *hi) {
+    if (!isfinite(*lo)) {
+        *lo = 0.0;
+        *hi = 1.0;
+    } else if (*hi <= *lo) {
+        const double d = *lo != 0.0 ? 0.05 * fabs(*lo) : 1.0;
+        *lo -= d;
+        *hi += d;
+    }
+}
+
+enum { LINE_W = 1000, LINE_H = 560 };
+
+static cairo_status_t write_stream(void *closure, const unsigned char *data, unsigned int n) {
+    return fwrite(data, 1, n, (FILE *)closure) == n ? CAIRO_STATUS_SUCCESS
+                                                    : CAIRO_STATUS_WRITE_ERROR;
+}
+
+/* Draws the plot on cr (a LINE_W x LINE_H page). */
+static void draw_line_plot(cairo_t *cr, const FigureLine *p) {
+    const char *tu;
+    double per_s;
+    double x0, x1, y0, y1;
+    finite_range(p->x, p->n, &x0, &x1);
+    finite_range(p->y, p->n, &y0, &y1);
+    open_range(&x0, &x1);
+    open_range(&y0, &y1);
+    time_unit(fmax(fabs(x0), fabs(x1)), &tu, &per_s);
+    Ticks xt, yt;
+    make_ticks(&xt, x0 * per_s, x1 * per_s, 8);
+    make_ticks(&yt, y0, y1, 6);
+    char x_label[LABEL_CHARS], y_label[LABEL_CHARS];
+    snprintf(x_label, sizeof x_label, "%s [%s]", p->x_label, tu);
+    if (p->y_units && p->y_units[0])
+        snprintf(y_label, sizeof y_label, "%s [%s]", p->y_label, p->y_units);
+    else
+        snprintf(y_label, sizeof y_label, "%s", p->y_label);
+
+    set_font(cr, FIGURE_TICK_PX);
+    const double left = PAD + FIGURE_LABEL_PX + LABEL_GAP + widest(cr, &yt) + TICK_GAP + TICK_LEN;
+    const double top = PAD + FIGURE_TITLE_PX + PAD;
+    const double right = LINE_W - 2 * PAD;
+    const double bottom =
+        LINE_H - (PAD + FIGURE_LABEL_PX + LABEL_GAP + FIGURE_TICK_PX + TICK_GAP + TICK_LEN);
+    const double sx = (right - left) / (x1 * per_s - x0 * per_s), sy = (bottom - top) / (y1 - y0);
+#define PX(v) (left + ((v)*per_s - x0 * per_s) * sx)
+#define PY(v) (bottom - ((v)-y0) * sy)
+
+    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+    cairo_paint(cr);
+    /* grid at the ticks, then the frame and its tick marks and labels */
+    cairo_set_line_width(cr, 1.0);
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    for (int k = 0; k < xt.n; k++) vline(cr, left + (xt.value[k] - x0 * per_s) * sx, top, bottom);
+    for (int k = 0; k < yt.n; k++) hline(cr, left, right, PY(yt.value[k]));
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    cairo_rectangle(cr, floor(left) + 0.5, floor(top) + 0.5, floor(right - left),
+                    floor(bottom - top));
+    for (int k = 0; k < xt.n; k++) {
+        const double x = left + (xt.value[k] - x0 * per_s) * sx;
+        vline(cr, x, bottom, bottom + TICK_LEN);
+        text_at(cr, xt.text[k], x, bottom + TICK_LEN + TICK_GAP + FIGURE_TICK_PX, 0.5, 0);
+    }
+    for (int k = 0; k < yt.n; k++) {
+        const double y = PY(yt.value[k]);
+        hline(cr, left - TICK_LEN, left, y);
+        text_at(cr, yt.text[k], left - TICK_LEN - TICK_GAP, y, 1.0, 1);
+    }
+    cairo_stroke(cr);
+    set_font(cr, FIGURE_LABEL_PX);
+    text_at(cr, x_label, 0.5 * (left + right), LINE_H - PAD, 0.5, 0);
+    text_up(cr, y_label, PAD + 0.5 * FIGURE_LABEL_PX, 0.5 * (top + bottom));
+    set_font(cr, FIGURE_TITLE_PX);
+    text_at(cr, p->title ? p->title : "", PAD, PAD + FIGURE_TITLE_PX, 0.0, 0);
+
+    /* the series, broken where a value is not finite */
+    cairo_save(cr);
+    cairo_rectangle(cr, left, top, right - left, bottom - top);
+    cairo_clip(cr);
+    cairo_set_source_rgb(cr, 0.12, 0.31, 0.61);
+    cairo_set_line_width(cr, 2.0);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    bool pen = false;
+    for (int64_t i = 0; i < p->n; i++) {
+        if (!isfinite(p->x[i]) || !isfinite(p->y[i])) {
+            pen = false;
+            continue;
+        }
+        if (pen)
+            cairo_line_to(cr, PX(p->x[i]), PY(p->y[i]));
+        else
+            cairo_move_to(cr, PX(p->x[i]), PY(p->y[i]));
+        pen = true;
+    }
+    if (p->n == 1 && isfinite(p->y[0])) /* a single sample: a dot */
+        cairo_arc(cr, PX(p->x[0]), PY(p->y[0]), 3.0, 0.0, 2.0 * M_PI);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+    double lo, hi;
+    finite_range(p->y, p->n, &lo, &hi);
+    if (isnan(lo)) { /* say so rather than leave an empty frame */
+        cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+        set_font(cr, FIGURE_LABEL_PX);
+        text_at(cr, "no value during the run", 0.5 * (left + right), 0.5 * (top + bottom), 0.5, 1);
+    }
+#undef PX
+#undef PY
+}
+
+int figure_write_line_plot(const char *path, const FigureLine *p, bool svg) {
+    if (svg) {
+        OutFile out;
+        TRY(out_file_open(&out, path));
+        cairo_surface_t *s =
+            cairo_svg_surface_create_for_stream(write_stream, out.f, LINE_W, LINE_H);
+        cairo_t *cr = cairo_create(s);
+        draw_line_plot(cr, p);
+        const bool failed = cairo_status(cr) != CAIRO_STATUS_SUCCESS;
+        cairo_destroy(cr);
+        cairo_surface_finish(s);
+        const bool write_failed = failed || cairo_surface_status(s) != CAIRO_STATUS_SUCCESS;
+        cairo_surface_destroy(s);
+        return out_file_close(&out, write_failed);
+    }
+    cairo_surface_t *page = cairo_image_surface_create(CAIRO_FORMAT_RGB24, LINE_W, LINE_H);
+    cairo_t *cr = cairo_create(page);
+    cairo_font_options_t *fo = cairo_font_options_create();
+    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_set_font_options(cr, fo);
+    cairo_font_options_destroy(fo);
+    draw_line_plot(cr, p);
     int status = NSPD_OK;
     if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
         status = NSPD_FAIL(NSPD_ERR_NOMEM, "cannot draw '%s': %s", path,

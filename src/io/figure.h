@@ -10,6 +10,7 @@
 
 #include "core/fields.h" /* ColormapKind */
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -69,5 +70,18 @@ uint32_t figure_pixel(const uint8_t rgb[3]);
 int figure_layout(const Figure *fig, FigureLayout *lay);
 /* Draws fig and writes it as an RGB PNG. NSPD_ERR_IO, NSPD_ERR_NOMEM. */
 int figure_write_png(const char *path, const Figure *fig);
+
+/* A line plot of y against time x (s; drawn in the unit that reads best),
+ * broken where a value is not finite: for history columns. */
+typedef struct {
+    const char *title;
+    const char *x_label;           /* "time" */
+    const char *y_label, *y_units; /* the column, its unit ("" for none) */
+    int64_t n;
+    const double *x, *y;
+} FigureLine;
+
+/* Writes the plot (1000 x 560) as PNG, or as SVG when `svg`, atomically. */
+int figure_write_line_plot(const char *path, const FigureLine *p, bool svg);
 
 #endif

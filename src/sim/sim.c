@@ -275,6 +275,7 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
     snprintf(reason, sizeof reason, "%s", status != NSPD_OK ? nspd_error_message() : "");
     int summary = sim_output_summary(sim, status, reason);
     sim_output_close(sim);
+    if (summary == NSPD_OK) summary = sim_output_plots(sim);
     if (status != NSPD_OK) {
         /* writing the summary may have recorded another message: the run's is the one to show */
         if (strcmp(nspd_error_message(), reason) != 0)

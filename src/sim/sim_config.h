@@ -57,6 +57,7 @@ typedef struct {
      * interrupted (Ctrl-C, SIGTERM, SIGUSR1) */
     double checkpoint_interval, checkpoint_wall_interval;
     bool vtk, png;
+    bool plots; /* history_<column>.png of every history column at the end (io/history_plot.h) */
     int png_max_pixels; /* longest side of a PNG */
     int probe_count;
     ProbeConfig *probes;

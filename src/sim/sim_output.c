@@ -5,6 +5,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "io/history_plot.h"
 
 #include <math.h>
 #include <omp.h>
@@ -110,4 +111,10 @@ int sim_output_summary(Sim *sim, int run_status, const char *reason) {
 
 void sim_output_close(Sim *sim) {
     history_close(&sim->history);
+}
+
+int sim_output_plots(Sim *sim) {
+    if (!sim->dir || !sim->cfg.output.plots) return NSPD_OK;
+    int written;
+    return history_plots(sim->dir, sim->cfg.name, NULL, 0, false, &written);
 }

@@ -14,4 +14,8 @@ int sim_output_fields(Sim *sim);  /* VTK, PNG and line files of the current stat
 int sim_output_summary(Sim *sim, int status, const char *reason);
 void sim_output_close(Sim *sim);
 
+/* The history plots at the end of a run (output.plots), after history.csv
+ * is closed. */
+int sim_output_plots(Sim *sim);
+
 #endif
