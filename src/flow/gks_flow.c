@@ -23,7 +23,8 @@ enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
 typedef struct {
     GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
     GksSolver *solver;
-    double last_dt; /* s, of the last step; 0 before the first */
+    double last_dt;    /* s, of the last step; 0 before the first */
+    double mach_scale; /* the top of the Mach pictures' colour bar, fixed at the first */
     double *cells[GKS_SCRATCH];
     double *kind;   /* cell kinds as a field */
     uint8_t *blank; /* 1: not a fluid cell */
@@ -246,6 +247,7 @@ static void gks_totals(const void *impl, double totals[4]) {
 static int gks_checkpoint(void *impl, Checkpoint *ck) {
     GksFlow *g = impl;
     TRY(gks_solver_checkpoint(g->solver, ck));
+    TRY(checkpoint_io_double(ck, "gks.mach_scale", &g->mach_scale));
     return checkpoint_io_double(ck, "gks.last_dt", &g->last_dt);
 }
 
@@ -348,14 +350,28 @@ static void schlieren(const Grid *g, const double *rho, const uint8_t *solid, do
         out[c] = gmax > 0.0 ? exp(-15.0 * out[c] / gmax) : 1.0;
 }
 
+/* The Mach pictures' scale, fixed for the whole series so the frames of a
+ * movie compare: 1.25 times the larger of the reference Mach number (the
+ * free stream) and the largest one of the first output, rounded up to two
+ * significant digits (1.7 -> 2.2); 1 for a gas at rest. Faster gas later
+ * shows in the top colour. */
+static double mach_scale(const GksFlow *gf, int64_t ncell) {
+    double top = 0.0;
+    for (int64_t c = 0; c < ncell; c++)
+        if (!gf->blank[c] && gf->cells[5][c] > top) top = gf->cells[5][c];
+    const FlowReference r = gks_reference(gf);
+    if (r.rho > 0 && r.p > 0) top = fmax(top, hypot(r.u, r.v) / sqrt(r.gamma * r.p / r.rho));
+    if (!(top > 0) || !isfinite(top)) return 1.0;
+    const double v = 1.25 * top, unit = pow(10.0, floor(log10(v)) - 1.0);
+    return ceil(v / unit * (1.0 - 1e-12)) * unit;
+}
+
 static void gks_fields(void *impl, FieldSet *out) {
     GksFlow *gf = impl;
     const Grid *g = gks_solver_grid(gf->solver);
     const int64_t ncell = (int64_t)g->nx * g->ny;
     primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
-    double mach_max = 0.0;
-    for (int64_t c = 0; c < ncell; c++)
-        if (!gf->blank[c] && gf->cells[5][c] > mach_max) mach_max = gf->cells[5][c];
+    if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
     schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
     memset(out, 0, sizeof *out);
     out->series = "flow";
@@ -378,7 +394,7 @@ static void gks_fields(void *impl, FieldSet *out) {
                                                       .units = "-",
                                                       .values = c[5],
                                                       .lo = 0.0,
-                                                      .hi = mach_max > 0 ? mach_max : 1.0,
+                                                      .hi = gf->mach_scale,
                                                       .map = COLORMAP_VIRIDIS,
                                                       .overlay_file = "mach_damage"};
     out->picture[out->picture_count++] = (PictureRef){.file = "schlieren",

@@ -41,9 +41,12 @@ grep -q "<td>time_s</td><td class=\"num\">[^<]*</td><td>s</td>" "$page" && ok ||
 grep -q "<details><summary>the resolved case" "$page" && ok || fail "no resolved case"
 if grep -q -E '(src|href)="(https?:|//)' "$page"; then fail "the page reaches the network"; else ok; fi
 
-# every picture series: output 1 and the last; each embedded image is its file
+# every history plot, and of every picture series output 1 and the last;
+# each embedded image is its file
 series=$(ls "$work/run" | sed -n 's/^\(.*\)_00000\.png$/\1/p')
-want=$(($(echo "$series" | wc -l) * 2))
+plots=$(ls "$work/run" | grep -c '^history_.*\.png$')
+[ "$plots" -gt 10 ] && ok || fail "the run drew $plots history plots"
+want=$(($(echo "$series" | wc -l) * 2 + plots))
 imgs=$(grep -o '<img alt="[^"]*" src="data:image/png;base64,[^"]*"' "$page")
 [ "$(echo "$imgs" | grep -c .)" -eq "$want" ] && ok ||
     fail "$(echo "$imgs" | grep -c .) images, expected $want ($series)"
