@@ -7,7 +7,7 @@
 static const char *const SUFFIX[][2] = {{"_kg_per_m3", "kg/m³"},
                                         {"_m_per_s", "m/s"},
                                         {"_kg_per_m", "kg/m"},
-                                        {"_kg_per_s", "kg/(m s)"},
+                                        {"_kg_per_s", "kg/s"},
                                         {"_J_per_m", "J/m"},
                                         {"_N_per_m", "N/m"},
                                         {"_per_s", "1/s"},
