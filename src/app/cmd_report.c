@@ -158,7 +158,7 @@ static int files_like(const char *dir, const char *prefix, const char *suffix,
         if (len < ls + lp || len >= MAX_NAME || strncmp(e->d_name, prefix, lp) != 0 ||
             strcmp(e->d_name + len - ls, suffix) != 0)
             continue;
-        snprintf(names[count++], MAX_NAME, "%s", e->d_name);
+        snprintf(names[count++], MAX_NAME, "%.127s", e->d_name);
     }
     closedir(d);
     qsort(names, (size_t)count, MAX_NAME, (int (*)(const void *, const void *))strcmp);
