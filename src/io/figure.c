@@ -212,10 +212,15 @@ static void register_release(void) {
     (void)atexit(release_fonts);
 }
 
-/* A cairo context on a scratch surface, for measuring text. */
-static int measure_context(cairo_surface_t **s, cairo_t **cr) {
+/* Called before any text is drawn. */
+static void fonts_in_use(void) {
     static pthread_once_t once = PTHREAD_ONCE_INIT;
     (void)pthread_once(&once, register_release);
+}
+
+/* A cairo context on a scratch surface, for measuring text. */
+static int measure_context(cairo_surface_t **s, cairo_t **cr) {
+    fonts_in_use();
     *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
     *cr = cairo_create(*s);
     if (cairo_status(*cr) != CAIRO_STATUS_SUCCESS) {
@@ -558,6 +563,7 @@ static void draw_line_plot(cairo_t *cr, const FigureLine *p) {
 }
 
 int figure_write_line_plot(const char *path, const FigureLine *p, bool svg) {
+    fonts_in_use();
     if (svg) {
         OutFile out;
         TRY(out_file_open(&out, path));
