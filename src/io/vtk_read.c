@@ -59,10 +59,13 @@ static int parse_header(const char *path, const char *h, VtkRectilinear *out, De
         sscanf(buf, "%d %d %d %d %d %d", &e[0], &e[1], &e[2], &e[3], &e[4], &e[5]) != 6)
         return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no WholeExtent in the header", path);
     for (int a = 0; a < 3; a++) {
-        out->n[a] = e[2 * a + 1] - e[2 * a];
-        if (out->n[a] < 1 || out->n[a] > (1 << 24))
+        /* the difference in 64 bits: "-2147483648 2147483647" overflowed int
+         * (hostile input, tests/fuzz/regressions/vtk/extent_overflow.vtr) */
+        const long long n = (long long)e[2 * a + 1] - (long long)e[2 * a];
+        if (n < 1 || n > (1 << 24))
             return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': WholeExtent '%s' is not a grid of cells", path,
                              buf);
+        out->n[a] = (int)n;
     }
     const char *coords = strstr(h, "<Coordinates>");
     *decl_count = 0;
@@ -92,17 +95,27 @@ static int parse_header(const char *path, const char *h, VtkRectilinear *out, De
     return NSPD_OK;
 }
 
-/* Reads the block at `offset` into *data (count doubles). */
-static int read_block(FILE *f, const char *path, long base, const Declared *d, uint64_t count,
-                      double **data) {
+/* Reads the block at `offset` into *data (count doubles). `room` is what
+ * the file holds from the start of the appended data (`base`) on: the
+ * offset and the block are checked against it before anything is added or
+ * allocated (hostile input, tests/fuzz/regressions/vtk/: an offset near
+ * 2^63 overflowed base + offset, and a 1 kB file whose header declared a
+ * 2^24 x 256 grid, with the matching byte count, made the reader allocate
+ * and zero 32 GB before finding the data missing). */
+static int read_block(FILE *f, const char *path, long base, uint64_t room, const Declared *d,
+                      uint64_t count, double **data) {
     uint64_t bytes;
-    if (fseek(f, base + (long)d->offset, SEEK_SET) != 0 || fread(&bytes, sizeof bytes, 1, f) != 1)
+    if (d->offset > room || room - d->offset < sizeof bytes ||
+        fseek(f, base + (long)d->offset, SEEK_SET) != 0 || fread(&bytes, sizeof bytes, 1, f) != 1)
         return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' lies past the end of the file", path,
                          d->name);
-    if (bytes != count * sizeof(double))
+    if (count > UINT64_MAX / sizeof(double) || bytes != count * sizeof(double))
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "'%s': array '%s' holds %" PRIu64 " bytes; the grid needs %" PRIu64, path,
-                         d->name, bytes, count * (uint64_t)sizeof(double));
+                         "'%s': array '%s' holds %" PRIu64 " bytes; the grid needs %" PRIu64
+                         " values of 8 bytes",
+                         path, d->name, bytes, count);
+    if (bytes > room - d->offset - sizeof bytes)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is truncated in array '%s'", path, d->name);
     TRY(nspd_alloc(data, (size_t)count, sizeof(double)));
     if (fread(*data, sizeof(double), (size_t)count, f) != (size_t)count)
         return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is truncated in array '%s'", path, d->name);
@@ -110,6 +123,9 @@ static int read_block(FILE *f, const char *path, long base, const Declared *d, u
 }
 
 static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
+    long size;
+    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0)
+        return NSPD_FAIL(NSPD_ERR_IO, "cannot read '%s' (%s)", path, strerror(errno));
     char *header;
     TRY(nspd_alloc(&header, HEADER_MAX + 1, 1));
     size_t got = fread(header, 1, HEADER_MAX, f);
@@ -131,7 +147,16 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
     int status = parse_header(path, header, out, decl, &decl_count);
     nspd_free(&header);
     TRY(status);
-    const uint64_t cells = (uint64_t)out->n[0] * (uint64_t)out->n[1] * (uint64_t)out->n[2];
+    const uint64_t room = size > base ? (uint64_t)(size - base) : 0;
+    /* each axis is at most 2^24 cells, so the product of all three could
+     * wrap past 2^64 (and read as 0 cells); a grid whose cells need more
+     * doubles than the file has bytes for is refused here */
+    const uint64_t cells_xy = (uint64_t)out->n[0] * (uint64_t)out->n[1];
+    if (cells_xy > room / sizeof(double) / (uint64_t)out->n[2])
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "'%s': %d x %d x %d cells; the file (%ld bytes) cannot hold their data",
+                         path, out->n[0], out->n[1], out->n[2], size);
+    const uint64_t cells = cells_xy * (uint64_t)out->n[2];
     for (int k = 0; k < decl_count; k++) {
         const Declared *d = &decl[k];
         if (d->is_coordinate) {
@@ -139,7 +164,7 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
             if (d->name[1] != '\0' || a < 0 || a > 2 || out->face[a])
                 return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': unexpected coordinate array '%s'", path,
                                  d->name);
-            TRY(read_block(f, path, base, d, (uint64_t)out->n[a] + 1, &out->face[a]));
+            TRY(read_block(f, path, base, room, d, (uint64_t)out->n[a] + 1, &out->face[a]));
         } else {
             if (out->array_count == VTK_MAX_ARRAYS)
                 return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d cell arrays", path,
@@ -147,7 +172,7 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
             VtkCellArray *c = &out->arrays[out->array_count++];
             memcpy(c->name, d->name, sizeof c->name);
             c->components = d->components;
-            TRY(read_block(f, path, base, d, cells * (uint64_t)d->components, &c->data));
+            TRY(read_block(f, path, base, room, d, cells * (uint64_t)d->components, &c->data));
         }
     }
     for (int a = 0; a < 3; a++)
