@@ -6,14 +6,17 @@
 #   make bench      benchmarks (never part of make test); results in bench/results/
 #   make validate   full-resolution paper cases and their plots (long)
 #   make format     clang-format every C file;  make tidy: clang-tidy
+#   make fuzz       libFuzzer on the case and .vtr readers, FUZZ_SECONDS each (default 600)
 
 BUILD      ?= build
 BUILD_ASAN ?= build-asan
+BUILD_FUZZ ?= build-fuzz
+FUZZ_SECONDS ?= 600
 JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 NSPD        = $(BUILD)/nspd
 
-.PHONY: all deps build test test-fast test-asan demo bench validate format format-check tidy clean
+.PHONY: all deps build test test-fast test-asan demo bench validate fuzz format format-check tidy clean
 
 all: build
 
@@ -54,6 +57,20 @@ validate: build
 	@scripts/deps.sh build validate
 	scripts/validate.sh $(NSPD) $(BUILD)
 
+# The fuzz harnesses (tests/fuzz/) built with clang, libFuzzer, ASan and
+# UBSan in their own build directory, then run one after the other on one
+# core; what they find lands in tests/fuzz/regressions/ (docs/RELIABILITY.md).
+# Warnings are not errors here: clang warns where gcc, the compiler the
+# build checks, does not.
+$(BUILD_FUZZ)/CMakeCache.txt:
+	@scripts/deps.sh build fuzz
+	CC=clang cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNSPD_SANITIZE=ON \
+	    -DNSPD_FUZZ=ON -DNSPD_TESTS=OFF -DNSPD_WERROR=OFF $(CMAKE_ARGS)
+
+fuzz: $(BUILD_FUZZ)/CMakeCache.txt
+	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_case fuzz_vtk
+	tests/fuzz/fuzz.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
+
 format: $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) --target format
 
@@ -64,4 +81,4 @@ tidy: $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) --target tidy
 
 clean:
-	rm -rf $(BUILD) $(BUILD_ASAN)
+	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_FUZZ)

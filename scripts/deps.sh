@@ -4,6 +4,7 @@
 #                              (the tests open our .vtu/.vtr files with VTK's own readers)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine
+#   scripts/deps.sh fuzz       + clang, libFuzzer (libclang-rt-14-dev), OpenMP for clang (make fuzz)
 # As root the missing packages are installed with apt-get; otherwise the exact
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
@@ -14,7 +15,8 @@ for group in "$@"; do
     build) ;;
     validate) want="$want gnuplot-nox" ;;
     bench) want="$want lammps hyperfine openfoam" ;;
-    *) echo "deps.sh: unknown group '$group' (expected build, validate or bench)" >&2; exit 2 ;;
+    fuzz) want="$want clang libclang-rt-14-dev libomp-14-dev" ;;
+    *) echo "deps.sh: unknown group '$group' (expected build, validate, bench or fuzz)" >&2; exit 2 ;;
     esac
 done
 
