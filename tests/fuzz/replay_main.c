@@ -32,7 +32,8 @@ static int replay_file(const char *path) {
     const int bad = ferror(f) || !feof(f);
     fclose(f);
     if (bad) {
-        fprintf(stderr, "replay: cannot read '%s' whole (over %d bytes?)\n", path, REPLAY_MAX_BYTES);
+        fprintf(stderr, "replay: cannot read '%s' whole (over %d bytes?)\n", path,
+                REPLAY_MAX_BYTES);
         free(data);
         return -1;
     }
