@@ -4,6 +4,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "io/cfg_read.h"
+#include "io/in_file.h"
 #include "io/xy_read.h"
 
 #include <errno.h>
@@ -33,7 +34,7 @@ static int read_csv(CfgNode *item, IbmBodyConfig *b) {
     const int st = xy_read_file(b->path, &b->vertices, &n, &err);
     if (st == NSPD_ERR_IO)
         return cfg_fail_at(item, "file", "cannot read '%s' (%s); expected a CSV file of x, y",
-                           b->path, strerror(err.os_error));
+                           b->path, in_file_error(err.os_error));
     if (st == NSPD_ERR_INPUT)
         return cfg_fail_at(item, "file",
                            "%s:%d: '%s' is not a vertex; expected two numbers x, y per line",

@@ -505,7 +505,8 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
         char *next = strtok_r(NULL, ".", &save);
         CfgNode *child = NULL;
         if (node->kind == CFG_SEQ) {
-            int idx = is_index(segment) ? atoi(segment) : -1;
+            /* nine digits at most: a longer one would wrap an int */
+            const int idx = is_index(segment) && strlen(segment) <= 9 ? atoi(segment) : -1;
             if (idx < 0 || idx >= node->count) {
                 node_free(value);
                 return NSPD_FAIL(NSPD_ERR_INPUT,

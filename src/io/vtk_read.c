@@ -8,6 +8,8 @@
  * size the extent implies, so a truncated or foreign file fails cleanly. */
 #include "io/vtk_read.h"
 
+#include "io/in_file.h"
+
 #include "core/mem.h"
 #include "core/status.h"
 
@@ -183,8 +185,9 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
 
 int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
     memset(out, 0, sizeof *out);
-    FILE *f = fopen(path, "rb");
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, strerror(errno));
+    int open_error = 0;
+    FILE *f = in_file_open(path, &open_error);
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
     int status = read_file(f, path, out);
     fclose(f);
     return status;

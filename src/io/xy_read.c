@@ -1,5 +1,7 @@
 #include "io/xy_read.h"
 
+#include "io/in_file.h"
+
 #include "core/mem.h"
 #include "core/status.h"
 
@@ -40,9 +42,10 @@ int xy_read_file(const char *path, double **xy, int *count, XyReadError *err) {
     memset(err, 0, sizeof *err);
     *xy = NULL;
     *count = 0;
-    FILE *fp = fopen(path, "r");
+    int open_error = 0;
+    FILE *fp = in_file_open(path, &open_error);
     if (!fp) {
-        err->os_error = errno;
+        err->os_error = open_error;
         return NSPD_ERR_IO;
     }
     char line[512];

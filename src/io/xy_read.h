@@ -5,7 +5,7 @@
 #define NSPD_IO_XY_READ_H
 
 typedef struct {
-    int os_error; /* NSPD_ERR_IO: errno of the failed open */
+    int os_error; /* NSPD_ERR_IO: why the open failed (io/in_file.h: in_file_error) */
     int line;     /* NSPD_ERR_INPUT: the line that is not a vertex (1-based) */
     char text[512];
 } XyReadError;

@@ -54,6 +54,19 @@ check "initial.from: no such file" "flow.initial.from: cannot open 'nothere.vtr'
     "$nspd" run "$cyl" -o "$work/result" --set "flow.initial={from: nothere.vtr}"
 check "initial.from: not a .vtr" "flow.initial.from: .*expected a .vtr written by nspd" \
     "$nspd" run "$cyl" -o "$work/result" --set "flow.initial={from: $cyl}"
+# files a case names must be regular files: a device or a FIFO would hang
+# the reader (found while writing the fuzz harnesses); `timeout` turns a
+# hang into a failure here
+mkfifo "$work/fifo"
+check "initial.from: a FIFO" "flow.initial.from: cannot open '.*fifo' \\(not a regular file" \
+    timeout 10 "$nspd" check "$cyl" --set "flow.initial={from: $work/fifo}"
+check "polygon body: /dev/zero" "file: cannot read '/dev/zero' \\(not a regular file" \
+    timeout 10 "$nspd" check "$cyl" \
+    --set "flow.bodies=[{shape: polygon, name: p, file: /dev/zero}]"
+check "polygon body: a FIFO" "file: cannot read '.*fifo' \\(not a regular file" \
+    timeout 10 "$nspd" check "$cyl" --set "flow.bodies=[{shape: polygon, name: p, file: $work/fifo}]"
+check "--set index past 2^31" "'4294967296' is not an item of a 1-item list" \
+    "$nspd" check "$cyl" --set flow.bodies.4294967296.markers=40
 check "initial.from with a state" "flow.initial.state: given together with 'from'" \
     "$nspd" check "$cyl" --set "flow.initial={from: nothere.vtr, state: free_stream}"
 # hostile input (issue 12): a case nested 100,000 levels deep crashed the
