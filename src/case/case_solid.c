@@ -200,6 +200,13 @@ int case_read_solid(CfgNode *s, PdConfig *cfg) {
                            "%g makes the horizon smaller than the spacing; expected m >= 1 "
                            "(3.015 is usual)",
                            cfg->horizon_factor);
+    /* m = 50 is already 7,850 bonds per point in 2D and 520,000 in 3D; 10^6
+     * spacings once kept the family count busy for hours */
+    if (!(cfg->horizon_factor <= 50.0))
+        return cfg_fail_at(s, "horizon_factor",
+                           "%g spacings; expected m <= 50 (3.015 is usual; convergence studies "
+                           "go to about 10)",
+                           cfg->horizon_factor);
     /* absent: the lattice starts half a spacing inside the geometry's bounding box */
     CfgNode *origin = cfg_map_find(s, "lattice_origin");
     if (origin) origin->used = true;

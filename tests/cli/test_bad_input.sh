@@ -65,6 +65,8 @@ check "polygon body: /dev/zero" "file: cannot read '/dev/zero' \\(not a regular 
     --set "flow.bodies=[{shape: polygon, name: p, file: /dev/zero}]"
 check "polygon body: a FIFO" "file: cannot read '.*fifo' \\(not a regular file" \
     timeout 10 "$nspd" check "$cyl" --set "flow.bodies=[{shape: polygon, name: p, file: $work/fifo}]"
+check "horizon of 10^6 spacings" "solid.horizon_factor: 1e\\+06 spacings; expected m <= 50" \
+    timeout 10 "$nspd" check "$src/cases/plate_crack.yaml" --set solid.horizon_factor=1e6
 check "--set index past 2^31" "'4294967296' is not an item of a 1-item list" \
     "$nspd" check "$cyl" --set flow.bodies.4294967296.markers=40
 check "initial.from with a state" "flow.initial.state: given together with 'from'" \
