@@ -157,12 +157,10 @@ int cmd_movie(int argc, char **argv) {
             return EXIT_BAD_INPUT;
         }
     }
-    char dir_buf[MAX_DIR];
-    if (dir && strlen(dir) >= sizeof dir_buf) {
+    if (dir && strlen(dir) > 4000) { /* the paths below print at most 4000 of it */
         fprintf(stderr, "nspd movie: the directory name is too long\n");
         return EXIT_BAD_INPUT;
     }
-    if (dir) dir = strcpy(dir_buf, dir);
     if (!dir) {
         fprintf(stderr, "nspd movie: which run? usage: nspd movie OUTDIR [--field NAME] "
                         "[--fps N]\n");
