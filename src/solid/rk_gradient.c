@@ -1,0 +1,152 @@
+#include "solid/rk_gradient.h"
+
+#include "core/parallel.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+
+enum { RK_MAX_TERMS = 9 }; /* 3D: x, y, z and the six quadratic monomials */
+
+/* The cubic B-spline of the kernel, b(r) for r = |xi_a| / delta. */
+static double bspline(double r) {
+    if (r <= 0.5) return 1.0 - 6.0 * r * r + 6.0 * r * r * r;
+    if (r <= 1.0) return 2.0 * (1.0 - r) * (1.0 - r) * (1.0 - r);
+    return 0.0;
+}
+
+double rk_kernel(int dim, const double xi[3], double delta) {
+    double w = 1.0;
+    for (int a = 0; a < dim; a++) w *= bspline(fabs(xi[a]) / delta);
+    return w;
+}
+
+/* Q(xi): the monomials of degree 1 and 2, each over delta (so that the
+ * moment matrix is of order one whatever the units); returns their count. */
+static int monomials(int dim, const double xi[3], double delta, double q[RK_MAX_TERMS]) {
+    const double s[3] = {xi[0] / delta, xi[1] / delta, dim == 3 ? xi[2] / delta : 0.0};
+    int m = 0;
+    for (int a = 0; a < dim; a++) q[m++] = s[a];
+    for (int a = 0; a < dim; a++)
+        for (int b = a; b < dim; b++) q[m++] = s[a] * s[b];
+    return m;
+}
+
+/* Cholesky factorisation M = L L^T in place (lower triangle), after scaling
+ * M to a unit diagonal (scale[r] = 1/sqrt(M_rr)); false when a pivot falls
+ * below RK_MIN_PIVOT: the family cannot fit a quadratic. */
+static bool factor(double M[RK_MAX_TERMS][RK_MAX_TERMS], int m, double scale[RK_MAX_TERMS]) {
+    for (int r = 0; r < m; r++) {
+        if (!(M[r][r] > 0.0)) return false;
+        scale[r] = 1.0 / sqrt(M[r][r]);
+    }
+    for (int r = 0; r < m; r++)
+        for (int c = 0; c <= r; c++) M[r][c] *= scale[r] * scale[c];
+    for (int c = 0; c < m; c++) {
+        double d = M[c][c];
+        for (int k = 0; k < c; k++) d -= M[c][k] * M[c][k];
+        if (!(d > RK_MIN_PIVOT)) return false;
+        const double l = sqrt(d);
+        M[c][c] = l;
+        for (int r = c + 1; r < m; r++) {
+            double v = M[r][c];
+            for (int k = 0; k < c; k++) v -= M[r][k] * M[c][k];
+            M[r][c] = v / l;
+        }
+    }
+    return true;
+}
+
+/* Solves (S L L^T S) z = q for z, with S = diag(1/scale), by the factor. */
+static void solve(double L[RK_MAX_TERMS][RK_MAX_TERMS], int m, const double scale[RK_MAX_TERMS],
+                  const double q[RK_MAX_TERMS], double z[RK_MAX_TERMS]) {
+    double y[RK_MAX_TERMS] = {0};
+    for (int r = 0; r < m; r++) {
+        double v = q[r] * scale[r];
+        for (int k = 0; k < r; k++) v -= L[r][k] * y[k];
+        y[r] = v / L[r][r];
+    }
+    for (int r = m - 1; r >= 0; r--) {
+        double v = y[r];
+        for (int k = r + 1; k < m; k++) v -= L[k][r] * z[k];
+        z[r] = v / L[r][r];
+    }
+    for (int r = 0; r < m; r++) z[r] *= scale[r];
+}
+
+static void bond_vector(int dim, const double *const x[3], int64_t i, int64_t j, double xi[3]) {
+    xi[0] = xi[1] = xi[2] = 0.0;
+    for (int a = 0; a < dim && a < 3; a++) xi[a] = x[a][j] - x[a][i];
+}
+
+/* Point i's weights; false (weights 0) when its M_i is singular. */
+static bool point_weights(int dim, int64_t i, const double *const x[3], const double *volume,
+                          const int64_t *first, const int32_t *nbr, double delta,
+                          const double *bond_scale, double *phi) {
+    double M[RK_MAX_TERMS][RK_MAX_TERMS] = {{0}}, q[RK_MAX_TERMS] = {0}, xi[3] = {0};
+    int m = 0;
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        bond_vector(dim, x, i, nbr[k], xi);
+        const double w =
+            rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0) * volume[nbr[k]];
+        m = monomials(dim, xi, delta, q);
+        for (int r = 0; r < m; r++)
+            for (int c = 0; c <= r; c++) M[r][c] += w * q[r] * q[c];
+    }
+    if (m == 0) m = dim == 3 ? 9 : 5; /* no neighbour: singular */
+    for (int r = 0; r < m; r++)
+        for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
+    double scale[RK_MAX_TERMS];
+    const bool ok = factor(M, m, scale);
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        double *out = phi + (int64_t)dim * k;
+        if (!ok) {
+            for (int a = 0; a < dim; a++) out[a] = 0.0;
+            continue;
+        }
+        bond_vector(dim, x, i, nbr[k], xi);
+        const double w = rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
+        double z[RK_MAX_TERMS] = {0};
+        monomials(dim, xi, delta, q);
+        solve(M, m, scale, q, z);
+        for (int a = 0; a < dim; a++) out[a] = w * z[a] / delta;
+    }
+    return ok;
+}
+
+int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const double *volume,
+                            const int64_t *first, const int32_t *nbr, double delta,
+                            const double *bond_scale, double *phi, uint8_t *ok) {
+    if (dim != 2 && dim != 3) return n;
+    int64_t missing = 0;
+#pragma omp parallel for schedule(static) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        ok[i] = point_weights(dim, i, x, volume, first, nbr, delta, bond_scale, phi) ? 1 : 0;
+        missing += ok[i] ? 0 : 1;
+    }
+    return missing;
+}
+
+void rk_gradient_at(int dim, int64_t i, const double *f, const double *volume, const int64_t *first,
+                    const int32_t *nbr, const double *phi, double g[3]) {
+    g[0] = g[1] = g[2] = 0.0;
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        const double df = (f[nbr[k]] - f[i]) * volume[nbr[k]];
+        for (int a = 0; a < dim; a++) g[a] += df * phi[(int64_t)dim * k + a];
+    }
+}
+
+void rk_deformation_gradient(int dim, int64_t n, const double *const u[3], const double *volume,
+                             const int64_t *first, const int32_t *nbr, const double *phi,
+                             double *F) {
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        double *Fi = F + 9 * i;
+        memset(Fi, 0, 9 * sizeof(double));
+        for (int r = 0; r < dim; r++) {
+            double g[3];
+            rk_gradient_at(dim, i, u[r], volume, first, nbr, phi, g);
+            for (int c = 0; c < dim; c++) Fi[3 * r + c] = (r == c ? 1.0 : 0.0) + g[c];
+        }
+    }
+}
