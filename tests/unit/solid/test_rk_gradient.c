@@ -5,6 +5,7 @@
  * error falls as h^2 at fixed delta / h (second order); a homogeneous
  * deformation gives F exactly; a uniform kernel scale (damage on every
  * bond) changes no weight; a family on a line has no weights. */
+#include "cloud_fixtures.h"
 #include "test_support.h"
 
 #include "solid/rk_gradient.h"
@@ -13,59 +14,6 @@
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct {
-    int dim;
-    int64_t n;
-    double h, delta;
-    double *x[3], *volume;
-    int64_t *first;
-    int32_t *nbr;
-} Cloud;
-
-/* A deterministic pseudo-random number in [-1, 1]. */
-static double jitter(uint64_t *s) {
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) / (double)(1ULL << 53) * 2.0 - 1.0;
-}
-
-/* side^dim points on a lattice of spacing h, each moved by up to 0.2 h;
- * families: |xi|_inf <= delta = 2.5 h (the paper's rectangular support). */
-static void cloud_make(Cloud *c, int dim, int side, double h) {
-    memset(c, 0, sizeof *c);
-    c->dim = dim;
-    c->h = h;
-    c->delta = 2.5 * h;
-    c->n = dim == 3 ? (int64_t)side * side * side : (int64_t)side * side;
-    for (int a = 0; a < 3; a++) c->x[a] = calloc((size_t)c->n, sizeof(double));
-    c->volume = calloc((size_t)c->n, sizeof(double));
-    uint64_t seed = 12345;
-    for (int64_t i = 0; i < c->n; i++) {
-        const int64_t ijk[3] = {i % side, (i / side) % side, i / ((int64_t)side * side)};
-        for (int a = 0; a < dim; a++) c->x[a][i] = h * ((double)ijk[a] + 0.2 * jitter(&seed));
-        c->volume[i] = pow(h, dim);
-    }
-    c->first = calloc((size_t)c->n + 1, sizeof(int64_t));
-    int64_t cap = c->n * 130, m = 0;
-    c->nbr = calloc((size_t)cap, sizeof(int32_t));
-    for (int64_t i = 0; i < c->n; i++) {
-        c->first[i] = m;
-        for (int64_t j = 0; j < c->n; j++) {
-            if (j == i) continue;
-            double far = 0.0;
-            for (int a = 0; a < dim; a++) far = fmax(far, fabs(c->x[a][j] - c->x[a][i]));
-            if (far <= c->delta && m < cap) c->nbr[m++] = (int32_t)j;
-        }
-    }
-    c->first[c->n] = m;
-}
-
-static void cloud_free(Cloud *c) {
-    for (int a = 0; a < 3; a++) free(c->x[a]);
-    free(c->volume);
-    free(c->first);
-    free(c->nbr);
-}
 
 static double *weights(const Cloud *c, const double *scale, uint8_t **ok, int64_t *missing) {
     double *phi = calloc((size_t)(c->first[c->n] * c->dim), sizeof(double));
@@ -133,7 +81,7 @@ static double gradient_error(const Cloud *c, const double *phi, const uint8_t *o
 
 static void exact_for(int dim, int side) {
     Cloud c;
-    cloud_make(&c, dim, side, 1e-3);
+    cloud_make(&c, dim, side, 1e-3, 0.2);
     uint8_t *ok;
     int64_t missing;
     double *phi = weights(&c, NULL, &ok, &missing);
@@ -171,7 +119,7 @@ static void test_second_order(void **state) {
     double e[3];
     for (int k = 0; k < 3; k++) {
         Cloud c;
-        cloud_make(&c, 2, 16 << k, 4e-3 / (double)(1 << k));
+        cloud_make(&c, 2, 16 << k, 4e-3 / (double)(1 << k), 0.2);
         uint8_t *ok;
         int64_t missing;
         double *phi = weights(&c, NULL, &ok, &missing);
@@ -191,7 +139,7 @@ static void test_second_order(void **state) {
 static void test_homogeneous_deformation(void **state) {
     (void)state;
     Cloud c;
-    cloud_make(&c, 2, 12, 1e-3);
+    cloud_make(&c, 2, 12, 1e-3, 0.2);
     uint8_t *ok;
     int64_t missing;
     double *phi = weights(&c, NULL, &ok, &missing);

@@ -1,0 +1,23 @@
+/* Test clouds for the correspondence solid's kernels (solid/rk_gradient.h,
+ * solid/bac_force.h): a lattice moved at random, with square (cube)
+ * families |xi|_inf <= delta = 2.5 h, found by brute force. */
+#ifndef NSPD_TEST_CLOUD_FIXTURES_H
+#define NSPD_TEST_CLOUD_FIXTURES_H
+
+#include <stdint.h>
+
+typedef struct {
+    int dim;
+    int64_t n;
+    double h, delta;
+    double *x[3], *volume;
+    int64_t *first;
+    int32_t *nbr;
+} Cloud;
+
+/* side^dim points of spacing h, each moved by up to `jitter` h (a fixed
+ * pseudo-random sequence), volume h^dim. */
+void cloud_make(Cloud *c, int dim, int side, double h, double jitter);
+void cloud_free(Cloud *c);
+
+#endif
