@@ -18,6 +18,9 @@ static int read_time(CfgNode *root, SimConfig *cfg) {
     TRY(cfg_req_map(root, "time", &t));
     TRY(cfg_req_double(t, "end", &cfg->end_time));
     TRY(cfg_check_positive(t, "end", cfg->end_time, "the simulated end time in s"));
+    /* where time.end was given, for the step-count check made once the
+     * stable step is known (sim/sim.c) */
+    cfg_node_where(cfg_map_find(t, "end"), cfg->end_time_at, sizeof cfg->end_time_at);
     TRY(cfg_maybe_double(t, "dt", &cfg->dt, &cfg->dt_given));
     if (cfg->dt_given) TRY(cfg_check_positive(t, "dt", cfg->dt, "a time step in s"));
     TRY(cfg_opt_double(t, "safety_factor", 0.8, &cfg->safety_factor));

@@ -44,10 +44,12 @@ static int choose_pace(Sim *sim) {
     }
     const double steps = ceil(c->end_time / sim->dt - 1e-9);
     if (!(steps <= SIM_MAX_STEPS))
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "time.end = %g s needs %.3g steps of %g s; expected at most %.0e steps "
-                         "(a shorter time.end or a coarser case)",
-                         c->end_time, steps, sim->dt, (double)SIM_MAX_STEPS);
+        return NSPD_FAIL(
+            NSPD_ERR_INPUT,
+            "%s%stime.end = %g s needs %.3g steps of %g s; expected at most %.0e steps "
+            "(a shorter time.end or a coarser case)",
+            c->end_time_at, c->end_time_at[0] ? ": " : "", c->end_time, steps, sim->dt,
+            (double)SIM_MAX_STEPS);
     sim->steps = steps < 1 ? 1 : (int64_t)steps;
     return NSPD_OK;
 }

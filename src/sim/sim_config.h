@@ -66,7 +66,9 @@ typedef struct {
 typedef struct {
     char name[SIM_MAX_NAME];
     double end_time; /* s */
-    double dt;       /* s; computed from the stable step when !dt_given */
+    /* "FILE:LINE:COL" (or the --set) of time.end, for messages about it */
+    char end_time_at[320];
+    double dt; /* s; computed from the stable step when !dt_given */
     bool dt_given;
     double safety_factor;    /* dt = safety_factor * stable step */
     SolidConfig solid;       /* kind SOLID_NONE: the case has no solid */

@@ -98,7 +98,7 @@ check "more memory than the machine" "the case needs about [0-9.]+ GB \\(9.[0-9]
     "$nspd" check "$src/cases/plate_crack.yaml" --set solid.spacing=1.6e-6
 check "more memory than --max-memory" "and --max-memory allows 0.05 GB" \
     "$nspd" info "$src/cases/plate_crack.yaml" --max-memory 50
-check "steps past the limit" "time.end = 1000 s needs 7.48e\+10 steps" \
+check "steps past the limit" "^--set time.end=1e3: time.end = 1000 s needs 7.48e\+10 steps" \
     "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/result" --set time.end=1e3 \
     --set output.history_interval=1e-3 --set output.field_interval=1
 mkdir -p "$work/existing"
