@@ -375,6 +375,37 @@ static int surface_to_image(cairo_surface_t *page, Image *img) {
     return NSPD_OK;
 }
 
+/* An RGB page of w x h pixels and its context, with the font
+ * options that give the same glyphs on every run (grey antialiasing, no
+ * hinting that a desktop's settings could change). */
+static cairo_t *page_open(int w, int h, cairo_surface_t **page) {
+    *page = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+    cairo_t *cr = cairo_create(*page);
+    cairo_font_options_t *fo = cairo_font_options_create();
+    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_set_font_options(cr, fo);
+    cairo_font_options_destroy(fo);
+    return cr;
+}
+
+/* Ends the drawing and writes the page as a PNG (io/png.h: atomically);
+ * frees the context and the page either way. */
+static int page_write_png(cairo_t *cr, cairo_surface_t *page, const char *path) {
+    int status = NSPD_OK;
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+        status = NSPD_FAIL(NSPD_ERR_NOMEM, "cannot draw '%s': %s", path,
+                           cairo_status_to_string(cairo_status(cr)));
+    cairo_destroy(cr);
+    Image img = {0};
+    if (status == NSPD_OK) status = surface_to_image(page, &img);
+    cairo_surface_destroy(page);
+    if (status == NSPD_OK) status = image_write_png(&img, path);
+    image_destroy(&img);
+    return status;
+}
+
 int figure_write_png(const char *path, const Figure *fig) {
     if (fig->w < 1 || fig->h < 1 || !(fig->pixels_per_m > 0))
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "cannot draw '%s': empty plot area", path);
@@ -386,17 +417,8 @@ int figure_write_png(const char *path, const Figure *fig) {
     cairo_destroy(cr);
     cairo_surface_destroy(scratch);
 
-    cairo_surface_t *page =
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, p.lay.width, p.lay.height);
-    cr = cairo_create(page);
-    /* the same glyphs on every run: grey antialiasing, no hinting that a
-     * desktop's settings could change */
-    cairo_font_options_t *fo = cairo_font_options_create();
-    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-    cairo_set_font_options(cr, fo);
-    cairo_font_options_destroy(fo);
+    cairo_surface_t *page;
+    cr = page_open(p.lay.width, p.lay.height, &page);
 
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
     cairo_paint(cr);
@@ -410,17 +432,7 @@ int figure_write_png(const char *path, const Figure *fig) {
         draw_bar(cr, fig, &p, b);
         cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
     }
-    int status = NSPD_OK;
-    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
-        status = NSPD_FAIL(NSPD_ERR_NOMEM, "cannot draw '%s': %s", path,
-                           cairo_status_to_string(cairo_status(cr)));
-    cairo_destroy(cr);
-    Image img = {0};
-    if (status == NSPD_OK) status = surface_to_image(page, &img);
-    cairo_surface_destroy(page);
-    if (status == NSPD_OK) status = image_write_png(&img, path);
-    image_destroy(&img);
-    return status;
+    return page_write_png(cr, page, path);
 }
 
 /* ---------------------------------------------------------- line plots */
@@ -578,24 +590,8 @@ int figure_write_line_plot(const char *path, const FigureLine *p, bool svg) {
         cairo_surface_destroy(s);
         return out_file_close(&out, write_failed);
     }
-    cairo_surface_t *page = cairo_image_surface_create(CAIRO_FORMAT_RGB24, LINE_W, LINE_H);
-    cairo_t *cr = cairo_create(page);
-    cairo_font_options_t *fo = cairo_font_options_create();
-    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-    cairo_set_font_options(cr, fo);
-    cairo_font_options_destroy(fo);
+    cairo_surface_t *page;
+    cairo_t *cr = page_open(LINE_W, LINE_H, &page);
     draw_line_plot(cr, p);
-    int status = NSPD_OK;
-    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
-        status = NSPD_FAIL(NSPD_ERR_NOMEM, "cannot draw '%s': %s", path,
-                           cairo_status_to_string(cairo_status(cr)));
-    cairo_destroy(cr);
-    Image img = {0};
-    if (status == NSPD_OK) status = surface_to_image(page, &img);
-    cairo_surface_destroy(page);
-    if (status == NSPD_OK) status = image_write_png(&img, path);
-    image_destroy(&img);
-    return status;
+    return page_write_png(cr, page, path);
 }
