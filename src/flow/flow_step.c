@@ -327,6 +327,13 @@ int gks_solver_step(GksSolver *s, double dt) {
         s->w[v] = s->wn[v];
         s->wn[v] = tmp;
     }
+    /* The step wrote the interior only: after the swap the box ghost layers
+     * would hold the state of two steps back until the next step refills
+     * them, and whatever reads the flow between steps (a coupling's surface
+     * loads near a box face, probes, a checkpoint) would see that. Refilled
+     * here, W is whole after every step; the fill at the start of the next
+     * step gives the same values, so the flow's own bits do not change. */
+    gks_solver_fill_boundaries(s);
     s->steps++;
     s->time += dt;
     s->fallbacks_last = nb;

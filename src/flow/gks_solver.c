@@ -110,13 +110,6 @@ int gks_solver_checkpoint(GksSolver *s, Checkpoint *ck) {
     const size_t n = (size_t)s->grid.size;
     static const char *const W[4] = {"gks.rho", "gks.rho_u", "gks.rho_v", "gks.rho_e"};
     for (int v = 0; v < 4; v++) TRY(checkpoint_io(ck, W[v], s->w[v], n * sizeof(double)));
-    /* The next-state buffer too: a step writes its interior only, so after
-     * the swap the box ghost layers of W hold the values of two steps back
-     * until the next step refills them, and what reads W between steps (a
-     * coupling's surface loads near a box face, the outputs) sees those. */
-    static const char *const WN[4] = {"gks.next_rho", "gks.next_rho_u", "gks.next_rho_v",
-                                      "gks.next_rho_e"};
-    for (int v = 0; v < 4; v++) TRY(checkpoint_io(ck, WN[v], s->wn[v], n * sizeof(double)));
     TRY(checkpoint_io(ck, "gks.kind", s->kind, n));
     int has = s->has_sources;
     TRY(checkpoint_io_int(ck, "gks.has_sources", &has));
