@@ -10,12 +10,7 @@ if ! command -v ffmpeg >/dev/null || ! command -v ffprobe >/dev/null; then
     echo "SKIP: ffmpeg is not installed (scripts/deps.sh build installs it)"
     exit 77
 fi
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-count=0
-ok() { count=$((count + 1)); }
-fail() { count=$((count + 1)); failures=$((failures + 1)); echo "FAIL $*"; }
+. "$src/tests/cli/common.sh"
 
 # a coarse vortex: 6 outputs of two picture series
 "$nspd" run "$src/cases/vortex.yaml" -o "$work/run" --quiet \
@@ -53,5 +48,4 @@ mkdir "$work/one" && cp "$work/run/${first}_00000.png" "$work/one/"
 "$nspd" movie "$work/run" --fps 0 2>/dev/null
 [ $? -eq 2 ] && ok || fail "--fps 0 accepted"
 
-echo "$((count - failures)) of $count checks passed"
-[ "$failures" -eq 0 ]
+finish

@@ -7,12 +7,7 @@
 set -u
 nspd=$1
 src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-count=0
-ok() { count=$((count + 1)); }
-fail() { count=$((count + 1)); failures=$((failures + 1)); echo "FAIL $*"; }
+. "$src/tests/cli/common.sh"
 
 coarse="--set solid.spacing=5e-4 --set solid.thickness=5e-4 --set time.end=4e-6"
 "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/on" --quiet $coarse || fail "run"
@@ -48,5 +43,4 @@ mkdir "$work/empty"
 [ $? -eq 2 ] && grep -q "history.csv" "$work/err" && ok || fail "no history: $(cat "$work/err")"
 ls "$work/off" "$work/empty" | grep -q '\.part$' && fail "a .part file was left" || ok
 
-echo "$((count - failures)) of $count checks passed"
-[ "$failures" -eq 0 ]
+finish

@@ -11,20 +11,12 @@
 set -u
 nspd=$1
 src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-count=0
-ok() { count=$((count + 1)); }
-fail() { count=$((count + 1)); failures=$((failures + 1)); echo "FAIL $*"; }
+. "$src/tests/cli/common.sh"
 
 # the coupled panel, coarse (tests/golden/runs.txt): flow and solid pictures
-line=$(grep "^panel_shock|" "$src/tests/golden/runs.txt")
+golden_overrides panel_shock >"$work/overrides"
 set -- run "$src/cases/panel_shock.yaml" -o "$work/run" --quiet
-old_ifs=$IFS
-IFS=';'
-for s in ${line#*|}; do set -- "$@" --set "$s"; done
-IFS=$old_ifs
+while IFS= read -r o; do set -- "$@" --set "$o"; done <"$work/overrides"
 "$nspd" "$@" || fail "the run failed"
 if command -v ffmpeg >/dev/null; then
     "$nspd" movie "$work/run" --field mach_damage >/dev/null || fail "movie"
@@ -93,5 +85,4 @@ else
     [ -n "${NSPD_REPORT_SHOT:-}" ] && cp "$work/shot.png" "$NSPD_REPORT_SHOT"
 fi
 
-echo "$((count - failures)) of $count checks passed"
-[ "$failures" -eq 0 ]
+finish

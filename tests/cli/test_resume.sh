@@ -15,26 +15,14 @@
 set -u
 nspd=$1
 src=$2
-work=$(mktemp -d)
-trap '[ -n "${NSPD_KEEP_WORK:-}" ] && echo "kept $work" || rm -rf "$work"' EXIT
-failures=0
-count=0
-ok() { count=$((count + 1)); }
-fail() { count=$((count + 1)); failures=$((failures + 1)); echo "FAIL $*"; }
+. "$src/tests/cli/common.sh"
 random() { echo $(($(od -An -N2 -tu2 /dev/urandom) % $1)); }
 
 # The coarse runs of the golden set (tests/golden/runs.txt), lengthened and
 # checkpointed by the overrides after the case name, which come last and win.
 case_args() {
-    name=$1
-    shift
-    line=$(grep "^$name|" "$src/tests/golden/runs.txt")
-    set -- "$src/cases/$name.yaml" --quiet
-    old_ifs=$IFS
-    IFS=';'
-    for s in ${line#*|}; do set -- "$@" --set "$s"; done
-    IFS=$old_ifs
-    printf '%s\n' "$@"
+    printf '%s\n' "$src/cases/$1.yaml" --quiet
+    golden_overrides "$1" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done
 }
 
 # nspd run with the case's arguments (one per line in $work/args.$1) and
@@ -184,5 +172,4 @@ else
     fail "the run ended before its second checkpoint"
 fi
 
-echo "$((count - failures)) of $count checks passed"
-[ "$failures" -eq 0 ]
+finish

@@ -7,12 +7,7 @@
 set -u
 nspd=$1
 src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-count=0
-ok() { count=$((count + 1)); }
-fail() { count=$((count + 1)); failures=$((failures + 1)); echo "FAIL $*"; }
+. "$src/tests/cli/common.sh"
 
 # a coarse plate: 10,600 points, 250 steps, crack grows (see tests/verify/pd_plate)
 out="$work/plate"
@@ -73,5 +68,4 @@ grep -q '"completed": false' "$work/blowup/summary.json" && grep -q '"stopped_by
     "$work/blowup/summary.json" && ok || fail "blown-up solid: summary.json does not say why it stopped"
 [ -s "$work/blowup/solid_00000.vtu" ] && ok || fail "blown-up solid: the outputs before were not kept"
 
-echo "$((count - failures)) passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish
