@@ -44,50 +44,6 @@ static int alloc_points(BondBody *body) {
     return NSPD_OK;
 }
 
-static void assign_regions(BondBody *body) {
-    const PdConfig *cfg = &body->cfg;
-#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < body->n; i++) {
-        double p[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
-        body->region[i] = -1;
-        for (int r = 0; r < cfg->boundary_count; r++) {
-            if (shapeset_contains(&cfg->boundaries[r].region, p)) {
-                body->region[i] = (int16_t)r;
-                break;
-            }
-        }
-        for (int k = 0; k < cfg->initial_velocity_count; k++) {
-            if (shapeset_contains(&cfg->initial_velocities[k].region, p))
-                for (int d = 0; d < 3; d++) body->v[d][i] = cfg->initial_velocities[k].velocity[d];
-        }
-    }
-}
-
-/* Flattens cfg.boundaries into body->boundary (bond_body.h). */
-static int build_boundary_table(BondBody *body) {
-    const PdConfig *cfg = &body->cfg;
-    PdBoundaryTable *t = &body->boundary;
-    const size_t n = 3 * (size_t)cfg->boundary_count;
-    TRY(nspd_alloc(&t->velocity_given, n, sizeof(uint8_t)));
-    TRY(nspd_alloc(&t->displacement_held, n, sizeof(uint8_t)));
-    TRY(nspd_alloc(&t->velocity, n, sizeof(double)));
-    TRY(nspd_alloc(&t->displacement, n, sizeof(double)));
-    TRY(nspd_alloc(&t->force_density, n, sizeof(double)));
-    t->count = cfg->boundary_count;
-    for (int r = 0; r < cfg->boundary_count; r++) {
-        const PdBoundaryRegion *b = &cfg->boundaries[r];
-        for (int d = 0; d < 3; d++) {
-            const size_t k = 3 * (size_t)r + (size_t)d;
-            t->velocity_given[k] = (b->velocity_mask >> d) & 1u;
-            t->displacement_held[k] = (b->displacement_mask >> d) & 1u;
-            t->velocity[k] = b->velocity[d];
-            t->displacement[k] = b->displacement[d];
-            t->force_density[k] = b->force_density[d];
-        }
-    }
-    return NSPD_OK;
-}
-
 /* Steps 5-7 above. `g` are the per-point surface factors (NULL: none). */
 static void assign_coefficients(BondBody *body, double *const g[3]) {
     const PdConfig *cfg = &body->cfg;
@@ -157,8 +113,8 @@ static int build(BondBody *body, PdConfig *cfg) {
     double v_ref = pow(cfg->spacing, cfg->dim) * (cfg->dim == 2 ? cfg->thickness : 1.0);
     for (int64_t i = 0; i < body->n; i++) body->volume[i] = v_ref;
     body->coef_scale = body->micromodulus * v_ref / cfg->spacing;
-    assign_regions(body);
-    TRY(build_boundary_table(body));
+    pd_regions_assign(cfg, body->n, (const double *const *)body->x, body->region, body->v);
+    TRY(pd_boundary_table_build(&body->boundary, cfg));
 
     TRY(bonds_find(body->n, body->dim, (const double *const *)body->x, body->horizon,
                    &body->bond_first, &body->bond_nbr));
@@ -201,11 +157,7 @@ void bond_body_destroy(BondBody *body) {
     }
     nspd_free(&body->volume);
     nspd_free(&body->region);
-    nspd_free(&body->boundary.velocity_given);
-    nspd_free(&body->boundary.displacement_held);
-    nspd_free(&body->boundary.velocity);
-    nspd_free(&body->boundary.displacement);
-    nspd_free(&body->boundary.force_density);
+    pd_boundary_table_free(&body->boundary);
     nspd_free(&body->initial_bond_volume);
     nspd_free(&body->bond_first);
     nspd_free(&body->bond_nbr);

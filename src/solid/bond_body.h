@@ -30,23 +30,9 @@
 #define NSPD_SOLID_BOND_BODY_H
 
 #include "solid/pd_config.h"
+#include "solid/pd_regions.h"
 
 #include <stdint.h>
-
-/* The boundary regions of cfg.boundaries as the integrator reads them: plain
- * arrays built at creation (no shapes, names or pointers to follow, so a
- * device copy is a copy of five arrays). Entry 3 r + d is component d of
- * region r; point i belongs to region region[i] (or none if -1). Changing
- * cfg.boundaries after creation does not reach the integrator: change the
- * table. */
-typedef struct {
-    int count;                  /* regions */
-    uint8_t *velocity_given;    /* 1: velocity component prescribed */
-    uint8_t *displacement_held; /* 1: displacement component held (velocity 0) */
-    double *velocity;           /* m/s, where given */
-    double *displacement;       /* m, where held */
-    double *force_density;      /* N/m^3 added on the region's points */
-} PdBoundaryTable;
 
 typedef struct {
     PdConfig cfg; /* owned copy of the configuration (shapes included) */

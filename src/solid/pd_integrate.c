@@ -7,47 +7,21 @@
 #include <math.h>
 #include <stdbool.h>
 
-/* v += a h for every point, then the regions' prescribed velocities (from
- * the flat table body->boundary, not cfg.boundaries). */
-static void kick(BondBody *body, double h) {
-    const PdConfig *cfg = &body->cfg;
-    const int dim = body->dim;
-    const double inv_rho = 1.0 / cfg->density;
-    const PdBoundaryTable *bt = &body->boundary;
-#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < body->n; i++) {
-        const int r = body->region[i];
-        for (int d = 0; d < dim; d++) {
-            const int k = 3 * r + d; /* read only when r >= 0 */
-            double b = body->external[d][i] + cfg->body_force[d];
-            if (r >= 0) b += bt->force_density[k];
-            body->v[d][i] += (body->force[d][i] + b) * inv_rho * h;
-            if (r >= 0) {
-                if (bt->velocity_given[k]) body->v[d][i] = bt->velocity[k];
-                if (bt->displacement_held[k]) body->v[d][i] = 0.0;
-            }
-        }
+/* The body's arrays as the shared kick and drift read them. */
+static PdMotion motion_of(BondBody *body) {
+    PdMotion m = {.dim = body->dim,
+                  .n = body->n,
+                  .density = body->cfg.density,
+                  .body_force = body->cfg.body_force,
+                  .region = body->region,
+                  .boundary = &body->boundary};
+    for (int d = 0; d < 3; d++) {
+        m.u[d] = body->u[d];
+        m.v[d] = body->v[d];
+        m.force[d] = body->force[d];
+        m.external[d] = body->external[d];
     }
-}
-
-/* u += v h, then the regions' held displacements. Returns true if any
- * displacement is not finite (the NaN check rides on this pass, which reads
- * and writes u anyway: a NaN in v reaches u in the same step). */
-static bool drift(BondBody *body, double h) {
-    const int dim = body->dim;
-    const PdBoundaryTable *bt = &body->boundary;
-    bool bad = false;
-#pragma omp parallel for schedule(static) reduction(|| : bad) if (body->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < body->n; i++) {
-        const int r = body->region[i];
-        for (int d = 0; d < dim; d++) {
-            double u = body->u[d][i] + body->v[d][i] * h;
-            if (r >= 0 && bt->displacement_held[3 * r + d]) u = bt->displacement[3 * r + d];
-            body->u[d][i] = u;
-            bad = bad || !isfinite(u);
-        }
-    }
-    return bad;
+    return m;
 }
 
 static int report_non_finite(const BondBody *body) {
@@ -65,17 +39,18 @@ static int report_non_finite(const BondBody *body) {
 
 int pd_step(BondBody *body, double dt) {
     bool bad;
+    const PdMotion m = motion_of(body);
     if (body->cfg.integrator == PD_VELOCITY_VERLET) {
         if (!body->force_valid) pd_force_compute(body);
-        kick(body, 0.5 * dt);
-        bad = drift(body, dt);
+        pd_kick(&m, 0.5 * dt);
+        bad = pd_drift(&m, dt);
         pd_force_compute(body);
-        kick(body, 0.5 * dt);
+        pd_kick(&m, 0.5 * dt);
         body->force_valid = true;
     } else {
         pd_force_compute(body);
-        kick(body, dt);
-        bad = drift(body, dt);
+        pd_kick(&m, dt);
+        bad = pd_drift(&m, dt);
         body->force_valid = false;
     }
     if (bad) return report_non_finite(body);
