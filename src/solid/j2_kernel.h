@@ -213,7 +213,10 @@ NSPD_KERNEL void j2_rotate_stress_2d(const double R[4], const double sigma_hat[4
 /* The first Piola-Kirchhoff stress, in-plane 2x2 row-major (1c.5):
  * sigma = R sigma_hat R^T, P = J sigma F^-T with J = det F (the in-plane
  * area ratio: plane strain keeps the thickness). J F^-T is the cofactor
- * matrix of F, so no division: P = sigma cof(F). */
+ * matrix of F, so no division: P = sigma cof(F). In plane stress the
+ * thickness does change (stretch exp(sum de_zz), which j2_update does not
+ * return); P here is per unit current thickness, the usual 2D
+ * approximation while strains are small. */
 NSPD_KERNEL void j2_piola_2d(const double F[4], const double sigma_hat[4], double P[4]) {
     double R[4], s[4];
     j2_polar_rotation_2d(F, R);
