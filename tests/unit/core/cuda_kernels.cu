@@ -9,6 +9,7 @@
 #include "flow/gks_update_kernel.h"
 #include "flow/recon_kernel.h"
 #include "solid/bond_force_kernel.h"
+#include "solid/j2_kernel.h"
 
 static __device__ int64_t thread_index(void) {
     return (int64_t)blockIdx.x * blockDim.x + threadIdx.x;
@@ -83,4 +84,26 @@ __global__ void bond_force_points(int64_t n, int dim, const double *x, const dou
         bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
     else
         bond_force_point_3d(i, x, y, z, ux, uy, uz, first, nbr, coef, scale, limit2, fx, fy, fz);
+}
+
+/* The J2 material point of n bonds, one thread per bond: F and Fdot at the
+ * step's midpoint (4 per bond), sigma_hat (4) and eqps updated, then P and
+ * the two damage laws from F at the end of the step. */
+__global__ void j2_bonds(int64_t n, J2Material m, const double *F_mid, const double *Fdot,
+                         const double *F_end, double dt, double *sigma, double *eqps, double *P,
+                         double *damage) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    double de[3], R[4], cauchy[4];
+    if (!j2_unrotated_increment_2d(F_mid + 4 * i, Fdot + 4 * i, dt, de)) {
+        damage[i] = 1.0;
+        return;
+    }
+    j2_update(&m, de, sigma + 4 * i, eqps + i);
+    j2_piola_2d(F_end + 4 * i, sigma + 4 * i, P + 4 * i);
+    j2_polar_rotation_2d(F_end + 4 * i, R);
+    j2_rotate_stress_2d(R, sigma + 4 * i, cauchy);
+    damage[i] =
+        fmax(damage[i], fmax(j2_damage_ductile(eqps[i], 0.18, 0.2),
+                             j2_damage_brittle(j2_max_principal(cauchy), 3e9, J2_BRITTLE_RAMP)));
 }
