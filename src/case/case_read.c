@@ -240,8 +240,7 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     if (!solid && !flow)
         return cfg_fail(root, "nothing to simulate; expected a 'solid' or a 'flow' section");
     if (solid) {
-        cfg->solid.kind = SOLID_BOND;
-        TRY(case_read_solid(solid, &cfg->solid.bond));
+        TRY(case_read_solid(solid, &cfg->solid));
     }
     GhostCouplingConfig walls = {0};
     if (flow) {
@@ -271,7 +270,7 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     CfgNode *coupling;
     TRY(cfg_opt_map(root, "coupling", &coupling));
     if (solid && flow) {
-        if (cfg->solid.bond.dim != 2) {
+        if (solid_config_dim(&cfg->solid) != 2) {
             ghost_coupling_config_free(&walls);
             return cfg_fail_at(solid, "model",
                                "a solid coupled to the 2D flow must be 2D; "
@@ -294,7 +293,7 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
         return cfg_fail(coupling, "a coupling needs both a solid and a flow section");
     }
     ghost_coupling_config_free(&walls); /* read but not used: no bodies */
-    TRY(read_output(root, cfg, solid ? cfg->solid.bond.dim : 2, solid != NULL));
+    TRY(read_output(root, cfg, solid ? solid_config_dim(&cfg->solid) : 2, solid != NULL));
     return cfg_end_map(root);
 }
 

@@ -30,13 +30,19 @@ static int read_components(CfgNode *map, const char *key, int dim, unsigned *mas
     return NSPD_OK;
 }
 
-static int read_material(CfgNode *solid, PdConfig *cfg) {
-    CfgNode *m;
-    TRY(cfg_req_map(solid, "material", &m));
+/* density and Young's modulus, the keys every PD material has */
+static int read_elastic(CfgNode *m, PdConfig *cfg) {
     TRY(cfg_req_double(m, "density", &cfg->density));
     TRY(cfg_check_positive(m, "density", cfg->density, "a density in kg/m^3"));
     TRY(cfg_req_double(m, "youngs_modulus", &cfg->youngs_modulus));
     TRY(cfg_check_positive(m, "youngs_modulus", cfg->youngs_modulus, "Young's modulus in Pa"));
+    return NSPD_OK;
+}
+
+static int read_material(CfgNode *solid, PdConfig *cfg) {
+    CfgNode *m;
+    TRY(cfg_req_map(solid, "material", &m));
+    TRY(read_elastic(m, cfg));
     double nu_model = pd_model_poisson_ratio(cfg->model), nu;
     TRY(cfg_opt_double(m, "poisson_ratio", nu_model, &nu));
     if (fabs(nu - nu_model) > 1e-3)
@@ -182,8 +188,8 @@ static int check_lattice_size(CfgNode *s, const PdConfig *cfg) {
     return NSPD_OK;
 }
 
-int case_read_solid(CfgNode *s, PdConfig *cfg) {
-    memset(cfg, 0, sizeof *cfg);
+/* The keys both formulations read the same way, up to the material. */
+static int read_lattice(CfgNode *s, PdConfig *cfg, double default_horizon) {
     int model;
     TRY(cfg_req_enum(s, "model", PD_MODEL_NAMES, &model));
     cfg->model = (PdModel)model;
@@ -194,19 +200,19 @@ int case_read_solid(CfgNode *s, PdConfig *cfg) {
         TRY(cfg_opt_double(s, "thickness", cfg->spacing, &cfg->thickness));
         TRY(cfg_check_positive(s, "thickness", cfg->thickness, "the plate thickness in m"));
     }
-    TRY(cfg_opt_double(s, "horizon_factor", 3.015, &cfg->horizon_factor));
+    TRY(cfg_opt_double(s, "horizon_factor", default_horizon, &cfg->horizon_factor));
     if (!(cfg->horizon_factor >= 1.0))
         return cfg_fail_at(s, "horizon_factor",
                            "%g makes the horizon smaller than the spacing; expected m >= 1 "
-                           "(3.015 is usual)",
-                           cfg->horizon_factor);
+                           "(%g is usual)",
+                           cfg->horizon_factor, default_horizon);
     /* m = 50 is already 7,850 bonds per point in 2D and 520,000 in 3D; 10^6
      * spacings once kept the family count busy for hours */
     if (!(cfg->horizon_factor <= 50.0))
         return cfg_fail_at(s, "horizon_factor",
-                           "%g spacings; expected m <= 50 (3.015 is usual; convergence studies "
+                           "%g spacings; expected m <= 50 (%g is usual; convergence studies "
                            "go to about 10)",
-                           cfg->horizon_factor);
+                           cfg->horizon_factor, default_horizon);
     /* absent: the lattice starts half a spacing inside the geometry's bounding box */
     CfgNode *origin = cfg_map_find(s, "lattice_origin");
     if (origin) origin->used = true;
@@ -214,15 +220,26 @@ int case_read_solid(CfgNode *s, PdConfig *cfg) {
         TRY(cfg_req_vec(s, "lattice_origin", cfg->dim, cfg->lattice_origin));
         cfg->has_lattice_origin = true;
     }
-    TRY(read_material(s, cfg));
+    return NSPD_OK;
+}
+
+/* The keys after the material that both formulations share. */
+static int read_body(CfgNode *s, PdConfig *cfg) {
     TRY(case_read_shapes(s, "geometry", cfg->dim, true, &cfg->geometry));
     TRY(check_lattice_size(s, cfg));
-    TRY(read_failure(s, cfg));
     TRY(read_precracks(s, cfg));
     TRY(read_boundaries(s, cfg));
     TRY(read_initial_velocities(s, cfg));
     double zero[3] = {0, 0, 0};
     TRY(cfg_opt_vec(s, "body_force", cfg->dim, zero, cfg->body_force));
+    return NSPD_OK;
+}
+
+static int read_bond(CfgNode *s, PdConfig *cfg) {
+    TRY(read_lattice(s, cfg, 3.015));
+    TRY(read_material(s, cfg));
+    TRY(read_body(s, cfg));
+    TRY(read_failure(s, cfg));
     int v, srf, integ;
     TRY(cfg_opt_enum(s, "volume_correction", PD_VOLUME_NAMES, PD_VOLUME_LINEAR, &v));
     TRY(cfg_opt_enum(s, "surface_correction", PD_SURFACE_NAMES, PD_SURFACE_ENERGY, &srf));
@@ -230,5 +247,133 @@ int case_read_solid(CfgNode *s, PdConfig *cfg) {
     cfg->volume_correction = (PdVolumeCorrection)v;
     cfg->surface_correction = (PdSurfaceCorrection)srf;
     cfg->integrator = (PdIntegrator)integ;
+    return NSPD_OK;
+}
+
+static int read_cpd_material(CfgNode *s, CpdConfig *cfg) {
+    CfgNode *m;
+    TRY(cfg_req_map(s, "material", &m));
+    TRY(read_elastic(m, &cfg->pd));
+    TRY(cfg_req_double(m, "poisson_ratio", &cfg->poisson_ratio));
+    if (!(cfg->poisson_ratio > -1.0 && cfg->poisson_ratio < 0.5))
+        return cfg_fail_at(m, "poisson_ratio", "%g; expected a Poisson's ratio in (-1, 0.5)",
+                           cfg->poisson_ratio);
+    TRY(cfg_opt_double(m, "yield_stress", 0.0, &cfg->yield_stress));
+    if (!(cfg->yield_stress >= 0.0))
+        return cfg_fail_at(m, "yield_stress",
+                           "%g; expected the initial yield stress sigma_Y in Pa (0 or no key: "
+                           "elastic)",
+                           cfg->yield_stress);
+    TRY(cfg_opt_double(m, "hardening_modulus", 0.0, &cfg->hardening));
+    if (!(cfg->hardening >= 0.0))
+        return cfg_fail_at(m, "hardening_modulus",
+                           "%g; expected the linear hardening modulus H = d sigma_y / d eqps "
+                           ">= 0 in Pa",
+                           cfg->hardening);
+    return cfg_end_map(m);
+}
+
+static int read_cpd_failure(CfgNode *s, CpdConfig *cfg) {
+    CfgNode *f;
+    cfg->damage = CPD_DAMAGE_NONE;
+    cfg->plastic_strain_threshold = 0.18;
+    cfg->plastic_strain_critical = 0.2;
+    cfg->damage_ramp = 0.01;
+    TRY(cfg_opt_map(s, "failure", &f));
+    if (!f) return NSPD_OK;
+    int law;
+    TRY(cfg_req_enum(f, "law", CPD_DAMAGE_NAMES, &law));
+    cfg->damage = (CpdDamageLaw)law;
+    if (cfg->damage == CPD_DAMAGE_DUCTILE) {
+        TRY(cfg_opt_double(f, "plastic_strain_threshold", 0.18, &cfg->plastic_strain_threshold));
+        TRY(cfg_opt_double(f, "plastic_strain_critical", 0.2, &cfg->plastic_strain_critical));
+        if (!(cfg->plastic_strain_threshold >= 0.0 &&
+              cfg->plastic_strain_critical > cfg->plastic_strain_threshold))
+            return cfg_fail_at(f, "plastic_strain_critical",
+                               "%g with threshold %g; expected 0 <= threshold < critical",
+                               cfg->plastic_strain_critical, cfg->plastic_strain_threshold);
+        if (!(cfg->yield_stress > 0.0))
+            return cfg_fail_at(f, "law",
+                               "ductile failure needs plasticity; expected "
+                               "solid.material.yield_stress > 0");
+    } else if (cfg->damage == CPD_DAMAGE_BRITTLE) {
+        TRY(cfg_req_double(f, "critical_stress", &cfg->critical_stress));
+        TRY(cfg_check_positive(f, "critical_stress", cfg->critical_stress,
+                               "the maximum principal stress sigma_cr at which a bond breaks, Pa"));
+        TRY(cfg_opt_double(f, "ramp", 0.01, &cfg->damage_ramp));
+        TRY(cfg_check_range(f, "ramp", cfg->damage_ramp, 0.0, 0.5,
+                            "the relative width of the damage ramp below sigma_cr (0: a step)"));
+    }
+    return cfg_end_map(f);
+}
+
+static int read_cpd_pressures(CfgNode *s, CpdConfig *cfg) {
+    CfgNode *seq;
+    TRY(cfg_opt_seq(s, "pressure_loads", &seq));
+    if (!seq) return NSPD_OK;
+    if (seq->count > 64) return cfg_fail(seq, "too many pressure loads; expected at most 64");
+    TRY(nspd_alloc(&cfg->pressures, (size_t)seq->count, sizeof(CpdPressure)));
+    cfg->pressure_count = seq->count;
+    for (int i = 0; i < seq->count; i++) {
+        CfgNode *item = seq->child[i];
+        CpdPressure *p = &cfg->pressures[i];
+        if (item->kind != CFG_MAP)
+            return cfg_fail(item, "not a pressure load; expected a map with region and peak");
+        const char *name;
+        char fallback[32];
+        snprintf(fallback, sizeof fallback, "pressure%d", i);
+        TRY(cfg_opt_string(item, "name", fallback, &name));
+        snprintf(p->name, sizeof p->name, "%s", name);
+        TRY(case_read_shapes(item, "region", cfg->pd.dim, true, &p->region));
+        TRY(cfg_req_double(item, "peak", &p->peak));
+        TRY(cfg_opt_double(item, "rise_time", 0.0, &p->rise));
+        TRY(cfg_opt_double(item, "hold_time", 0.0, &p->hold));
+        TRY(cfg_opt_double(item, "fall_time", 0.0, &p->fall));
+        if (!(p->rise >= 0.0 && p->hold >= 0.0 && p->fall >= 0.0))
+            return cfg_fail(item, "a negative time; expected rise_time, hold_time, fall_time >= 0");
+        TRY(cfg_end_map(item));
+    }
+    return NSPD_OK;
+}
+
+static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
+    PdConfig *pd = &cfg->pd;
+    TRY(read_lattice(s, pd, 2.5));
+    if (pd->dim != 2)
+        return cfg_fail_at(s, "model",
+                           "%s: the correspondence solid is 2D; expected plane_strain or "
+                           "plane_stress",
+                           PD_MODEL_NAMES[pd->model]);
+    TRY(read_cpd_material(s, cfg));
+    TRY(read_body(s, pd));
+    TRY(read_cpd_failure(s, cfg));
+    TRY(read_cpd_pressures(s, cfg));
+    CfgNode *c;
+    TRY(cfg_opt_map(s, "correspondence", &c));
+    int force = CPD_FORCE_BOND_ASSOCIATED, family = CPD_FAMILY_SQUARE;
+    if (c) {
+        TRY(cfg_opt_enum(c, "force", CPD_FORCE_NAMES, CPD_FORCE_BOND_ASSOCIATED, &force));
+        TRY(cfg_opt_enum(c, "family", CPD_FAMILY_NAMES, CPD_FAMILY_SQUARE, &family));
+        TRY(cfg_end_map(c));
+    }
+    cfg->force = (CpdForce)force;
+    cfg->family = (CpdFamily)family;
+    pd->integrator = PD_VELOCITY_VERLET;
+    return NSPD_OK;
+}
+
+static const char *const FORMULATION_NAMES[] = {"bond", "correspondence", NULL};
+
+int case_read_solid(CfgNode *s, SolidConfig *out) {
+    memset(out, 0, sizeof *out);
+    int formulation;
+    TRY(cfg_opt_enum(s, "formulation", FORMULATION_NAMES, 0, &formulation));
+    if (formulation == 1) {
+        out->kind = SOLID_CORRESPONDENCE;
+        TRY(read_correspondence(s, &out->correspondence));
+    } else {
+        out->kind = SOLID_BOND;
+        TRY(read_bond(s, &out->bond));
+    }
     return cfg_end_map(s);
 }

@@ -3,6 +3,7 @@
 #include "core/parallel.h"
 #include "solid/rk_gradient.h"
 
+#include <stdbool.h>
 #include <string.h>
 
 int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, int64_t *reverse) {
@@ -68,35 +69,73 @@ static void bond_gradient(int dim, const double Fi[9], const double Fj[9], const
         for (int b = 0; b < dim; b++) Fb[3 * a + b] += r[a] * xi[b] / xx;
 }
 
-void bac_force(const BacSystem *s, const double *const u[3], double *const force[3],
+/* P_b of bond k from its F_b (and, with a J2 state, F_b at the start of
+ * the step): SVK, or the Green-Naghdi hypoelastic update in the unrotated
+ * frame with the midpoint increment (the rotation of F_mid carries the
+ * rate; a rigid rotation gives de = 0 exactly, notes 1c.6) and J2 radial
+ * return (1c.7), P = J sigma F^-T. */
+static void bond_stress(const BacSystem *s, BacState *st, int64_t k, const double Fb[9],
+                        const double Fb_prev[9], double P[9]) {
+    if (!st) {
+        svk_stress(s->dim, Fb, s->lambda, s->mu, P);
+        return;
+    }
+    const double F[4] = {Fb[0], Fb[1], Fb[3], Fb[4]};
+    const double Fm[4] = {0.5 * (Fb_prev[0] + Fb[0]), 0.5 * (Fb_prev[1] + Fb[1]),
+                          0.5 * (Fb_prev[3] + Fb[3]), 0.5 * (Fb_prev[4] + Fb[4])};
+    const double dF[4] = {Fb[0] - Fb_prev[0], Fb[1] - Fb_prev[1], Fb[3] - Fb_prev[3],
+                          Fb[4] - Fb_prev[4]};
+    double de[3], *sigma = st->sigma + 4 * k, P2[4];
+    for (int q = 0; q < 9; q++) P[q] = 0.0;
+    const bool upright = F[0] * F[3] - F[1] * F[2] > 0.0;
+    st->inverted[k] = upright ? 0 : 1;
+    if (!upright || !j2_unrotated_increment_2d(Fm, dF, 1.0, de)) {
+        st->inverted[k] = 1;
+        st->principal[k] = 0.0;
+        return;
+    }
+    j2_update(st->material, de, sigma, &st->eqps[k]);
+    st->principal[k] = j2_max_principal(sigma); /* invariant under the in-plane rotation */
+    j2_piola_2d(F, sigma, P2);
+    P[0] = P2[0], P[1] = P2[1], P[3] = P2[2], P[4] = P2[3];
+}
+
+void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],
                double *work_point, double *work_bond) {
     const int dim = s->dim;
     const int64_t n = s->n;
-    double *F = work_point, *w0 = work_point + 9 * n, *T = work_bond;
+    double *F = work_point, *Fp = work_point + 9 * n, *w0 = work_point + 18 * n, *T = work_bond;
     rk_deformation_gradient(dim, n, u, s->volume, s->first, s->nbr, s->phi, F);
+    if (st)
+        rk_deformation_gradient(dim, n, st->u_prev, s->volume, s->first, s->nbr, s->phi, Fp);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         double w = 0.0;
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)
-            w += s->omega[k] * s->volume[s->nbr[k]];
+            w += s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0) * s->volume[s->nbr[k]];
         w0[i] = w;
     }
     /* per point: its bonds' stresses, the stress integral S_i, and T_ij */
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         double Si[9] = {0};
+        const double inv_wi = w0[i] > 0.0 ? 1.0 / w0[i] : 0.0;
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
             const int32_t j = s->nbr[k];
-            double xi[3] = {0, 0, 0}, Y[3] = {0, 0, 0}, xx = 0.0;
+            double xi[3] = {0, 0, 0}, Y[3] = {0, 0, 0}, Yp[3] = {0, 0, 0}, xx = 0.0;
             for (int a = 0; a < dim; a++) {
                 xi[a] = s->x[a][j] - s->x[a][i];
-                Y[a] = xi[a] + u[a][j] - u[a][i];
+                Y[a] = xi[a] + (u[a][j] - u[a][i]);
+                if (st) Yp[a] = xi[a] + (st->u_prev[a][j] - st->u_prev[a][i]);
                 xx += xi[a] * xi[a];
             }
-            double Fb[9], P[9];
+            double Fb[9], Fbp[9] = {0}, P[9];
             bond_gradient(dim, F + 9 * i, F + 9 * (int64_t)j, xi, Y, Fb);
-            svk_stress(dim, Fb, s->lambda, s->mu, P);
-            const double c = s->omega[k] * (0.5 / w0[i] + 0.5 / w0[j]) * s->volume[j];
+            if (st) bond_gradient(dim, Fp + 9 * i, Fp + 9 * (int64_t)j, xi, Yp, Fbp);
+            bond_stress(s, st, k, Fb, Fbp, P);
+            const double omega = s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0);
+            const double inv_wj = w0[j] > 0.0 ? 1.0 / w0[j] : 0.0;
+            const double c = omega * (0.5 * inv_wi + 0.5 * inv_wj) * s->volume[j];
             /* S_i += c P (I - xi xi / |xi|^2) */
             for (int a = 0; a < dim; a++) {
                 double Pxi = 0.0;
@@ -104,7 +143,7 @@ void bac_force(const BacSystem *s, const double *const u[3], double *const force
                 for (int b = 0; b < dim; b++)
                     Si[3 * a + b] += c * (P[3 * a + b] - Pxi * xi[b] / xx);
                 /* the direct term (omega / w0_i) P xi / |xi|^2 */
-                T[(int64_t)dim * k + a] = s->omega[k] / w0[i] * Pxi / xx;
+                T[(int64_t)dim * k + a] = omega * inv_wi * Pxi / xx;
             }
         }
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)

@@ -25,6 +25,8 @@
 #ifndef NSPD_SOLID_BAC_FORCE_H
 #define NSPD_SOLID_BAC_FORCE_H
 
+#include "solid/j2_kernel.h"
+
 #include <stdint.h>
 
 typedef struct {
@@ -38,18 +40,38 @@ typedef struct {
     const double *phi;      /* RK weights, dim per bond */
     const double *omega;    /* kernel per bond */
     double lambda, mu;      /* Lame constants, Pa */
+    /* 1 - damage per bond (NULL: 1): multiplies omega in w0, S_i and T_ij
+     * (phi must have been computed with the same scale) */
+    const double *bond_scale;
 } BacSystem;
+
+/* The per-bond state of the hypoelastic J2 material (solid/j2_kernel.h; 2D
+ * only): the bond's stress is updated from the change of its F_b over the
+ * step instead of being a function of F_b. Each end of a pair stores and
+ * updates its own copy, bitwise the same as the other end's because F_b(ij)
+ * = F_b(ji) bit for bit (negated operands; STYLE.md). */
+typedef struct {
+    const J2Material *material;
+    const double *u_prev[3]; /* displacements at the start of the step */
+    double *sigma;           /* unrotated Cauchy stress, 4 per bond [xx, yy, zz, xy], Pa */
+    double *eqps;            /* equivalent plastic strain per bond */
+    double *principal;       /* out: the bond's maximum principal Cauchy stress, Pa */
+    uint8_t *inverted;       /* out: 1 where det F_b <= 0 (the bond carried no stress) */
+} BacState;
 
 /* The reverse-bond index of a symmetric family CSR: for bond k = (i -> j),
  * reverse[k] is the bond (j -> i); -1 where the family is not symmetric.
  * Returns the number of bonds without a reverse. */
 int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, int64_t *reverse);
 
-/* Force densities L (N/m^3, dim arrays of n) for displacements u.
- * work_point: 10 n doubles (F and w0 per point); work_bond: dim per bond
- * (T). Three passes: F_i and w0_i; per point its bonds' P_b, S_i and T_ij;
- * per point the gather of T_ij - T_ji. */
-void bac_force(const BacSystem *s, const double *const u[3], double *const force[3],
-               double *work_point, double *work_bond);
+/* Force densities L (N/m^3, dim arrays of n) for displacements u, with the
+ * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic
+ * J2 material of *state, whose stresses it advances by the step from
+ * state->u_prev to u (2D). work_point: 19 n doubles (F, F at u_prev and
+ * w0 per point); work_bond: dim per bond (T). Three passes: F_i and w0_i;
+ * per point its bonds' P_b, S_i and T_ij; per point the gather of T_ij -
+ * T_ji. A point with w0 = 0 (every bond broken) exerts no force. */
+void bac_force(const BacSystem *s, BacState *state, const double *const u[3],
+               double *const force[3], double *work_point, double *work_bond);
 
 #endif

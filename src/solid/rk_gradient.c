@@ -127,6 +127,21 @@ int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const 
     return missing;
 }
 
+int64_t rk_gradient_weights_redo(int dim, int64_t n, const double *const x[3],
+                                 const double *volume, const int64_t *first, const int32_t *nbr,
+                                 double delta, const double *bond_scale, const uint8_t *redo,
+                                 double *phi, uint8_t *ok) {
+    if (dim != 2 && dim != 3) return n;
+    int64_t missing = 0;
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        if (!redo[i]) continue;
+        ok[i] = point_weights(dim, i, x, volume, first, nbr, delta, bond_scale, phi) ? 1 : 0;
+        missing += ok[i] ? 0 : 1;
+    }
+    return missing;
+}
+
 void rk_gradient_at(int dim, int64_t i, const double *f, const double *volume, const int64_t *first,
                     const int32_t *nbr, const double *phi, double g[3]) {
     g[0] = g[1] = g[2] = 0.0;

@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "solid/bond_solid.h"
+#include "solid/cpd_solid.h"
 
 #include <float.h>
 #include <math.h>
@@ -13,6 +14,7 @@
  * slots after the built-in ones. */
 static const SolidOps *SOLID_MODELS[SOLID_KIND_MAX] = {
     [SOLID_BOND] = &BOND_SOLID_OPS,
+    [SOLID_CORRESPONDENCE] = &CPD_SOLID_OPS,
 };
 
 SolidKind solid_register(const SolidOps *ops) {
@@ -36,7 +38,19 @@ struct Solid {
 
 void solid_config_free(SolidConfig *cfg) {
     if (cfg->kind == SOLID_BOND) pd_config_free(&cfg->bond);
+    if (cfg->kind == SOLID_CORRESPONDENCE) cpd_config_free(&cfg->correspondence);
     memset(cfg, 0, sizeof *cfg);
+}
+
+int solid_config_dim(const SolidConfig *cfg) {
+    switch (cfg->kind) {
+    case SOLID_BOND:
+        return cfg->bond.dim;
+    case SOLID_CORRESPONDENCE:
+        return cfg->correspondence.pd.dim;
+    default:
+        return 0;
+    }
 }
 
 SolidEstimate solid_estimate(const SolidConfig *cfg) {

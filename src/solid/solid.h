@@ -19,6 +19,7 @@
 #include "core/checkpoint.h"
 #include "core/fields.h"
 #include "core/report.h"
+#include "solid/cpd_config.h"
 #include "solid/pd_config.h"
 
 #include <stdbool.h>
@@ -28,6 +29,7 @@
 typedef enum {
     SOLID_NONE = 0,   /* the case has no solid */
     SOLID_BOND,       /* bond-based PD (paper 000): solid/bond_solid.c */
+    SOLID_CORRESPONDENCE, /* correspondence PD (paper 003): solid/cpd_solid.c */
     SOLID_KIND_COUNT, /* the built-in models; solid_register adds more after these */
     SOLID_KIND_MAX = SOLID_KIND_COUNT + 4
 } SolidKind;
@@ -36,12 +38,15 @@ typedef enum {
 typedef struct {
     SolidKind kind;
     union {
-        PdConfig bond;        /* SOLID_BOND */
+        PdConfig bond;               /* SOLID_BOND */
+        CpdConfig correspondence;    /* SOLID_CORRESPONDENCE */
         const void *external; /* a registered model's configuration (borrowed) */
     };
 } SolidConfig;
 
 void solid_config_free(SolidConfig *cfg);
+/* The body's dimension (2 or 3) of a configuration; 0 for none. */
+int solid_config_dim(const SolidConfig *cfg);
 
 /* The points every PD model has (struct of arrays, owned by the model,
  * never reallocated after create). Couplings write `external`; everything

@@ -1,0 +1,89 @@
+/* A correspondence-PD body (paper 003 Sec. 2; notes 1c): the material
+ * points of a bond-based body (same lattice, regions and integrator), the
+ * bond-associated force of solid/bac_force.h with RK gradient weights of
+ * quadratic consistency (solid/rk_gradient.h), a hypoelastic J2 material
+ * per bond (solid/j2_kernel.h), and bond damage (ductile or brittle).
+ *
+ * Points (struct of arrays): x, u, v, force (internal + pressure loads),
+ * external (couplings), u_prev (u at the start of the step, for the
+ * stress increment), volume, region, the pressure load's face normals.
+ * Bonds (compressed rows, each pair stored from both ends, bitwise the same
+ * state at both ends, so no atomics and no cross-writes): neighbour,
+ * reverse bond, kernel omega, RK weights phi (dim), unrotated stress sigma
+ * (4), equivalent plastic strain, damage, 1 - damage, the last maximum
+ * principal stress and an inversion flag: 117 bytes per bond in 2D.
+ *
+ * Damage (notes 1c.8) never decreases; a bond whose damage grew rescales
+ * its kernel (omega (1 - d)) and its points' RK weights are recomputed. A
+ * bond whose F_b inverts (det <= 0) breaks. A point whose moment matrix
+ * becomes singular (too few or collinear intact neighbours for a quadratic
+ * fit) is debris: its bonds break (from both ends, each end deciding from
+ * the flags of both), it moves on with its momentum and no stress, and
+ * counts in the mass loss. Nothing divides by a vanished family (w0 = 0:
+ * no force), so damage never makes a NaN. */
+#ifndef NSPD_SOLID_CPD_BODY_H
+#define NSPD_SOLID_CPD_BODY_H
+
+#include "solid/cpd_config.h"
+#include "solid/j2_kernel.h"
+#include "solid/pd_regions.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+enum { CPD_BYTES_PER_BOND = 117 };
+
+typedef struct {
+    CpdConfig cfg; /* owned copy */
+    int dim;
+    int64_t n;
+    double spacing, delta;
+    double *x[3], *u[3], *v[3], *force[3], *external[3], *u_prev[3];
+    double *volume;
+    int16_t *region;
+    PdBoundaryTable boundary;
+    int32_t *lattice[3];
+    int16_t *load;       /* pressure load index of the point, or -1 */
+    double *load_dir[3]; /* the sum of its cell faces' inward normals on the pressurised side */
+
+    int64_t bond_count;
+    int64_t *first;
+    int32_t *nbr;
+    int64_t *reverse;
+    double *omega, *phi;
+    uint8_t *ok;   /* per point: 1 while its moment matrix is invertible */
+    uint8_t *redo; /* per point: damage grew in its family this step */
+    double *sigma, *eqps, *damage, *scale, *principal;
+    uint8_t *inverted;
+    double *work_point, *work_bond;
+
+    J2Material material;
+    double lambda, mu; /* Lame constants, Pa */
+    int64_t step;
+    double time;
+    bool force_valid;
+    double stable_dt; /* s, by power iteration at creation (cpd_step.c) */
+} CpdBody;
+
+/* Builds the body (taking ownership of *cfg, zeroing it): lattice points,
+ * regions, families (square |xi|_inf <= delta or disc |xi| <= delta),
+ * kernel, RK weights, pressure directions, the stable step. NSPD_ERR_INPUT
+ * if the geometry holds no point or a point has no RK weights at the
+ * start (a body thinner than the family needs: say which); NSPD_ERR_NOMEM. */
+int cpd_body_create(CpdBody *b, CpdConfig *cfg);
+void cpd_body_destroy(CpdBody *b);
+
+/* One velocity Verlet step (pressure loads at the new time). */
+int cpd_step(CpdBody *b, double dt);
+/* The force density at the current u into b->force, advancing the bond
+ * stresses from u_prev and the damage (what cpd_step calls). */
+void cpd_force(CpdBody *b, double t);
+/* dt = 2 / sqrt(lambda_max) of the linearised operator (K / rho) at the
+ * current damage, by power iteration (notes 1c.10 C6). */
+double cpd_stable_dt(CpdBody *b);
+
+/* Point damage: the mean damage of its initial bonds (PdShell's, the
+ * default) and the volume-weighted fraction of them broken. */
+void cpd_point_damage(const CpdBody *b, double *mean, double *broken);
+
+#endif
