@@ -47,6 +47,29 @@ void cloud_make(Cloud *c, int dim, int side, double h, double jitter) {
     families(c);
 }
 
+void cloud_make_tiled(Cloud *c, int side, int tiles, double h, double jitter) {
+    memset(c, 0, sizeof *c);
+    c->dim = 2;
+    c->h = h;
+    c->delta = 2.5 * h;
+    const int64_t wide = (int64_t)side * tiles;
+    c->n = wide * wide;
+    for (int a = 0; a < 3; a++) c->x[a] = calloc((size_t)c->n, sizeof(double));
+    c->volume = calloc((size_t)c->n, sizeof(double));
+    /* one jitter per patch point, the same for all its images */
+    double *shift = calloc((size_t)(2 * side * side), sizeof(double));
+    uint64_t seed = 12345;
+    for (int64_t p = 0; p < 2 * (int64_t)side * side; p++) shift[p] = jitter * uniform(&seed);
+    for (int64_t i = 0; i < c->n; i++) {
+        const int64_t I = i % wide, J = i / wide, p = I % side + side * (J % side);
+        c->x[0][i] = h * ((double)I + shift[2 * p]);
+        c->x[1][i] = h * ((double)J + shift[2 * p + 1]);
+        c->volume[i] = h * h;
+    }
+    free(shift);
+    families(c);
+}
+
 void cloud_omega(const Cloud *c, double *omega) {
     for (int64_t i = 0; i < c->n; i++)
         for (int64_t k = c->first[i]; k < c->first[i + 1]; k++) {
