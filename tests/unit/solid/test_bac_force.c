@@ -51,12 +51,7 @@ static void setup_make(Setup *t, int side, double jitter) {
                                          c->nbr, c->delta, NULL, t->phi, t->ok),
                      0);
     assert_int_equal(bac_reverse_bonds(c->n, c->first, c->nbr, t->reverse), 0);
-    for (int64_t i = 0; i < c->n; i++)
-        for (int64_t k = c->first[i]; k < c->first[i + 1]; k++) {
-            const double xi[3] = {c->x[0][c->nbr[k]] - c->x[0][i], c->x[1][c->nbr[k]] - c->x[1][i],
-                                  0.0};
-            t->omega[k] = rk_kernel(2, xi, c->delta);
-        }
+    cloud_omega(c, t->omega);
     t->s = (BacSystem){.dim = 2,
                        .n = c->n,
                        .x = {c->x[0], c->x[1], NULL},
