@@ -76,8 +76,7 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
     const int64_t n = s->n;
     double *F = work_point, *Fp = work_point + 9 * n, *w0 = work_point + 18 * n, *T = work_bond;
     rk_deformation_gradient(dim, n, u, s->volume, s->first, s->nbr, s->phi, F);
-    if (st)
-        rk_deformation_gradient(dim, n, st->u_prev, s->volume, s->first, s->nbr, s->phi, Fp);
+    if (st) rk_deformation_gradient(dim, n, st->u_prev, s->volume, s->first, s->nbr, s->phi, Fp);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         double w = 0.0;

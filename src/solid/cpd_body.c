@@ -117,8 +117,8 @@ static int build(CpdBody *b, CpdConfig *cfg) {
     const double E = pd->youngs_modulus, nu = cfg->poisson_ratio;
     b->mu = E / (2.0 * (1.0 + nu));
     b->lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    b->material = j2_material(E, nu, cfg->yield_stress, cfg->hardening,
-                              pd->model == PD_PLANE_STRESS ? 1 : 0);
+    b->material =
+        j2_material(E, nu, cfg->yield_stress, cfg->hardening, pd->model == PD_PLANE_STRESS ? 1 : 0);
 
     Lattice lat = {0};
     TRY(lattice_fill(&lat, &pd->geometry, b->dim, pd->spacing,

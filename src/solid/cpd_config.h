@@ -42,7 +42,7 @@ typedef struct {
     CpdFamily family;
     CpdDamageLaw damage;
     double plastic_strain_threshold, plastic_strain_critical; /* ductile: eps_th, eps_cr */
-    double critical_stress;                                    /* brittle: sigma_cr, Pa */
+    double critical_stress;                                   /* brittle: sigma_cr, Pa */
     double damage_ramp; /* brittle: relative width of the ramp below sigma_cr (0: a step) */
     int pressure_count;
     CpdPressure *pressures;

@@ -12,12 +12,12 @@
 /* The model: the body, and the per-point fields it reports (scratch). */
 typedef struct {
     CpdBody body;
-    double *stress[3];  /* xx, yy, xy of the point's Cauchy stress, Pa */
-    double *stress_zz;  /* Pa */
-    double *mises;      /* von Mises stress, Pa */
-    double *plastic;    /* mean equivalent plastic strain of the point's intact bonds */
-    double *jacobian;   /* det F_i */
-    double *broken;     /* volume-weighted fraction of the point's bonds broken */
+    double *stress[3]; /* xx, yy, xy of the point's Cauchy stress, Pa */
+    double *stress_zz; /* Pa */
+    double *mises;     /* von Mises stress, Pa */
+    double *plastic;   /* mean equivalent plastic strain of the point's intact bonds */
+    double *jacobian;  /* det F_i */
+    double *broken;    /* volume-weighted fraction of the point's bonds broken */
 } CpdSolid;
 
 static int cpd_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
@@ -254,16 +254,14 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
     APPEND("model                correspondence (%s), %s\n", CPD_FORCE_NAMES[c->force],
            PD_MODEL_NAMES[c->pd.model]);
     APPEND("points               %lld\n", (long long)b->n);
-    APPEND("bonds                %lld (%.1f per point, %s family)\n",
-           (long long)b->bond_count / 2, (double)b->bond_count / (double)b->n,
-           CPD_FAMILY_NAMES[c->family]);
+    APPEND("bonds                %lld (%.1f per point, %s family)\n", (long long)b->bond_count / 2,
+           (double)b->bond_count / (double)b->n, CPD_FAMILY_NAMES[c->family]);
     APPEND("spacing              %.6g m\n", b->spacing);
     APPEND("horizon              %.6g m (%.4g x spacing)\n", b->delta, c->pd.horizon_factor);
     APPEND("material             E %.6g Pa, nu %.4g, yield %.6g Pa, hardening %.6g Pa\n",
            c->pd.youngs_modulus, c->poisson_ratio, c->yield_stress, c->hardening);
     APPEND("damage               %s\n", CPD_DAMAGE_NAMES[c->damage]);
-    APPEND("P-wave speed         %.6g m/s\n",
-           sqrt((b->lambda + 2.0 * b->mu) / c->pd.density));
+    APPEND("P-wave speed         %.6g m/s\n", sqrt((b->lambda + 2.0 * b->mu) / c->pd.density));
     APPEND("stable time step     %.6g s (power iteration)\n", b->stable_dt);
     APPEND("memory               %.1f MB in solver arrays (%d bytes per bond)\n",
            (double)memory / 1e6, CPD_BYTES_PER_BOND);
@@ -315,7 +313,8 @@ static void cpd_fields(const void *impl, FieldSet *out) {
         cs->jacobian[i] = b->force_valid ? Fi[0] * Fi[4] - Fi[1] * Fi[3] : 1.0;
     }
     cpd_point_damage(b, NULL, cs->broken);
-    out->field[out->field_count++] = (FieldRef){"stress", 3, {cs->stress[0], cs->stress[1], cs->stress[2]}};
+    out->field[out->field_count++] =
+        (FieldRef){"stress", 3, {cs->stress[0], cs->stress[1], cs->stress[2]}};
     out->field[out->field_count++] = (FieldRef){"stress_zz", 1, {cs->stress_zz, NULL, NULL}};
     out->field[out->field_count++] = (FieldRef){"mises_stress", 1, {cs->mises, NULL, NULL}};
     out->field[out->field_count++] = (FieldRef){"plastic_strain", 1, {cs->plastic, NULL, NULL}};

@@ -105,7 +105,8 @@ void cpd_force(CpdBody *b, double t) {
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < b->n; i++)
             if (b->load[i] >= 0 && b->load[i] < count)
-                for (int a = 0; a < b->dim; a++) b->force[a][i] += p[b->load[i]] * b->load_dir[a][i];
+                for (int a = 0; a < b->dim; a++)
+                    b->force[a][i] += p[b->load[i]] * b->load_dir[a][i];
     }
     if (c->damage != CPD_DAMAGE_NONE) update_damage(b);
 }
@@ -127,8 +128,7 @@ static PdMotion motion_of(CpdBody *b) {
 }
 
 static void remember_u(CpdBody *b) {
-    for (int d = 0; d < b->dim; d++)
-        memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
+    for (int d = 0; d < b->dim; d++) memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
 }
 
 int cpd_step(CpdBody *b, double dt) {
@@ -200,7 +200,8 @@ double cpd_stable_dt(CpdBody *b) {
         for (int d = 0; d < dim; d++) {
             h ^= h << 13, h ^= h >> 7, h ^= h << 17;
             const double r = (double)(h >> 11) * 0x1.0p-53 - 0.5;
-            const int parity = (b->lattice[0][i] + b->lattice[1][i] + (dim == 3 ? b->lattice[2][i] : 0) + d) & 1;
+            const int parity =
+                (b->lattice[0][i] + b->lattice[1][i] + (dim == 3 ? b->lattice[2][i] : 0) + d) & 1;
             v[d][i] = (parity ? 1.0 : -1.0) + 0.5 * r;
         }
     double lambda = 0.0;

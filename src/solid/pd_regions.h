@@ -43,7 +43,7 @@ void pd_boundary_table_free(PdBoundaryTable *t);
 typedef struct {
     int dim;
     int64_t n;
-    double density;          /* kg/m^3 */
+    double density;           /* kg/m^3 */
     const double *body_force; /* 3 components, N/m^3 on every point */
     double *u[3], *v[3];
     const double *force[3], *external[3];

@@ -127,10 +127,10 @@ int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const 
     return missing;
 }
 
-int64_t rk_gradient_weights_redo(int dim, int64_t n, const double *const x[3],
-                                 const double *volume, const int64_t *first, const int32_t *nbr,
-                                 double delta, const double *bond_scale, const uint8_t *redo,
-                                 double *phi, uint8_t *ok) {
+int64_t rk_gradient_weights_redo(int dim, int64_t n, const double *const x[3], const double *volume,
+                                 const int64_t *first, const int32_t *nbr, double delta,
+                                 const double *bond_scale, const uint8_t *redo, double *phi,
+                                 uint8_t *ok) {
     if (dim != 2 && dim != 3) return n;
     int64_t missing = 0;
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)

@@ -27,10 +27,10 @@
 #include <stdint.h>
 
 typedef enum {
-    SOLID_NONE = 0,   /* the case has no solid */
-    SOLID_BOND,       /* bond-based PD (paper 000): solid/bond_solid.c */
+    SOLID_NONE = 0,       /* the case has no solid */
+    SOLID_BOND,           /* bond-based PD (paper 000): solid/bond_solid.c */
     SOLID_CORRESPONDENCE, /* correspondence PD (paper 003): solid/cpd_solid.c */
-    SOLID_KIND_COUNT, /* the built-in models; solid_register adds more after these */
+    SOLID_KIND_COUNT,     /* the built-in models; solid_register adds more after these */
     SOLID_KIND_MAX = SOLID_KIND_COUNT + 4
 } SolidKind;
 
@@ -38,9 +38,9 @@ typedef enum {
 typedef struct {
     SolidKind kind;
     union {
-        PdConfig bond;               /* SOLID_BOND */
-        CpdConfig correspondence;    /* SOLID_CORRESPONDENCE */
-        const void *external; /* a registered model's configuration (borrowed) */
+        PdConfig bond;            /* SOLID_BOND */
+        CpdConfig correspondence; /* SOLID_CORRESPONDENCE */
+        const void *external;     /* a registered model's configuration (borrowed) */
     };
 } SolidConfig;
 
