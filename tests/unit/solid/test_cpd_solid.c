@@ -282,7 +282,7 @@ static void run_shaken(int threads, Shaken *out) {
     omp_set_num_threads(threads);
     CpdConfig c = block(16, 16, 1e-3);
     c.damage = CPD_DAMAGE_BRITTLE;
-    c.critical_stress = 2.0e9;
+    c.critical_stress = 1.0e9;
     c.damage_ramp = 0.01;
     CpdBody b;
     make(&b, c);
