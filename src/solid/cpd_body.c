@@ -52,6 +52,7 @@ static int alloc_arrays(CpdBody *b) {
         TRY(nspd_alloc(&b->external[d], n, sizeof(double)));
         TRY(nspd_alloc(&b->u_prev[d], n, sizeof(double)));
         TRY(nspd_alloc(&b->load_dir[d], n, sizeof(double)));
+        TRY(nspd_alloc(&b->mode[d], n, sizeof(double)));
     }
     TRY(nspd_alloc(&b->volume, n, sizeof(double)));
     TRY(nspd_alloc(&b->region, n, sizeof(int16_t)));
@@ -166,7 +167,7 @@ static int build(CpdBody *b, CpdConfig *cfg) {
                          (long long)missing, b->x[0][i], b->x[1][i], b->delta);
     }
     pressure_directions(b);
-    b->stable_dt = cpd_stable_dt(b);
+    b->stable_dt = b->stable_now = cpd_stable_dt(b, CPD_COLD_ITERATIONS, false);
     return NSPD_OK;
 }
 
@@ -185,6 +186,7 @@ void cpd_body_destroy(CpdBody *b) {
         nspd_free(&b->external[d]);
         nspd_free(&b->u_prev[d]);
         nspd_free(&b->load_dir[d]);
+        nspd_free(&b->mode[d]);
         nspd_free(&b->lattice[d]);
     }
     nspd_free(&b->volume);

@@ -241,6 +241,8 @@ static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     report_int(out, "fragment_count", cpd_fragment_count(b, &debris));
     report_int(out, "debris_points", debris);
     report_real(out, "kinetic_energy_J", kinetic_energy(b));
+    report_real(out, "stable_dt_damaged_s", b->stable_now);
+    report_int(out, "substeps_max", b->substeps_max);
     report_real(out, "bond_updates_per_s",
                 run->wall_s > 0 ? (double)b->bond_count * (double)run->steps / run->wall_s : 0.0);
 }
@@ -262,7 +264,9 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
            c->pd.youngs_modulus, c->poisson_ratio, c->yield_stress, c->hardening);
     APPEND("damage               %s\n", CPD_DAMAGE_NAMES[c->damage]);
     APPEND("P-wave speed         %.6g m/s\n", sqrt((b->lambda + 2.0 * b->mu) / c->pd.density));
-    APPEND("stable time step     %.6g s (power iteration)\n", b->stable_dt);
+    APPEND("stable time step     %.6g s (power iteration; re-estimated as damage grows, "
+           "with sub-steps)\n",
+           b->stable_dt);
     APPEND("memory               %.1f MB in solver arrays (%d bytes per bond)\n",
            (double)memory / 1e6, CPD_BYTES_PER_BOND);
 #undef APPEND
@@ -321,11 +325,13 @@ static void cpd_fields(const void *impl, FieldSet *out) {
     out->field[out->field_count++] = (FieldRef){"J", 1, {cs->jacobian, NULL, NULL}};
     out->field[out->field_count++] = (FieldRef){"broken_fraction", 1, {cs->broken, NULL, NULL}};
     /* fixed scales per series: the plastic strain to the ductile law's
-     * critical value (0.2 if none), von Mises to twice the yield stress (or
-     * 1e-3 E for an elastic body) */
+     * critical value (0.2 if none), von Mises to twice the yield stress (a
+     * brittle body: its critical stress; else 1e-3 E) */
     const CpdConfig *c = &b->cfg;
     const double ep_hi = c->damage == CPD_DAMAGE_DUCTILE ? c->plastic_strain_critical : 0.2;
-    const double s_hi = c->yield_stress > 0.0 ? 2.0 * c->yield_stress : 1e-3 * c->pd.youngs_modulus;
+    const double s_hi = c->yield_stress > 0.0             ? 2.0 * c->yield_stress
+                        : c->damage == CPD_DAMAGE_BRITTLE ? c->critical_stress
+                                                          : 1e-3 * c->pd.youngs_modulus;
     out->picture[out->picture_count++] = (PictureRef){.file = "plastic_strain",
                                                       .label = "equivalent plastic strain",
                                                       .units = "-",
@@ -369,6 +375,16 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     TRY(checkpoint_io(ck, "cpd.phi", b->phi, (size_t)b->dim * nb * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.ok", b->ok, (size_t)b->n));
     TRY(checkpoint_io(ck, "cpd.F", b->work_point, 9 * n));
+    for (int d = 0; d < b->dim && d < 3; d++) {
+        static const char *const MODE[3] = {"cpd.mode0", "cpd.mode1", "cpd.mode2"};
+        TRY(checkpoint_io(ck, MODE[d], b->mode[d], n));
+    }
+    TRY(checkpoint_io_double(ck, "cpd.stable_now", &b->stable_now));
+    TRY(checkpoint_io_int64(ck, "cpd.estimated_at", &b->estimated_at));
+    TRY(checkpoint_io_int64(ck, "cpd.substeps_max", &b->substeps_max));
+    int grew = b->damage_grew;
+    TRY(checkpoint_io_int(ck, "cpd.damage_grew", &grew));
+    b->damage_grew = grew != 0;
     TRY(checkpoint_io_int64(ck, "cpd.step", &b->step));
     TRY(checkpoint_io_double(ck, "cpd.time", &b->time));
     int valid = b->force_valid;

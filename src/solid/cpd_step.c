@@ -108,7 +108,7 @@ void cpd_force(CpdBody *b, double t) {
                 for (int a = 0; a < b->dim; a++)
                     b->force[a][i] += p[b->load[i]] * b->load_dir[a][i];
     }
-    if (c->damage != CPD_DAMAGE_NONE) update_damage(b);
+    if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) b->damage_grew = true;
 }
 
 static PdMotion motion_of(CpdBody *b) {
@@ -131,7 +131,7 @@ static void remember_u(CpdBody *b) {
     for (int d = 0; d < b->dim; d++) memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
 }
 
-int cpd_step(CpdBody *b, double dt) {
+static int substep(CpdBody *b, double dt) {
     const PdMotion m = motion_of(b);
     if (!b->force_valid) {
         remember_u(b); /* no increment: the stresses stay */
@@ -148,8 +148,28 @@ int cpd_step(CpdBody *b, double dt) {
                          "a correspondence solid point has a non-finite displacement at step "
                          "%lld (t = %g s); the time step is probably above the stable limit",
                          (long long)b->step + 1, b->time);
-    b->step++;
     b->time += dt;
+    return NSPD_OK;
+}
+
+/* Warm re-estimates: cheaper than the first (the mode moves little between
+ * them), still enough for the Rayleigh quotient to settle within the
+ * margin (tests/unit/solid/test_cpd_solid.c). */
+enum { CPD_WARM_ITERATIONS = 16 };
+
+int cpd_step(CpdBody *b, double dt) {
+    if (b->damage_grew && b->step - b->estimated_at >= CPD_REESTIMATE_STEPS) {
+        b->stable_now = cpd_stable_dt(b, CPD_WARM_ITERATIONS, true);
+        b->estimated_at = b->step;
+        b->damage_grew = false;
+    }
+    int64_t n = 1;
+    const double allowed = CPD_DAMAGED_SAFETY * b->stable_now;
+    if (b->stable_now < b->stable_dt && dt > allowed) n = (int64_t)ceil(dt / allowed);
+    if (n > b->substeps_max) b->substeps_max = n;
+    const double h = dt / (double)n;
+    for (int64_t k = 0; k < n; k++) TRY(substep(b, h));
+    b->step++;
     return NSPD_OK;
 }
 
@@ -174,27 +194,30 @@ static double dot(const CpdBody *b, double *const a[3], double *const c[3]) {
  * central difference (L(e v) - L(-e v)) / (2 e) of the stateless force, e
  * such that the typical point moves 1e-7 spacings: exact but for the SVK's
  * cubic term. Started from the lattice checkerboard (the highest mode's
- * shape) with a fixed pseudo-random part so no mode is missed;
- * CPD_POWER_ITERATIONS iterations. The Rayleigh quotient converges from
- * below: the margin is in CPD_POWER_MARGIN. Allocates its scratch (setup
- * only); on failure returns the previous estimate. */
-enum { CPD_POWER_ITERATIONS = 80 };
+ * shape) with a fixed pseudo-random part so no mode is missed. The
+ * Rayleigh quotient converges from below: the margin is in
+ * CPD_POWER_MARGIN. Allocates its scratch (3 dim n doubles, once per
+ * estimate); on failure returns the previous estimate. The body's state
+ * (u, force, stresses) is untouched: the probes go through the stateless
+ * force. */
 static const double CPD_POWER_MARGIN = 1.02;
 
-double cpd_stable_dt(CpdBody *b) {
+double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
     const BacSystem s = system_of(b);
     const int dim = b->dim;
     const int64_t n = b->n;
     double *mem = NULL;
     if (nspd_alloc(&mem, (size_t)(3 * dim) * (size_t)n, sizeof(double)) != NSPD_OK)
-        return b->stable_dt;
+        return b->stable_now;
     double *v[3] = {NULL}, *probe[3] = {NULL}, *Lp[3] = {NULL}, *Lm[3] = {NULL};
     for (int d = 0; d < dim; d++) {
-        v[d] = mem + (int64_t)d * n;
-        probe[d] = mem + (int64_t)(dim + d) * n;
-        Lp[d] = mem + (int64_t)(2 * dim + d) * n;
-        Lm[d] = b->force[d]; /* the body's force is recomputed before it is next used */
+        v[d] = b->mode[d];
+        probe[d] = mem + (int64_t)d * n;
+        Lp[d] = mem + (int64_t)(dim + d) * n;
+        Lm[d] = mem + (int64_t)(2 * dim + d) * n;
     }
+    double vnorm = 0.0;
+    if (warm) vnorm = sqrt(dot(b, v, v) / (double)n);
     uint64_t h = 0x9E3779B97F4A7C15ull;
     for (int64_t i = 0; i < n; i++)
         for (int d = 0; d < dim; d++) {
@@ -202,10 +225,11 @@ double cpd_stable_dt(CpdBody *b) {
             const double r = (double)(h >> 11) * 0x1.0p-53 - 0.5;
             const int parity =
                 (b->lattice[0][i] + b->lattice[1][i] + (dim == 3 ? b->lattice[2][i] : 0) + d) & 1;
-            v[d][i] = (parity ? 1.0 : -1.0) + 0.5 * r;
+            const double fresh = (parity ? 1.0 : -1.0) + 0.5 * r;
+            v[d][i] = warm && vnorm > 0.0 ? v[d][i] / vnorm + 0.05 * fresh : fresh;
         }
     double lambda = 0.0;
-    for (int it = 0; it < CPD_POWER_ITERATIONS; it++) {
+    for (int it = 0; it < iterations; it++) {
         const double norm = sqrt(dot(b, v, v));
         if (!(norm > 0.0)) break;
         const double e = 1e-7 * b->spacing * sqrt((double)n);
@@ -224,8 +248,7 @@ double cpd_stable_dt(CpdBody *b) {
         for (int d = 0; d < dim; d++) memcpy(v[d], Lp[d], (size_t)n * sizeof(double));
     }
     nspd_free(&mem);
-    b->force_valid = false;
-    return lambda > 0.0 ? 2.0 / sqrt(lambda * CPD_POWER_MARGIN) : b->stable_dt;
+    return lambda > 0.0 ? 2.0 / sqrt(lambda * CPD_POWER_MARGIN) : b->stable_now;
 }
 
 void cpd_point_damage(const CpdBody *b, double *mean, double *broken) {
