@@ -91,6 +91,11 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
         const double inv_wi = w0[i] > 0.0 ? 1.0 / w0[i] : 0.0;
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
             const int32_t j = s->nbr[k];
+            if (s->bond_scale && s->bond_scale[k] == 0.0) {
+                /* broken: no force, and its stress (no longer defined) is left as it was */
+                for (int a = 0; a < dim; a++) T[(int64_t)dim * k + a] = 0.0;
+                continue;
+            }
             double xi[3] = {0, 0, 0}, Y[3] = {0, 0, 0}, Yp[3] = {0, 0, 0}, xx = 0.0;
             for (int a = 0; a < dim; a++) {
                 xi[a] = s->x[a][j] - s->x[a][i];

@@ -205,7 +205,10 @@ int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris) {
 static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_loss,
                           double *max_damage) {
     const CpdBody *b = &cs->body;
-    *max_eqps = max_of(b->eqps, b->bond_count);
+    double m = 0.0; /* over intact bonds: a broken bond's state stops at its break */
+    for (int64_t k = 0; k < b->bond_count; k++)
+        if (b->damage[k] < 1.0) m = fmax(m, b->eqps[k]);
+    *max_eqps = m;
     cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
     *mass_loss = cpd_mass_loss(b, cs->broken);
     *max_damage = max_of(cs->broken, b->n);
