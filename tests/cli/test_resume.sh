@@ -5,10 +5,11 @@
 # was never stopped: history.csv, every field file, picture, table and
 # .pvd series, and summary.json but for the keys that measure the machine.
 # The stopped runs use 2 threads and the resumed ones 1 (or the other way
-# round): a checkpoint does not depend on the thread count. Three kinds of
+# round): a checkpoint does not depend on the thread count. Four kinds of
 # run: solid only (plate), flow only (cylinder, a fixed body), coupled
-# (panel). Then the refusals: another case, another binary, no checkpoint,
-# and a damaged newest checkpoint (the one before is used).
+# (panel), and the correspondence solid while it breaks (hollow cylinder).
+# Then the refusals: another case, another binary, no checkpoint, and a
+# damaged newest checkpoint (the one before is used).
 # Release build only: the runs are ~10 s in all here, minutes under ASan
 # (tests/unit/core/test_checkpoint.c covers the file format there).
 #   usage: test_resume.sh NSPD SOURCE_DIR
@@ -127,6 +128,8 @@ check_kind() {
 check_kind plate_crack TERM time.end=3.34e-5 output.checkpoint_interval=2e-6
 check_kind cylinder_ma2_re300 USR1 time.end=3.0 output.checkpoint_interval=0.2
 check_kind panel_shock TERM time.end=3.0e-4 output.checkpoint_interval=2.0e-5
+# the correspondence solid while it fractures (bond state, weights, the re-estimated step)
+check_kind hollow_cylinder_pulse USR1 time.end=8e-5 output.checkpoint_interval=4e-6
 
 # --- refusals, each with exit status 2 and nothing changed
 name=plate_crack
