@@ -16,9 +16,23 @@
 #include <stdbool.h>
 #include <string.h>
 
+/* Whether index k lies beyond the low (-1) or high (+1) side of an axis of
+ * n intervals, or not (0); on a periodic axis index n is already a copy. */
+static int beyond(int k, int n, bool periodic) {
+    if (k < 0) return -1;
+    return k > n || (periodic && k == n) ? 1 : 0;
+}
+
+/* On a side of an axis (periodic axes have none). */
+static bool on_side(int k, int n, bool periodic) {
+    return !periodic && (k == 0 || k == n);
+}
+
 /* Why a node of the index box is there: 0 removed, else 1 + PddoNodeKind. */
 static int classify(const PddoCloudSpec *s, int nx, int ny, double x, double y, int i, int j) {
-    if (i < 0 || i > nx || j < 0 || j > ny) return 1 + PDDO_NODE_GHOST;
+    const bool px = s->side[PDDO_LEFT] == PDDO_SIDE_PERIODIC;
+    const bool py = s->side[PDDO_BOTTOM] == PDDO_SIDE_PERIODIC;
+    if (beyond(i, nx, px) || beyond(j, ny, py)) return 1 + PDDO_NODE_GHOST;
     for (int h = 0; h < s->nholes; h++) {
         const PddoHole *o = &s->holes[h];
         const double r = hypot(x - o->x, y - o->y);
@@ -26,7 +40,7 @@ static int classify(const PddoCloudSpec *s, int nx, int ny, double x, double y, 
         if (r < o->radius)
             return r >= o->radius - s->layers * s->dx * (1.0 + 1e-9) ? 1 + PDDO_NODE_BODY : 0;
     }
-    if (i == 0 || i == nx || j == 0 || j == ny) return 1 + PDDO_NODE_SIDE;
+    if (on_side(i, nx, px) || on_side(j, ny, py)) return 1 + PDDO_NODE_SIDE;
     return 1 + PDDO_NODE_FLUID;
 }
 
@@ -34,6 +48,7 @@ static int classify(const PddoCloudSpec *s, int nx, int ny, double x, double y, 
  * side of an axis with n intervals, and the sign it brings. */
 static int image_index(int k, int n, PddoSideKind kind, int *sign) {
     const bool low = k < 0;
+    if (kind == PDDO_SIDE_PERIODIC) return (k % n + n) % n;
     if (kind == PDDO_SIDE_OUTLET) *sign = -*sign;
     if (kind == PDDO_SIDE_INLET) return low ? 0 : n;
     return low ? -k : 2 * n - k;
@@ -55,6 +70,13 @@ static int check_spec(const PddoCloudSpec *s, int32_t *nx, int32_t *ny) {
                              "expected a whole number (at most 1e7)",
                              len, a, q, s->dx);
         *count[a] = (int32_t)whole;
+        const bool p0 = s->side[2 * a] == PDDO_SIDE_PERIODIC,
+                   p1 = s->side[2 * a + 1] == PDDO_SIDE_PERIODIC;
+        if (p0 != p1 || (p0 && whole < s->layers))
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "PDDO cloud: axis %d is periodic on %s side with %.0f intervals; "
+                             "expected both sides periodic and at least %d intervals",
+                             a, p0 && p1 ? "each" : "one", whole, s->layers);
     }
     for (int h = 0; h < s->nholes; h++) {
         const PddoHole *o = &s->holes[h];
@@ -139,6 +161,8 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
         pddo_cloud_free(c);
         return status;
     }
+    const bool px = s->side[PDDO_LEFT] == PDDO_SIDE_PERIODIC;
+    const bool py = s->side[PDDO_BOTTOM] == PDDO_SIDE_PERIODIC;
     for (int64_t q = 0; q < wi * wj; q++) {
         const int32_t k = c->slot[q];
         if (k < 0) continue;
@@ -148,11 +172,12 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
         c->y[k] = centre[1] + (j - mid[1]) * s->dx;
         c->area[k] = s->dx * s->dx;
         c->kind[k] = (uint8_t)(classify(s, nx, ny, c->x[k], c->y[k], i, j) - 1);
+        const int bx = beyond(i, nx, px), by = beyond(j, ny, py);
         uint8_t bits = 0;
-        if (i <= 0) bits |= 1u << PDDO_LEFT;
-        if (i >= nx) bits |= 1u << PDDO_RIGHT;
-        if (j <= 0) bits |= 1u << PDDO_BOTTOM;
-        if (j >= ny) bits |= 1u << PDDO_TOP;
+        if (bx < 0 || (on_side(i, nx, px) && i == 0)) bits |= 1u << PDDO_LEFT;
+        if (bx > 0 || (on_side(i, nx, px) && i == nx)) bits |= 1u << PDDO_RIGHT;
+        if (by < 0 || (on_side(j, ny, py) && j == 0)) bits |= 1u << PDDO_BOTTOM;
+        if (by > 0 || (on_side(j, ny, py) && j == ny)) bits |= 1u << PDDO_TOP;
         c->sides[k] = bits;
         c->image[k] = -1;
     }
@@ -160,9 +185,9 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     for (int64_t k = 0; k < n; k++) {
         int sign = 1, ii = c->i[k], jj = c->j[k];
         if (c->kind[k] == PDDO_NODE_GHOST) {
-            if (ii < 0 || ii > nx)
+            if (beyond(ii, nx, px))
                 ii = image_index(ii, nx, s->side[ii < 0 ? PDDO_LEFT : PDDO_RIGHT], &sign);
-            if (jj < 0 || jj > ny)
+            if (beyond(jj, ny, py))
                 jj = image_index(jj, ny, s->side[jj < 0 ? PDDO_BOTTOM : PDDO_TOP], &sign);
             c->image[k] = (int32_t)pddo_cloud_node(c, ii, jj);
         } else if (c->kind[k] == PDDO_NODE_BODY) {

@@ -15,6 +15,10 @@
  *   outlet p_g = -p(mirror image), p = 0 on the side    (Eqs. 50, 51)
  * A fictitious node beyond two sides (a block corner, which the paper does
  * not specify) takes the image across both, with the product of the signs.
+ * A periodic pair of sides (not in the paper; for the Taylor-Green test,
+ * notes V5) has no side nodes: along that axis the nodes 0 .. n-1 are the
+ * unknowns, and the nodes from n on and below 0 are fictitious copies of
+ * index mod n (p_g = p(image), u_g = u(image)).
  *
  * Holes: a circular body removes the lattice nodes inside it, except those
  * within `layers` spacings of its edge, which become fictitious body nodes.
@@ -41,6 +45,7 @@ typedef enum {
     PDDO_SIDE_WALL = 0, /* no-slip wall or moving lid: even pressure images */
     PDDO_SIDE_INLET,    /* pressure copied from the side's node of the same row or column */
     PDDO_SIDE_OUTLET,   /* p = 0 on the side, odd pressure images */
+    PDDO_SIDE_PERIODIC, /* with the opposite side: copies of the nodes one period away */
 } PddoSideKind;
 
 typedef enum {
@@ -82,8 +87,9 @@ typedef struct {
 
 /* Builds the cloud of `spec` into c (zeroed or freed before). Node order is
  * row by row (j, then i), holes skipped. NSPD_ERR_INPUT for a spacing that
- * does not divide the rectangle, layers < 1, a horizon factor <= 0, or a
- * hole that is not inside; NSPD_ERR_NOMEM. */
+ * does not divide the rectangle, layers < 1, a horizon factor <= 0, a hole
+ * that is not inside, a periodic side facing one that is not, or a period
+ * shorter than the layers; NSPD_ERR_NOMEM. */
 int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *spec);
 
 void pddo_cloud_free(PddoCloud *c);

@@ -152,9 +152,26 @@ static void test_lattice_cloud(void **state) {
            "mirror radius\n",
            (long long)body, (long long)(47 * 47 - c.n), worst / 0.025);
     assert_true(worst <= 0.025);
+    pddo_cloud_free(&c);
+
+    /* periodic in x, walls in y: no side nodes along x; index 10 and beyond
+     * copy index mod 10 (a corner ghost also mirrors across the wall) */
+    s = square_spec(0.1);
+    s.side[PDDO_LEFT] = s.side[PDDO_RIGHT] = PDDO_SIDE_PERIODIC;
+    assert_ok(pddo_cloud_build(&c, &s));
+    assert_int_equal(c.kind[pddo_cloud_node(&c, 0, 5)], PDDO_NODE_FLUID);
+    assert_int_equal(c.kind[pddo_cloud_node(&c, 10, 5)], PDDO_NODE_GHOST);
+    assert_int_equal(c.image[pddo_cloud_node(&c, 10, 5)], pddo_cloud_node(&c, 0, 5));
+    assert_int_equal(c.image[pddo_cloud_node(&c, -3, 5)], pddo_cloud_node(&c, 7, 5));
+    assert_int_equal(c.image[pddo_cloud_node(&c, 12, -2)], pddo_cloud_node(&c, 2, 2));
+    assert_int_equal(c.kind[pddo_cloud_node(&c, 0, 0)], PDDO_NODE_SIDE);
+    s.side[PDDO_RIGHT] = PDDO_SIDE_WALL;
+    assert_int_equal(pddo_cloud_build(&c, &s), NSPD_ERR_INPUT);
+    s.side[PDDO_RIGHT] = PDDO_SIDE_PERIODIC;
+
     /* a hole too close to a side is refused */
     const PddoHole near = {.x = 0.5, .y = 0.15, .radius = 0.1};
-    s.holes = &near;
+    s.holes = &near, s.nholes = 1;
     assert_int_equal(pddo_cloud_build(&c, &s), NSPD_ERR_INPUT);
     pddo_cloud_free(&c);
 }
