@@ -27,7 +27,7 @@ static int row_kind(const PddoCloud *c, int64_t k) {
     if (c->kind[k] == PDDO_NODE_GHOST || c->kind[k] == PDDO_NODE_BODY) return PDDO_ROW_IMAGE;
     if (c->kind[k] == PDDO_NODE_SIDE) {
         for (int s = 0; s < PDDO_SIDES; s++)
-            if ((c->sides[k] >> s & 1u) && c->side[s] == PDDO_SIDE_OUTLET)
+            if (((unsigned)c->sides[k] >> s & 1u) && c->side[s] == PDDO_SIDE_OUTLET)
                 return PDDO_ROW_DIRICHLET;
     }
     return PDDO_ROW_PPE;

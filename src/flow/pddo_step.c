@@ -35,7 +35,7 @@ static void node_rule(PddoStep *ps, int64_t k) {
     }
     int best = -1, best_rank = 99;
     for (int s = 0; s < PDDO_SIDES; s++) {
-        if (!(c->sides[k] >> s & 1u)) continue;
+        if (!((unsigned)c->sides[k] >> s & 1u)) continue;
         const int r = rank(&ps->par, c->side[s], s);
         if (r < best_rank) best_rank = r, best = s;
     }
@@ -172,13 +172,21 @@ int pddo_step_advance(PddoStep *ps) {
     pddo_ops_apply(ops, PDDO_D_X, p, w[UX]);
     pddo_ops_apply(ops, PDDO_D_Y, p, w[UY]);
     int64_t bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad) if (n >= PARALLEL_MIN_ITEMS)
+    double rate = 0.0; /* max |du/dt|: a max is exact, so any thread count gives these bits */
+#pragma omp parallel for schedule(static) reduction(min                                            \
+                                                    : bad)                                         \
+    reduction(max                                                                                  \
+              : rate) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
         if (ps->rule[k] != PDDO_VEL_FREE) continue;
-        u[k] += dt * (-w[D1][k] - w[UX][k] / rho + nu * w[LU][k]);
-        v[k] += dt * (-w[D2][k] - w[UY][k] / rho + nu * w[LV][k]);
+        const double du = -w[D1][k] - w[UX][k] / rho + nu * w[LU][k];
+        const double dv = -w[D2][k] - w[UY][k] / rho + nu * w[LV][k];
+        u[k] += dt * du;
+        v[k] += dt * dv;
+        rate = fmax(rate, fmax(fabs(du), fabs(dv)));
         if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
     }
+    ps->dudt_max = rate;
     pddo_step_apply_bc(ps);
     ps->time += dt;
     ps->steps++;

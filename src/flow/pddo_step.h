@@ -56,6 +56,8 @@ typedef struct {
     double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
     double time;
     int64_t steps;
+    double dudt_max; /* the last step's max |du/dt|, |dv/dt| over updated nodes (m/s^2): the
+                        steady-state criterion */
 } PddoStep;
 
 /* Sets up the step on a cloud with its operators and PPE (borrowed: they

@@ -87,38 +87,39 @@ static TgResult taylor_green(int n, double amplitude, double dt, double t_end, b
 
 /* dt = 1e-3 (nu dt / dx^2 <= 0.041, U^2 dt / nu <= 0.1: far inside the
  * limits of notes 1.5; forward Euler's own rate error is sigma dt / 2 =
- * 4e-4), t = 0.15 (the amplitude falls to 0.89).
+ * 4e-4), t = 0.1 (the amplitude falls to 0.92).
  *
  * Linear regime (U = 1e-3, convection negligible): the decay rate is the
  * PDDO Laplacian's symbol at (k, k). Measured PDDO / exact 0.90682,
- * 0.97609, 0.99426 for N = 16, 32, 64: the notes' prototype values 0.9065,
- * 0.9757, 0.9939 plus 3.2e-4 to 3.9e-4, forward Euler's sigma dt / 2;
- * asserted to 1e-3.
+ * 0.97609 for N = 16, 32: the notes' prototype values 0.9065, 0.9757 plus
+ * 3.2e-4, 3.9e-4, forward Euler's sigma dt / 2; asserted to 1e-3. (N = 64
+ * gives 0.99426 vs 0.9939, left out for time.)
  *
- * Nonlinear (U = 1, Re = U / (k nu) = 16): measured 0.9134, 0.9780,
- * 0.9948, slower by 7e-3, 2.3e-3, 8e-4 than the symbol: the discrete
- * pressure removes only the part DG/L of the gradient u.grad u at 2k (0.7
- * at N = 16, notes 1.2), the rest feeds a 2k mode that returns energy to
- * k. That excess falls at second order; the rate error 1 - ratio (0.0866,
- * 0.0220, 0.0052: orders 1.98, 2.07) is asserted at order >= 1.8, and each
- * ratio within 1e-2 of the symbol. Velocity errors (max over the nodes,
- * relative to the amplitude) 1.80e-2, 4.54e-3, 1.09e-3: orders 1.98, 2.06,
- * asserted >= 1.8 (V5). */
+ * Nonlinear (U = 1, Re = U / (k nu) = 16): measured 0.9140, 0.9782,
+ * 0.9948 for N = 16, 32, 64, slower by 7.5e-3, 2.5e-3, 9e-4 than the
+ * symbol: the discrete pressure removes only the part DG/L of the gradient
+ * u.grad u at 2k (about 0.7 at N = 16, notes 1.2), and the rest feeds a 2k
+ * mode that returns energy to k. That excess falls at second order: the
+ * rate error 1 - ratio has orders 1.98, 2.07, asserted >= 1.8, and each
+ * ratio is asserted within 1e-2 of the symbol. Velocity errors (max over
+ * the nodes, relative to the amplitude) 7.57e-3, 1.90e-3, 4.56e-4: orders
+ * 2.00, 2.06, asserted >= 1.8 (V5). */
 static void test_taylor_green(void **state) {
     (void)state;
     const int ns[3] = {16, 32, 64};
     const double notes[3] = {0.9065, 0.9757, 0.9939};
     TgResult lin[3], r[3];
     for (int i = 0; i < 3; i++) {
-        lin[i] = taylor_green(ns[i], 1e-3, 1e-3, 0.15, false);
-        r[i] = taylor_green(ns[i], 1.0, 1e-3, 0.15, false);
+        lin[i] = i < 2 ? taylor_green(ns[i], 1e-3, 1e-3, 0.1, false) : (TgResult){0};
+        r[i] = taylor_green(ns[i], 1.0, 1e-3, 0.1, false);
         printf("Taylor-Green N = %d: %lld nodes, %.2f ms/step; decay rate / exact: linear %.5f "
-               "(notes %.4f), U = 1 %.5f; max velocity error %.3e, rms div u %.3e U k\n",
+               "(notes %.4f; 0: not run), U = 1 %.5f; max velocity error %.3e, rms div u %.3e "
+               "U k\n",
                ns[i], (long long)r[i].nodes, 1e3 * r[i].step_s, lin[i].rate_ratio, notes[i],
                r[i].rate_ratio, r[i].error, r[i].div_rms);
     }
     for (int i = 0; i < 3; i++) {
-        assert_close(lin[i].rate_ratio, notes[i], 1e-3);
+        if (i < 2) assert_close(lin[i].rate_ratio, notes[i], 1e-3);
         assert_close(r[i].rate_ratio, notes[i], 1e-2);
     }
     for (int i = 0; i < 2; i++) {
@@ -134,14 +135,15 @@ static void test_taylor_green(void **state) {
 /* The lid-driven cavity at Re 1 (paper 002 Sec. 5.1 case 1: L = 1 mm,
  * U = 1 mm/s, rho = 1000, mu = 1e-3; the paper's lid and no-slip
  * conditions with zero fictitious velocities, corners at rest), N = 50, to
- * t = 0.2 s (0.2 L / U; max du/dt has fallen to 3e-4 U^2/L, and the
- * numbers below agree to 4 digits with t = 0.5 s, du/dt 7e-11). The
+ * t = 0.1 s (0.1 L / U; max du/dt has fallen to 5e-2 U^2/L, and the
+ * divergence numbers below agree to 4 digits with t = 0.5 s, du/dt 7e-11
+ * U^2/L: the divergence settles long before the flow). The
  * velocity is not discretely divergence-free and its steady divergence
  * depends on dt (notes 1.5, V9). Measured rms div u over the fluid nodes
  * 0.2644 (dt = 4e-4 s, nu dt / dx^2 = 1) and 0.1754 (dt = 2e-4 s) U/L, max
  * 7.06 at a lid corner: the notes' prototype gives 0.264, 0.175 and "max
  * 7"; asserted to 2e-3 (their rounding plus margin) and [6.5, 7.5]. The
- * vertical centreline's minimum u, -0.208 U at y = 0.54 L, is printed
+ * vertical centreline's minimum u, -0.208 U at y = 0.54 L (t = 0.5 s), is printed
  * only (no independent Stokes-cavity reference is checked in). */
 static double cavity_re1(double dt, double *div_max) {
     const double L = 1e-3, U = 1e-3;
@@ -162,7 +164,7 @@ static double cavity_re1(double dt, double *div_max) {
     assert_close(st.u[pddo_cloud_node(&c, 0, n)], 0.0, 0.0);
     assert_close(st.u[pddo_cloud_node(&c, 1, n + 3)], U, 0.0);
     assert_close(st.u[pddo_cloud_node(&c, -1, n + 1)], 0.0, 0.0);
-    const int steps = (int)lround(0.2 / dt);
+    const int steps = (int)lround(0.1 / dt);
     for (int i = 0; i < steps; i++) assert_ok(pddo_step_advance(&st));
     double sum = 0.0, umin = 0.0, ymin = 0.0;
     int64_t count = 0;
@@ -179,8 +181,9 @@ static double cavity_re1(double dt, double *div_max) {
         const int64_t k = pddo_cloud_node(&c, n / 2, j);
         if (st.u[k] < umin) umin = st.u[k], ymin = c.y[k];
     }
-    printf("cavity Re 1, N = 50, dt = %g s: %lld nodes; centreline min u %.4f U at y = %.3f L\n",
-           dt, (long long)c.n, umin / U, ymin / L);
+    printf("cavity Re 1, N = 50, dt = %g s: %lld nodes; max du/dt %.2e U^2/L; centreline min u "
+           "%.4f U at y = %.3f L\n",
+           dt, (long long)c.n, st.dudt_max * L / (U * U), umin / U, ymin / L);
     pddo_step_free(&st);
     pddo_ppe_free(&ppe);
     pddo_ops_free(&ops);
@@ -199,15 +202,79 @@ static void test_cavity_re1_divergence(void **state) {
     assert_true(max4 > 6.5 && max4 < 7.5);
 }
 
+/* A deterministic pseudo-random number in [-1, 1]. */
+static double uniform(uint64_t *s) {
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) / (double)(1ULL << 53) * 2.0 - 1.0;
+}
+
+/* max |u|, |v| after `steps` steps from a random field of amplitude 1e-6
+ * (convection negligible: the linear diffusion-projection step) in a
+ * 16 x 16 periodic box, nu = 1, at the given nu dt / dx^2; relative to the
+ * start. Stops early once past 1e6. */
+static double diffusion_growth(double number, int steps, int *taken) {
+    const int n = 16;
+    PddoCloudSpec s = {
+        .lo = {0.0, 0.0}, .hi = {1.0, 1.0}, .dx = 1.0 / n, .layers = 3, .horizon_factor = 3.0};
+    for (int side = 0; side < PDDO_SIDES; side++) s.side[side] = PDDO_SIDE_PERIODIC;
+    PddoCloud c = {0};
+    PddoOps ops = {0};
+    PddoPpe ppe = {0};
+    PddoStep st = {0};
+    assert_ok(pddo_cloud_build(&c, &s));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ppe_build(&ppe, &c, &ops));
+    const PddoStepParams par = {.rho = 1.0, .mu = 1.0, .dt = number * s.dx * s.dx};
+    assert_ok(pddo_step_init(&st, &c, &ops, &ppe, &par));
+    uint64_t seed = 5;
+    for (int64_t m = 0; m < c.n; m++)
+        st.u[m] = 1e-6 * uniform(&seed), st.v[m] = 1e-6 * uniform(&seed);
+    pddo_step_apply_bc(&st);
+    double start = 0.0, now = 0.0;
+    for (int64_t m = 0; m < c.n; m++) start = fmax(start, fmax(fabs(st.u[m]), fabs(st.v[m])));
+    *taken = 0;
+    for (int i = 0; i < steps && now <= 1e6 * start; i++, ++*taken) {
+        assert_ok(pddo_step_advance(&st));
+        now = 0.0;
+        for (int64_t m = 0; m < c.n; m++) now = fmax(now, fmax(fabs(st.u[m]), fabs(st.v[m])));
+    }
+    pddo_step_free(&st);
+    pddo_ppe_free(&ppe);
+    pddo_ops_free(&ops);
+    pddo_cloud_free(&c);
+    return now / start;
+}
+
+/* V4, diffusion: the PDDO Laplacian's symbol reaches -1.2401 / dx^2 (notes
+ * 1.2), so forward Euler is stable up to nu dt / dx^2 = 2 / 1.2401 = 1.613,
+ * five times the 5-point limit; the pressure projection only removes
+ * (never amplifies) a mode's gradient part. Measured over 300 steps: the
+ * random field's maximum falls to 0.028 at 1.55 and 1.60, grows 20 times
+ * at 1.63, and passes 1e6 after 159 steps at 1.70 (the worst mode's factor
+ * |1 - 1.70 x 1.2401| = 1.108 per step). Asserted: < 1 at 1.55 and 1.60,
+ * > 2 at 1.63, > 1e6 at 1.70: the limit is bracketed to 2 %. */
+static void test_diffusion_stability_limit(void **state) {
+    (void)state;
+    int n_below, n_above, n1, n2;
+    const double below = diffusion_growth(1.55, 300, &n_below);
+    const double above = diffusion_growth(1.70, 300, &n_above);
+    const double b2 = diffusion_growth(1.60, 300, &n1), a2 = diffusion_growth(1.63, 300, &n2);
+    printf("diffusion limit: max |u| x %.3g after %d steps at nu dt/dx^2 = 1.55, x %.3g after %d "
+           "at 1.70; %.3g (%d) at 1.60, %.3g (%d) at 1.63\n",
+           below, n_below, above, n_above, b2, n1, a2, n2);
+    assert_true(below < 1.0 && b2 < 1.0);
+    assert_true(a2 > 2.0 && above > 1e6);
+}
+
 /* V16: 5,041 nodes (above PARALLEL_MIN_ITEMS, so the loops do split),
- * 20 steps on 1 and on 2 threads: u, v and p are the same bits. */
+ * 10 steps on 1 and on 2 threads: u, v and p are the same bits. */
 static void test_threads_bitwise(void **state) {
     (void)state;
     const int threads = omp_get_max_threads();
     omp_set_num_threads(1);
-    TgResult one = taylor_green(64, 1.0, 1e-3, 0.02, true);
+    TgResult one = taylor_green(64, 1.0, 1e-3, 0.01, true);
     omp_set_num_threads(2);
-    TgResult two = taylor_green(64, 1.0, 1e-3, 0.02, true);
+    TgResult two = taylor_green(64, 1.0, 1e-3, 0.01, true);
     omp_set_num_threads(threads);
     assert_int_equal(one.nodes, two.nodes);
     assert_memory_equal(one.state, two.state, 3 * (size_t)one.nodes * sizeof(double));
@@ -218,6 +285,7 @@ static void test_threads_bitwise(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_taylor_green),
+        cmocka_unit_test(test_diffusion_stability_limit),
         cmocka_unit_test(test_cavity_re1_divergence),
         cmocka_unit_test(test_threads_bitwise),
     };
