@@ -29,8 +29,11 @@ static void node_rule(PddoStep *ps, int64_t k) {
     const PddoCloud *c = ps->cloud;
     ps->rule[k] = PDDO_VEL_FREE, ps->source[k] = -1;
     if (c->kind[k] == PDDO_NODE_FLUID) return;
+    const bool anti = ps->par.walls == PDDO_WALL_ANTISYMMETRIC;
     if (c->kind[k] == PDDO_NODE_BODY) {
-        ps->rule[k] = PDDO_VEL_FIXED, ps->fix_u[k] = ps->fix_v[k] = 0.0;
+        ps->rule[k] = anti ? PDDO_VEL_ANTI : PDDO_VEL_FIXED;
+        ps->fix_u[k] = ps->fix_v[k] = 0.0;
+        ps->source[k] = anti ? c->image[k] : -1;
         return;
     }
     int best = -1, best_rank = 99;
@@ -42,8 +45,12 @@ static void node_rule(PddoStep *ps, int64_t k) {
     if (best < 0) return; /* a periodic axis' node 0: not on any side */
     switch (c->side[best]) {
     case PDDO_SIDE_WALL:
-        ps->rule[k] = PDDO_VEL_FIXED;
+        /* the wall's own nodes hold its velocity; its fictitious ones too
+         * (the paper) or its reflection about it through the pressure image
+         * (u_g = 2 u_w - u_image: linear across the wall, second order) */
+        ps->rule[k] = anti && c->kind[k] == PDDO_NODE_GHOST ? PDDO_VEL_ANTI : PDDO_VEL_FIXED;
         ps->fix_u[k] = ps->par.wall_u[best], ps->fix_v[k] = ps->par.wall_v[best];
+        if (ps->rule[k] == PDDO_VEL_ANTI) ps->source[k] = c->image[k];
         return;
     case PDDO_SIDE_INLET:
         ps->rule[k] = PDDO_VEL_FIXED;
@@ -93,7 +100,8 @@ int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, Pdd
     for (int64_t k = 0; k < cloud->n; k++) {
         node_rule(ps, k);
         const int32_t s = ps->source[k];
-        if (ps->rule[k] >= PDDO_VEL_COPY && (s < 0 || ps->rule[s] != PDDO_VEL_FREE)) {
+        /* copies read nodes that are not copies themselves (pass 2 of apply_bc) */
+        if (ps->rule[k] >= PDDO_VEL_COPY && (s < 0 || ps->rule[s] >= PDDO_VEL_COPY)) {
             pddo_step_free(ps);
             return NSPD_FAIL(NSPD_ERR_INTERNAL, "PDDO step: node %lld copies a prescribed node",
                              (long long)k);
@@ -106,13 +114,19 @@ int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, Pdd
 void pddo_step_apply_bc(PddoStep *ps) {
     const int64_t n = ps->cloud->n;
     double *u = ps->u, *v = ps->v;
-    /* sources are FREE nodes, so one pass suffices and the order is moot */
+    const uint8_t *rule = ps->rule;
+    const int32_t *src = ps->source;
+    /* prescribed values first, then the copies and reflections, whose
+     * sources are free or prescribed nodes (checked at init) */
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++)
+        if (rule[k] == PDDO_VEL_FIXED) u[k] = ps->fix_u[k], v[k] = ps->fix_v[k];
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
-        if (ps->rule[k] == PDDO_VEL_FIXED)
-            u[k] = ps->fix_u[k], v[k] = ps->fix_v[k];
-        else if (ps->rule[k] != PDDO_VEL_FREE)
-            u[k] = u[ps->source[k]], v[k] = v[ps->source[k]];
+        if (rule[k] == PDDO_VEL_COPY || rule[k] == PDDO_VEL_PERIODIC)
+            u[k] = u[src[k]], v[k] = v[src[k]];
+        else if (rule[k] == PDDO_VEL_ANTI)
+            u[k] = 2.0 * ps->fix_u[k] - u[src[k]], v[k] = 2.0 * ps->fix_v[k] - v[src[k]];
     }
 }
 
@@ -179,8 +193,8 @@ int pddo_step_advance(PddoStep *ps) {
               : rate) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
         if (ps->rule[k] != PDDO_VEL_FREE) continue;
-        const double du = -w[D1][k] - w[UX][k] / rho + nu * w[LU][k];
-        const double dv = -w[D2][k] - w[UY][k] / rho + nu * w[LV][k];
+        const double du = -w[D1][k] - w[UX][k] / rho + nu * w[LU][k] + ps->par.force_x;
+        const double dv = -w[D2][k] - w[UY][k] / rho + nu * w[LV][k] + ps->par.force_y;
         u[k] += dt * du;
         v[k] += dt * dv;
         rate = fmax(rate, fmax(fabs(du), fabs(dv)));

@@ -16,13 +16,16 @@
  * Velocity conditions (Sec. 4), one rule per node, by precedence where a
  * node lies on or beyond two sides (corners, which the paper leaves open):
  *   wall at rest > moving wall (lid) > inlet > periodic > outlet:
- *   wall   side and fictitious nodes take the wall velocity (Eqs. 36-39, 55;
- *          the paper's zero fictitious velocities: first order at walls)
+ *   wall   side nodes take the wall velocity; fictitious ones too (Eqs.
+ *          36-39, 55; the paper's choice, first order at walls: it halves
+ *          the wall shear, notes 1.6) or, with PDDO_WALL_ANTISYMMETRIC, its
+ *          reflection 2 u_wall - u(pressure image) (second order)
  *   inlet  side and fictitious nodes take the inflow (Eqs. 57, 61)
  *   outlet the side node (exit layer) is updated by Eq. 8 like a fluid node
  *          (notes #23), fictitious nodes copy it along the normal (Eq. 52)
  *   periodic fictitious nodes copy their image, and so do d and L there
- *   body   fictitious body nodes are at rest (Eqs. 44, 47)
+ *   body   fictitious body nodes are at rest (Eqs. 44, 47), or reflect
+ *          their image with PDDO_WALL_ANTISYMMETRIC
  * d and L at the other fictitious nodes come from their own truncated
  * families (notes #19). */
 #ifndef NSPD_FLOW_PDDO_STEP_H
@@ -34,15 +37,23 @@
 
 #include <stdint.h>
 
+typedef enum {
+    PDDO_WALL_ZERO = 0,      /* the paper: fictitious wall nodes hold the wall velocity */
+    PDDO_WALL_ANTISYMMETRIC, /* u_g = 2 u_wall - u(image): second order (notes 1.6, V6) */
+} PddoWallGhosts;
+
 typedef struct {
     double rho, mu;            /* kg/m^3, Pa s */
     double dt;                 /* s */
     double wall_u[PDDO_SIDES]; /* velocity of each wall side, m/s (a lid: u of the top) */
     double wall_v[PDDO_SIDES];
     double inlet_u, inlet_v; /* uniform inflow, m/s */
+    PddoWallGhosts walls;    /* fictitious velocities of walls, lids and bodies */
+    double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
+                                Eq. 33 is unchanged) */
 } PddoStepParams;
 
-enum { PDDO_VEL_FREE = 0, PDDO_VEL_FIXED, PDDO_VEL_COPY, PDDO_VEL_PERIODIC };
+enum { PDDO_VEL_FREE = 0, PDDO_VEL_FIXED, PDDO_VEL_COPY, PDDO_VEL_PERIODIC, PDDO_VEL_ANTI };
 
 typedef struct {
     const PddoCloud *cloud; /* borrowed, with the operators and the PPE built on it */
@@ -51,8 +62,8 @@ typedef struct {
     PddoStepParams par;
     double *u, *v, *p;     /* the state, n each (p of the last step) */
     uint8_t *rule;         /* PDDO_VEL_* per node */
-    int32_t *source;       /* COPY / PERIODIC: the node copied; else -1 */
-    double *fix_u, *fix_v; /* FIXED: the values */
+    int32_t *source;       /* COPY / PERIODIC / ANTI: the node read; else -1 */
+    double *fix_u, *fix_v; /* FIXED: the values; ANTI: the wall velocity */
     double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
     double time;
     int64_t steps;
