@@ -371,6 +371,78 @@ static void test_poiseuille_wall_orders(void **state) {
     }
 }
 
+/* The open channel of paper 002 Sec. 5.2 in nondimensional form and
+ * coarse: H = 1, length 5 H, uniform inflow u0 = 1 (Eqs. 57, 61, 62),
+ * walls at rest, zero-pressure outlet (Eqs. 50-52), Re = 56, N = 10
+ * across (969 nodes), dt = pddo_step_stable_dt, t = 15 H / u0 (1,890 steps,
+ * max du/dt falls to 3e-11 u0^2 / H). Returns the exit layer's max u / u0
+ * and the ratio of its trapezoidal flux to the inlet's (the inlet's corner
+ * nodes belong to the walls, notes #11, so the inflow is (1 - 1/N) u0 H). */
+static double channel_flow(PddoWallGhosts walls, double *flux_ratio) {
+    const int n = 10;
+    const double nu = 1.0 / 56.0;
+    PddoCloudSpec s = {
+        .lo = {0.0, 0.0}, .hi = {5.0, 1.0}, .dx = 1.0 / n, .layers = 3, .horizon_factor = 3.0};
+    s.side[PDDO_LEFT] = PDDO_SIDE_INLET;
+    s.side[PDDO_RIGHT] = PDDO_SIDE_OUTLET;
+    PddoCloud c = {0};
+    PddoOps ops = {0};
+    PddoPpe ppe = {0};
+    PddoStep st = {0};
+    assert_ok(pddo_cloud_build(&c, &s));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ppe_build(&ppe, &c, &ops));
+    assert_int_equal(ppe.pinned, -1); /* the outlet fixes the level */
+    const PddoStepParams par = {.rho = 1.0,
+                                .mu = nu,
+                                .dt = pddo_step_stable_dt(nu, s.dx, 1.5),
+                                .inlet_u = 1.0,
+                                .walls = walls};
+    assert_ok(pddo_step_init(&st, &c, &ops, &ppe, &par));
+    const int steps = (int)lround(15.0 / par.dt);
+    for (int i = 0; i < steps; i++) assert_ok(pddo_step_advance(&st));
+    assert_true(st.dudt_max < 1e-9);
+    double umax = 0.0, in = 0.0, out = 0.0;
+    for (int j = 0; j <= n; j++) {
+        const double w = j == 0 || j == n ? 0.5 : 1.0;
+        const int64_t e = pddo_cloud_node(&c, c.nx, j), i0 = pddo_cloud_node(&c, 0, j);
+        umax = fmax(umax, st.u[e]);
+        out += w * st.u[e] * s.dx, in += w * st.u[i0] * s.dx;
+        assert_close(st.p[e], 0.0, 0.0); /* the exit layer's p = 0 */
+    }
+    *flux_ratio = out / in;
+    printf("channel Re 56, N = 10, %s wall ghosts: exit max u %.4f u0, inflow %.4f u0 H, "
+           "outflow / inflow %.4f, max du/dt %.1e\n",
+           walls ? "antisymmetric" : "zero", umax, in, *flux_ratio, st.dudt_max);
+    pddo_step_free(&st);
+    pddo_ppe_free(&ppe);
+    pddo_ops_free(&ops);
+    pddo_cloud_free(&c);
+    return umax;
+}
+
+/* Inlet, outlet and their corners in the time loop (V10, V14, coarse).
+ * Zero wall ghosts: the exit layer carries the inflow to 2e-4 (measured
+ * 1.0002; asserted 1e-3) and its max u is 1.302 u0 (asserted 1.30 +- 0.01);
+ * finer, 1.393 (N = 20) and 1.444 (N = 40, 3.7 % below Poiseuille's 1.5:
+ * the notes' prototype says 3.6 %), measured outside the suite for time.
+ * Antisymmetric ghosts: the outflow is only 0.954 of the inflow (N = 10;
+ * 0.965 at 20, 0.975 at 40, converging slowly): the scheme is not
+ * conservative (notes V10), and with the reflected uniform inflow at the
+ * inlet-wall corners it loses mass there: 0.028 of the 0.041 u0 H lost is
+ * gone 0.5 H downstream, the rest along the entrance length (the flux at
+ * mid-length equals the exit's to 1e-4). Recorded, asserted at
+ * 0.954 +- 0.01 so that a change of the corner treatment shows here. */
+static void test_channel_inlet_outlet(void **state) {
+    (void)state;
+    double zero_ratio, anti_ratio;
+    const double zero_umax = channel_flow(PDDO_WALL_ZERO, &zero_ratio);
+    channel_flow(PDDO_WALL_ANTISYMMETRIC, &anti_ratio);
+    assert_close(zero_ratio, 1.0, 1e-3);
+    assert_close(zero_umax, 1.30, 0.01);
+    assert_close(anti_ratio, 0.954, 0.01);
+}
+
 /* V16: 5,041 nodes (above PARALLEL_MIN_ITEMS, so the loops do split),
  * 10 steps on 1 and on 2 threads: u, v and p are the same bits. */
 static void test_threads_bitwise(void **state) {
@@ -393,6 +465,7 @@ int main(void) {
         cmocka_unit_test(test_diffusion_stability_limit),
         cmocka_unit_test(test_wall_shear),
         cmocka_unit_test(test_poiseuille_wall_orders),
+        cmocka_unit_test(test_channel_inlet_outlet),
         cmocka_unit_test(test_cavity_re1_divergence),
         cmocka_unit_test(test_threads_bitwise),
     };
