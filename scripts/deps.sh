@@ -3,7 +3,9 @@
 #   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cairo and a font for the
 #                              pictures' text, cmocka, VTK for Python (the tests open our
 #                              .vtu/.vtr files with VTK's own readers), ffmpeg (movies),
-#                              Chromium (tests/cli/test_report.sh opens report.html in it)
+#                              Chromium (tests/cli/test_report.sh opens report.html in it),
+#                              SuiteSparse (UMFPACK: the PDDO flow's sparse LU of its
+#                              pressure matrix, which is not symmetric)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine
 #   scripts/deps.sh fuzz       + clang, libFuzzer (libclang-rt-14-dev), OpenMP for clang (make fuzz)
@@ -11,7 +13,7 @@
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 ffmpeg chromium"
+want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 ffmpeg chromium libsuitesparse-dev"
 for group in "$@"; do
     case "$group" in
     build) ;;

@@ -6,7 +6,7 @@
  *     (lattice.c);
  *  2. point volumes (dx^dim, times the thickness in 2D), regions (and their
  *     flat table for the integrator), initial velocities;
- *  3. bonds within the horizon |xi| <= delta (bonds.c). The family is the
+ *  3. bonds within the horizon |xi| <= delta (core/neighbours.c). The family is the
  *     horizon itself, as in Madenci and Oterkus' code (28 neighbours in 2D and
  *     122 in 3D for delta = 3.015 dx); the partial-volume factor nu_ij then
  *     weighs the bonds whose neighbour cell the horizon cuts;
@@ -22,7 +22,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "solid/bonds.h"
+#include "core/neighbours.h"
 #include "solid/corrections.h"
 #include "solid/lattice.h"
 #include "solid/precrack.h"
@@ -116,8 +116,8 @@ static int build(BondBody *body, PdConfig *cfg) {
     pd_regions_assign(cfg, body->n, (const double *const *)body->x, body->region, body->v);
     TRY(pd_boundary_table_build(&body->boundary, cfg));
 
-    TRY(bonds_find(body->n, body->dim, (const double *const *)body->x, body->horizon,
-                   &body->bond_first, &body->bond_nbr));
+    TRY(neighbours_find(body->n, body->dim, (const double *const *)body->x, body->horizon,
+                        &body->bond_first, &body->bond_nbr));
     body->bond_count = body->bond_first[body->n];
     TRY(nspd_alloc(&body->bond_coef, (size_t)body->bond_count, sizeof(float)));
 

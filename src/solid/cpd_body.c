@@ -8,7 +8,7 @@
 #include "core/parallel.h"
 #include "core/status.h"
 #include "solid/bac_force.h"
-#include "solid/bonds.h"
+#include "core/neighbours.h"
 #include "solid/lattice.h"
 #include "solid/precrack.h"
 #include "solid/rk_gradient.h"
@@ -18,12 +18,12 @@
 
 /* The square family |xi|_inf <= delta is the disc search of radius
  * sqrt(dim) delta, filtered in place (one neighbour search in the code
- * base); the same 1e-12 margin as bonds_find, so lattice neighbours at
+ * base); the same 1e-12 margin as neighbours_find, so lattice neighbours at
  * exactly delta are in. */
 static int find_families(CpdBody *b) {
     const bool square = b->cfg.family == CPD_FAMILY_SQUARE;
     const double reach = square ? b->delta * sqrt((double)b->dim) : b->delta;
-    TRY(bonds_find(b->n, b->dim, (const double *const *)b->x, reach, &b->first, &b->nbr));
+    TRY(neighbours_find(b->n, b->dim, (const double *const *)b->x, reach, &b->first, &b->nbr));
     if (square) {
         const double limit = b->delta * (1.0 + 1e-12);
         int64_t kept = 0;

@@ -1,12 +1,13 @@
 #include "solid/rk_gradient.h"
 
 #include "core/parallel.h"
+#include "core/spd_small.h"
 
 #include <math.h>
 #include <stdbool.h>
 #include <string.h>
 
-enum { RK_MAX_TERMS = 9 }; /* 3D: x, y, z and the six quadratic monomials */
+enum { RK_MAX_TERMS = SPD_SMALL_MAX }; /* 3D: x, y, z and the six quadratic monomials */
 
 /* The cubic B-spline of the kernel, b(r) for r = |xi_a| / delta. */
 static double bspline(double r) {
@@ -32,48 +33,6 @@ static int monomials(int dim, const double xi[3], double delta, double q[RK_MAX_
     return m;
 }
 
-/* Cholesky factorisation M = L L^T in place (lower triangle), after scaling
- * M to a unit diagonal (scale[r] = 1/sqrt(M_rr)); false when a pivot falls
- * below RK_MIN_PIVOT: the family cannot fit a quadratic. */
-static bool factor(double M[RK_MAX_TERMS][RK_MAX_TERMS], int m, double scale[RK_MAX_TERMS]) {
-    for (int r = 0; r < m; r++) {
-        if (!(M[r][r] > 0.0)) return false;
-        scale[r] = 1.0 / sqrt(M[r][r]);
-    }
-    for (int r = 0; r < m; r++)
-        for (int c = 0; c <= r; c++) M[r][c] *= scale[r] * scale[c];
-    for (int c = 0; c < m; c++) {
-        double d = M[c][c];
-        for (int k = 0; k < c; k++) d -= M[c][k] * M[c][k];
-        if (!(d > RK_MIN_PIVOT)) return false;
-        const double l = sqrt(d);
-        M[c][c] = l;
-        for (int r = c + 1; r < m; r++) {
-            double v = M[r][c];
-            for (int k = 0; k < c; k++) v -= M[r][k] * M[c][k];
-            M[r][c] = v / l;
-        }
-    }
-    return true;
-}
-
-/* Solves (S L L^T S) z = q for z, with S = diag(1/scale), by the factor. */
-static void solve(double L[RK_MAX_TERMS][RK_MAX_TERMS], int m, const double scale[RK_MAX_TERMS],
-                  const double q[RK_MAX_TERMS], double z[RK_MAX_TERMS]) {
-    double y[RK_MAX_TERMS] = {0};
-    for (int r = 0; r < m; r++) {
-        double v = q[r] * scale[r];
-        for (int k = 0; k < r; k++) v -= L[r][k] * y[k];
-        y[r] = v / L[r][r];
-    }
-    for (int r = m - 1; r >= 0; r--) {
-        double v = y[r];
-        for (int k = r + 1; k < m; k++) v -= L[k][r] * z[k];
-        z[r] = v / L[r][r];
-    }
-    for (int r = 0; r < m; r++) z[r] *= scale[r];
-}
-
 static void bond_vector(int dim, const double *const x[3], int64_t i, int64_t j, double xi[3]) {
     xi[0] = xi[1] = xi[2] = 0.0;
     for (int a = 0; a < dim && a < 3; a++) xi[a] = x[a][j] - x[a][i];
@@ -97,7 +56,7 @@ static bool point_weights(int dim, int64_t i, const double *const x[3], const do
     for (int r = 0; r < m; r++)
         for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
     double scale[RK_MAX_TERMS];
-    const bool ok = factor(M, m, scale);
+    const bool ok = spd_small_factor(M, m, scale, RK_MIN_PIVOT);
     for (int64_t k = first[i]; k < first[i + 1]; k++) {
         double *out = phi + (int64_t)dim * k;
         if (!ok) {
@@ -108,7 +67,7 @@ static bool point_weights(int dim, int64_t i, const double *const x[3], const do
         const double w = rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
         double z[RK_MAX_TERMS] = {0};
         monomials(dim, xi, delta, q);
-        solve(M, m, scale, q, z);
+        spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, q, z);
         for (int a = 0; a < dim; a++) out[a] = w * z[a] / delta;
     }
     return ok;

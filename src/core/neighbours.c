@@ -3,11 +3,11 @@
  * Points are binned into cubic cells of side >= horizon, so every neighbour
  * of a point lies in its own cell or an adjacent one (3^dim cells). Two
  * passes over the same loop: count, then fill; each row is then sorted by
- * neighbour index so the force loop walks memory forward. The comparison
+ * neighbour index so the loops over a family walk memory forward. The comparison
  * uses horizon^2 (1 + 1e-12): lattice distances that equal the horizon up to
  * round-off are in, which matters only for horizon factors without the usual
  * 0.015 margin. */
-#include "solid/bonds.h"
+#include "core/neighbours.h"
 #include "core/parallel.h"
 
 #include "core/mem.h"
@@ -118,8 +118,8 @@ static int64_t visit(const CellList *cl, const double *const x[3], int64_t i, do
     return found;
 }
 
-int bonds_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
-               int32_t **nbr) {
+int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
+                    int32_t **nbr) {
     CellList cl = {0};
     TRY(cells_build(&cl, n, dim, x, horizon));
     double r2 = horizon * horizon * (1.0 + 1e-12);

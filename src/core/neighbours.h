@@ -1,0 +1,17 @@
+/* Neighbour search: the family of every point within a horizon, as
+ * compressed rows (each point lists all its neighbours, ascending). The one
+ * neighbour search of the code base: the PD solid's bonds and the PDDO
+ * flow's families (flow/pddo_cloud.c) both come from it. */
+#ifndef NSPD_CORE_NEIGHBOURS_H
+#define NSPD_CORE_NEIGHBOURS_H
+
+#include <stdint.h>
+
+/* Finds, for each of the n points, all other points j with |x_j - x_i| <=
+ * horizon. Allocates *first (n + 1 offsets) and *nbr (first[n] indices).
+ * Uses a cell list of cell size `horizon`: O(n) work, parallel, and the
+ * result does not depend on the thread count. */
+int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
+                    int32_t **nbr);
+
+#endif

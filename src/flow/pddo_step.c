@@ -1,0 +1,232 @@
+/* The explicit PDDO flow step (paper 002 Sec. 3.4); see pddo_step.h.
+ *
+ * Invariant between steps: u and v satisfy the velocity conditions (every
+ * FIXED node holds its value, every COPY / PERIODIC node its source's), so
+ * outputs and probes may read them directly. Every loop is per node with a
+ * fixed order of its family sums: the same bits at any thread count. */
+#include "flow/pddo_step.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+
+enum { UX, UY, VX, VY, LU, LV, D1, D2, R };
+
+/* Precedence of the sides' velocity rules (pddo_step.h), smaller first. */
+static int rank(const PddoStepParams *par, PddoSideKind kind, int side) {
+    if (kind == PDDO_SIDE_WALL) return par->wall_u[side] == 0.0 && par->wall_v[side] == 0.0 ? 0 : 1;
+    if (kind == PDDO_SIDE_INLET) return 2;
+    if (kind == PDDO_SIDE_PERIODIC) return 3;
+    return 4;
+}
+
+/* The rule of node k. */
+static void node_rule(PddoStep *ps, int64_t k) {
+    const PddoCloud *c = ps->cloud;
+    ps->rule[k] = PDDO_VEL_FREE, ps->source[k] = -1;
+    if (c->kind[k] == PDDO_NODE_FLUID) return;
+    const bool anti = ps->par.walls == PDDO_WALL_ANTISYMMETRIC;
+    if (c->kind[k] == PDDO_NODE_BODY) {
+        ps->rule[k] = anti ? PDDO_VEL_ANTI : PDDO_VEL_FIXED;
+        ps->fix_u[k] = ps->fix_v[k] = 0.0;
+        ps->source[k] = anti ? c->image[k] : -1;
+        return;
+    }
+    int best = -1, best_rank = 99;
+    for (int s = 0; s < PDDO_SIDES; s++) {
+        if (!((unsigned)c->sides[k] >> s & 1u)) continue;
+        const int r = rank(&ps->par, c->side[s], s);
+        if (r < best_rank) best_rank = r, best = s;
+    }
+    if (best < 0) return; /* a periodic axis' node 0: not on any side */
+    switch (c->side[best]) {
+    case PDDO_SIDE_WALL:
+        /* the wall's own nodes hold its velocity; its fictitious ones too
+         * (the paper) or its reflection about it through the pressure image
+         * (u_g = 2 u_w - u_image: linear across the wall, second order) */
+        ps->rule[k] = anti && c->kind[k] == PDDO_NODE_GHOST ? PDDO_VEL_ANTI : PDDO_VEL_FIXED;
+        ps->fix_u[k] = ps->par.wall_u[best], ps->fix_v[k] = ps->par.wall_v[best];
+        if (ps->rule[k] == PDDO_VEL_ANTI) ps->source[k] = c->image[k];
+        return;
+    case PDDO_SIDE_INLET:
+        ps->rule[k] = PDDO_VEL_FIXED;
+        ps->fix_u[k] = ps->par.inlet_u, ps->fix_v[k] = ps->par.inlet_v;
+        return;
+    case PDDO_SIDE_PERIODIC:
+        ps->rule[k] = PDDO_VEL_PERIODIC, ps->source[k] = c->image[k];
+        return;
+    case PDDO_SIDE_OUTLET: {
+        if (c->kind[k] == PDDO_NODE_SIDE) return; /* the exit layer is updated */
+        /* Eq. 52: the exit-layer node along the outlet's normal; a corner
+         * beyond a periodic axis too takes that axis' image */
+        int i = c->i[k], j = c->j[k];
+        if (best == PDDO_LEFT || best == PDDO_RIGHT)
+            i = best == PDDO_LEFT ? 0 : c->nx;
+        else
+            j = best == PDDO_BOTTOM ? 0 : c->ny;
+        if (c->side[PDDO_LEFT] == PDDO_SIDE_PERIODIC) i = (i % c->nx + c->nx) % c->nx;
+        if (c->side[PDDO_BOTTOM] == PDDO_SIDE_PERIODIC) j = (j % c->ny + c->ny) % c->ny;
+        ps->rule[k] = PDDO_VEL_COPY, ps->source[k] = (int32_t)pddo_cloud_node(c, i, j);
+        return;
+    }
+    }
+}
+
+int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, PddoPpe *ppe,
+                   const PddoStepParams *par) {
+    pddo_step_free(ps);
+    if (!(par->dt > 0.0) || !(par->rho > 0.0) || !(par->mu > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "PDDO step: dt %g s, rho %g kg/m^3, mu %g Pa s; expected all > 0", par->dt,
+                         par->rho, par->mu);
+    ps->cloud = cloud, ps->ops = ops, ps->ppe = ppe, ps->par = *par;
+    const size_t n = (size_t)cloud->n;
+    int status = NSPD_OK;
+    double **arrays[] = {&ps->u, &ps->v, &ps->p, &ps->fix_u, &ps->fix_v};
+    for (size_t a = 0; a < sizeof arrays / sizeof *arrays && status == NSPD_OK; a++)
+        status = nspd_alloc(arrays[a], n, sizeof(double));
+    for (int a = 0; a < 9 && status == NSPD_OK; a++)
+        status = nspd_alloc(&ps->scratch[a], n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&ps->rule, n, 1);
+    if (status == NSPD_OK) status = nspd_alloc(&ps->source, n, sizeof(int32_t));
+    if (status != NSPD_OK) {
+        pddo_step_free(ps);
+        return status;
+    }
+    for (int64_t k = 0; k < cloud->n; k++) {
+        node_rule(ps, k);
+        const int32_t s = ps->source[k];
+        /* copies read nodes that are not copies themselves (pass 2 of apply_bc) */
+        if (ps->rule[k] >= PDDO_VEL_COPY && (s < 0 || ps->rule[s] >= PDDO_VEL_COPY)) {
+            pddo_step_free(ps);
+            return NSPD_FAIL(NSPD_ERR_INTERNAL, "PDDO step: node %lld copies a prescribed node",
+                             (long long)k);
+        }
+    }
+    pddo_step_apply_bc(ps);
+    return NSPD_OK;
+}
+
+void pddo_step_apply_bc(PddoStep *ps) {
+    const int64_t n = ps->cloud->n;
+    double *u = ps->u, *v = ps->v;
+    const uint8_t *rule = ps->rule;
+    const int32_t *src = ps->source;
+    /* prescribed values first, then the copies and reflections, whose
+     * sources are free or prescribed nodes (checked at init) */
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++)
+        if (rule[k] == PDDO_VEL_FIXED) u[k] = ps->fix_u[k], v[k] = ps->fix_v[k];
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) {
+        if (rule[k] == PDDO_VEL_COPY || rule[k] == PDDO_VEL_PERIODIC)
+            u[k] = u[src[k]], v[k] = v[src[k]];
+        else if (rule[k] == PDDO_VEL_ANTI)
+            u[k] = 2.0 * ps->fix_u[k] - u[src[k]], v[k] = 2.0 * ps->fix_v[k] - v[src[k]];
+    }
+}
+
+/* Periodic fictitious nodes take their image's value of f (after f was
+ * computed at every node): d and L are then exactly periodic. */
+static void copy_periodic(const PddoStep *ps, double *f) {
+    const int64_t n = ps->cloud->n;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++)
+        if (ps->rule[k] == PDDO_VEL_PERIODIC) f[k] = f[ps->source[k]];
+}
+
+int pddo_step_advance(PddoStep *ps) {
+    const PddoOps *ops = ps->ops;
+    const int64_t n = ps->cloud->n;
+    double *const *w = ps->scratch;
+    double *u = ps->u, *v = ps->v, *p = ps->p;
+    const double rho = ps->par.rho, mu = ps->par.mu, dt = ps->par.dt, nu = mu / rho;
+    pddo_step_apply_bc(ps); /* 7.1 (a no-op between steps; the caller may have set u) */
+
+    /* 7.2: first and second derivatives of the velocity (Eqs. 20, 21) */
+    pddo_ops_apply(ops, PDDO_D_X, u, w[UX]);
+    pddo_ops_apply(ops, PDDO_D_Y, u, w[UY]);
+    pddo_ops_apply(ops, PDDO_D_X, v, w[VX]);
+    pddo_ops_apply(ops, PDDO_D_Y, v, w[VY]);
+    pddo_ops_apply(ops, PDDO_LAP, u, w[LU]);
+    pddo_ops_apply(ops, PDDO_LAP, v, w[LV]);
+    /* d = u.grad u (Eq. 23) pointwise at every node */
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) {
+        w[D1][k] = u[k] * w[UX][k] + v[k] * w[UY][k];
+        w[D2][k] = u[k] * w[VX][k] + v[k] * w[VY][k];
+    }
+    copy_periodic(ps, w[D1]);
+    copy_periodic(ps, w[D2]);
+    copy_periodic(ps, w[LU]);
+    copy_periodic(ps, w[LV]);
+    /* r (Eq. 33b) on the PPE rows; the boundary rows' right-hand sides are
+     * the paper's zeros (pddo_ppe.h) */
+    const uint8_t *row = ps->ppe->row;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) {
+        if (row[k] != PDDO_ROW_PPE) {
+            w[R][k] = 0.0;
+            continue;
+        }
+        const double div_u = w[UX][k] + w[VY][k];
+        const double div_d =
+            pddo_ops_at(ops, PDDO_D_X, w[D1], k) + pddo_ops_at(ops, PDDO_D_Y, w[D2], k);
+        const double div_l =
+            pddo_ops_at(ops, PDDO_D_X, w[LU], k) + pddo_ops_at(ops, PDDO_D_Y, w[LV], k);
+        w[R][k] = rho / dt * div_u - rho * div_d + mu * div_l;
+    }
+    /* 7.3 */
+    TRY(pddo_ppe_solve(ps->ppe, w[R], p));
+    /* 7.4 (Eq. 8); grad p into the spent first-derivative arrays */
+    pddo_ops_apply(ops, PDDO_D_X, p, w[UX]);
+    pddo_ops_apply(ops, PDDO_D_Y, p, w[UY]);
+    int64_t bad = n;
+    double rate = 0.0; /* max |du/dt|: a max is exact, so any thread count gives these bits */
+#pragma omp parallel for schedule(static) reduction(min                                            \
+                                                    : bad)                                         \
+    reduction(max                                                                                  \
+              : rate) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) {
+        if (ps->rule[k] != PDDO_VEL_FREE) continue;
+        const double du = -w[D1][k] - w[UX][k] / rho + nu * w[LU][k] + ps->par.force_x;
+        const double dv = -w[D2][k] - w[UY][k] / rho + nu * w[LV][k] + ps->par.force_y;
+        u[k] += dt * du;
+        v[k] += dt * dv;
+        rate = fmax(rate, fmax(fabs(du), fabs(dv)));
+        if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
+    }
+    ps->dudt_max = rate;
+    pddo_step_apply_bc(ps);
+    ps->time += dt;
+    ps->steps++;
+    if (bad < n)
+        return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                         "PDDO step %lld: velocity not finite at node %lld (%g, %g) m; expected "
+                         "a stable step (dt <= %g s here)",
+                         (long long)ps->steps, (long long)bad, ps->cloud->x[bad], ps->cloud->y[bad],
+                         2.0 * pddo_step_stable_dt(nu, ps->cloud->dx, 0.0));
+    return NSPD_OK;
+}
+
+double pddo_step_stable_dt(double nu, double dx, double umax) {
+    const double diffusion = 1.6 * dx * dx / nu;
+    const double convection = umax > 0.0 ? 2.0 * nu / (umax * umax) : (double)INFINITY;
+    return 0.5 * fmin(diffusion, convection);
+}
+
+void pddo_step_free(PddoStep *ps) {
+    nspd_free(&ps->u);
+    nspd_free(&ps->v);
+    nspd_free(&ps->p);
+    nspd_free(&ps->fix_u);
+    nspd_free(&ps->fix_v);
+    for (int a = 0; a < 9; a++) nspd_free(&ps->scratch[a]);
+    nspd_free(&ps->rule);
+    nspd_free(&ps->source);
+    memset(ps, 0, sizeof *ps);
+}

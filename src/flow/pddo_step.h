@@ -1,0 +1,94 @@
+/* The explicit PDDO flow step of paper 002 (Sec. 3.4, Eqs. 7, 8/35, 20-30,
+ * 33; notes/pddo.md 1.1, 1.3, 1.5): from u^(n-1),
+ *   7.1  the velocity conditions of Sec. 4 on the sides and fictitious nodes;
+ *   7.2  grad u, lap u (Eqs. 20, 21) at every node, d = u.grad u (Eq. 23),
+ *        L = lap u, then div u, div d, div L (Eqs. 22, 24, 27) and
+ *        r = (rho/dt) div u - rho div d + mu div L (Eq. 33b) on the PPE rows;
+ *   7.3  K_L P = R (Eq. 34) by back substitution (flow/pddo_ppe.h);
+ *   7.4  u^(n) = u^(n-1) + dt (-d - grad p / rho + nu L) (Eq. 8) at the
+ *        nodes that are not prescribed.
+ * Forward Euler for convection and diffusion, pressure implicit: first
+ * order in time, and the velocity is not discretely divergence-free (notes
+ * 1.5). Stable for dt <= min(1.61 dx^2 / nu, 2 nu / |u|^2) (notes 1.5, von
+ * Neumann analysis of the lattice operators); pddo_step_stable_dt gives
+ * half of it.
+ *
+ * Velocity conditions (Sec. 4), one rule per node, by precedence where a
+ * node lies on or beyond two sides (corners, which the paper leaves open):
+ *   wall at rest > moving wall (lid) > inlet > periodic > outlet:
+ *   wall   side nodes take the wall velocity; fictitious ones too (Eqs.
+ *          36-39, 55; the paper's choice, first order at walls: it halves
+ *          the wall shear, notes 1.6) or, with PDDO_WALL_ANTISYMMETRIC, its
+ *          reflection 2 u_wall - u(pressure image) (second order)
+ *   inlet  side and fictitious nodes take the inflow (Eqs. 57, 61)
+ *   outlet the side node (exit layer) is updated by Eq. 8 like a fluid node
+ *          (notes #23), fictitious nodes copy it along the normal (Eq. 52)
+ *   periodic fictitious nodes copy their image, and so do d and L there
+ *   body   fictitious body nodes are at rest (Eqs. 44, 47), or reflect
+ *          their image with PDDO_WALL_ANTISYMMETRIC
+ * d and L at the other fictitious nodes come from their own truncated
+ * families (notes #19). */
+#ifndef NSPD_FLOW_PDDO_STEP_H
+#define NSPD_FLOW_PDDO_STEP_H
+
+#include "flow/pddo_cloud.h"
+#include "flow/pddo_ops.h"
+#include "flow/pddo_ppe.h"
+
+#include <stdint.h>
+
+typedef enum {
+    PDDO_WALL_ZERO = 0,      /* the paper: fictitious wall nodes hold the wall velocity */
+    PDDO_WALL_ANTISYMMETRIC, /* u_g = 2 u_wall - u(image): second order (notes 1.6, V6) */
+} PddoWallGhosts;
+
+typedef struct {
+    double rho, mu;            /* kg/m^3, Pa s */
+    double dt;                 /* s */
+    double wall_u[PDDO_SIDES]; /* velocity of each wall side, m/s (a lid: u of the top) */
+    double wall_v[PDDO_SIDES];
+    double inlet_u, inlet_v; /* uniform inflow, m/s */
+    PddoWallGhosts walls;    /* fictitious velocities of walls, lids and bodies */
+    double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
+                                Eq. 33 is unchanged) */
+} PddoStepParams;
+
+enum { PDDO_VEL_FREE = 0, PDDO_VEL_FIXED, PDDO_VEL_COPY, PDDO_VEL_PERIODIC, PDDO_VEL_ANTI };
+
+typedef struct {
+    const PddoCloud *cloud; /* borrowed, with the operators and the PPE built on it */
+    const PddoOps *ops;
+    PddoPpe *ppe;
+    PddoStepParams par;
+    double *u, *v, *p;     /* the state, n each (p of the last step) */
+    uint8_t *rule;         /* PDDO_VEL_* per node */
+    int32_t *source;       /* COPY / PERIODIC / ANTI: the node read; else -1 */
+    double *fix_u, *fix_v; /* FIXED: the values; ANTI: the wall velocity */
+    double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
+    double time;
+    int64_t steps;
+    double dudt_max; /* the last step's max |du/dt|, |dv/dt| over updated nodes (m/s^2): the
+                        steady-state criterion */
+} PddoStep;
+
+/* Sets up the step on a cloud with its operators and PPE (borrowed: they
+ * must outlive it); u = v = p = 0, then the velocity conditions. ps is
+ * zeroed or freed before. NSPD_ERR_INPUT for dt, rho or mu not positive;
+ * NSPD_ERR_NOMEM. */
+int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, PddoPpe *ppe,
+                   const PddoStepParams *par);
+
+/* Imposes the velocity conditions (Sec. 3.4 step 7.1) on u and v; call
+ * after setting an initial field. */
+void pddo_step_apply_bc(PddoStep *ps);
+
+/* One step (7.1-7.4). NSPD_ERR_NUMERIC if the solve fails or a velocity
+ * becomes non-finite (naming the node). */
+int pddo_step_advance(PddoStep *ps);
+
+/* Half the stable limit of notes 1.5 for speed umax (m/s), spacing dx. */
+double pddo_step_stable_dt(double nu, double dx, double umax);
+
+void pddo_step_free(PddoStep *ps);
+
+#endif
