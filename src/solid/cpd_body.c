@@ -148,11 +148,12 @@ static int build(CpdBody *b, CpdConfig *cfg) {
             const double xj[3] = {b->x[0][b->nbr[k]], b->x[1][b->nbr[k]], b->x[2][b->nbr[k]]};
             const double xp[3] = {b->x[0][i], b->x[1][i], b->x[2][i]};
             for (int c = 0; c < pd->precrack_count; c++)
-                if (precrack_cuts(&pd->precracks[c], b->dim, xp, xj)) {
-                    b->damage[k] = 1.0; /* a pre-crack: broken from the start */
-                    b->scale[k] = 0.0;
-                }
+                if (precrack_cuts(&pd->precracks[c], b->dim, xp, xj)) b->damage[k] = 1.0;
         }
+    /* the intact body must give every point weights (else it is thinner
+     * than a family: refused); then the pre-cracks break their bonds and
+     * the weights settle like damage's (a point a pre-crack isolates is
+     * debris) */
     const int64_t missing =
         rk_gradient_weights(b->dim, b->n, (const double *const *)b->x, b->volume, b->first, b->nbr,
                             b->delta, b->scale, b->phi, b->ok);
@@ -166,6 +167,12 @@ static int build(CpdBody *b, CpdConfig *cfg) {
                          "a larger horizon_factor",
                          (long long)missing, b->x[0][i], b->x[1][i], b->delta);
     }
+    for (int64_t i = 0; i < b->n; i++) {
+        b->redo[i] = 0;
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+            if (b->damage[k] >= 1.0) b->scale[k] = 0.0, b->redo[i] = 1;
+    }
+    cpd_settle_weights(b);
     pressure_directions(b);
     b->stable_dt = b->stable_now = cpd_stable_dt(b, CPD_COLD_ITERATIONS, false);
     return NSPD_OK;

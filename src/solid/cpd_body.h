@@ -92,6 +92,13 @@ int cpd_step(CpdBody *b, double dt);
 /* The force density at the current u into b->force, advancing the bond
  * stresses from u_prev and the damage (what cpd_step calls). */
 void cpd_force(CpdBody *b, double t);
+/* The weights of the points flagged in b->redo recomputed with the damaged
+ * kernel; a point left without weights is debris and its bonds break from
+ * both ends (each end reads both points' flags), which may leave its
+ * neighbours without weights in turn: repeated until no point changes.
+ * Returns the number of bonds broken this way. */
+int64_t cpd_settle_weights(CpdBody *b);
+
 /* dt = 2 / sqrt(lambda_max) of the linearised operator (K / rho) at the
  * current damage, by power iteration (notes 1c.10 C6): `iterations` from
  * the lattice checkerboard (cold) or from b->mode (warm, with a part of the

@@ -43,11 +43,8 @@ static double damage_law(const CpdBody *b, int64_t k) {
     }
 }
 
-/* Damage grows (never falls) by the law; a point whose bonds' damage grew
- * gets its weights recomputed; a point left without weights is debris and
- * its bonds break from both ends (each end reads both points' flags), which
- * may leave its neighbours without weights in turn: repeated until no point
- * changes. Returns the number of bonds whose damage grew. */
+/* Damage grows (never falls) by the law, then the weights settle
+ * (cpd_settle_weights). Returns the number of bonds whose damage grew. */
 static int64_t update_damage(CpdBody *b) {
     int64_t grown = 0;
 #pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
@@ -64,8 +61,13 @@ static int64_t update_damage(CpdBody *b) {
         }
         b->redo[i] = redo;
     }
+    return grown > 0 ? grown + cpd_settle_weights(b) : 0;
+}
+
+int64_t cpd_settle_weights(CpdBody *b) {
     const double *const *x = (const double *const *)b->x;
-    for (int pass = 0; grown > 0 && pass < 1000; pass++) {
+    int64_t grown = 0;
+    for (int pass = 0; pass < 1000; pass++) {
         if (rk_gradient_weights_redo(b->dim, b->n, x, b->volume, b->first, b->nbr, b->delta,
                                      b->scale, b->redo, b->phi, b->ok) == 0)
             break;
