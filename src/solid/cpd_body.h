@@ -44,9 +44,11 @@
 /* Per bond in 2D; the classic force (notes 1c.3, solid/classic_force.h)
  * keeps no RK weights and its material state per point instead (sigma,
  * eqps, principal and inverted are then arrays of n, not of bond_count):
- * 52 bytes per bond and CPD_CLASSIC_BYTES_PER_POINT more per point. */
+ * 52 bytes per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16)
+ * and CPD_CLASSIC_BYTES_PER_POINT more per point (sigma 32, eqps and
+ * principal 8 each, inverted 1). */
 enum { CPD_BYTES_PER_BOND = 117, CPD_CLASSIC_BYTES_PER_BOND = 52 };
-enum { CPD_CLASSIC_BYTES_PER_POINT = 57 };
+enum { CPD_CLASSIC_BYTES_PER_POINT = 49 };
 
 typedef struct {
     CpdConfig cfg; /* owned copy */
