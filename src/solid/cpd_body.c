@@ -62,13 +62,17 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->work_point, 19 * n, sizeof(double)));
     TRY(nspd_alloc(&b->reverse, nb, sizeof(int64_t)));
     TRY(nspd_alloc(&b->omega, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
-    TRY(nspd_alloc(&b->sigma, 4 * nb, sizeof(double)));
-    TRY(nspd_alloc(&b->eqps, nb, sizeof(double)));
+    /* the material state: per bond (bond-associated) or per point (classic,
+     * which needs no RK weights) */
+    const bool classic = b->cfg.force == CPD_FORCE_CLASSIC;
+    const size_t ns = classic ? n : nb;
+    if (!classic) TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
+    TRY(nspd_alloc(&b->sigma, 4 * ns, sizeof(double)));
+    TRY(nspd_alloc(&b->eqps, ns, sizeof(double)));
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->principal, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->inverted, nb, 1));
+    TRY(nspd_alloc(&b->principal, ns, sizeof(double)));
+    TRY(nspd_alloc(&b->inverted, ns, 1));
     TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * nb, sizeof(double)));
     return NSPD_OK;
 }
@@ -154,18 +158,19 @@ static int build(CpdBody *b, CpdConfig *cfg) {
      * than a family: refused); then the pre-cracks break their bonds and
      * the weights settle like damage's (a point a pre-crack isolates is
      * debris) */
-    const int64_t missing =
-        rk_gradient_weights(b->dim, b->n, (const double *const *)b->x, b->volume, b->first, b->nbr,
-                            b->delta, b->scale, b->phi, b->ok);
+    const int64_t missing = cpd_shape_check(b, NULL);
     if (missing > 0) {
         int64_t i = 0;
         while (b->ok[i]) i++;
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "%lld points, the first at (%g, %g) m, have too few neighbours for "
-                         "the correspondence gradient (a quadratic fit over |xi| <= %g m): the "
+                         "the correspondence gradient (%s over |xi| <= %g m): the "
                          "body is thinner than its family there; expected a smaller spacing or "
                          "a larger horizon_factor",
-                         (long long)missing, b->x[0][i], b->x[1][i], b->delta);
+                         (long long)missing, b->x[0][i], b->x[1][i],
+                         b->cfg.force == CPD_FORCE_CLASSIC ? "an invertible shape tensor"
+                                                           : "a quadratic fit",
+                         b->delta);
     }
     for (int64_t i = 0; i < b->n; i++) {
         b->redo[i] = 0;
