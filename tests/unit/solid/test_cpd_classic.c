@@ -189,7 +189,7 @@ static void test_wave_speeds(void **state) {
     const double dirs[2][2] = {{1.0, 0.0}, {r2, r2}}, perp[2][2] = {{0.0, 1.0}, {-r2, r2}};
     const double lengths[3] = {10.0, 20.0, 40.0};
     for (int pass = 0; pass < 2; pass++) {
-        CpdConfig c = block(64, 64, h);
+        CpdConfig c = block(36, 36, h);
         c.stabilisation = pass ? 0.5 : 0.0;
         CpdBody b;
         make(&b, c);
@@ -220,7 +220,7 @@ static double kinetic(const CpdBody *b) {
 }
 
 /* A free 16 x 16 block from a random velocity of 1e-3 m/s per point, run
- * for 3000 steps at a multiple of the power-iteration step; returns the
+ * for 1000 steps at a multiple of the power-iteration step; returns the
  * largest kinetic energy over the first one's. */
 static double energy_growth(double factor) {
     CpdBody b;
@@ -230,7 +230,7 @@ static double energy_growth(double factor) {
         for (int a = 0; a < 2; a++) b.v[a][i] = 1e-3 * ((double)rand() / RAND_MAX - 0.5);
     const double e0 = kinetic(&b), dt = factor * b.stable_dt;
     double emax = e0;
-    for (int s = 0; s < 3000 && emax < 1e6 * e0; s++) {
+    for (int s = 0; s < 1000 && emax < 1e6 * e0; s++) {
         assert_ok(cpd_step(&b, dt));
         emax = fmax(emax, kinetic(&b));
     }
