@@ -81,10 +81,12 @@ static void point_stress(ClassicState *st, int64_t i, const double H[9], const d
         return;
     }
     st->inverted[i] = 0;
-    j2_update(st->material, de, sigma, &st->eqps[i]);
+    double dzz;
+    j2_update_zz(st->material, de, sigma, &st->eqps[i], &dzz);
     st->principal[i] = j2_max_principal(sigma);
     j2_piola_2d(F, sigma, P2);
-    P[0] = P2[0], P[1] = P2[1], P[3] = P2[2], P[4] = P2[3];
+    const double thick = st->strain_zz ? exp(st->strain_zz[i] += dzz) : 1.0;
+    P[0] = thick * P2[0], P[1] = thick * P2[1], P[3] = thick * P2[2], P[4] = thick * P2[3];
 }
 
 /* Point i's F_i and P_i, and T_ij of its bonds; false when K_i is singular

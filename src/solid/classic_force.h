@@ -84,6 +84,8 @@ typedef struct {
     double *principal;       /* out: the point's maximum principal Cauchy stress, Pa */
     uint8_t *inverted;       /* out: 1 where det F_i <= 0 (the point carried no stress); a point
                                 with a singular K_i: 0 (its stress is left as it was) */
+    double *strain_zz;       /* plane stress: the thickness's logarithmic strain per point
+                                (NULL: plane strain), as BacState's */
 } ClassicState;
 
 /* Force densities L (N/m^3, dim arrays of n) for displacements u, with

@@ -73,6 +73,7 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
     TRY(nspd_alloc(&b->principal, ns, sizeof(double)));
     TRY(nspd_alloc(&b->inverted, ns, 1));
+    if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, ns, sizeof(double)));
     TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * nb, sizeof(double)));
     return NSPD_OK;
 }
@@ -218,6 +219,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->scale);
     nspd_free(&b->principal);
     nspd_free(&b->inverted);
+    nspd_free(&b->strain_zz);
     nspd_free(&b->work_point);
     nspd_free(&b->work_bond);
     cpd_config_free(&b->cfg);

@@ -71,7 +71,9 @@ typedef struct {
     uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
     uint8_t *redo;       /* per point: damage grew in its family this step */
     double *sigma, *eqps, *damage, *scale, *principal; /* classic: sigma, eqps, principal */
-    uint8_t *inverted;                                 /* and inverted per point */
+    uint8_t *inverted;
+    double *strain_zz; /* plane stress: the thickness's log strain, per bond (per point
+                          for classic); NULL in plane strain */                                 /* and inverted per point */
     double *work_point, *work_bond;
 
     J2Material material;

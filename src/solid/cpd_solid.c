@@ -106,8 +106,10 @@ static SolidEstimate cpd_estimate(const SolidConfig *sc) {
             }
     e.bonds = e.points * family;
     const bool classic = cfg->force == CPD_FORCE_CLASSIC;
-    const double per_point = 450.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT : 0);
-    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND;
+    /* plane stress adds the thickness strain: 8 B per state (bond or point) */
+    const double zz = pd->model == PD_PLANE_STRESS ? 8.0 : 0.0;
+    const double per_point = 450.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT + zz : 0);
+    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + zz;
     e.bytes = per_point * e.points + per_bond * e.bonds + 4.0 * searched * e.points;
     return e;
 }
@@ -394,6 +396,7 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     TRY(checkpoint_io(ck, "cpd.scale", b->scale, nb * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.principal", b->principal, ns * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, ns));
+    if (b->strain_zz) TRY(checkpoint_io(ck, "cpd.strain_zz", b->strain_zz, ns * sizeof(double)));
     if (b->phi) TRY(checkpoint_io(ck, "cpd.phi", b->phi, (size_t)b->dim * nb * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.ok", b->ok, (size_t)b->n));
     TRY(checkpoint_io(ck, "cpd.F", b->work_point, 9 * n));

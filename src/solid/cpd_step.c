@@ -136,7 +136,8 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
                            .sigma = b->sigma,
                            .eqps = b->eqps,
                            .principal = b->principal,
-                           .inverted = b->inverted};
+                           .inverted = b->inverted,
+                           .strain_zz = b->strain_zz};
         for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
         classic_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
         return;
@@ -146,7 +147,8 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
                    .sigma = b->sigma,
                    .eqps = b->eqps,
                    .principal = b->principal,
-                   .inverted = b->inverted};
+                   .inverted = b->inverted,
+                   .strain_zz = b->strain_zz};
     for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
     bac_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
 }

@@ -57,7 +57,7 @@ static void set_homogeneous(CpdBody *b, double *const u[3], const double F[4]) {
  * after each increment that every bond's stress and plastic strain equal
  * the material point's, integrated alone with the same midpoint increments. */
 static double follow_path(CpdBody *b, const double (*path)[4], int steps) {
-    double sig[4] = {0, 0, 0, 0}, eqps = 0.0, worst = 0.0;
+    double sig[4] = {0, 0, 0, 0}, eqps = 0.0, worst = 0.0, zz = 0.0;
     for (int s = 1; s <= steps; s++) {
         set_homogeneous(b, b->u_prev, path[s - 1]);
         set_homogeneous(b, b->u, path[s]);
@@ -68,12 +68,16 @@ static double follow_path(CpdBody *b, const double (*path)[4], int steps) {
             dF[q] = path[s][q] - path[s - 1][q];
         }
         assert_int_equal(j2_unrotated_increment_2d(Fm, dF, 1.0, de), 1);
-        j2_update(&b->material, de, sig, &eqps);
+        double dzz;
+        j2_update_zz(&b->material, de, sig, &eqps, &dzz);
+        zz += dzz;
         const double scale = fabs(sig[0]) + fabs(sig[1]) + fabs(sig[2]) + fabs(sig[3]) + YIELD;
         for (int64_t k = 0; k < b->bond_count; k++) {
             for (int q = 0; q < 4; q++)
                 worst = fmax(worst, fabs(b->sigma[4 * k + q] - sig[q]) / scale);
             worst = fmax(worst, fabs(b->eqps[k] - eqps) / fmax(eqps, 1e-3));
+            if (b->strain_zz)
+                worst = fmax(worst, fabs(b->strain_zz[k] - zz) / fmax(fabs(zz), 1e-3));
         }
     }
     return worst;
@@ -113,6 +117,23 @@ static void test_homogeneous_paths_follow_the_material(void **state) {
     const double shear = follow_path(&b, (const double(*)[4])path, N);
     print_message("simple shear to 0.3: worst bond deviation %.3g\n", shear);
     assert_true(shear < 1e-10);
+    cpd_body_destroy(&b);
+
+    /* plane stress: the thickness strain of every bond follows the point's
+     * (sum of de_zz; it scales the forces) along a biaxial stretch to 10 % */
+    c = block(12, 12, 1e-3);
+    c.pd.model = PD_PLANE_STRESS;
+    c.yield_stress = YIELD;
+    c.hardening = HARD;
+    make(&b, c);
+    for (int s = 0; s <= N; s++)
+        path[s][0] = 1.0 + 0.1 * s / N, path[s][1] = 0.0, path[s][2] = 0.0,
+        path[s][3] = 1.0 + 0.03 * s / N;
+    const double stress = follow_path(&b, (const double(*)[4])path, N);
+    print_message("plane stress biaxial 10 %%: worst bond deviation %.3g, thickness strain %.5f\n",
+                  stress, b.strain_zz[0]);
+    assert_true(stress < 1e-10);
+    assert_true(b.strain_zz[0] < -0.05); /* plastic flow thins the plate */
     cpd_body_destroy(&b);
 }
 
