@@ -58,7 +58,8 @@ typedef enum {
     PDDO_NODE_FLUID = 0, /* strictly inside the rectangle and outside every hole */
     PDDO_NODE_SIDE,      /* on a side of the rectangle (wall, lid, inlet node, exit layer) */
     PDDO_NODE_GHOST,     /* fictitious, outside the rectangle */
-    PDDO_NODE_BODY,      /* fictitious, inside a hole within `layers` spacings of its edge */
+    PDDO_NODE_BODY,      /* fictitious, inside a hole within `layers` spacings of its edge
+                            (staircase) or on a polar patch's fictitious rings */
     PDDO_NODE_WALL,      /* on a polar patch's wall ring (r = R): at rest, a PPE row */
 } PddoNodeKind;
 

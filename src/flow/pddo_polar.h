@@ -27,12 +27,14 @@
  * the ring spacing r dtheta reaches dx: 2.01 m in Sec. 5.3) and gap = dx/2.
  *
  * Consequences of the paper's choices, measured in
- * tests/unit/flow/test_pddo_polar.c: with delta = 3 dx the families near
- * the wall hold ~165 nodes (notes 5.2) and three fictitious rings reach
- * only 3 dr = 2.07 dx into the body, so the nodes within 0.93 dx of the
- * wall have families truncated on the body side (their second derivatives
- * are first order, like the lattice's fictitious layers);
- * rings_inside = ceil(delta / dr) = 5 gives them full families. */
+ * tests/unit/flow/test_pddo_polar.c: with delta = 3 dx the wall ring's
+ * families hold 161 nodes at the paper's spacings (notes 5.2: ~165), and
+ * three fictitious rings reach only 3 dr = 2.07 dx into the body, so the
+ * wall ring's family is truncated on the body side: its Laplacian tends to
+ * first order (orders 1.50, 1.20 for h halved twice), like the lattice's
+ * one-sided families; rings_inside = ceil(delta / dr) = 5 gives 2.05,
+ * 1.91. First derivatives are second order everywhere, the junction's
+ * Laplacian tends to first order (irregular families). */
 #ifndef NSPD_FLOW_PDDO_POLAR_H
 #define NSPD_FLOW_PDDO_POLAR_H
 
