@@ -28,14 +28,20 @@ static bool on_side(int k, int n, bool periodic) {
     return !periodic && (k == 0 || k == n);
 }
 
-/* Why a node of the index box is there: 0 removed, else 1 + PddoNodeKind. */
-static int classify(const PddoCloudSpec *s, int nx, int ny, double x, double y, int i, int j) {
+/* Why a node of the index box is there: 0 removed, else 1 + PddoNodeKind.
+ * patch: the holes' polar patches, or NULL (staircases). */
+static int classify(const PddoCloudSpec *s, const PddoPolarPatch *patch, int nx, int ny, double x,
+                    double y, int i, int j) {
     const bool px = s->side[PDDO_LEFT] == PDDO_SIDE_PERIODIC;
     const bool py = s->side[PDDO_BOTTOM] == PDDO_SIDE_PERIODIC;
     if (beyond(i, nx, px) || beyond(j, ny, py)) return 1 + PDDO_NODE_GHOST;
     for (int h = 0; h < s->nholes; h++) {
         const PddoHole *o = &s->holes[h];
         const double r = hypot(x - o->x, y - o->y);
+        if (patch) {
+            if (r < patch[h].r_cut) return 0; /* the ring nodes replace it */
+            continue;
+        }
         /* a node exactly on the circle is fluid: it carries the wall's value */
         if (r < o->radius)
             return r >= o->radius - s->layers * s->dx * (1.0 + 1e-9) ? 1 + PDDO_NODE_BODY : 0;
@@ -81,17 +87,72 @@ static int check_spec(const PddoCloudSpec *s, int32_t *nx, int32_t *ny) {
     for (int h = 0; h < s->nholes; h++) {
         const PddoHole *o = &s->holes[h];
         /* 2 layers of room: no side's image falls into a body and no body's
-         * mirror point out of the rectangle */
+         * mirror point out of the rectangle; a polar patch keeps that room
+         * outside its r_cut (and so the side's fictitious layers away from
+         * its rings) */
         const double room = 2.0 * s->layers * s->dx;
-        if (!(o->radius > 0.0) || o->x - o->radius < s->lo[0] + room ||
-            o->x + o->radius > s->hi[0] - room || o->y - o->radius < s->lo[1] + room ||
-            o->y + o->radius > s->hi[1] - room)
+        double reach = o->radius;
+        if (s->polar && o->radius > 0.0) {
+            PddoPolarPatch p = {0};
+            TRY(pddo_polar_layout(&p, o->x, o->y, o->radius, &s->polar[h], s->dx));
+            reach = p.r_cut;
+        }
+        if (!(o->radius > 0.0) || o->x - reach < s->lo[0] + room ||
+            o->x + reach > s->hi[0] - room || o->y - reach < s->lo[1] + room ||
+            o->y + reach > s->hi[1] - room)
             return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "PDDO cloud: hole %d (centre %g, %g m, radius %g m) is within %g m "
-                             "of a side; expected a circle at least 2 layers inside",
-                             h, o->x, o->y, o->radius, room);
+                             "PDDO cloud: hole %d (centre %g, %g m, radius %g m, reaching %g m) is "
+                             "within %g m of a side; expected a circle at least 2 layers inside",
+                             h, o->x, o->y, o->radius, reach, room);
     }
     return NSPD_OK;
+}
+
+/* The holes' polar patches into c->patch (s->polar set), numbered from
+ * node `first` on; NSPD_ERR_INPUT for two that overlap. */
+static int layout_patches(PddoCloud *c, const PddoCloudSpec *s, int64_t first) {
+    TRY(nspd_alloc(&c->patch, (size_t)s->nholes, sizeof(PddoPolarPatch)));
+    c->npatches = s->nholes;
+    for (int h = 0; h < s->nholes; h++) {
+        const PddoHole *o = &s->holes[h];
+        PddoPolarPatch *p = &c->patch[h];
+        TRY(pddo_polar_layout(p, o->x, o->y, o->radius, &s->polar[h], s->dx));
+        p->first = first;
+        first += pddo_polar_count(p);
+        for (int g = 0; g < h; g++)
+            if (hypot(o->x - c->patch[g].x, o->y - c->patch[g].y) <
+                p->r_cut + c->patch[g].r_cut + c->delta)
+                return NSPD_FAIL(NSPD_ERR_INPUT,
+                                 "PDDO cloud: the polar patches of holes %d and %d overlap "
+                                 "(reaches %g and %g m); expected them a horizon apart",
+                                 g, h, c->patch[g].r_cut, p->r_cut);
+    }
+    return NSPD_OK;
+}
+
+/* The ring nodes of every patch, after the lattice's (pddo_cloud.h). */
+static void place_rings(PddoCloud *c) {
+    for (int h = 0; h < c->npatches; h++) {
+        const PddoPolarPatch *p = &c->patch[h];
+        for (int q = 0; q < p->rings; q++)
+            for (int t = 0; t < p->ntheta; t++) {
+                const int64_t k = p->first + (int64_t)q * p->ntheta + t;
+                pddo_polar_node(p, q, t, &c->x[k], &c->y[k], &c->area[k]);
+                c->i[k] = c->j[k] = INT32_MIN;
+                c->sides[k] = 0;
+                c->image[k] = -1;
+                c->image_sign[k] = 0;
+                if (q < p->rings_inside) {
+                    /* s_m at R - m dr mirrors f_m at R + m dr (Eq. 48) */
+                    c->kind[k] = PDDO_NODE_BODY;
+                    c->image[k] =
+                        (int32_t)(p->first + (int64_t)(2 * p->rings_inside - q) * p->ntheta + t);
+                    c->image_sign[k] = 1;
+                } else {
+                    c->kind[k] = q == p->rings_inside ? PDDO_NODE_WALL : PDDO_NODE_FLUID;
+                }
+            }
+    }
 }
 
 /* The fluid or side node nearest to the mirror point of a body node across
@@ -141,12 +202,21 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     const double mid[2] = {0.5 * nx, 0.5 * ny};
 
     int status = nspd_alloc(&c->slot, (size_t)(wi * wj), sizeof(int32_t));
+    if (status == NSPD_OK && s->polar && s->nholes > 0) status = layout_patches(c, s, 0);
+    const PddoPolarPatch *patch = c->patch;
     int64_t n = 0;
     for (int64_t q = 0; q < wi * wj && status == NSPD_OK; q++) {
         const int i = (int)(q % wi) - L, j = (int)(q / wi) - L;
         const double x = centre[0] + (i - mid[0]) * s->dx, y = centre[1] + (j - mid[1]) * s->dx;
-        c->slot[q] = classify(s, nx, ny, x, y, i, j) ? (int32_t)n++ : -1;
+        c->slot[q] = classify(s, patch, nx, ny, x, y, i, j) ? (int32_t)n++ : -1;
     }
+    const int64_t lattice = n;
+    for (int h = 0; h < c->npatches; h++) {
+        c->patch[h].first = n;
+        n += pddo_polar_count(&c->patch[h]);
+    }
+    if (status == NSPD_OK && n > INT32_MAX)
+        status = NSPD_FAIL(NSPD_ERR_INPUT, "PDDO cloud: %lld nodes exceed 2^31", (long long)n);
     c->n = n;
     if (status == NSPD_OK) status = nspd_alloc(&c->x, (size_t)n, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&c->y, (size_t)n, sizeof(double));
@@ -163,6 +233,7 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     }
     const bool px = s->side[PDDO_LEFT] == PDDO_SIDE_PERIODIC;
     const bool py = s->side[PDDO_BOTTOM] == PDDO_SIDE_PERIODIC;
+    place_rings(c);
     for (int64_t q = 0; q < wi * wj; q++) {
         const int32_t k = c->slot[q];
         if (k < 0) continue;
@@ -171,7 +242,7 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
         c->x[k] = centre[0] + (i - mid[0]) * s->dx;
         c->y[k] = centre[1] + (j - mid[1]) * s->dx;
         c->area[k] = s->dx * s->dx;
-        c->kind[k] = (uint8_t)(classify(s, nx, ny, c->x[k], c->y[k], i, j) - 1);
+        c->kind[k] = (uint8_t)(classify(s, patch, nx, ny, c->x[k], c->y[k], i, j) - 1);
         const int bx = beyond(i, nx, px), by = beyond(j, ny, py);
         uint8_t bits = 0;
         if (bx < 0 || (on_side(i, nx, px) && i == 0)) bits |= 1u << PDDO_LEFT;
@@ -181,8 +252,9 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
         c->sides[k] = bits;
         c->image[k] = -1;
     }
-    /* pressure images, once every node has its kind (body images need them) */
-    for (int64_t k = 0; k < n; k++) {
+    /* pressure images, once every node has its kind (body images need them);
+     * the rings have theirs */
+    for (int64_t k = 0; k < lattice; k++) {
         int sign = 1, ii = c->i[k], jj = c->j[k];
         if (c->kind[k] == PDDO_NODE_GHOST) {
             if (beyond(ii, nx, px))
@@ -222,6 +294,7 @@ void pddo_cloud_free(PddoCloud *c) {
     nspd_free(&c->first);
     nspd_free(&c->nbr);
     nspd_free(&c->slot);
+    nspd_free(&c->patch);
     memset(c, 0, sizeof *c);
 }
 

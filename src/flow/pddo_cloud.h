@@ -23,9 +23,13 @@
  * Holes: a circular body removes the lattice nodes inside it, except those
  * within `layers` spacings of its edge, which become fictitious body nodes.
  * Their pressure image is the fluid node nearest to their mirror point
- * across the circle (dp/dr = 0 to first order only). The paper's polar
- * patch of nodes around a cylinder (Sec. 4.1.2, Fig. 9) and its junction
- * with the lattice are NOT built here yet: a lattice hole is a staircase.
+ * across the circle (dp/dr = 0 to first order only): a lattice staircase.
+ * With spec.polar, every hole gets instead the paper's polar patch (Sec.
+ * 4.1.2, Fig. 9; flow/pddo_polar.h): the lattice nodes within its r_cut
+ * are removed, and its rings are appended after the lattice nodes, hole by
+ * hole (fictitious rings PDDO_NODE_BODY with their exact images on the
+ * fluid rings, the wall ring PDDO_NODE_WALL, fluid rings PDDO_NODE_FLUID;
+ * lattice indices i = j = INT32_MIN, sides 0, areas r dr dtheta).
  *
  * Areas: dx^2 for every node (the PDDO weights depend only on relative
  * areas, so a uniform lattice needs none; the array is there for the polar
@@ -36,6 +40,8 @@
  * fictitious layers have truncated (one-sided) families. */
 #ifndef NSPD_FLOW_PDDO_CLOUD_H
 #define NSPD_FLOW_PDDO_CLOUD_H
+
+#include "flow/pddo_polar.h"
 
 #include <stdint.h>
 
@@ -52,7 +58,9 @@ typedef enum {
     PDDO_NODE_FLUID = 0, /* strictly inside the rectangle and outside every hole */
     PDDO_NODE_SIDE,      /* on a side of the rectangle (wall, lid, inlet node, exit layer) */
     PDDO_NODE_GHOST,     /* fictitious, outside the rectangle */
-    PDDO_NODE_BODY,      /* fictitious, inside a hole within `layers` spacings of its edge */
+    PDDO_NODE_BODY,      /* fictitious, inside a hole within `layers` spacings of its edge
+                            (staircase) or on a polar patch's fictitious rings */
+    PDDO_NODE_WALL,      /* on a polar patch's wall ring (r = R): at rest, a PPE row */
 } PddoNodeKind;
 
 typedef struct {
@@ -67,6 +75,7 @@ typedef struct {
     PddoSideKind side[PDDO_SIDES];
     const PddoHole *holes; /* circles inside the rectangle, at least one spacing from its sides */
     int nholes;
+    const PddoPolarSpec *polar; /* NULL: holes are lattice staircases; else one patch per hole */
 } PddoCloudSpec;
 
 typedef struct {
@@ -82,14 +91,18 @@ typedef struct {
     PddoSideKind side[PDDO_SIDES];
     int64_t *first; /* families: nbr[first[k] .. first[k+1]), ascending */
     int32_t *nbr;
-    int32_t *slot; /* (i + layers) + (j + layers) (nx + 2 layers + 1) -> node, or -1 */
+    int32_t *slot;         /* (i + layers) + (j + layers) (nx + 2 layers + 1) -> node, or -1 */
+    PddoPolarPatch *patch; /* one per hole with spec.polar, else NULL */
+    int npatches;
 } PddoCloud;
 
 /* Builds the cloud of `spec` into c (zeroed or freed before). Node order is
  * row by row (j, then i), holes skipped. NSPD_ERR_INPUT for a spacing that
  * does not divide the rectangle, layers < 1, a horizon factor <= 0, a hole
- * that is not inside, a periodic side facing one that is not, or a period
- * shorter than the layers; NSPD_ERR_NOMEM. */
+ * that is not inside (with a polar patch: its r_cut plus the horizon), a
+ * periodic side facing one that is not, a period shorter than the layers,
+ * a polar patch pddo_polar_layout refuses or two patches that overlap;
+ * NSPD_ERR_NOMEM. */
 int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *spec);
 
 void pddo_cloud_free(PddoCloud *c);

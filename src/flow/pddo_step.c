@@ -30,6 +30,11 @@ static void node_rule(PddoStep *ps, int64_t k) {
     ps->rule[k] = PDDO_VEL_FREE, ps->source[k] = -1;
     if (c->kind[k] == PDDO_NODE_FLUID) return;
     const bool anti = ps->par.walls == PDDO_WALL_ANTISYMMETRIC;
+    if (c->kind[k] == PDDO_NODE_WALL) { /* a polar wall ring: at rest (Eq. 68) */
+        ps->rule[k] = PDDO_VEL_FIXED;
+        ps->fix_u[k] = ps->fix_v[k] = 0.0;
+        return;
+    }
     if (c->kind[k] == PDDO_NODE_BODY) {
         ps->rule[k] = anti ? PDDO_VEL_ANTI : PDDO_VEL_FIXED;
         ps->fix_u[k] = ps->fix_v[k] = 0.0;

@@ -25,7 +25,8 @@
  *          (notes #23), fictitious nodes copy it along the normal (Eq. 52)
  *   periodic fictitious nodes copy their image, and so do d and L there
  *   body   fictitious body nodes are at rest (Eqs. 44, 47), or reflect
- *          their image with PDDO_WALL_ANTISYMMETRIC
+ *          their image with PDDO_WALL_ANTISYMMETRIC; a polar patch's wall
+ *          ring is at rest (Eq. 68) and updates its pressure by the PPE
  * d and L at the other fictitious nodes come from their own truncated
  * families (notes #19). */
 #ifndef NSPD_FLOW_PDDO_STEP_H
