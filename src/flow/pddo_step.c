@@ -52,10 +52,20 @@ static void node_rule(PddoStep *ps, int64_t k) {
         ps->fix_u[k] = ps->par.wall_u[best], ps->fix_v[k] = ps->par.wall_v[best];
         if (ps->rule[k] == PDDO_VEL_ANTI) ps->source[k] = c->image[k];
         return;
-    case PDDO_SIDE_INLET:
+    case PDDO_SIDE_INLET: {
         ps->rule[k] = PDDO_VEL_FIXED;
-        ps->fix_u[k] = ps->par.inlet_u, ps->fix_v[k] = ps->par.inlet_v;
+        double shape = 1.0;
+        if (ps->par.inlet_profile == PDDO_INLET_PARABOLIC) {
+            /* s across the side, from the lattice indices (exact at the
+             * sides' nodes); 0 beyond the sides */
+            const double s = best == PDDO_LEFT || best == PDDO_RIGHT
+                                 ? (double)c->j[k] / (double)c->ny
+                                 : (double)c->i[k] / (double)c->nx;
+            shape = s > 0.0 && s < 1.0 ? 6.0 * s * (1.0 - s) : 0.0;
+        }
+        ps->fix_u[k] = shape * ps->par.inlet_u, ps->fix_v[k] = shape * ps->par.inlet_v;
         return;
+    }
     case PDDO_SIDE_PERIODIC:
         ps->rule[k] = PDDO_VEL_PERIODIC, ps->source[k] = c->image[k];
         return;
