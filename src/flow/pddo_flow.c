@@ -1,7 +1,6 @@
 /* The PDDO flow behind the flow interface (pddo_flow.h). */
 #include "flow/pddo_flow.h"
 
-#include "core/log.h"
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/reduce.h"
@@ -184,11 +183,6 @@ static int pddo_create(void **impl, FlowConfig *fc) {
         pddo_destroy(f);
         return status;
     }
-    nspd_log(LOG_INFO,
-             "PDDO flow: %lld nodes, K_L %lld nonzeros, L+U %.3g nonzeros (%.1f MB), set up in "
-             "%.2f s",
-             (long long)f->cloud.n, (long long)f->ppe.nnz, f->ppe.factor_nnz,
-             f->ppe.factor_bytes / 1e6, f->setup_s);
     *impl = f;
     return NSPD_OK;
 }
@@ -342,8 +336,9 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
            "set up in %.2f s\n",
            (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, f->ppe.rcond,
            f->ppe.pinned >= 0 ? "level pinned" : "level fixed by the outlet", f->setup_s);
-    APPEND("memory               %.1f MB estimated (%.0f bytes per node)\n", (double)memory / 1e6,
-           (double)memory / (double)c->n);
+    APPEND(
+        "memory               %.1f MB in arrays (%.0f bytes per node) and %.1f MB of LU factors\n",
+        (double)memory / 1e6, (double)memory / (double)c->n, f->ppe.factor_bytes / 1e6);
 #undef APPEND
 }
 
