@@ -32,6 +32,7 @@ typedef struct {
     double setup_s;   /* wall time of the cloud, operators and factorisation (log and info) */
     int64_t physical; /* fluid and side nodes */
     int64_t *phys;    /* their node numbers */
+    double *weight;   /* their areas in the trapezoidal rule: halved on each side a node is on */
     double *out[OUT_ARRAYS];
     double *node[NODE_ARRAYS];
     double *sorted;      /* picture ranges */
@@ -91,6 +92,7 @@ static void pddo_destroy(void *impl) {
     pddo_ops_free(&f->ops);
     pddo_cloud_free(&f->cloud);
     nspd_free(&f->phys);
+    nspd_free(&f->weight);
     for (int k = 0; k < OUT_ARRAYS; k++) nspd_free(&f->out[k]);
     for (int k = 0; k < NODE_ARRAYS; k++) nspd_free(&f->node[k]);
     nspd_free(&f->sorted);
@@ -163,8 +165,12 @@ static int build(PddoFlow *f) {
     for (int k = 0; k < NODE_ARRAYS; k++)
         TRY(nspd_alloc(&f->node[k], (size_t)c->n, sizeof(double)));
     TRY(nspd_alloc(&f->sorted, (size_t)f->physical, sizeof(double)));
+    TRY(nspd_alloc(&f->weight, (size_t)f->physical, sizeof(double)));
     for (int64_t q = 0; q < f->physical; q++) {
         const int64_t k = f->phys[q];
+        f->weight[q] = c->area[k];
+        for (int s = 0; s < PDDO_SIDES; s++)
+            if ((unsigned)c->sides[k] >> s & 1u) f->weight[q] *= 0.5;
         f->out[OX][q] = c->x[k], f->out[OY][q] = c->y[k];
         f->out[OK_KIND][q] = c->kind[k];
     }
@@ -233,7 +239,6 @@ static FlowReference pddo_reference(const void *impl) {
 
 static void pddo_totals(const void *impl, double totals[4]) {
     const PddoFlow *f = impl;
-    const PddoCloud *c = &f->cloud;
     const double rho = f->cfg.step.rho;
     double *t = f->node[TERM];
     double sum[4] = {0, 0, 0, 0};
@@ -245,7 +250,7 @@ static void pddo_totals(const void *impl, double totals[4]) {
                                 : what == 1 ? u
                                 : what == 2 ? v
                                             : 0.5 * (u * u + v * v);
-            t[q] = rho * term * c->area[k];
+            t[q] = rho * term * f->weight[q];
         }
         sum[what] = reduce_sum(t, f->physical);
     }
