@@ -7,11 +7,11 @@ set grid
 set key bottom right
 set xlabel "u / U at x = L/2"
 set ylabel "y / L"
-plot ufile every ::2 using ($3 / U):($2 / L) with lines lw 2 lc rgb "#21918c" title "nspd", \
-     gu every ::5 using col:1 with points pt 6 ps 1.2 lc rgb "#440154" title "Ghia et al."
+plot ufile every ::1 using ($3 / U):($2 / L) with lines lw 2 lc rgb "#21918c" title "nspd", \
+     gu every ::1 using col:1 with points pt 6 ps 1.2 lc rgb "#440154" title "Ghia et al."
 set key top right
 set xlabel "x / L"
 set ylabel "v / U at y = L/2"
-plot vfile every ::2 using ($1 / L):($4 / U) with lines lw 2 lc rgb "#21918c" title "nspd", \
-     gv every ::4 using 1:col with points pt 6 ps 1.2 lc rgb "#440154" title "Ghia et al."
+plot vfile every ::1 using ($1 / L):($4 / U) with lines lw 2 lc rgb "#21918c" title "nspd", \
+     gv every ::1 using 1:col with points pt 6 ps 1.2 lc rgb "#440154" title "Ghia et al."
 unset multiplot
