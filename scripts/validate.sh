@@ -165,6 +165,20 @@ done
 sed -n 's/.*"\(steps\|steady\|time_s\|wall_s\)": \(.*\),*/channel: \1 = \2/p' "$out/channel_re56/summary.json" |
     tee -a "$out/channel.txt"
 cp "$(ls "$out/channel_re56"/speed_*.png | tail -1)" docs/img/pddo_channel_re56_speed.png
+echo "== correspondence solid (paper 003 geometry, issue 14): hollow square, ductile"
+"$nspd" run cases/hollow_square_pressure.yaml -o "$out/hollow_square" --force --quiet
+cp "$out/hollow_square/plastic_strain_00009.png" docs/img/hollow_square_plastic_180us.png
+cp "$out/hollow_square/damage_00010.png" docs/img/hollow_square_damage_200us.png
+cp "$out/hollow_square/history_mass_loss.png" docs/img/hollow_square_mass_loss.png
+echo "== correspondence solid: hollow cylinder, brittle, fragmentation"
+"$nspd" run cases/hollow_cylinder_pulse.yaml -o "$out/hollow_cylinder" --force --quiet
+cp "$out/hollow_cylinder/damage_00003.png" docs/img/hollow_cylinder_damage_30us.png
+cp "$out/hollow_cylinder/damage_00010.png" docs/img/hollow_cylinder_damage_100us.png
+cp "$out/hollow_cylinder/history_mass_loss.png" docs/img/hollow_cylinder_mass_loss.png
+for c in hollow_square hollow_cylinder; do
+    sed -n 's/.*"\(fragment_count\|debris_points\|mass_loss\|max_plastic_strain\|broken_bond_fraction\|stable_dt_s\|stable_dt_damaged_s\|substeps_max\|wall_s\)": \(.*\),*/'$c': \1 = \2/p' \
+        "$out/$c/summary.json" | tee "$out/$c.txt"
+done
 
 echo "== slow tests"
 ctest --test-dir "$build" --output-on-failure -L slow || true

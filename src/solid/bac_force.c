@@ -4,6 +4,7 @@
 #include "solid/rk_gradient.h"
 #include "solid/svk.h"
 
+#include <math.h>
 #include <stdbool.h>
 #include <string.h>
 
@@ -64,10 +65,12 @@ static void bond_stress(const BacSystem *s, BacState *st, int64_t k, const doubl
         st->principal[k] = 0.0;
         return;
     }
-    j2_update(st->material, de, sigma, &st->eqps[k]);
+    double dzz;
+    j2_update_zz(st->material, de, sigma, &st->eqps[k], &dzz);
     st->principal[k] = j2_max_principal(sigma); /* invariant under the in-plane rotation */
     j2_piola_2d(F, sigma, P2);
-    P[0] = P2[0], P[1] = P2[1], P[3] = P2[2], P[4] = P2[3];
+    const double thick = st->strain_zz ? exp(st->strain_zz[k] += dzz) : 1.0;
+    P[0] = thick * P2[0], P[1] = thick * P2[1], P[3] = thick * P2[2], P[4] = thick * P2[3];
 }
 
 void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],

@@ -57,6 +57,9 @@ typedef struct {
     double *eqps;            /* equivalent plastic strain per bond */
     double *principal;       /* out: the bond's maximum principal Cauchy stress, Pa */
     uint8_t *inverted;       /* out: 1 where det F_b <= 0 (the bond carried no stress) */
+    /* plane stress: the logarithmic thickness strain per bond, sum of
+     * de_zz, whose stretch exp() scales P_b (NULL: plane strain) */
+    double *strain_zz;
 } BacState;
 
 /* The reverse-bond index of a symmetric family CSR: for bond k = (i -> j),

@@ -24,18 +24,34 @@
  * K = lambda + mu, from the same energy match on a disc (1/4 c s^2 int |xi|
  * dA = 2 K s^2 under an isotropic stretch s). Only its order matters: it
  * makes C_s a dimensionless weight of the penalty against the elastic
- * stiffness. C_s = 0 is the bare Silling (2007) model.
+ * stiffness. In 2D with volumes of thickness t (the body's V = h^2 t) the
+ * energy match is per volume, c = 12 K / (pi delta^3 t): the stress term
+ * does not depend on t (K_i and the gather both carry it), so neither may
+ * the penalty. C_s = 0 is the bare Silling (2007) model.
  * Degenerate families: a point whose K_i is singular (scaled determinant,
  * det K / prod K_aa, below CLASSIC_MIN_SHAPE: fewer than dim independent
  * bond directions) has no F_i, so its bonds carry no force state of their
  * own, T_ij = 0 (no stress and no penalty); its neighbours' T_ji still act
  * on it.
+ * Damage: bond_scale (1 - d per bond) multiplies omega everywhere (K_i,
+ * F_i, the stress term and the penalty), so a broken bond neither shapes
+ * F_i nor carries force.
+ * Material: Saint Venant-Kirchhoff (state NULL, P_i = F_i S(E_i)), or the
+ * hypoelastic J2 material of solid/j2_kernel.h per POINT (ClassicState,
+ * 2D): the analogue of the bond-associated model's per-bond state, with
+ * the same midpoint increment (F_mid = (F_i^n + F_i^{n+1}) / 2, dF =
+ * F_i^{n+1} - F_i^n, Green-Naghdi unrotated increment, radial return,
+ * P_i = J sigma F_i^-T). F_i^n is formed from u_prev with the current
+ * bond_scale, so a step that breaks bonds does not count the change of the
+ * family as a strain increment.
  * Families must be symmetric. No atomics: T is formed per bond by its
  * owner, then each point gathers its own bonds and, through the
  * reverse-bond index (bac_reverse_bonds), its neighbours' (the same bits
  * on any thread count). dim is 2 or 3. */
 #ifndef NSPD_SOLID_CLASSIC_FORCE_H
 #define NSPD_SOLID_CLASSIC_FORCE_H
+
+#include "solid/j2_kernel.h"
 
 #include <stdint.h>
 
@@ -47,22 +63,45 @@ typedef struct {
     int dim;
     int64_t n;
     const double *x[3];   /* reference positions, m */
-    const double *volume; /* m^3 (2D: m^2 per unit thickness) */
+    const double *volume; /* m^3 (2D: m^2 times `thickness`) */
     const int64_t *first; /* family CSR, symmetric */
     const int32_t *nbr;
     const int64_t *reverse; /* reverse[k]: the bond j -> i of bond k = i -> j */
     const double *omega;    /* influence per bond */
     double lambda, mu;      /* Lame constants, Pa */
     double delta;           /* horizon, m: the penalty's scale */
+    double thickness;       /* 2D: the thickness the volumes carry, m (0: 1, per unit thickness) */
     double stabilisation;   /* C_s of the zero-energy penalty; 0: none */
+    const double *bond_scale; /* 1 - damage per bond (NULL: 1): multiplies omega */
 } ClassicSystem;
 
-/* Force densities L (N/m^3, dim arrays of n) for displacements u.
+/* The per-point state of the hypoelastic J2 material (2D only). */
+typedef struct {
+    const J2Material *material;
+    const double *u_prev[3]; /* displacements at the start of the step */
+    double *sigma;           /* unrotated Cauchy stress, 4 per point [xx, yy, zz, xy], Pa */
+    double *eqps;            /* equivalent plastic strain per point */
+    double *principal;       /* out: the point's maximum principal Cauchy stress, Pa */
+    uint8_t *inverted;       /* out: 1 where det F_i <= 0 (the point carried no stress); a point
+                                with a singular K_i: 0 (its stress is left as it was) */
+    double *strain_zz;       /* plane stress: the thickness's logarithmic strain per point
+                                (NULL: plane strain), as BacState's */
+} ClassicState;
+
+/* Force densities L (N/m^3, dim arrays of n) for displacements u, with
+ * the SVK law (state NULL) or the J2 material of *state, whose stresses it
+ * advances by the step from state->u_prev to u (2D).
  * work_point: 18 n doubles; on return F_i (9 i ..) and P_i (9 n + 9 i ..),
  * row-major 3 x 3 (identity and zero at a point with a singular K_i);
  * work_bond: dim per bond (T). Returns the number of points whose K_i was
  * singular. */
-int64_t classic_force(const ClassicSystem *s, const double *const u[3], double *const force[3],
-                      double *work_point, double *work_bond);
+int64_t classic_force(const ClassicSystem *s, ClassicState *state, const double *const u[3],
+                      double *const force[3], double *work_point, double *work_bond);
+
+/* ok[i] = 1 where K_i (with bond_scale) is invertible by the rule of
+ * CLASSIC_MIN_SHAPE, else 0, for the points with redo[i] != 0 (redo NULL:
+ * all; the others' ok untouched). Returns the number of those points
+ * without an invertible K_i. */
+int64_t classic_shape_check(const ClassicSystem *s, const uint8_t *redo, uint8_t *ok);
 
 #endif

@@ -62,13 +62,18 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->work_point, 19 * n, sizeof(double)));
     TRY(nspd_alloc(&b->reverse, nb, sizeof(int64_t)));
     TRY(nspd_alloc(&b->omega, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
-    TRY(nspd_alloc(&b->sigma, 4 * nb, sizeof(double)));
-    TRY(nspd_alloc(&b->eqps, nb, sizeof(double)));
+    /* the material state: per bond (bond-associated) or per point (classic,
+     * which needs no RK weights) */
+    const bool classic = b->cfg.force == CPD_FORCE_CLASSIC;
+    const size_t ns = classic ? n : nb;
+    if (!classic) TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
+    TRY(nspd_alloc(&b->sigma, 4 * ns, sizeof(double)));
+    TRY(nspd_alloc(&b->eqps, ns, sizeof(double)));
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->principal, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->inverted, nb, 1));
+    TRY(nspd_alloc(&b->principal, ns, sizeof(double)));
+    TRY(nspd_alloc(&b->inverted, ns, 1));
+    if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, ns, sizeof(double)));
     TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * nb, sizeof(double)));
     return NSPD_OK;
 }
@@ -148,24 +153,32 @@ static int build(CpdBody *b, CpdConfig *cfg) {
             const double xj[3] = {b->x[0][b->nbr[k]], b->x[1][b->nbr[k]], b->x[2][b->nbr[k]]};
             const double xp[3] = {b->x[0][i], b->x[1][i], b->x[2][i]};
             for (int c = 0; c < pd->precrack_count; c++)
-                if (precrack_cuts(&pd->precracks[c], b->dim, xp, xj)) {
-                    b->damage[k] = 1.0; /* a pre-crack: broken from the start */
-                    b->scale[k] = 0.0;
-                }
+                if (precrack_cuts(&pd->precracks[c], b->dim, xp, xj)) b->damage[k] = 1.0;
         }
-    const int64_t missing =
-        rk_gradient_weights(b->dim, b->n, (const double *const *)b->x, b->volume, b->first, b->nbr,
-                            b->delta, b->scale, b->phi, b->ok);
+    /* the intact body must give every point weights (else it is thinner
+     * than a family: refused); then the pre-cracks break their bonds and
+     * the weights settle like damage's (a point a pre-crack isolates is
+     * debris) */
+    const int64_t missing = cpd_shape_check(b, NULL);
     if (missing > 0) {
         int64_t i = 0;
         while (b->ok[i]) i++;
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "%lld points, the first at (%g, %g) m, have too few neighbours for "
-                         "the correspondence gradient (a quadratic fit over |xi| <= %g m): the "
+                         "the correspondence gradient (%s over |xi| <= %g m): the "
                          "body is thinner than its family there; expected a smaller spacing or "
                          "a larger horizon_factor",
-                         (long long)missing, b->x[0][i], b->x[1][i], b->delta);
+                         (long long)missing, b->x[0][i], b->x[1][i],
+                         b->cfg.force == CPD_FORCE_CLASSIC ? "an invertible shape tensor"
+                                                           : "a quadratic fit",
+                         b->delta);
     }
+    for (int64_t i = 0; i < b->n; i++) {
+        b->redo[i] = 0;
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+            if (b->damage[k] >= 1.0) b->scale[k] = 0.0, b->redo[i] = 1;
+    }
+    cpd_settle_weights(b);
     pressure_directions(b);
     b->stable_dt = b->stable_now = cpd_stable_dt(b, CPD_COLD_ITERATIONS, false);
     return NSPD_OK;
@@ -206,6 +219,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->scale);
     nspd_free(&b->principal);
     nspd_free(&b->inverted);
+    nspd_free(&b->strain_zz);
     nspd_free(&b->work_point);
     nspd_free(&b->work_bond);
     cpd_config_free(&b->cfg);

@@ -20,7 +20,17 @@
  * fit) is debris: its bonds break (from both ends, each end deciding from
  * the flags of both), it moves on with its momentum and no stress, and
  * counts in the mass loss. Nothing divides by a vanished family (w0 = 0:
- * no force), so damage never makes a NaN. */
+ * no force), so damage never makes a NaN.
+ *
+ * cfg.force = CPD_FORCE_CLASSIC swaps the force for the classic one of
+ * solid/classic_force.h (shape tensor K_i, the Silling 2017 penalty of
+ * weight cfg.stabilisation) with the same J2 material per POINT: sigma,
+ * eqps, principal and inverted are then arrays of n, phi is not allocated,
+ * ok[i] says K_i is invertible (with the damaged kernel), and a bond's
+ * damage follows the larger of its two points' plastic strains (ductile)
+ * or principal stresses (brittle), or is 1 if either point inverted: the
+ * same bits from both ends. Everything else (lattice, families, kernel,
+ * damage bookkeeping, debris, integrator, stable step) is shared. */
 #ifndef NSPD_SOLID_CPD_BODY_H
 #define NSPD_SOLID_CPD_BODY_H
 
@@ -31,7 +41,14 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-enum { CPD_BYTES_PER_BOND = 117 };
+/* Per bond in 2D; the classic force (notes 1c.3, solid/classic_force.h)
+ * keeps no RK weights and its material state per point instead (sigma,
+ * eqps, principal and inverted are then arrays of n, not of bond_count):
+ * 52 bytes per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16)
+ * and CPD_CLASSIC_BYTES_PER_POINT more per point (sigma 32, eqps and
+ * principal 8 each, inverted 1). */
+enum { CPD_BYTES_PER_BOND = 117, CPD_CLASSIC_BYTES_PER_BOND = 52 };
+enum { CPD_CLASSIC_BYTES_PER_POINT = 49 };
 
 typedef struct {
     CpdConfig cfg; /* owned copy */
@@ -50,11 +67,13 @@ typedef struct {
     int64_t *first;
     int32_t *nbr;
     int64_t *reverse;
-    double *omega, *phi;
-    uint8_t *ok;   /* per point: 1 while its moment matrix is invertible */
-    uint8_t *redo; /* per point: damage grew in its family this step */
-    double *sigma, *eqps, *damage, *scale, *principal;
+    double *omega, *phi; /* phi: NULL for the classic force */
+    uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
+    uint8_t *redo;       /* per point: damage grew in its family this step */
+    double *sigma, *eqps, *damage, *scale, *principal; /* classic: sigma, eqps, principal */
     uint8_t *inverted;
+    double *strain_zz; /* plane stress: the thickness's log strain, per bond (per point
+                          for classic); NULL in plane strain */                                 /* and inverted per point */
     double *work_point, *work_bond;
 
     J2Material material;
@@ -92,11 +111,24 @@ int cpd_step(CpdBody *b, double dt);
 /* The force density at the current u into b->force, advancing the bond
  * stresses from u_prev and the damage (what cpd_step calls). */
 void cpd_force(CpdBody *b, double t);
+/* The weights of the points flagged in b->redo recomputed with the damaged
+ * kernel; a point left without weights is debris and its bonds break from
+ * both ends (each end reads both points' flags), which may leave its
+ * neighbours without weights in turn: repeated until no point changes.
+ * Returns the number of bonds broken this way. */
+int64_t cpd_settle_weights(CpdBody *b);
+
 /* dt = 2 / sqrt(lambda_max) of the linearised operator (K / rho) at the
  * current damage, by power iteration (notes 1c.10 C6): `iterations` from
  * the lattice checkerboard (cold) or from b->mode (warm, with a part of the
  * checkerboard mixed in so a new stiff spot is not missed). */
 double cpd_stable_dt(CpdBody *b, int iterations, bool warm);
+
+/* ok[i] for the points with redo[i] != 0 (redo NULL: all, and the RK
+ * weights of every point): the bond-associated force's RK weights (ok: the
+ * moment matrix was invertible) or the classic force's K_i. Returns the
+ * number of those points not ok. */
+int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo);
 
 /* Point damage: the mean damage of its initial bonds (PdShell's, the
  * default) and the volume-weighted fraction of them broken. */

@@ -9,7 +9,10 @@
 
 #include "solid/pd_config.h"
 
-typedef enum { CPD_FORCE_BOND_ASSOCIATED, CPD_FORCE_COUNT } CpdForce;
+/* bond_associated: solid/bac_force.h (state per bond); classic: Silling's
+ * correspondence with the zero-energy penalty, solid/classic_force.h (state
+ * per point) */
+typedef enum { CPD_FORCE_BOND_ASSOCIATED, CPD_FORCE_CLASSIC, CPD_FORCE_COUNT } CpdForce;
 typedef enum { CPD_FAMILY_SQUARE, CPD_FAMILY_DISC, CPD_FAMILY_COUNT } CpdFamily;
 typedef enum {
     CPD_DAMAGE_NONE,
@@ -39,6 +42,7 @@ typedef struct {
     double yield_stress;  /* sigma_Y, Pa; 0: elastic */
     double hardening;     /* H = d sigma_y / d eqps, Pa */
     CpdForce force;
+    double stabilisation; /* classic: C_s of the zero-energy penalty (Silling 2017) */
     CpdFamily family;
     CpdDamageLaw damage;
     double plastic_strain_threshold, plastic_strain_critical; /* ductile: eps_th, eps_cr */

@@ -15,7 +15,7 @@ typedef struct {
     double *stress[3]; /* xx, yy, xy of the point's Cauchy stress, Pa */
     double *stress_zz; /* Pa */
     double *mises;     /* von Mises stress, Pa */
-    double *plastic;   /* mean equivalent plastic strain of the point's intact bonds */
+    double *plastic;   /* mean equivalent plastic strain of its intact bonds (classic: its own) */
     double *jacobian;  /* det F_i */
     double *broken;    /* volume-weighted fraction of the point's bonds broken */
 } CpdSolid;
@@ -80,8 +80,9 @@ static void cpd_destroy(void *impl) {
 /* Points as the bond-based model counts them; bonds: the square (or disc)
  * family of an interior point; bytes: per point 19 work doubles, 6 motion
  * arrays, volume, region, load, flags, lattice and 8 field arrays (about
- * 450 B), per bond CPD_BYTES_PER_BOND; the search's disc of sqrt(2) delta
- * before the square filter. */
+ * 450 B), per bond CPD_BYTES_PER_BOND (classic: CPD_CLASSIC_BYTES_PER_BOND,
+ * and CPD_CLASSIC_BYTES_PER_POINT more per point for the point state); the
+ * search's disc of sqrt(2) delta before the square filter. */
 static SolidEstimate cpd_estimate(const SolidConfig *sc) {
     const CpdConfig *cfg = &sc->correspondence;
     const PdConfig *pd = &cfg->pd;
@@ -104,7 +105,12 @@ static SolidEstimate cpd_estimate(const SolidConfig *sc) {
                 if (in) family += 1;
             }
     e.bonds = e.points * family;
-    e.bytes = 450.0 * e.points + (double)CPD_BYTES_PER_BOND * e.bonds + 4.0 * searched * e.points;
+    const bool classic = cfg->force == CPD_FORCE_CLASSIC;
+    /* plane stress adds the thickness strain: 8 B per state (bond or point) */
+    const double zz = pd->model == PD_PLANE_STRESS ? 8.0 : 0.0;
+    const double per_point = 450.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT + zz : 0);
+    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + zz;
+    e.bytes = per_point * e.points + per_bond * e.bonds + 4.0 * searched * e.points;
     return e;
 }
 
@@ -206,8 +212,11 @@ static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_los
                           double *max_damage) {
     const CpdBody *b = &cs->body;
     double m = 0.0; /* over intact bonds: a broken bond's state stops at its break */
-    for (int64_t k = 0; k < b->bond_count; k++)
-        if (b->damage[k] < 1.0) m = fmax(m, b->eqps[k]);
+    if (b->cfg.force == CPD_FORCE_CLASSIC) /* per point: over the points not debris */
+        for (int64_t i = 0; i < b->n; i++) m = b->ok[i] ? fmax(m, b->eqps[i]) : m;
+    else
+        for (int64_t k = 0; k < b->bond_count; k++)
+            if (b->damage[k] < 1.0) m = fmax(m, b->eqps[k]);
     *max_eqps = m;
     cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
     *mass_loss = cpd_mass_loss(b, cs->broken);
@@ -258,6 +267,9 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
     len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
     APPEND("model                correspondence (%s), %s\n", CPD_FORCE_NAMES[c->force],
            PD_MODEL_NAMES[c->pd.model]);
+    if (c->force == CPD_FORCE_CLASSIC)
+        APPEND("stabilisation        C_s %.4g (Silling 2017 zero-energy penalty)\n",
+               c->stabilisation);
     APPEND("points               %lld\n", (long long)b->n);
     APPEND("bonds                %lld (%.1f per point, %s family)\n", (long long)b->bond_count / 2,
            (double)b->bond_count / (double)b->n, CPD_FAMILY_NAMES[c->family]);
@@ -271,7 +283,8 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
            "with sub-steps)\n",
            b->stable_dt);
     APPEND("memory               %.1f MB in solver arrays (%d bytes per bond)\n",
-           (double)memory / 1e6, CPD_BYTES_PER_BOND);
+           (double)memory / 1e6,
+           c->force == CPD_FORCE_CLASSIC ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND);
 #undef APPEND
 }
 
@@ -281,8 +294,9 @@ static void cpd_brief(const void *impl, char *buf, size_t size) {
 }
 
 /* Per point: the omega-weighted mean of its intact bonds' unrotated stress
- * and plastic strain, the stress rotated by the point's own F_i (closed
- * form), its von Mises value and J = det F_i (from the last force pass). */
+ * and plastic strain (classic: the point's own), the stress rotated by the
+ * point's own F_i (closed form), its von Mises value and J = det F_i (from
+ * the last force pass). */
 static void cpd_fields(const void *impl, FieldSet *out) {
     const CpdSolid *cs = impl;
     const CpdBody *b = &cs->body;
@@ -290,7 +304,12 @@ static void cpd_fields(const void *impl, FieldSet *out) {
 #pragma omp parallel for schedule(static) if (b->n >= 4096)
     for (int64_t i = 0; i < b->n; i++) {
         double w = 0.0, s[4] = {0, 0, 0, 0}, ep = 0.0;
-        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
+        if (b->cfg.force == CPD_FORCE_CLASSIC) {
+            w = 1.0, ep = b->eqps[i];
+            memcpy(s, b->sigma + 4 * i, sizeof s);
+        }
+        for (int64_t k = b->first[i]; k < b->first[i + 1] && b->cfg.force != CPD_FORCE_CLASSIC;
+             k++) {
             const double wk = b->omega[k] * b->scale[k];
             w += wk;
             for (int q = 0; q < 4; q++) s[q] += wk * b->sigma[4 * k + q];
@@ -354,11 +373,13 @@ static void cpd_fields(const void *impl, FieldSet *out) {
 }
 
 /* Everything a step changes: motion, forces (velocity Verlet reuses the
- * last), the held external loads, the bond state, the RK weights (damage
- * rescales them) and the F_i of the last force pass (fields read it). */
+ * last), the held external loads, the material state (per bond, or per
+ * point for the classic force), the RK weights (damage rescales them; the
+ * classic force has none) and the F_i of the last force pass (fields read it). */
 static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     CpdBody *b = &((CpdSolid *)impl)->body;
     const size_t n = (size_t)b->n * sizeof(double), nb = (size_t)b->bond_count;
+    const size_t ns = b->cfg.force == CPD_FORCE_CLASSIC ? (size_t)b->n : nb; /* state count */
     static const char *const NAMES[4][3] = {{"cpd.u0", "cpd.u1", "cpd.u2"},
                                             {"cpd.v0", "cpd.v1", "cpd.v2"},
                                             {"cpd.force0", "cpd.force1", "cpd.force2"},
@@ -369,13 +390,14 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
         TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
         TRY(checkpoint_io(ck, NAMES[3][d], b->external[d], n));
     }
-    TRY(checkpoint_io(ck, "cpd.sigma", b->sigma, 4 * nb * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.eqps", b->eqps, nb * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.sigma", b->sigma, 4 * ns * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.eqps", b->eqps, ns * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.damage", b->damage, nb * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.scale", b->scale, nb * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.principal", b->principal, nb * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, nb));
-    TRY(checkpoint_io(ck, "cpd.phi", b->phi, (size_t)b->dim * nb * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.principal", b->principal, ns * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, ns));
+    if (b->strain_zz) TRY(checkpoint_io(ck, "cpd.strain_zz", b->strain_zz, ns * sizeof(double)));
+    if (b->phi) TRY(checkpoint_io(ck, "cpd.phi", b->phi, (size_t)b->dim * nb * sizeof(double)));
     TRY(checkpoint_io(ck, "cpd.ok", b->ok, (size_t)b->n));
     TRY(checkpoint_io(ck, "cpd.F", b->work_point, 9 * n));
     for (int d = 0; d < b->dim && d < 3; d++) {

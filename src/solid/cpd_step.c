@@ -7,6 +7,7 @@
 #include "core/reduce.h"
 #include "core/status.h"
 #include "solid/bac_force.h"
+#include "solid/classic_force.h"
 #include "solid/rk_gradient.h"
 
 #include <math.h>
@@ -28,33 +29,69 @@ static BacSystem system_of(const CpdBody *b) {
     return s;
 }
 
-/* The damage law of the configuration for bond k's state (notes 1c.8). */
-static double damage_law(const CpdBody *b, int64_t k) {
+static ClassicSystem classic_of(const CpdBody *b) {
+    ClassicSystem s = {.dim = b->dim,
+                       .n = b->n,
+                       .volume = b->volume,
+                       .first = b->first,
+                       .nbr = b->nbr,
+                       .reverse = b->reverse,
+                       .omega = b->omega,
+                       .lambda = b->lambda,
+                       .mu = b->mu,
+                       .delta = b->delta,
+                       .thickness = b->dim == 2 ? b->cfg.pd.thickness : 0.0,
+                       .stabilisation = b->cfg.stabilisation,
+                       .bond_scale = b->scale};
+    for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
+    return s;
+}
+
+int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo) {
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        const ClassicSystem s = classic_of(b);
+        return classic_shape_check(&s, redo, b->ok);
+    }
+    const double *const *x = (const double *const *)b->x;
+    if (!redo)
+        return rk_gradient_weights(b->dim, b->n, x, b->volume, b->first, b->nbr, b->delta, b->scale,
+                                   b->phi, b->ok);
+    return rk_gradient_weights_redo(b->dim, b->n, x, b->volume, b->first, b->nbr, b->delta,
+                                    b->scale, redo, b->phi, b->ok);
+}
+
+/* The damage law of the configuration for the state of bond k = (i -> j)
+ * (notes 1c.8). The bond-associated force keeps it per bond; the classic
+ * one per point, and the bond then takes the larger of its two points'
+ * values (plastic strain, principal stress; inverted if either is): fmax
+ * is exact and commutative, so both ends of a pair get the same damage
+ * bits, and a bond fails as soon as either end's material does. */
+static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
     const CpdConfig *c = &b->cfg;
-    if (b->inverted[k]) return 1.0;
+    int64_t p = k, q = k;
+    if (c->force == CPD_FORCE_CLASSIC) p = i, q = b->nbr[k];
+    if (b->inverted[p] || b->inverted[q]) return 1.0;
     switch (c->damage) {
     case CPD_DAMAGE_DUCTILE:
-        return j2_damage_ductile(b->eqps[k], c->plastic_strain_threshold,
+        return j2_damage_ductile(fmax(b->eqps[p], b->eqps[q]), c->plastic_strain_threshold,
                                  c->plastic_strain_critical);
     case CPD_DAMAGE_BRITTLE:
-        return j2_damage_brittle(b->principal[k], c->critical_stress, c->damage_ramp);
+        return j2_damage_brittle(fmax(b->principal[p], b->principal[q]), c->critical_stress,
+                                 c->damage_ramp);
     default:
         return 0.0;
     }
 }
 
-/* Damage grows (never falls) by the law; a point whose bonds' damage grew
- * gets its weights recomputed; a point left without weights is debris and
- * its bonds break from both ends (each end reads both points' flags), which
- * may leave its neighbours without weights in turn: repeated until no point
- * changes. Returns the number of bonds whose damage grew. */
+/* Damage grows (never falls) by the law, then the weights settle
+ * (cpd_settle_weights). Returns the number of bonds whose damage grew. */
 static int64_t update_damage(CpdBody *b) {
     int64_t grown = 0;
 #pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         uint8_t redo = 0;
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
-            const double d = damage_law(b, k);
+            const double d = damage_law(b, i, k);
             if (d > b->damage[k]) {
                 b->damage[k] = d;
                 b->scale[k] = 1.0 - d;
@@ -64,11 +101,13 @@ static int64_t update_damage(CpdBody *b) {
         }
         b->redo[i] = redo;
     }
-    const double *const *x = (const double *const *)b->x;
-    for (int pass = 0; grown > 0 && pass < 1000; pass++) {
-        if (rk_gradient_weights_redo(b->dim, b->n, x, b->volume, b->first, b->nbr, b->delta,
-                                     b->scale, b->redo, b->phi, b->ok) == 0)
-            break;
+    return grown > 0 ? grown + cpd_settle_weights(b) : 0;
+}
+
+int64_t cpd_settle_weights(CpdBody *b) {
+    int64_t grown = 0;
+    for (int pass = 0; pass < 1000; pass++) {
+        if (cpd_shape_check(b, b->redo) == 0) break;
         int64_t broke = 0;
 #pragma omp parallel for schedule(static) reduction(+ : broke) if (b->n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < b->n; i++) {
@@ -88,15 +127,34 @@ static int64_t update_damage(CpdBody *b) {
     return grown;
 }
 
-void cpd_force(CpdBody *b, double t) {
+/* The force density at displacements u into L: with the body's material
+ * state advanced from u_prev (state true), or stateless (SVK). */
+static void body_force(CpdBody *b, bool state, const double *const u[3], double *const L[3]) {
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        const ClassicSystem s = classic_of(b);
+        ClassicState st = {.material = &b->material,
+                           .sigma = b->sigma,
+                           .eqps = b->eqps,
+                           .principal = b->principal,
+                           .inverted = b->inverted,
+                           .strain_zz = b->strain_zz};
+        for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
+        classic_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
+        return;
+    }
     const BacSystem s = system_of(b);
     BacState st = {.material = &b->material,
                    .sigma = b->sigma,
                    .eqps = b->eqps,
                    .principal = b->principal,
-                   .inverted = b->inverted};
+                   .inverted = b->inverted,
+                   .strain_zz = b->strain_zz};
     for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
-    bac_force(&s, &st, (const double *const *)b->u, b->force, b->work_point, b->work_bond);
+    bac_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
+}
+
+void cpd_force(CpdBody *b, double t) {
+    body_force(b, true, (const double *const *)b->u, b->force);
     const CpdConfig *c = &b->cfg;
     if (c->pressure_count > 0) {
         double p[64];
@@ -199,11 +257,11 @@ static double dot(const CpdBody *b, double *const a[3], double *const c[3]) {
  * CPD_POWER_MARGIN. Allocates its scratch (3 dim n doubles, once per
  * estimate); on failure returns the previous estimate. The body's state
  * (u, force, stresses) is untouched: the probes go through the stateless
- * force. */
+ * force (the configured one: classic with its zero-energy penalty, which
+ * stiffens the highest modes). */
 static const double CPD_POWER_MARGIN = 1.02;
 
 double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
-    const BacSystem s = system_of(b);
     const int dim = b->dim;
     const int64_t n = b->n;
     double *mem = NULL;
@@ -237,10 +295,10 @@ double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
             for (int64_t i = 0; i < n; i++) v[d][i] /= norm;
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++) probe[d][i] = e * v[d][i];
-        bac_force(&s, NULL, (const double *const *)probe, Lp, b->work_point, b->work_bond);
+        body_force(b, false, (const double *const *)probe, Lp);
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++) probe[d][i] = -e * v[d][i];
-        bac_force(&s, NULL, (const double *const *)probe, Lm, b->work_point, b->work_bond);
+        body_force(b, false, (const double *const *)probe, Lm);
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++)
                 Lp[d][i] = -(Lp[d][i] - Lm[d][i]) / (2.0 * e * b->cfg.pd.density);

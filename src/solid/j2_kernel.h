@@ -160,10 +160,13 @@ NSPD_KERNEL double j2_return(const J2Material *m, const double de[3], double dzz
  * sigma_zz = 0, by Newton on C33 until
  * |sigma_zz| <= 1e-12 (|sigma| + sigma_Y) (sigma_Y only where m yields) or
  * J2_PLANE_STRESS_MAX_ITER iterations; sigma_zz of the input is not assumed
- * zero. Returns the plastic increment deqps (0 if elastic). */
-NSPD_KERNEL double j2_update(const J2Material *m, const double de[3], double sigma[4],
-                             double *eqps) {
+ * zero. Returns the plastic increment deqps (0 if elastic) and, in *dzz,
+ * de_zz (0 in plane strain): the thickness's logarithmic strain grows by
+ * it, and plane-stress forces scale with the thickness (j2_piola_2d). */
+NSPD_KERNEL double j2_update_zz(const J2Material *m, const double de[3], double sigma[4],
+                                double *eqps, double *dzz) {
     const double eqps_n = *eqps;
+    double z = 0.0; /* de_zz: 0 in plane strain */
     double out[4], c33, deqps;
     if (!m->plane_stress) {
         deqps = j2_return(m, de, 0.0, sigma, eqps_n, out, &c33);
@@ -171,7 +174,7 @@ NSPD_KERNEL double j2_update(const J2Material *m, const double de[3], double sig
         const double lambda = m->bulk - 2.0 / 3.0 * m->shear;
         const double yield = j2_is_plastic(m) ? m->yield : 0.0;
         /* the elastic answer: exact when the step stays elastic */
-        double z = -(sigma[2] + lambda * (de[0] + de[1])) / (lambda + 2.0 * m->shear);
+        z = -(sigma[2] + lambda * (de[0] + de[1])) / (lambda + 2.0 * m->shear);
         /* bracket of the root (sigma_zz increases with de_zz): a Newton step
          * that leaves it is replaced by bisection (the kink at first yield) */
         double lo = 0.0, hi = 0.0;
@@ -193,7 +196,15 @@ NSPD_KERNEL double j2_update(const J2Material *m, const double de[3], double sig
     }
     sigma[0] = out[0], sigma[1] = out[1], sigma[2] = out[2], sigma[3] = out[3];
     *eqps = eqps_n + deqps;
+    *dzz = z;
     return deqps;
+}
+
+/* j2_update_zz without the out-of-plane increment. */
+NSPD_KERNEL double j2_update(const J2Material *m, const double de[3], double sigma[4],
+                             double *eqps) {
+    double dzz;
+    return j2_update_zz(m, de, sigma, eqps, &dzz);
 }
 
 /* The Cauchy stress sigma = R sigma_hat R^T (sigma_zz unchanged). */
@@ -214,9 +225,8 @@ NSPD_KERNEL void j2_rotate_stress_2d(const double R[4], const double sigma_hat[4
  * sigma = R sigma_hat R^T, P = J sigma F^-T with J = det F (the in-plane
  * area ratio: plane strain keeps the thickness). J F^-T is the cofactor
  * matrix of F, so no division: P = sigma cof(F). In plane stress the
- * thickness does change (stretch exp(sum de_zz), which j2_update does not
- * return); P here is per unit current thickness, the usual 2D
- * approximation while strains are small. */
+ * thickness changes too, by the stretch exp(sum de_zz) of j2_update_zz:
+ * the caller multiplies P by it (bac_force, classic_force). */
 NSPD_KERNEL void j2_piola_2d(const double F[4], const double sigma_hat[4], double P[4]) {
     double R[4], s[4];
     j2_polar_rotation_2d(F, R);

@@ -49,6 +49,22 @@ check "unknown option" "unknown option '--fast'" "$nspd" run x.yaml --fast
 check "bad --set syntax" "--set solid: expected dotted.key=value" \
     "$nspd" check "$src/cases/plate_crack.yaml" --set solid
 check "unknown command" "unknown command 'walk'" "$nspd" walk
+# the correspondence solid's own keys
+hs="$src/cases/hollow_square_pressure.yaml"
+check "correspondence: Poisson's ratio" "poisson_ratio: 0.5; expected a Poisson's ratio in \\(-1, 0.5\\)" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.material.poisson_ratio=0.5
+check "correspondence: 3D" "solid.model: 3d: the correspondence solid is 2D" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.model=3d
+check "correspondence: ductile without yield" "ductile failure needs plasticity" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.material.yield_stress=0
+check "correspondence: stabilisation without classic" "stabilisation: the zero-energy stabilisation belongs to the classic" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.correspondence.stabilisation=0.5
+check "correspondence: a bond-based key" "solid.critical_stretch: unknown key" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.critical_stretch=0.1
+check "correspondence: brittle without sigma_cr" "solid.failure.critical_stress: missing required key" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.failure.law=brittle
+check "correspondence: negative pressure time" "a negative time; expected rise_time, hold_time, fall_time >= 0" \
+    "$nspd" run "$hs" -o "$work/result" --set solid.pressure_loads.0.rise_time=-1
 cyl="$src/cases/cylinder_ma2_re300.yaml"
 check "initial.from: no such file" "flow.initial.from: cannot open 'nothere.vtr' \\(No such file" \
     "$nspd" run "$cyl" -o "$work/result" --set "flow.initial={from: nothere.vtr}"

@@ -76,7 +76,7 @@ static void setup_free(Setup *t) {
 static int64_t force(Setup *t) {
     double *const f[3] = {t->f[0], t->f[1], t->f[2]};
     const double *const u[3] = {t->u[0], t->u[1], t->u[2]};
-    return classic_force(&t->s, u, f, t->work_point, t->work_bond);
+    return classic_force(&t->s, NULL, u, f, t->work_point, t->work_bond);
 }
 
 /* Points at least `inset` inside the cloud's lattice box. */
@@ -214,7 +214,7 @@ static void test_singular_family(void **state) {
     double work_point[54], work_bond[12];
     const double *const u[3] = {ux, uy, NULL};
     double *const f[3] = {fx, fy, NULL};
-    assert_int_equal(classic_force(&s, u, f, work_point, work_bond), 3);
+    assert_int_equal(classic_force(&s, NULL, u, f, work_point, work_bond), 3);
     for (int i = 0; i < 3; i++) {
         assert_true(fx[i] == 0.0 && fy[i] == 0.0);
         assert_true(work_point[9 * i] == 1.0 && work_point[27 + 9 * i] == 0.0);

@@ -202,7 +202,8 @@ static void test_uniaxial_strain(void **state) {
 }
 
 /* Elastic plane strain: sigma_zz = lambda (de_xx + de_yy), the rest Hooke's
- * law; elastic plane stress: E / (1 - nu^2) (de_xx + nu de_yy), sigma_zz = 0;
+ * law; elastic plane stress: E / (1 - nu^2) (de_xx + nu de_yy), sigma_zz = 0,
+ * de_zz = -nu / (1 - nu) (de_xx + de_yy) (the thickness strain);
  * plastic plane stress under a wandering path: sigma_zz = 0 to the loop's
  * tolerance after every step. */
 static void test_out_of_plane(void **state) {
@@ -218,9 +219,15 @@ static void test_out_of_plane(void **state) {
     assert_close(s[1], lambda * de[0] + (lambda + 2.0 * G) * de[1], 1e-8);
     assert_close(s[3], 2.0 * G * de[2], 1e-8);
 
+    double dzz = 1.0;
+    memset(s, 0, sizeof s);
+    j2_update_zz(&m, de, s, &eqps, &dzz);
+    assert_true(dzz == 0.0); /* plane strain */
     m.plane_stress = 1;
     memset(s, 0, sizeof s);
-    j2_update(&m, de, s, &eqps);
+    j2_update_zz(&m, de, s, &eqps, &dzz);
+    /* the thickness strain of elastic plane stress: -nu / (1 - nu) tr_2D(de) */
+    assert_close(dzz, -NU / (1.0 - NU) * (de[0] + de[1]), 1e-12 * fabs(de[0]));
     const double c = E_MOD / (1.0 - NU * NU);
     assert_close(s[0], c * (de[0] + NU * de[1]), 1e-7);
     assert_close(s[1], c * (de[1] + NU * de[0]), 1e-7);

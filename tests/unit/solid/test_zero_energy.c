@@ -63,7 +63,8 @@ static void patch_make(Patch *t, Model model, double cs, double jitter) {
     t->omega = calloc((size_t)bonds, sizeof(double));
     t->reverse = calloc((size_t)bonds, sizeof(int64_t));
     t->ok = calloc((size_t)c->n, 1);
-    t->work_point = calloc((size_t)(19 * c->n), sizeof(double)) /* bac_force 19 n, classic_force 18 n */;
+    t->work_point =
+        calloc((size_t)(19 * c->n), sizeof(double)) /* bac_force 19 n, classic_force 18 n */;
     t->work_bond = calloc((size_t)(2 * bonds), sizeof(double));
     for (int a = 0; a < 2; a++) {
         t->u[a] = calloc((size_t)c->n, sizeof(double));
@@ -124,7 +125,7 @@ static void patch_force(Patch *t) {
     if (t->model == BAC)
         bac_force(&t->bac, NULL, u, f, t->work_point, t->work_bond);
     else
-        classic_force(&t->classic, u, f, t->work_point, t->work_bond);
+        classic_force(&t->classic, NULL, u, f, t->work_point, t->work_bond);
 }
 
 /* The cloud index of patch point p's image in copy (tx, ty); the centre
