@@ -126,6 +126,51 @@ for e in 30 40 50 60; do
         "$out/cylinder_crack_$e/summary.json" | tee -a "$out/cylinder_crack.txt"
 done
 
+echo "== PDDO cavity (paper 002 Sec. 5.1), Re 1 and 200 at the paper's resolution, to steady state"
+for re in 1 200; do
+    "$nspd" run cases/cavity_re$re.yaml -o "$out/cavity_re$re" --force --quiet
+    sed -n 's/.*"\(steps\|steady\|time_s\|wall_s\|div_max_per_s\|factor_mb\)": \(.*\),*/cavity Re '$re': \1 = \2/p' \
+        "$out/cavity_re$re/summary.json" | tee "$out/cavity_re$re.txt"
+    cp "$(ls "$out/cavity_re$re"/vorticity_*.png | tail -1)" docs/img/pddo_cavity_re${re}_vorticity.png
+done
+# Ghia et al. (1982) at Re 100, 400 (and 1000): cases/cavity_re200.yaml with
+# the lid speed of each Reynolds number, 100 intervals, a step under the
+# convective limit 2 nu/U^2, steady at max du/dt < 1e-6 U^2/L; both wall
+# treatments at Re 100. Re 1000 (a quarter of the limit: half blows up,
+# docs/VALIDATION.md; 214,176 steps, 27 min) only with PDDO_GHIA_1000=1.
+rm -f "$out/ghia.txt"
+ghia_run() { # RE WALLS DT END
+    u=$(awk -v r="$1" 'BEGIN { print r / 1000 }')
+    tol=$(awk -v u="$u" 'BEGIN { print 1e-3 * u * u }')
+    dir="$out/cavity_ghia_re$1_$2"
+    "$nspd" run cases/cavity_re200.yaml -o "$dir" --force --quiet --set flow.walls=$2 \
+        --set flow.boundaries.y_max.velocity=$u --set time.dt=$3 --set time.end=$4 \
+        --set flow.steady_tolerance=$tol --set output.field_interval=$4 \
+        --set output.history_interval=$(awk -v e="$4" 'BEGIN { print e / 200 }')
+    scripts/ghia_compare.sh "$dir" "$1" 0.001 "$u" "docs/img/pddo_cavity_ghia_re$1_$2.png" "$2 ghosts" |
+        tee -a "$out/ghia.txt"
+    sed -n 's/.*"\(steps\|steady\|wall_s\)": \(.*\),*/    \1 = \2/p' "$dir/summary.json" | tee -a "$out/ghia.txt"
+}
+ghia_run 100 paper 4e-5 1.0
+ghia_run 100 antisymmetric 4e-5 1.0
+ghia_run 400 paper 5e-6 0.5
+if [ "${PDDO_GHIA_1000:-0}" = 1 ]; then ghia_run 1000 paper 5e-7 0.2; fi
+
+echo "== PDDO open channel (paper 002 Sec. 5.2), Re 56"
+"$nspd" run cases/channel_re56.yaml -o "$out/channel_re56" --force --quiet
+# developed Poiseuille flow: u_max = 1.5 u0 = 0.075 m/s (notes/pddo.md V14)
+for where in middle exit; do
+    awk -F, -v w="$where" 'NR > 2 && $3 > m { m = $3 } END { printf "channel: u_max/u0 at %s = %.4f (Poiseuille 1.5, %+.1f %%)\n", w, m / 0.05, 100 * (m / 0.075 - 1) }' \
+        "$(ls "$out/channel_re56"/line_${where}_*.csv | tail -1)" | tee -a "$out/channel.txt"
+done
+sed -n 's/.*"\(steps\|steady\|time_s\|wall_s\)": \(.*\),*/channel: \1 = \2/p' "$out/channel_re56/summary.json" |
+    tee -a "$out/channel.txt"
+cp "$(ls "$out/channel_re56"/speed_*.png | tail -1)" docs/img/pddo_channel_re56_speed.png
+# a developed (parabolic) inflow with second-order wall ghosts: Poiseuille from the inlet on
+"$nspd" run cases/channel_re56.yaml -o "$out/channel_re56_parabolic" --force --quiet \
+    --set flow.boundaries.x_min.profile=parabolic --set flow.walls=antisymmetric
+awk -F, 'NR > 2 && $3 > m { m = $3 } END { printf "channel, parabolic inflow, antisymmetric ghosts: u_max/u0 at exit = %.4f (%+.2f %%)\n", m / 0.05, 100 * (m / 0.075 - 1) }' \
+    "$(ls "$out/channel_re56_parabolic"/line_exit_*.csv | tail -1)" | tee -a "$out/channel.txt"
 echo "== correspondence solid (paper 003 geometry, issue 14): hollow square, ductile"
 "$nspd" run cases/hollow_square_pressure.yaml -o "$out/hollow_square" --force --quiet
 cp "$out/hollow_square/plastic_strain_00009.png" docs/img/hollow_square_plastic_180us.png

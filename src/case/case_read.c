@@ -4,6 +4,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "case/case_flow.h"
+#include "case/case_pddo.h"
 #include "case/case_shapes.h"
 #include "case/case_solid.h"
 #include "io/cfg_read.h"
@@ -32,6 +33,7 @@ static int read_time(CfgNode *root, SimConfig *cfg) {
 static const char *const SORT_AXES[] = {"x", "y", "z", NULL};
 
 static const char *const TARGETS[] = {"solid", "flow", NULL};
+static const char *const FLOW_METHODS[] = {"gks", "pddo", NULL};
 
 static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, int index) {
     if (item->kind != CFG_MAP)
@@ -243,7 +245,18 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
         TRY(case_read_solid(solid, &cfg->solid));
     }
     GhostCouplingConfig walls = {0};
-    if (flow) {
+    int method = 0; /* gks; method is read only when given (gks cases stay as they were) */
+    if (flow && cfg_map_find(flow, "method"))
+        TRY(cfg_req_enum(flow, "method", FLOW_METHODS, &method));
+    if (flow && method == 1) {
+        if (solid)
+            return cfg_fail_at(flow, "method",
+                               "pddo with a solid; expected no solid section (the PDDO flow "
+                               "takes no coupling yet)");
+        cfg->flow.method = FLOW_METHOD_PDDO;
+        TRY(case_read_pddo(flow, cfg_map_find(root, "time"), cfg->dt_given, cfg->dt,
+                           &cfg->flow.pddo));
+    } else if (flow) {
         cfg->flow.method = FLOW_METHOD_GKS;
         int status = case_read_flow(flow, &cfg->flow.gks, &walls);
         if (status != NSPD_OK) {

@@ -9,6 +9,7 @@
  * slots after the built-in ones. */
 static const FlowOps *FLOW_METHODS[FLOW_METHOD_MAX] = {
     [FLOW_METHOD_GKS] = &GKS_FLOW_OPS,
+    [FLOW_METHOD_PDDO] = &PDDO_FLOW_OPS,
 };
 
 FlowMethod flow_register(const FlowOps *ops) {
@@ -82,6 +83,10 @@ int flow_step(Flow *f, double dt) {
 
 double flow_time(const Flow *f) {
     return f->ops->time(f->impl);
+}
+
+bool flow_finished(const Flow *f) {
+    return f->ops->finished && f->ops->finished(f->impl);
 }
 
 FlowMesh flow_mesh(const Flow *f) {

@@ -17,13 +17,16 @@
 #include "core/report.h"
 #include "flow/gks_flow.h"
 #include "flow/grid.h"
+#include "flow/pddo_flow.h"
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
 typedef enum {
     FLOW_METHOD_NONE = 0, /* the case has no flow */
     FLOW_METHOD_GKS,      /* gas-kinetic BGK-NS finite volumes (paper 000): flow/gks_flow.c */
+    FLOW_METHOD_PDDO,     /* incompressible PDDO on node clouds (paper 002): flow/pddo_flow.c */
     FLOW_METHOD_COUNT,    /* the built-in solvers; flow_register adds more after these */
     FLOW_METHOD_MAX = FLOW_METHOD_COUNT + 4
 } FlowMethod;
@@ -33,6 +36,7 @@ typedef struct {
     FlowMethod method;
     union {
         GksCaseConfig gks;    /* FLOW_METHOD_GKS */
+        PddoFlowConfig pddo;  /* FLOW_METHOD_PDDO */
         const void *external; /* a registered solver's configuration (borrowed) */
     };
 } FlowConfig;
@@ -42,7 +46,7 @@ void flow_config_free(FlowConfig *cfg);
 /* Where the solver's unknowns live, for probes and output. */
 typedef struct {
     MeshKind kind;
-    const Grid *grid; /* MESH_GRID */
+    const Grid *grid; /* MESH_GRID; NULL for MESH_POINTS (a node cloud) */
 } FlowMesh;
 
 /* The reference state of force and pressure coefficients: the free stream
@@ -94,6 +98,9 @@ typedef struct FlowOps {
     double (*stable_dt)(const void *impl);
     int (*step)(void *impl, double dt);
     double (*time)(const void *impl);
+    /* true once the flow has reached its own end (a steady state): the
+     * driver stops the run there, before time.end; NULL: never */
+    bool (*finished)(const void *impl);
     FlowMesh (*mesh)(const void *impl);
     /* density, u, v, pressure, temperature at node/cell `cell` of the mesh */
     void (*cell_state)(const void *impl, int64_t cell, double out[5]);
@@ -139,6 +146,7 @@ const char *flow_name(const Flow *f);
 double flow_stable_dt(const Flow *f);
 int flow_step(Flow *f, double dt);
 double flow_time(const Flow *f);
+bool flow_finished(const Flow *f);
 FlowMesh flow_mesh(const Flow *f);
 void flow_cell_state(const Flow *f, int64_t cell, double out[5]);
 FlowReference flow_reference(const Flow *f);

@@ -20,7 +20,9 @@
  *          36-39, 55; the paper's choice, first order at walls: it halves
  *          the wall shear, notes 1.6) or, with PDDO_WALL_ANTISYMMETRIC, its
  *          reflection 2 u_wall - u(pressure image) (second order)
- *   inlet  side and fictitious nodes take the inflow (Eqs. 57, 61)
+ *   inlet  side and fictitious nodes take the inflow (Eqs. 57, 61), uniform
+ *          or parabolic across the side (fictitious nodes take the value
+ *          of their row or column)
  *   outlet the side node (exit layer) is updated by Eq. 8 like a fluid node
  *          (notes #23), fictitious nodes copy it along the normal (Eq. 52)
  *   periodic fictitious nodes copy their image, and so do d and L there
@@ -43,12 +45,20 @@ typedef enum {
     PDDO_WALL_ANTISYMMETRIC, /* u_g = 2 u_wall - u(image): second order (notes 1.6, V6) */
 } PddoWallGhosts;
 
+typedef enum {
+    PDDO_INLET_UNIFORM = 0, /* the paper: (inlet_u, inlet_v) on the whole side */
+    PDDO_INLET_PARABOLIC,   /* 6 s (1 - s) (inlet_u, inlet_v), s in [0, 1] across the side: a
+                               developed channel inflow of the same mean, 1.5 times it in the
+                               middle */
+} PddoInletProfile;
+
 typedef struct {
     double rho, mu;            /* kg/m^3, Pa s */
     double dt;                 /* s */
     double wall_u[PDDO_SIDES]; /* velocity of each wall side, m/s (a lid: u of the top) */
     double wall_v[PDDO_SIDES];
-    double inlet_u, inlet_v; /* uniform inflow, m/s */
+    double inlet_u, inlet_v; /* inflow, m/s (the mean of a parabolic one) */
+    PddoInletProfile inlet_profile;
     PddoWallGhosts walls;    /* fictitious velocities of walls, lids and bodies */
     double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
                                 Eq. 33 is unchanged) */

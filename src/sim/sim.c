@@ -113,10 +113,11 @@ void sim_destroy(Sim *sim) {
     memset(sim, 0, sizeof *sim);
 }
 
-/* True once the run has reached its end (to a fraction of a step). */
+/* True once the run has reached its end (to a fraction of a step), or the
+ * flow its own (a steady state). */
 static bool finished(const Sim *sim) {
     if (!sim->flow) return sim->step >= sim->steps;
-    return sim->time >= sim->cfg.end_time * (1.0 - 1e-12);
+    return sim->time >= sim->cfg.end_time * (1.0 - 1e-12) || flow_finished(sim->flow);
 }
 
 /* This step's dt: the flow's stable (or the given) step, the last one

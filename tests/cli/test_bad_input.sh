@@ -117,6 +117,18 @@ check "more memory than --max-memory" "and --max-memory allows 0.05 GB" \
 check "steps past the limit" "^--set time.end=1e3: time.end = 1000 s needs 7.48e\+10 steps" \
     "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/result" --set time.end=1e3 \
     --set output.history_interval=1e-3 --set output.field_interval=1
+# the PDDO flow (flow.method: pddo): a step above its stable limit, a
+# lattice that does not divide the rectangle, a lone periodic side, and
+# probes that need a grid
+cav="$src/cases/cavity_re1.yaml"
+check "PDDO step above the limit" "^--set time.dt=2e-4: time.dt: 0.0002 s exceeds the PDDO flow's stable limit 0.00016 s" \
+    "$nspd" run "$cav" -o "$work/result" --set time.dt=2e-4
+check "PDDO spacing" "flow.spacing: 3e-05 m gives 33.33333333 spacings along x" \
+    "$nspd" check "$cav" --set flow.spacing=3e-5
+check "PDDO lone periodic side" "flow.boundaries.x_max: the opposite side x_min is periodic; expected both" \
+    "$nspd" check "$cav" --set flow.boundaries.x_min.type=periodic
+check "PDDO flow probe" "probe 'probe0': probes on the flow need a grid; the 'pddo' solver has none" \
+    "$nspd" run "$cav" -o "$work/result" --set "output.probes=[{type: point, on: flow, at: [0.0005, 0.0005]}]"
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"

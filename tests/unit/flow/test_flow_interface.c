@@ -1,7 +1,9 @@
 /* flow/flow.h over the GKS solver: the interface's dispatch, sampling at
  * points (bilinear over the cell centres reproduces a linear field to
  * round-off, the same interpolation as flow.initial.from), totals, the
- * mesh, the checked accessor, and the refusal of an unknown method. */
+ * mesh, the checked accessor, and the refusal of an unknown method; over
+ * the PDDO flow: a node mesh, the refusals of what it cannot do, its
+ * fields and tables, totals by the trapezoidal rule, and `finished`. */
 #include "test_support.h"
 
 #include "core/mem.h"
@@ -137,11 +139,72 @@ static void test_unknown_method_is_refused(void **state) {
     assert_null(f);
 }
 
+/* A unit cavity, 10 x 10 intervals, lid 1 m/s, Re 10. */
+static void pddo_cavity(FlowConfig *c, double tolerance) {
+    memset(c, 0, sizeof *c);
+    c->method = FLOW_METHOD_PDDO;
+    PddoFlowConfig *p = &c->pddo;
+    p->cloud =
+        (PddoCloudSpec){.lo = {0, 0}, .hi = {1, 1}, .dx = 0.1, .layers = 3, .horizon_factor = 3.0};
+    p->step = (PddoStepParams){.rho = 1.0, .mu = 0.1};
+    p->step.wall_u[PDDO_TOP] = 1.0;
+    p->velocity_scale = p->reference_velocity = 1.0;
+    p->reference_length = 1.0;
+    p->step.dt = 0.5 * pddo_flow_dt_limit(p);
+    p->steady_tolerance = tolerance;
+    p->line_count = 1;
+    p->lines[0] = (PddoLine){.name = "vertical", .at = {0.5, 0.5}, .along = 1};
+}
+
+static void test_pddo_behind_the_interface(void **state) {
+    (void)state;
+    FlowConfig c;
+    pddo_cavity(&c, 0.0);
+    const double dt = c.pddo.step.dt;
+    /* half of min(1.6 dx^2/nu, 2 nu/U^2) = min(0.16, 0.2) */
+    assert_close(dt, 0.08, 1e-15);
+    const FlowEstimate e = flow_estimate(&c);
+    assert_close(e.cells, 17.0 * 17.0, 0); /* 11 nodes a side and 3 layers each way */
+    Flow *f;
+    assert_ok(flow_create(&f, &c));
+    assert_string_equal(flow_name(f), "pddo");
+    assert_int_equal(flow_mesh(f).kind, MESH_POINTS);
+    assert_null(flow_mesh(f).grid);
+    assert_close(flow_stable_dt(f), dt, 0);
+    double x = 0.5, y = 0.5, out[4];
+    FlowSamples samples = {out, out + 1, out + 2, out + 3};
+    assert_int_equal(flow_sample(f, 1, &x, &y, &samples), NSPD_ERR_INPUT);
+    assert_int_equal(flow_set_sources(f, NULL), NSPD_ERR_INPUT);
+    double totals[4];
+    flow_totals(f, totals);
+    assert_close(totals[0], 1.0, 1e-14); /* rho times the unit square's area */
+    for (int k = 0; k < 20; k++) assert_ok(flow_step(f, dt));
+    assert_false(flow_finished(f)); /* no tolerance: never */
+    assert_close(flow_time(f), 20 * dt, 1e-14);
+    FieldSet fs;
+    flow_fields(f, &fs);
+    assert_int_equal(fs.mesh, MESH_POINTS);
+    assert_int_equal(fs.n, 121); /* the fluid and side nodes */
+    assert_int_equal(fs.table_count, 1);
+    assert_int_equal(fs.table[0].rows, 11);
+    assert_close(fs.table[0].col[2][10], 1.0, 0); /* the lid's middle node */
+    assert_true(fs.table[0].col[2][5] < 0.0);     /* the return flow below the vortex */
+    flow_destroy(&f);
+
+    pddo_cavity(&c, 1e30); /* any rate is below: finished after the first step */
+    assert_ok(flow_create(&f, &c));
+    assert_false(flow_finished(f));
+    assert_ok(flow_step(f, dt));
+    assert_true(flow_finished(f));
+    flow_destroy(&f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sample_is_exact_for_linear_fields),
         cmocka_unit_test(test_sources_push_the_gas),
         cmocka_unit_test(test_unknown_method_is_refused),
+        cmocka_unit_test(test_pddo_behind_the_interface),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

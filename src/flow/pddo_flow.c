@@ -1,0 +1,491 @@
+/* The PDDO flow behind the flow interface (pddo_flow.h). */
+#include "flow/pddo_flow.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/reduce.h"
+#include "core/status.h"
+#include "core/timer.h"
+#include "flow/flow.h"
+#include "flow/pddo_ops.h"
+#include "flow/pddo_ppe.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Output scratch over the physical nodes: x, y, u, v, p, vorticity,
+ * divergence, speed, node kind. */
+enum { OX, OY, OU, OV, OP, OW, OD, OS, OK_KIND, OUT_ARRAYS };
+/* Per-node scratch over the whole cloud: du/dx, du/dy, dv/dx, dv/dy, a
+ * sum's terms. */
+enum { GUX, GUY, GVX, GVY, TERM, NODE_ARRAYS };
+enum { LINE_COLS = 5 };
+
+typedef struct {
+    PddoFlowConfig cfg;
+    PddoCloud cloud;
+    PddoOps ops;
+    PddoPpe ppe;
+    PddoStep step;
+    double setup_s;   /* wall time of the cloud, operators and factorisation (log and info) */
+    int64_t physical; /* fluid and side nodes */
+    int64_t *phys;    /* their node numbers */
+    double *weight;   /* their areas in the trapezoidal rule: halved on each side a node is on */
+    double *out[OUT_ARRAYS];
+    double *node[NODE_ARRAYS];
+    double *sorted;      /* picture ranges */
+    int64_t steady_step; /* the step at which max |du/dt| first fell below the tolerance, or -1 */
+    /* line tables: the nodes on both sides of each station and the weight of the second */
+    int64_t line_rows[PDDO_MAX_LINES];
+    int32_t *line_a[PDDO_MAX_LINES], *line_b[PDDO_MAX_LINES];
+    double *line_w[PDDO_MAX_LINES];
+    double *line_col[PDDO_MAX_LINES][LINE_COLS];
+    char line_file[PDDO_MAX_LINES][PDDO_LINE_NAME + 8];
+} PddoFlow;
+
+double pddo_flow_dt_limit(const PddoFlowConfig *c) {
+    return 2.0 * pddo_step_stable_dt(c->step.mu / c->step.rho, c->cloud.dx, c->velocity_scale);
+}
+
+/* Nodes and family members of a configuration, counted as the cloud
+ * builder would (families: 28 in the bulk, fewer on the outer layers). */
+static void count_nodes(const PddoFlowConfig *c, double *nodes, double *members) {
+    const PddoCloudSpec *s = &c->cloud;
+    double n[2];
+    for (int a = 0; a < 2; a++) {
+        const double q = round((s->hi[a] - s->lo[a]) / s->dx);
+        n[a] =
+            s->side[2 * a] == PDDO_SIDE_PERIODIC ? q + 2.0 * s->layers : q + 1.0 + 2.0 * s->layers;
+    }
+    *nodes = n[0] * n[1];
+    const double h = s->horizon_factor;
+    *members = *nodes * fmax(4.0, M_PI * h * h - 1.0);
+}
+
+/* Bytes: the cloud (coordinates, area, indices, kinds: 52 per node, and
+ * the family's int32 per member), the four operators' float64 weights per
+ * member, K_L (int32 + float64 per member and node), its LU factors
+ * (UMFPACK, about 12 bytes per nonzero; nonzeros of L + U measured on the
+ * cavity lattices with three layers: 2.9e5 at 51^2 nodes, 1.2e6 at 101^2
+ * nodes (n^1.1 growth, nested-dissection-like: 21 n log2 n fits both
+ * within 15 %)), the step's 14 arrays per node and the output scratch. */
+static FlowEstimate pddo_estimate(const FlowConfig *fc) {
+    const PddoFlowConfig *c = &fc->pddo;
+    FlowEstimate e = {0, 0, 0};
+    if (!(c->cloud.dx > 0.0)) return e;
+    double n, m;
+    count_nodes(c, &n, &m);
+    e.cells = n;
+    e.stored_cells = n;
+    const double factor = 21.0 * n * log2(fmax(n, 2.0));
+    e.bytes = 52.0 * n + 4.0 * m + 4.0 * 8.0 * m + 12.0 * (m + n) + 12.0 * factor + 14.0 * 8.0 * n +
+              (OUT_ARRAYS + NODE_ARRAYS + 1) * 8.0 * n;
+    return e;
+}
+
+static void pddo_destroy(void *impl) {
+    PddoFlow *f = impl;
+    pddo_step_free(&f->step);
+    pddo_ppe_free(&f->ppe);
+    pddo_ops_free(&f->ops);
+    pddo_cloud_free(&f->cloud);
+    nspd_free(&f->phys);
+    nspd_free(&f->weight);
+    for (int k = 0; k < OUT_ARRAYS; k++) nspd_free(&f->out[k]);
+    for (int k = 0; k < NODE_ARRAYS; k++) nspd_free(&f->node[k]);
+    nspd_free(&f->sorted);
+    for (int l = 0; l < PDDO_MAX_LINES; l++) {
+        nspd_free(&f->line_a[l]);
+        nspd_free(&f->line_b[l]);
+        nspd_free(&f->line_w[l]);
+        for (int k = 0; k < LINE_COLS; k++) nspd_free(&f->line_col[l][k]);
+    }
+    nspd_free(&f);
+}
+
+/* The stations of line l: along its axis every lattice index of the
+ * physical nodes, across it the two indices around `at`. */
+static int build_line(PddoFlow *f, int l) {
+    const PddoCloud *c = &f->cloud;
+    const PddoLine *line = &f->cfg.lines[l];
+    const int along = line->along, across = 1 - along;
+    const int n_across = across == 0 ? c->nx : c->ny, n_along = along == 0 ? c->nx : c->ny;
+    const bool periodic_along = c->side[2 * along] == PDDO_SIDE_PERIODIC;
+    const bool periodic_across = c->side[2 * across] == PDDO_SIDE_PERIODIC;
+    const double lo = f->cfg.cloud.lo[across];
+    double q = (line->at[across] - lo) / c->dx;
+    const int top = periodic_across ? n_across - 1 : n_across;
+    if (!(q >= -1e-9 && q <= top + 1e-9))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "line '%s': at %g m is outside the nodes' [%g, %g] m across it",
+                         line->name, line->at[across], lo, lo + top * c->dx);
+    q = fmin(fmax(q, 0.0), (double)top);
+    int i0 = (int)floor(q);
+    double w = q - i0;
+    if (w < 1e-9) w = 0.0;
+    if (w > 1.0 - 1e-9) i0++, w = 0.0;
+    const int i1 = w > 0.0 ? i0 + 1 : i0;
+    const int64_t rows = periodic_along ? n_along : n_along + 1;
+    f->line_rows[l] = rows;
+    TRY(nspd_alloc(&f->line_a[l], (size_t)rows, sizeof(int32_t)));
+    TRY(nspd_alloc(&f->line_b[l], (size_t)rows, sizeof(int32_t)));
+    TRY(nspd_alloc(&f->line_w[l], (size_t)rows, sizeof(double)));
+    for (int k = 0; k < LINE_COLS; k++)
+        TRY(nspd_alloc(&f->line_col[l][k], (size_t)rows, sizeof(double)));
+    for (int64_t r = 0; r < rows; r++) {
+        const int s = (int)r;
+        const int64_t a = along == 0 ? pddo_cloud_node(c, s, i0) : pddo_cloud_node(c, i0, s);
+        const int64_t b = along == 0 ? pddo_cloud_node(c, s, i1) : pddo_cloud_node(c, i1, s);
+        if (a < 0 || b < 0)
+            return NSPD_FAIL(NSPD_ERR_INTERNAL, "line '%s': station %d has no node", line->name, s);
+        f->line_a[l][r] = (int32_t)a, f->line_b[l][r] = (int32_t)b, f->line_w[l][r] = w;
+    }
+    snprintf(f->line_file[l], sizeof f->line_file[l], "line_%s", line->name);
+    return NSPD_OK;
+}
+
+static int build(PddoFlow *f) {
+    const double t0 = nspd_wall_time();
+    TRY(pddo_cloud_build(&f->cloud, &f->cfg.cloud));
+    const PddoCloud *c = &f->cloud;
+    TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+    TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
+    TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
+    f->setup_s = nspd_wall_time() - t0;
+    for (int64_t k = 0; k < c->n; k++)
+        if (c->kind[k] == PDDO_NODE_FLUID || c->kind[k] == PDDO_NODE_SIDE) f->physical++;
+    TRY(nspd_alloc(&f->phys, (size_t)f->physical, sizeof(int64_t)));
+    int64_t m = 0;
+    for (int64_t k = 0; k < c->n; k++)
+        if (c->kind[k] == PDDO_NODE_FLUID || c->kind[k] == PDDO_NODE_SIDE) f->phys[m++] = k;
+    for (int k = 0; k < OUT_ARRAYS; k++)
+        TRY(nspd_alloc(&f->out[k], (size_t)f->physical, sizeof(double)));
+    for (int k = 0; k < NODE_ARRAYS; k++)
+        TRY(nspd_alloc(&f->node[k], (size_t)c->n, sizeof(double)));
+    TRY(nspd_alloc(&f->sorted, (size_t)f->physical, sizeof(double)));
+    TRY(nspd_alloc(&f->weight, (size_t)f->physical, sizeof(double)));
+    for (int64_t q = 0; q < f->physical; q++) {
+        const int64_t k = f->phys[q];
+        f->weight[q] = c->area[k];
+        for (int s = 0; s < PDDO_SIDES; s++)
+            if ((unsigned)c->sides[k] >> s & 1u) f->weight[q] *= 0.5;
+        f->out[OX][q] = c->x[k], f->out[OY][q] = c->y[k];
+        f->out[OK_KIND][q] = c->kind[k];
+    }
+    for (int l = 0; l < f->cfg.line_count; l++) TRY(build_line(f, l));
+    return NSPD_OK;
+}
+
+static int pddo_create(void **impl, FlowConfig *fc) {
+    PddoFlow *f;
+    TRY(nspd_alloc(&f, 1, sizeof *f));
+    f->cfg = fc->pddo;
+    memset(fc, 0, sizeof *fc);
+    f->steady_step = -1;
+    const int status = build(f);
+    if (status != NSPD_OK) {
+        pddo_destroy(f);
+        return status;
+    }
+    *impl = f;
+    return NSPD_OK;
+}
+
+/* The case's step: given (checked against the limit when the case was
+ * read) or half the limit; constant, so the driver never warns. */
+static double pddo_stable_dt(const void *impl) {
+    return ((const PddoFlow *)impl)->cfg.step.dt;
+}
+
+static int pddo_step(void *impl, double dt) {
+    PddoFlow *f = impl;
+    f->step.par.dt = dt; /* the driver shortens the last step to land on the end time */
+    TRY(pddo_step_advance(&f->step));
+    if (f->steady_step < 0 && f->cfg.steady_tolerance > 0.0 &&
+        f->step.dudt_max < f->cfg.steady_tolerance)
+        f->steady_step = f->step.steps;
+    return NSPD_OK;
+}
+
+static double pddo_time(const void *impl) {
+    return ((const PddoFlow *)impl)->step.time;
+}
+
+static bool pddo_finished(const void *impl) {
+    return ((const PddoFlow *)impl)->steady_step >= 0;
+}
+
+static FlowMesh pddo_mesh(const void *impl) {
+    (void)impl;
+    return (FlowMesh){MESH_POINTS, NULL};
+}
+
+static void pddo_cell_state(const void *impl, int64_t node, double out[5]) {
+    const PddoFlow *f = impl;
+    out[0] = f->cfg.step.rho;
+    out[1] = f->step.u[node];
+    out[2] = f->step.v[node];
+    out[3] = f->step.p[node];
+    out[4] = 0.0; /* incompressible: no temperature */
+}
+
+static FlowReference pddo_reference(const void *impl) {
+    const PddoFlow *f = impl;
+    return (FlowReference){
+        .rho = f->cfg.step.rho, .u = f->cfg.reference_velocity, .length = f->cfg.reference_length};
+}
+
+static void pddo_totals(const void *impl, double totals[4]) {
+    const PddoFlow *f = impl;
+    const double rho = f->cfg.step.rho;
+    double *t = f->node[TERM];
+    double sum[4] = {0, 0, 0, 0};
+    for (int what = 0; what < 4; what++) {
+        for (int64_t q = 0; q < f->physical; q++) {
+            const int64_t k = f->phys[q];
+            const double u = f->step.u[k], v = f->step.v[k];
+            const double term = what == 0   ? 1.0
+                                : what == 1 ? u
+                                : what == 2 ? v
+                                            : 0.5 * (u * u + v * v);
+            t[q] = rho * term * f->weight[q];
+        }
+        sum[what] = reduce_sum(t, f->physical);
+    }
+    memcpy(totals, sum, sizeof sum);
+}
+
+/* max |div u| over the fluid nodes (the sides' nodes hold prescribed
+ * velocities) of the current state; the velocity gradients into node[]. */
+static double max_divergence(const PddoFlow *f) {
+    const PddoCloud *c = &f->cloud;
+    double *const *g = f->node;
+    pddo_ops_apply(&f->ops, PDDO_D_X, f->step.u, g[GUX]);
+    pddo_ops_apply(&f->ops, PDDO_D_Y, f->step.u, g[GUY]);
+    pddo_ops_apply(&f->ops, PDDO_D_X, f->step.v, g[GVX]);
+    pddo_ops_apply(&f->ops, PDDO_D_Y, f->step.v, g[GVY]);
+    double m = 0.0;
+    for (int64_t k = 0; k < c->n; k++)
+        if (c->kind[k] == PDDO_NODE_FLUID) m = fmax(m, fabs(g[GUX][k] + g[GVY][k]));
+    return m;
+}
+
+static void pddo_history(const void *impl, Report *row) {
+    const PddoFlow *f = impl;
+    double totals[4];
+    pddo_totals(f, totals);
+    report_real(row, "dt_s", f->step.steps > 0 ? f->step.par.dt : 0.0);
+    report_precise(row, "dudt_max_m_per_s2", f->step.dudt_max);
+    report_precise(row, "kinetic_energy_J_per_m", totals[3]);
+    report_precise(row, "momentum_x_kg_per_s", totals[1]);
+    report_precise(row, "momentum_y_kg_per_s", totals[2]);
+    report_real(row, "div_max_per_s", max_divergence(f));
+    report_real(row, "ppe_shift", f->ppe.shift);
+}
+
+static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
+    const PddoFlow *f = impl;
+    const PddoCloud *c = &f->cloud;
+    double totals[4];
+    pddo_totals(f, totals);
+    report_int(out, "nodes", c->n);
+    report_int(out, "physical_nodes", f->physical);
+    report_int(out, "intervals_x", c->nx);
+    report_int(out, "intervals_y", c->ny);
+    report_int(out, "family_members", c->first[c->n]);
+    report_int(out, "ppe_nonzeros", f->ppe.nnz);
+    report_real(out, "factor_nonzeros", f->ppe.factor_nnz);
+    report_real(out, "factor_mb", f->ppe.factor_bytes / 1e6);
+    report_real(out, "dt_s", f->step.par.dt);
+    report_real(out, "dt_limit_s", pddo_flow_dt_limit(&f->cfg));
+    report_real(out, "reynolds",
+                f->cfg.step.rho * f->cfg.reference_velocity * f->cfg.reference_length /
+                    f->cfg.step.mu);
+    report_bool(out, "steady", f->steady_step >= 0);
+    report_int(out, "steady_step", f->steady_step);
+    report_real(out, "dudt_max_m_per_s2", f->step.dudt_max);
+    report_real(out, "kinetic_energy_J_per_m", totals[3]);
+    report_real(out, "div_max_per_s", max_divergence(f));
+    report_real(out, "node_updates_per_s",
+                run->wall_s > 0 ? (double)c->n * (double)run->steps / run->wall_s : 0.0);
+}
+
+static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
+    const PddoFlow *f = impl;
+    const PddoCloud *c = &f->cloud;
+    const PddoFlowConfig *cfg = &f->cfg;
+    static const char *const KIND[] = {"wall", "inlet", "outlet", "periodic"};
+    int len = 0;
+#define APPEND(...)                                                                                \
+    len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
+    APPEND(
+        "PDDO rectangle       [%.6g, %.6g] x [%.6g, %.6g] m, spacing %.4g m, %d x %d intervals\n",
+        cfg->cloud.lo[0], cfg->cloud.hi[0], cfg->cloud.lo[1], cfg->cloud.hi[1], c->dx, c->nx,
+        c->ny);
+    APPEND("nodes                %lld (%lld physical, %d fictitious layers), horizon %.3g dx, "
+           "%.1f neighbours per node\n",
+           (long long)c->n, (long long)f->physical, c->layers, cfg->cloud.horizon_factor,
+           (double)c->first[c->n] / (double)c->n);
+    APPEND("sides                left %s, right %s, bottom %s, top %s; wall ghosts %s\n",
+           KIND[c->side[0]], KIND[c->side[1]], KIND[c->side[2]], KIND[c->side[3]],
+           cfg->step.walls == PDDO_WALL_ANTISYMMETRIC ? "antisymmetric" : "paper (zero)");
+    APPEND("fluid                rho %.6g kg/m^3, mu %.6g Pa s, Re %.6g (U %.4g m/s, L %.4g m)\n",
+           cfg->step.rho, cfg->step.mu,
+           cfg->step.rho * cfg->reference_velocity * cfg->reference_length / cfg->step.mu,
+           cfg->reference_velocity, cfg->reference_length);
+    APPEND("time step            %.6g s (stable limit %.6g s)\n", cfg->step.dt,
+           pddo_flow_dt_limit(cfg));
+    APPEND("pressure equation    %lld nonzeros, L+U %.4g nonzeros (%.1f MB), rcond %.2g, %s, "
+           "set up in %.2f s\n",
+           (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, f->ppe.rcond,
+           f->ppe.pinned >= 0 ? "level pinned" : "level fixed by the outlet", f->setup_s);
+    APPEND(
+        "memory               %.1f MB in arrays (%.0f bytes per node) and %.1f MB of LU factors\n",
+        (double)memory / 1e6, (double)memory / (double)c->n, f->ppe.factor_bytes / 1e6);
+#undef APPEND
+}
+
+static void pddo_brief(const void *impl, char *buf, size_t size) {
+    const PddoFlow *f = impl;
+    snprintf(buf, size, "%lld PDDO nodes, ", (long long)f->cloud.n);
+}
+
+static int64_t pddo_fallbacks_total(const void *impl) {
+    (void)impl;
+    return 0;
+}
+
+static int compare_double(const void *a, const void *b) {
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The 1st and 99th percentiles of v (n values): a picture's range that
+ * the singular corners of a cavity or an inlet do not swamp. */
+static void range(PddoFlow *f, const double *v, int64_t n, double *lo, double *hi) {
+    memcpy(f->sorted, v, (size_t)n * sizeof *v);
+    qsort(f->sorted, (size_t)n, sizeof *f->sorted, compare_double);
+    *lo = f->sorted[n / 100];
+    *hi = f->sorted[n - 1 - n / 100];
+    if (!(*hi > *lo)) *hi = *lo + 1.0;
+}
+
+static void pddo_fields(void *impl, FieldSet *out) {
+    PddoFlow *f = impl;
+    const PddoCloud *c = &f->cloud;
+    double *const *o = f->out;
+    double *const *g = f->node;
+    max_divergence(f); /* the velocity gradients into node[] */
+    for (int64_t q = 0; q < f->physical; q++) {
+        const int64_t k = f->phys[q];
+        const double u = f->step.u[k], v = f->step.v[k];
+        o[OU][q] = u, o[OV][q] = v, o[OP][q] = f->step.p[k];
+        o[OW][q] = g[GVX][k] - g[GUY][k];
+        o[OD][q] = g[GUX][k] + g[GVY][k];
+        o[OS][q] = hypot(u, v);
+    }
+    memset(out, 0, sizeof *out);
+    out->series = "flow";
+    out->mesh = MESH_POINTS;
+    out->n = f->physical;
+    out->dim = 2;
+    out->position[0] = o[OX];
+    out->position[1] = o[OY];
+    out->spacing = c->dx;
+    const FieldRef fields[] = {
+        {"velocity", 3, {o[OU], o[OV], NULL}}, {"pressure", 1, {o[OP], NULL, NULL}},
+        {"vorticity", 1, {o[OW], NULL, NULL}}, {"divergence", 1, {o[OD], NULL, NULL}},
+        {"speed", 1, {o[OS], NULL, NULL}},     {"node_kind", 1, {o[OK_KIND], NULL, NULL}},
+    };
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
+        out->field[out->field_count++] = fields[k];
+    double plo, phi, wlo, whi;
+    range(f, o[OP], f->physical, &plo, &phi);
+    range(f, o[OW], f->physical, &wlo, &whi);
+    const double wmax = fmax(fabs(wlo), fabs(whi));
+    out->picture[out->picture_count++] = (PictureRef){.file = "speed",
+                                                      .label = "speed",
+                                                      .units = "m/s",
+                                                      .values = o[OS],
+                                                      .lo = 0.0,
+                                                      .hi = 1.1 * f->cfg.velocity_scale,
+                                                      .map = COLORMAP_VIRIDIS};
+    out->picture[out->picture_count++] = (PictureRef){.file = "pressure",
+                                                      .label = "pressure (1st-99th percentile)",
+                                                      .units = "Pa",
+                                                      .values = o[OP],
+                                                      .lo = plo,
+                                                      .hi = phi,
+                                                      .map = COLORMAP_VIRIDIS};
+    out->picture[out->picture_count++] = (PictureRef){.file = "vorticity",
+                                                      .label = "vorticity (to the 99th percentile)",
+                                                      .units = "1/s",
+                                                      .values = o[OW],
+                                                      .lo = -wmax,
+                                                      .hi = wmax,
+                                                      .map = COLORMAP_INFERNO};
+    for (int l = 0; l < f->cfg.line_count; l++) {
+        double *const *col = f->line_col[l];
+        for (int64_t r = 0; r < f->line_rows[l]; r++) {
+            const int32_t a = f->line_a[l][r], b = f->line_b[l][r];
+            const double w = f->line_w[l][r], w0 = 1.0 - w;
+            col[0][r] = w0 * c->x[a] + w * c->x[b];
+            col[1][r] = w0 * c->y[a] + w * c->y[b];
+            col[2][r] = w0 * f->step.u[a] + w * f->step.u[b];
+            col[3][r] = w0 * f->step.v[a] + w * f->step.v[b];
+            col[4][r] = w0 * f->step.p[a] + w * f->step.p[b];
+        }
+        TableRef *t = &out->table[out->table_count++];
+        *t = (TableRef){.file = f->line_file[l],
+                        .header = "x,y,u,v,p",
+                        .rows = f->line_rows[l],
+                        .ncol = LINE_COLS};
+        for (int k = 0; k < LINE_COLS; k++) t->col[k] = col[k];
+    }
+}
+
+/* Everything a step changes: the velocity and pressure of every node, the
+ * clock, the last step's rate and the steady-state mark. */
+static int pddo_checkpoint(void *impl, Checkpoint *ck) {
+    PddoFlow *f = impl;
+    const int64_t n = f->cloud.n;
+    int64_t count = n;
+    TRY(checkpoint_io_array(ck, "pddo.u", f->step.u, sizeof(double), &count, n));
+    TRY(checkpoint_io_array(ck, "pddo.v", f->step.v, sizeof(double), &count, n));
+    TRY(checkpoint_io_array(ck, "pddo.p", f->step.p, sizeof(double), &count, n));
+    if (count != n)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "checkpoint: %lld PDDO nodes; the case has %lld",
+                         (long long)count, (long long)n);
+    TRY(checkpoint_io_double(ck, "pddo.time", &f->step.time));
+    TRY(checkpoint_io_int64(ck, "pddo.steps", &f->step.steps));
+    TRY(checkpoint_io_double(ck, "pddo.dt", &f->step.par.dt));
+    TRY(checkpoint_io_double(ck, "pddo.dudt_max", &f->step.dudt_max));
+    TRY(checkpoint_io_double(ck, "pddo.shift", &f->ppe.shift));
+    return checkpoint_io_int64(ck, "pddo.steady_step", &f->steady_step);
+}
+
+const FlowOps PDDO_FLOW_OPS = {
+    .name = "pddo",
+    .estimate = pddo_estimate,
+    .create = pddo_create,
+    .destroy = pddo_destroy,
+    .stable_dt = pddo_stable_dt,
+    .step = pddo_step,
+    .time = pddo_time,
+    .finished = pddo_finished,
+    .mesh = pddo_mesh,
+    .cell_state = pddo_cell_state,
+    .reference = pddo_reference,
+    .sample = NULL,
+    .set_sources = NULL,
+    .totals = pddo_totals,
+    .history = pddo_history,
+    .summary = pddo_summary,
+    .info = pddo_info,
+    .brief = pddo_brief,
+    .fallbacks_total = pddo_fallbacks_total,
+    .fields = pddo_fields,
+    .checkpoint = pddo_checkpoint,
+};

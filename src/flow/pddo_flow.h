@@ -1,0 +1,51 @@
+/* The PDDO incompressible flow of paper 002 (pddo_cloud, pddo_ops, pddo_ppe,
+ * pddo_step) as a flow model: its case configuration and the FlowOps table.
+ *
+ * The unknowns live on the nodes of a lattice cloud (MESH_POINTS): outputs
+ * are the physical nodes (fluid and side nodes; the fictitious layers are
+ * left out) with velocity, pressure, vorticity and divergence, pictures of
+ * speed, pressure and vorticity, and up to two line tables (u, v, p along a
+ * lattice row or column, the cavity's centrelines by default). The flow
+ * takes no sources and cannot be sampled between nodes (couplings and the
+ * driver's probes need a grid): both are refused with an input error by
+ * the interface. A steady-state tolerance on max |du/dt| ends the run
+ * early through FlowOps.finished. */
+#ifndef NSPD_FLOW_PDDO_FLOW_H
+#define NSPD_FLOW_PDDO_FLOW_H
+
+#include "flow/pddo_cloud.h"
+#include "flow/pddo_step.h"
+
+#include <stdbool.h>
+
+enum { PDDO_MAX_LINES = 2, PDDO_LINE_NAME = 32 };
+
+/* A line table: the lattice row (along x) or column (along y) through
+ * `at`, linearly interpolated between the two nearest when `at` lies
+ * between them. */
+typedef struct {
+    char name[PDDO_LINE_NAME]; /* the file line_<name>_NNNNN.csv */
+    double at[2];              /* m */
+    int along;                 /* 0: x, 1: y */
+} PddoLine;
+
+typedef struct {
+    PddoCloudSpec cloud;       /* no holes yet (the cylinder is not behind the interface) */
+    PddoStepParams step;       /* step.dt: the step of the case (given or chosen) */
+    double velocity_scale;     /* m/s: the lid, 1.5 times the inlet, or a body force's
+                                  Poiseuille maximum; sets the stable step and pictures */
+    double steady_tolerance;   /* m/s^2: the run ends once max |du/dt| falls below; 0: never */
+    double reference_length;   /* m: the rectangle's shorter side (the Reynolds number) */
+    double reference_velocity; /* m/s: the lid, the inlet's mean, or a body force's
+                                  Poiseuille mean (the Reynolds number) */
+    int line_count;
+    PddoLine lines[PDDO_MAX_LINES];
+} PddoFlowConfig;
+
+/* The largest stable step of a configuration (notes/pddo.md 1.5):
+ * min(1.61 dx^2 / nu, 2 nu / U^2) with U its velocity scale. */
+double pddo_flow_dt_limit(const PddoFlowConfig *c);
+
+extern const struct FlowOps PDDO_FLOW_OPS;
+
+#endif
