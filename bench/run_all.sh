@@ -23,5 +23,9 @@ done
 
 echo "== PD against LAMMPS peri/pmb"
 "$here/pd_vs_lammps.sh" "$nspd" 5
+echo "== correspondence solid (issue 14, nspd bench cpd) against the bond-based kernel"
+"$here/cpd_vs_bond.sh" "$nspd" 5
+echo "== correspondence against LAMMPS peri/eps"
+"$here/cpd_vs_lammps.sh" "$nspd" 5
 echo "== GKS against OpenFOAM rhoCentralFoam"
 "$here/gks_vs_openfoam.sh" "$nspd" 3
