@@ -105,7 +105,10 @@ void cpd_body_destroy(CpdBody *b);
  * CPD_REESTIMATE_STEPS steps, and once it has fallen below the undamaged
  * body's, a step longer than CPD_DAMAGED_SAFETY of it (time.safety_factor's
  * default) is taken in as many equal sub-steps as that needs. */
-enum { CPD_REESTIMATE_STEPS = 20, CPD_COLD_ITERATIONS = 80 };
+/* 30 cold iterations: the estimate is within 0.2 % of the converged one
+ * after 20 and 0.02 % after 40 on 16^2 to 64^2 blocks (measured), inside
+ * the 2 % margin of cpd_stable_dt; 80 made the set-up cost 95 steps */
+enum { CPD_REESTIMATE_STEPS = 20, CPD_COLD_ITERATIONS = 30 };
 #define CPD_DAMAGED_SAFETY 0.8
 int cpd_step(CpdBody *b, double dt);
 /* The force density at the current u into b->force, advancing the bond
