@@ -296,6 +296,10 @@ static int read_cpd_failure(CfgNode *s, CpdConfig *cfg) {
             return cfg_fail_at(f, "law",
                                "ductile failure needs plasticity; expected "
                                "solid.material.yield_stress > 0");
+    } else if (cfg->damage == CPD_DAMAGE_STRETCH) {
+        TRY(cfg_req_double(f, "critical_stretch", &cfg->critical_stretch));
+        TRY(cfg_check_positive(f, "critical_stretch", cfg->critical_stretch,
+                               "the bond stretch s_c at which a bond breaks"));
     } else if (cfg->damage == CPD_DAMAGE_BRITTLE) {
         TRY(cfg_req_double(f, "critical_stress", &cfg->critical_stress));
         TRY(cfg_check_positive(f, "critical_stress", cfg->critical_stress,

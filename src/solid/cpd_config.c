@@ -6,7 +6,8 @@
 
 const char *const CPD_FORCE_NAMES[CPD_FORCE_COUNT + 1] = {"bond_associated", "classic", NULL};
 const char *const CPD_FAMILY_NAMES[CPD_FAMILY_COUNT + 1] = {"square", "disc", NULL};
-const char *const CPD_DAMAGE_NAMES[CPD_DAMAGE_COUNT + 1] = {"none", "ductile", "brittle", NULL};
+const char *const CPD_DAMAGE_NAMES[CPD_DAMAGE_COUNT + 1] = {"none", "ductile", "brittle", "stretch",
+                                                            NULL};
 
 double cpd_pressure_at(const CpdPressure *p, double t) {
     if (t <= 0.0) return 0.0;

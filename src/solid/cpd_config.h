@@ -18,6 +18,7 @@ typedef enum {
     CPD_DAMAGE_NONE,
     CPD_DAMAGE_DUCTILE, /* bond equivalent plastic strain from threshold to critical */
     CPD_DAMAGE_BRITTLE, /* bond maximum principal stress past critical_stress */
+    CPD_DAMAGE_STRETCH, /* bond stretch past critical_stretch (bond-based PD's, for comparison) */
     CPD_DAMAGE_COUNT
 } CpdDamageLaw;
 
@@ -47,7 +48,8 @@ typedef struct {
     CpdDamageLaw damage;
     double plastic_strain_threshold, plastic_strain_critical; /* ductile: eps_th, eps_cr */
     double critical_stress;                                   /* brittle: sigma_cr, Pa */
-    double damage_ramp; /* brittle: relative width of the ramp below sigma_cr (0: a step) */
+    double damage_ramp;      /* brittle: relative width of the ramp below sigma_cr (0: a step) */
+    double critical_stretch; /* stretch: s_c */
     int pressure_count;
     CpdPressure *pressures;
 } CpdConfig;

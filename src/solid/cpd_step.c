@@ -78,6 +78,20 @@ static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
     case CPD_DAMAGE_BRITTLE:
         return j2_damage_brittle(fmax(b->principal[p], b->principal[q]), c->critical_stress,
                                  c->damage_ramp);
+    case CPD_DAMAGE_STRETCH: {
+        /* |xi + (u_j - u_i)|^2 against (1 + s_c)^2 |xi|^2: the same bits
+         * from both ends (negated operands, squares) */
+        const int64_t j = b->nbr[k];
+        double y2 = 0.0, x2 = 0.0;
+        for (int a = 0; a < b->dim; a++) {
+            const double xi = b->x[a][j] - b->x[a][i];
+            const double y = xi + (b->u[a][j] - b->u[a][i]);
+            y2 += y * y;
+            x2 += xi * xi;
+        }
+        const double limit = 1.0 + c->critical_stretch;
+        return y2 > limit * limit * x2 ? 1.0 : 0.0;
+    }
     default:
         return 0.0;
     }

@@ -518,6 +518,31 @@ static void test_debris_rule(void **state) {
     cpd_body_destroy(&b);
 }
 
+/* The critical-stretch law kept for comparison with bond-based PD: under
+ * F = diag(1.011, 1) and s_c = 0.01 exactly the bonds along x (stretch
+ * 0.011) break; the diagonal ones (at most 0.0088) and those along y stay. */
+static void test_stretch_law(void **state) {
+    (void)state;
+    CpdConfig c = block(10, 10, 1e-3);
+    c.damage = CPD_DAMAGE_STRETCH;
+    c.critical_stretch = 0.01;
+    CpdBody b;
+    make(&b, c);
+    const double F[4] = {1.011, 0.0, 0.0, 1.0};
+    set_homogeneous(&b, b.u_prev, (const double[4]){1, 0, 0, 1});
+    set_homogeneous(&b, b.u, F);
+    cpd_force(&b, 0.0);
+    int64_t broken = 0;
+    for (int64_t i = 0; i < b.n; i++)
+        for (int64_t k = b.first[i]; k < b.first[i + 1]; k++) {
+            const bool along_x = b.x[1][b.nbr[k]] == b.x[1][i];
+            assert_true(b.damage[k] == (along_x ? 1.0 : 0.0));
+            broken += along_x;
+        }
+    assert_true(broken > 0);
+    cpd_body_destroy(&b);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_homogeneous_paths_follow_the_material),
@@ -528,6 +553,7 @@ int main(void) {
         cmocka_unit_test(test_ductile_damage_ramp),
         cmocka_unit_test(test_fragments_and_pressure),
         cmocka_unit_test(test_debris_rule),
+        cmocka_unit_test(test_stretch_law),
     };
     if (getenv("TEST_FILTER")) cmocka_set_test_filter(getenv("TEST_FILTER"));
     return cmocka_run_group_tests(tests, NULL, NULL);
