@@ -355,6 +355,7 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
     CfgNode *c;
     TRY(cfg_opt_map(s, "correspondence", &c));
     int force = CPD_FORCE_BOND_ASSOCIATED, family = CPD_FAMILY_SQUARE;
+    cfg->rk_order = 2;
     /* C_s = 0.5: Peridynamics.jl's default for this penalty (ZEMSilling,
      * notes 1c.3), so the control model is the one most users run; on a
      * periodic patch it lifts every spurious zero-energy mode of the bare
@@ -379,6 +380,14 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
         if (!(stabilisation >= 0.0))
             return cfg_fail_at(c, "stabilisation", "must be >= 0, got %g", stabilisation);
         TRY(cfg_opt_enum(c, "family", CPD_FAMILY_NAMES, CPD_FAMILY_SQUARE, &family));
+        int64_t order;
+        TRY(cfg_opt_int(c, "rk_order", 2, &order));
+        if (order != 1 && order != 2)
+            return cfg_fail_at(c, "rk_order",
+                               "%lld; expected 1 (linear consistency) or 2 (quadratic, the "
+                               "paper's)",
+                               (long long)order);
+        cfg->rk_order = (int)order;
         TRY(cfg_end_map(c));
     }
     cfg->force = (CpdForce)force;

@@ -124,6 +124,7 @@ static int build(CpdBody *b, CpdConfig *cfg) {
     memset(cfg, 0, sizeof *cfg);
     cfg = &b->cfg;
     PdConfig *pd = &cfg->pd;
+    if (cfg->rk_order == 0) cfg->rk_order = 2; /* a configuration built in code */
     b->dim = pd->dim;
     b->spacing = pd->spacing;
     b->delta = pd->horizon_factor * pd->spacing;

@@ -45,6 +45,8 @@ typedef struct {
     CpdForce force;
     double stabilisation; /* classic: C_s of the zero-energy penalty (Silling 2017) */
     CpdFamily family;
+    int rk_order; /* bond_associated: RK gradient weights of order 1 or 2 (the paper's;
+                     0 means 2) */
     CpdDamageLaw damage;
     double plastic_strain_threshold, plastic_strain_critical; /* ductile: eps_th, eps_cr */
     double critical_stress;                                   /* brittle: sigma_cr, Pa */

@@ -22,14 +22,16 @@ double rk_kernel(int dim, const double xi[3], double delta) {
     return w;
 }
 
-/* Q(xi): the monomials of degree 1 and 2, each over delta (so that the
- * moment matrix is of order one whatever the units); returns their count. */
-static int monomials(int dim, const double xi[3], double delta, double q[RK_MAX_TERMS]) {
+/* Q(xi): the monomials of degree 1 to `order` (1 or 2), each over delta
+ * (so that the moment matrix is of order one whatever the units); returns
+ * their count. */
+static int monomials(int order, int dim, const double xi[3], double delta, double q[RK_MAX_TERMS]) {
     const double s[3] = {xi[0] / delta, xi[1] / delta, dim == 3 ? xi[2] / delta : 0.0};
     int m = 0;
     for (int a = 0; a < dim; a++) q[m++] = s[a];
-    for (int a = 0; a < dim; a++)
-        for (int b = a; b < dim; b++) q[m++] = s[a] * s[b];
+    if (order >= 2)
+        for (int a = 0; a < dim; a++)
+            for (int b = a; b < dim; b++) q[m++] = s[a] * s[b];
     return m;
 }
 
@@ -39,20 +41,20 @@ static void bond_vector(int dim, const double *const x[3], int64_t i, int64_t j,
 }
 
 /* Point i's weights; false (weights 0) when its M_i is singular. */
-static bool point_weights(int dim, int64_t i, const double *const x[3], const double *volume,
-                          const int64_t *first, const int32_t *nbr, double delta,
-                          const double *bond_scale, double *phi) {
+static bool point_weights(int order, int dim, int64_t i, const double *const x[3],
+                          const double *volume, const int64_t *first, const int32_t *nbr,
+                          double delta, const double *bond_scale, double *phi) {
     double M[RK_MAX_TERMS][RK_MAX_TERMS] = {{0}}, q[RK_MAX_TERMS] = {0}, xi[3] = {0};
     int m = 0;
     for (int64_t k = first[i]; k < first[i + 1]; k++) {
         bond_vector(dim, x, i, nbr[k], xi);
         const double w =
             rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0) * volume[nbr[k]];
-        m = monomials(dim, xi, delta, q);
+        m = monomials(order, dim, xi, delta, q);
         for (int r = 0; r < m; r++)
             for (int c = 0; c <= r; c++) M[r][c] += w * q[r] * q[c];
     }
-    if (m == 0) m = dim == 3 ? 9 : 5; /* no neighbour: singular */
+    if (m == 0) m = order == 1 ? dim : (dim == 3 ? 9 : 5); /* no neighbour: singular */
     for (int r = 0; r < m; r++)
         for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
     double scale[RK_MAX_TERMS];
@@ -66,7 +68,7 @@ static bool point_weights(int dim, int64_t i, const double *const x[3], const do
         bond_vector(dim, x, i, nbr[k], xi);
         const double w = rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
         double z[RK_MAX_TERMS] = {0};
-        monomials(dim, xi, delta, q);
+        monomials(order, dim, xi, delta, q);
         spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, q, z);
         for (int a = 0; a < dim; a++) out[a] = w * z[a] / delta;
     }
@@ -76,26 +78,22 @@ static bool point_weights(int dim, int64_t i, const double *const x[3], const do
 int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const double *volume,
                             const int64_t *first, const int32_t *nbr, double delta,
                             const double *bond_scale, double *phi, uint8_t *ok) {
-    if (dim != 2 && dim != 3) return n;
-    int64_t missing = 0;
-#pragma omp parallel for schedule(static) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        ok[i] = point_weights(dim, i, x, volume, first, nbr, delta, bond_scale, phi) ? 1 : 0;
-        missing += ok[i] ? 0 : 1;
-    }
-    return missing;
+    return rk_gradient_weights_of(2, dim, n, x, volume, first, nbr, delta, bond_scale, NULL, phi,
+                                  ok);
 }
 
-int64_t rk_gradient_weights_redo(int dim, int64_t n, const double *const x[3], const double *volume,
-                                 const int64_t *first, const int32_t *nbr, double delta,
-                                 const double *bond_scale, const uint8_t *redo, double *phi,
-                                 uint8_t *ok) {
-    if (dim != 2 && dim != 3) return n;
+int64_t rk_gradient_weights_of(int order, int dim, int64_t n, const double *const x[3],
+                               const double *volume, const int64_t *first, const int32_t *nbr,
+                               double delta, const double *bond_scale, const uint8_t *redo,
+                               double *phi, uint8_t *ok) {
+    if ((dim != 2 && dim != 3) || (order != 1 && order != 2)) return n;
     int64_t missing = 0;
+    /* dynamic: a redo list is sparse and uneven; each point's weights are
+     * its own, so the bits do not depend on the schedule */
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
-        if (!redo[i]) continue;
-        ok[i] = point_weights(dim, i, x, volume, first, nbr, delta, bond_scale, phi) ? 1 : 0;
+        if (redo && !redo[i]) continue;
+        ok[i] = point_weights(order, dim, i, x, volume, first, nbr, delta, bond_scale, phi) ? 1 : 0;
         missing += ok[i] ? 0 : 1;
     }
     return missing;

@@ -40,13 +40,15 @@ int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const 
                             const int64_t *first, const int32_t *nbr, double delta,
                             const double *bond_scale, double *phi, uint8_t *ok);
 
-/* The same for the points with redo[i] != 0 only (the others' weights and
- * ok untouched): after damage grew in their families. Returns the number of
- * those points without weights. */
-int64_t rk_gradient_weights_redo(int dim, int64_t n, const double *const x[3], const double *volume,
-                                 const int64_t *first, const int32_t *nbr, double delta,
-                                 const double *bond_scale, const uint8_t *redo, double *phi,
-                                 uint8_t *ok);
+/* The same of order 1 (linear consistency: Q = xi / delta only, exact for
+ * linear fields) or 2, for every point (redo NULL) or only those with
+ * redo[i] != 0 (after damage grew in their families; the others' weights
+ * and ok untouched). Returns the number of those points without weights;
+ * n for a dim or order out of range. */
+int64_t rk_gradient_weights_of(int order, int dim, int64_t n, const double *const x[3],
+                               const double *volume, const int64_t *first, const int32_t *nbr,
+                               double delta, const double *bond_scale, const uint8_t *redo,
+                               double *phi, uint8_t *ok);
 
 /* The nonlocal gradient of a field f (one value per point) at point i:
  * g[a] = sum_j (f_j - f_i) phi_ij,a V_j. */
