@@ -380,6 +380,9 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
         if (!(stabilisation >= 0.0))
             return cfg_fail_at(c, "stabilisation", "must be >= 0, got %g", stabilisation);
         TRY(cfg_opt_enum(c, "family", CPD_FAMILY_NAMES, CPD_FAMILY_SQUARE, &family));
+        int kernel;
+        TRY(cfg_opt_enum(c, "kernel", RK_KERNEL_NAMES, RK_KERNEL_CUBIC_TENSOR, &kernel));
+        cfg->kernel = (RkKernel)kernel;
         int64_t order;
         TRY(cfg_opt_int(c, "rk_order", 2, &order));
         if (order != 1 && order != 2)

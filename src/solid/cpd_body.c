@@ -156,7 +156,7 @@ static int build(CpdBody *b, CpdConfig *cfg) {
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
             double xi[3] = {0, 0, 0};
             for (int a = 0; a < b->dim; a++) xi[a] = b->x[a][b->nbr[k]] - b->x[a][i];
-            b->omega[k] = rk_kernel(b->dim, xi, b->delta);
+            b->omega[k] = rk_kernel_of(cfg->kernel, b->dim, xi, b->delta);
             b->scale[k] = 1.0;
             const double xj[3] = {b->x[0][b->nbr[k]], b->x[1][b->nbr[k]], b->x[2][b->nbr[k]]};
             const double xp[3] = {b->x[0][i], b->x[1][i], b->x[2][i]};

@@ -8,6 +8,7 @@
 #define NSPD_SOLID_CPD_CONFIG_H
 
 #include "solid/pd_config.h"
+#include "solid/rk_gradient.h"
 
 /* bond_associated: solid/bac_force.h (state per bond); classic: Silling's
  * correspondence with the zero-energy penalty, solid/classic_force.h (state
@@ -45,8 +46,9 @@ typedef struct {
     CpdForce force;
     double stabilisation; /* classic: C_s of the zero-energy penalty (Silling 2017) */
     CpdFamily family;
-    int rk_order; /* bond_associated: RK gradient weights of order 1 or 2 (the paper's;
-                     0 means 2) */
+    RkKernel kernel; /* the influence function omega (both forces) */
+    int rk_order;    /* bond_associated: RK gradient weights of order 1 or 2 (the paper's;
+                        0 means 2) */
     CpdDamageLaw damage;
     double plastic_strain_threshold, plastic_strain_critical; /* ductile: eps_th, eps_cr */
     double critical_stress;                                   /* brittle: sigma_cr, Pa */

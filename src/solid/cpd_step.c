@@ -52,9 +52,9 @@ int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo) {
         const ClassicSystem s = classic_of(b);
         return classic_shape_check(&s, redo, b->ok);
     }
-    return rk_gradient_weights_of(b->cfg.rk_order, b->dim, b->n, (const double *const *)b->x,
-                                  b->volume, b->first, b->nbr, b->delta, b->scale, redo, b->phi,
-                                  b->ok);
+    return rk_gradient_weights_of(b->cfg.rk_order, b->cfg.kernel, b->dim, b->n,
+                                  (const double *const *)b->x, b->volume, b->first, b->nbr,
+                                  b->delta, b->scale, redo, b->phi, b->ok);
 }
 
 /* The damage law of the configuration for the state of bond k = (i -> j)

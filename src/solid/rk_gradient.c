@@ -16,10 +16,20 @@ static double bspline(double r) {
     return 0.0;
 }
 
+const char *const RK_KERNEL_NAMES[RK_KERNEL_COUNT + 1] = {"cubic_bspline", "cubic_bspline_radial",
+                                                          NULL};
+
 double rk_kernel(int dim, const double xi[3], double delta) {
     double w = 1.0;
     for (int a = 0; a < dim; a++) w *= bspline(fabs(xi[a]) / delta);
     return w;
+}
+
+double rk_kernel_of(RkKernel kind, int dim, const double xi[3], double delta) {
+    if (kind == RK_KERNEL_CUBIC_TENSOR) return rk_kernel(dim, xi, delta);
+    double r2 = 0.0;
+    for (int a = 0; a < dim; a++) r2 += xi[a] * xi[a];
+    return bspline(sqrt(r2) / delta);
 }
 
 /* Q(xi): the monomials of degree 1 to `order` (1 or 2), each over delta
@@ -41,15 +51,15 @@ static void bond_vector(int dim, const double *const x[3], int64_t i, int64_t j,
 }
 
 /* Point i's weights; false (weights 0) when its M_i is singular. */
-static bool point_weights(int order, int dim, int64_t i, const double *const x[3],
+static bool point_weights(int order, RkKernel kernel, int dim, int64_t i, const double *const x[3],
                           const double *volume, const int64_t *first, const int32_t *nbr,
                           double delta, const double *bond_scale, double *phi) {
     double M[RK_MAX_TERMS][RK_MAX_TERMS] = {{0}}, q[RK_MAX_TERMS] = {0}, xi[3] = {0};
     int m = 0;
     for (int64_t k = first[i]; k < first[i + 1]; k++) {
         bond_vector(dim, x, i, nbr[k], xi);
-        const double w =
-            rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0) * volume[nbr[k]];
+        const double w = rk_kernel_of(kernel, dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0) *
+                         volume[nbr[k]];
         m = monomials(order, dim, xi, delta, q);
         for (int r = 0; r < m; r++)
             for (int c = 0; c <= r; c++) M[r][c] += w * q[r] * q[c];
@@ -66,7 +76,7 @@ static bool point_weights(int order, int dim, int64_t i, const double *const x[3
             continue;
         }
         bond_vector(dim, x, i, nbr[k], xi);
-        const double w = rk_kernel(dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
+        const double w = rk_kernel_of(kernel, dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
         double z[RK_MAX_TERMS] = {0};
         monomials(order, dim, xi, delta, q);
         spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, q, z);
@@ -78,14 +88,14 @@ static bool point_weights(int order, int dim, int64_t i, const double *const x[3
 int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const double *volume,
                             const int64_t *first, const int32_t *nbr, double delta,
                             const double *bond_scale, double *phi, uint8_t *ok) {
-    return rk_gradient_weights_of(2, dim, n, x, volume, first, nbr, delta, bond_scale, NULL, phi,
-                                  ok);
+    return rk_gradient_weights_of(2, RK_KERNEL_CUBIC_TENSOR, dim, n, x, volume, first, nbr, delta,
+                                  bond_scale, NULL, phi, ok);
 }
 
-int64_t rk_gradient_weights_of(int order, int dim, int64_t n, const double *const x[3],
-                               const double *volume, const int64_t *first, const int32_t *nbr,
-                               double delta, const double *bond_scale, const uint8_t *redo,
-                               double *phi, uint8_t *ok) {
+int64_t rk_gradient_weights_of(int order, RkKernel kernel, int dim, int64_t n,
+                               const double *const x[3], const double *volume, const int64_t *first,
+                               const int32_t *nbr, double delta, const double *bond_scale,
+                               const uint8_t *redo, double *phi, uint8_t *ok) {
     if ((dim != 2 && dim != 3) || (order != 1 && order != 2)) return n;
     int64_t missing = 0;
     /* dynamic: a redo list is sparse and uneven; each point's weights are
@@ -93,7 +103,9 @@ int64_t rk_gradient_weights_of(int order, int dim, int64_t n, const double *cons
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         if (redo && !redo[i]) continue;
-        ok[i] = point_weights(order, dim, i, x, volume, first, nbr, delta, bond_scale, phi) ? 1 : 0;
+        ok[i] = point_weights(order, kernel, dim, i, x, volume, first, nbr, delta, bond_scale, phi)
+                    ? 1
+                    : 0;
         missing += ok[i] ? 0 : 1;
     }
     return missing;

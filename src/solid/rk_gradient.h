@@ -22,8 +22,17 @@
 
 #include <stdint.h>
 
-/* The kernel w(xi) for a bond xi (dim components) and support half-width delta. */
+/* The influence functions: the tensor product of cubic B-splines (support
+ * the square |xi|_inf <= delta; the paper's "rectangular support", PdShell's
+ * kernel) or the radial cubic B-spline b(|xi| / delta) (support the disc). */
+typedef enum { RK_KERNEL_CUBIC_TENSOR, RK_KERNEL_CUBIC_RADIAL, RK_KERNEL_COUNT } RkKernel;
+extern const char *const RK_KERNEL_NAMES[RK_KERNEL_COUNT + 1];
+
+/* The tensor kernel w(xi) for a bond xi (dim components) and support
+ * half-width delta. */
 double rk_kernel(int dim, const double xi[3], double delta);
+/* The kernel of the given kind. */
+double rk_kernel_of(RkKernel kind, int dim, const double xi[3], double delta);
 
 /* Smallest accepted ratio of the smallest to the largest pivot of M_i's
  * Cholesky factorisation (M_i scaled to a unit diagonal): below it the
@@ -41,14 +50,13 @@ int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const 
                             const double *bond_scale, double *phi, uint8_t *ok);
 
 /* The same of order 1 (linear consistency: Q = xi / delta only, exact for
- * linear fields) or 2, for every point (redo NULL) or only those with
- * redo[i] != 0 (after damage grew in their families; the others' weights
- * and ok untouched). Returns the number of those points without weights;
- * n for a dim or order out of range. */
-int64_t rk_gradient_weights_of(int order, int dim, int64_t n, const double *const x[3],
-                               const double *volume, const int64_t *first, const int32_t *nbr,
-                               double delta, const double *bond_scale, const uint8_t *redo,
-                               double *phi, uint8_t *ok);
+ * linear fields) or 2, with the kernel of the given kind, for every point (redo NULL) or only those
+ * with redo[i] != 0 (after damage grew in their families; the others' weights and ok untouched).
+ * Returns the number of those points without weights; n for a dim or order out of range. */
+int64_t rk_gradient_weights_of(int order, RkKernel kernel, int dim, int64_t n,
+                               const double *const x[3], const double *volume, const int64_t *first,
+                               const int32_t *nbr, double delta, const double *bond_scale,
+                               const uint8_t *redo, double *phi, uint8_t *ok);
 
 /* The nonlocal gradient of a field f (one value per point) at point i:
  * g[a] = sum_j (f_j - f_i) phi_ij,a V_j. */
