@@ -50,9 +50,7 @@ typedef struct {
     PddoForces forces;
     PddoForce force;
     double force_sum[6], averaged_s;
-    int64_t crossings, armed;
-    double lift_prev_t, lift_prev, first_cross_t, last_cross_t;
-    double run_max, run_min, amp_max, amp_min; /* lift since the first crossing; at the last */
+    PddoLiftPeriods lift;
 } PddoFlow;
 
 double pddo_flow_dt_limit(const PddoFlowConfig *c) {
@@ -252,10 +250,7 @@ static double lift_threshold(const PddoFlow *f) {
 }
 
 /* The body's force after a step of dt; from average_from on its dt-weighted
- * sums and the lift's upward zero crossings: one counts when the lift goes
- * from below 0 to 0 or above after it was below -threshold since the last
- * one, at the time interpolated linearly between the two steps. The lift's
- * extremes between the first and the last crossing give the amplitude. */
+ * sums and the lift's periods (pddo_lift_periods_add). */
 static void record_force(PddoFlow *f, double dt) {
     const PddoForce F = pddo_forces_eval(&f->forces, PDDO_TRACTION_FLUID_SIDE, NULL, f->step.u,
                                          f->step.v, f->step.p, f->cfg.step.mu);
@@ -265,21 +260,8 @@ static void record_force(PddoFlow *f, double dt) {
     const double part[6] = {F.fx, F.fy, F.fx_pressure, F.fx_viscous, F.fy_pressure, F.fy_viscous};
     for (int k = 0; k < 6; k++) f->force_sum[k] += part[k] * dt;
     f->averaged_s += dt;
-    const double lift = F.fy;
-    if (f->averaged_s > dt && f->armed && f->lift_prev < 0.0 && lift >= 0.0) {
-        const double tc =
-            f->lift_prev_t + (t - f->lift_prev_t) * (-f->lift_prev) / (lift - f->lift_prev);
-        if (f->crossings == 0)
-            f->first_cross_t = tc, f->run_max = f->run_min = lift;
-        else
-            f->amp_max = f->run_max, f->amp_min = f->run_min;
-        f->last_cross_t = tc;
-        f->crossings++;
-        f->armed = 0;
-    }
-    if (f->crossings > 0) f->run_max = fmax(f->run_max, lift), f->run_min = fmin(f->run_min, lift);
-    if (lift < -lift_threshold(f)) f->armed = 1;
-    f->lift_prev_t = t, f->lift_prev = lift;
+    f->lift.threshold = lift_threshold(f);
+    pddo_lift_periods_add(&f->lift, t, F.fy);
 }
 
 static int pddo_step(void *impl, double dt) {
@@ -426,11 +408,10 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
         report_real(out, "lift_viscous_n", m[5] / T);
         report_real(out, "cd", m[0] / T / qL);
         report_real(out, "cl", m[1] / T / qL);
-        const int64_t periods = f->crossings > 1 ? f->crossings - 1 : 0;
+        double period, amp;
+        const int64_t periods = pddo_lift_periods_result(&f->lift, &period, &amp);
         report_int(out, "lift_periods", periods);
         if (periods > 0) {
-            const double period = (f->last_cross_t - f->first_cross_t) / (double)periods;
-            const double amp = 0.5 * (f->amp_max - f->amp_min);
             report_real(out, "lift_amplitude_n", amp);
             report_real(out, "cl_amplitude", amp / qL);
             report_real(out, "period_s", period);
@@ -596,11 +577,12 @@ static int pddo_checkpoint(void *impl, Checkpoint *ck) {
     if (f->cloud.npatches > 0) {
         int64_t six = 6;
         TRY(checkpoint_io_array(ck, "pddo.force_sum", f->force_sum, sizeof(double), &six, 6));
+        PddoLiftPeriods *lp = &f->lift;
         double *const d[] = {&f->force.fx,         &f->force.fy,          &f->force.fx_pressure,
                              &f->force.fx_viscous, &f->force.fy_pressure, &f->force.fy_viscous,
-                             &f->averaged_s,       &f->lift_prev_t,       &f->lift_prev,
-                             &f->first_cross_t,    &f->last_cross_t,      &f->run_max,
-                             &f->run_min,          &f->amp_max,           &f->amp_min};
+                             &f->averaged_s,       &lp->prev_t,           &lp->prev,
+                             &lp->first_t,         &lp->last_t,           &lp->run_max,
+                             &lp->run_min,         &lp->amp_max,          &lp->amp_min};
         static const char *const name[] = {"pddo.fx",         "pddo.fy",          "pddo.fx_p",
                                            "pddo.fx_v",       "pddo.fy_p",        "pddo.fy_v",
                                            "pddo.averaged_s", "pddo.lift_prev_t", "pddo.lift_prev",
@@ -608,8 +590,9 @@ static int pddo_checkpoint(void *impl, Checkpoint *ck) {
                                            "pddo.run_min",    "pddo.amp_max",     "pddo.amp_min"};
         for (size_t k = 0; k < sizeof d / sizeof d[0]; k++)
             TRY(checkpoint_io_double(ck, name[k], d[k]));
-        TRY(checkpoint_io_int64(ck, "pddo.crossings", &f->crossings));
-        TRY(checkpoint_io_int64(ck, "pddo.armed", &f->armed));
+        TRY(checkpoint_io_int64(ck, "pddo.lift_samples", &lp->samples));
+        TRY(checkpoint_io_int64(ck, "pddo.crossings", &lp->crossings));
+        TRY(checkpoint_io_int64(ck, "pddo.armed", &lp->armed));
     }
     return checkpoint_io_int64(ck, "pddo.steady_step", &f->steady_step);
 }
