@@ -14,6 +14,72 @@ enum { T_WALL, T_LID, T_INLET, T_OUTLET, T_PERIODIC };
 static const char *const PROFILES[] = {"uniform", "parabolic", NULL};
 static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
+static const char *const BODY_SHAPES[] = {"circle", NULL};
+
+/* `bodies`: circles on polar patches (paper 002 Sec. 4.1.2), at most
+ * PDDO_MAX_BODIES; the patch options of the first apply to all. */
+static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
+    CfgNode *seq = cfg_map_find(flow, "bodies");
+    if (!seq || seq->is_null) {
+        if (seq) seq->used = true;
+        return NSPD_OK;
+    }
+    TRY(cfg_req_seq(flow, "bodies", &seq));
+    if (seq->count > PDDO_MAX_BODIES)
+        return cfg_fail(seq, "%d bodies; expected at most %d (one polar patch)", seq->count,
+                        PDDO_MAX_BODIES);
+    const double dx = c->cloud.dx;
+    for (int b = 0; b < seq->count; b++) {
+        CfgNode *m = seq->child[b];
+        if (m->kind != CFG_MAP)
+            return cfg_fail(m, "not a body; expected {shape: circle, center, radius}");
+        int shape;
+        TRY(cfg_req_enum(m, "shape", BODY_SHAPES, &shape));
+        PddoHole *h = &c->bodies[b];
+        double centre[2];
+        TRY(cfg_req_vec(m, "center", 2, centre));
+        h->x = centre[0], h->y = centre[1];
+        TRY(cfg_req_double(m, "radius", &h->radius));
+        TRY(cfg_check_positive(m, "radius", h->radius, "the circle's radius in m"));
+        if (!(h->x - h->radius > c->cloud.lo[0] && h->x + h->radius < c->cloud.hi[0] &&
+              h->y - h->radius > c->cloud.lo[1] && h->y + h->radius < c->cloud.hi[1]))
+            return cfg_fail_at(m, "center",
+                               "[%g, %g] with radius %g m is not inside the rectangle; expected "
+                               "a circle inside it",
+                               h->x, h->y, h->radius);
+        double r_patch, dtheta, dr;
+        TRY(cfg_opt_double(m, "patch_radius", 3.0 * h->radius, &r_patch));
+        TRY(cfg_check_range(m, "patch_radius", r_patch, h->radius + 2.0 * dx, 1e30,
+                            "the polar patch's outer radius in m, at least the radius plus two "
+                            "spacings"));
+        TRY(cfg_opt_double(m, "dtheta", dx / r_patch, &dtheta));
+        TRY(cfg_check_range(m, "dtheta", dtheta, 1e-4, M_PI / 4.0,
+                            "the ring's angular spacing in rad (default spacing / patch_radius)"));
+        TRY(cfg_opt_double(m, "dr_over_spacing", PDDO_POLAR_DR_OVER_DX, &dr));
+        TRY(cfg_check_range(m, "dr_over_spacing", dr, 0.1, 2.0,
+                            "the rings' radial spacing over the lattice spacing (the paper: "
+                            "0.69)"));
+        c->polar = (PddoPolarSpec){.dtheta = dtheta, .dr = dr * dx, .r_patch = r_patch};
+        PddoPolarPatch patch;
+        if (pddo_polar_layout(&patch, h->x, h->y, h->radius, &c->polar, dx) != NSPD_OK)
+            return cfg_fail_at(m, "radius",
+                               "%g m with patch_radius %g m, dtheta %g, dr %g m: no polar patch "
+                               "fits (%s); expected a radius above three rings and a patch with "
+                               "more fluid rings than three",
+                               h->radius, r_patch, dtheta, dr * dx, nspd_error_message());
+        /* the cloud's room: two fictitious layers' depth beyond r_cut */
+        const double reach = patch.r_cut + 2.0 * c->cloud.layers * dx;
+        if (!(h->x - reach > c->cloud.lo[0] && h->x + reach < c->cloud.hi[0] &&
+              h->y - reach > c->cloud.lo[1] && h->y + reach < c->cloud.hi[1]))
+            return cfg_fail_at(m, "patch_radius",
+                               "%g m: the patch and 2 x 3 fictitious layers reach %g m from "
+                               "the centre, beyond the rectangle; expected a smaller patch",
+                               r_patch, reach);
+        TRY(cfg_end_map(m));
+        c->body_count = b + 1;
+    }
+    return NSPD_OK;
+}
 
 /* One side's condition; *lid and *inlet the speeds read (0 if none). */
 static int read_side(CfgNode *bcs, int s, PddoFlowConfig *c, int *type, double *lid,
@@ -220,6 +286,7 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     TRY(cfg_check_range(flow, "steady_tolerance", c->steady_tolerance, 0.0, 1e30,
                         "max |du/dt| in m/s^2 below which the run ends, 0 for never"));
     TRY(read_lines(flow, c));
+    TRY(read_bodies(flow, c));
     /* scales: the lid, the inlet (a channel's middle reaches 1.5 times its
      * mean), a body force's Poiseuille maximum F H^2 / (8 nu) */
     const double len[2] = {c->cloud.hi[0] - c->cloud.lo[0], c->cloud.hi[1] - c->cloud.lo[1]};
@@ -227,8 +294,21 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     const double driven =
         fmax(fabs(force[0]) * len[1] * len[1], fabs(force[1]) * len[0] * len[0]) / (8.0 * nu);
     c->velocity_scale = fmax(fmax(lid, 1.5 * inlet), driven);
-    c->reference_length = fmin(len[0], len[1]);
+    c->reference_length = c->body_count > 0 ? 2.0 * c->bodies[0].radius : fmin(len[0], len[1]);
     c->reference_velocity = lid > 0.0 ? lid : inlet > 0.0 ? inlet : 2.0 / 3.0 * driven;
+    CfgNode *ref = cfg_map_find(flow, "reference");
+    if (ref && !ref->is_null) {
+        TRY(cfg_req_map(flow, "reference", &ref));
+        TRY(cfg_opt_double(ref, "velocity", c->reference_velocity, &c->reference_velocity));
+        TRY(cfg_check_positive(ref, "velocity", c->reference_velocity,
+                               "the reference speed of Re, cd and cl in m/s"));
+        TRY(cfg_opt_double(ref, "length", c->reference_length, &c->reference_length));
+        TRY(cfg_check_positive(ref, "length", c->reference_length,
+                               "the reference length of Re, cd and cl in m"));
+        TRY(cfg_end_map(ref));
+    } else if (ref) {
+        ref->used = true;
+    }
     if (!(c->velocity_scale > 0.0))
         return cfg_fail_at(flow, "boundaries",
                            "nothing drives the flow; expected a lid, an inlet or a body_force");

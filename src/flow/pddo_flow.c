@@ -7,6 +7,7 @@
 #include "core/status.h"
 #include "core/timer.h"
 #include "flow/flow.h"
+#include "flow/pddo_forces.h"
 #include "flow/pddo_ops.h"
 #include "flow/pddo_ppe.h"
 
@@ -43,6 +44,13 @@ typedef struct {
     double *line_w[PDDO_MAX_LINES];
     double *line_col[PDDO_MAX_LINES][LINE_COLS];
     char line_file[PDDO_MAX_LINES][PDDO_LINE_NAME + 8];
+    /* the body's force (one body): the operators, the last step's force,
+     * the dt-weighted sums from average_from on (fx, fy, fx_p, fx_v, fy_p,
+     * fy_v; the time), and the lift's upward zero crossings there */
+    PddoForces forces;
+    PddoForce force;
+    double force_sum[6], averaged_s;
+    PddoLiftPeriods lift;
 } PddoFlow;
 
 double pddo_flow_dt_limit(const PddoFlowConfig *c) {
@@ -62,6 +70,19 @@ static void count_nodes(const PddoFlowConfig *c, double *nodes, double *members)
     *nodes = n[0] * n[1];
     const double h = s->horizon_factor;
     *members = *nodes * fmax(4.0, M_PI * h * h - 1.0);
+    for (int b = 0; b < c->body_count; b++) { /* the patch's rings for the lattice it removes */
+        PddoPolarPatch p;
+        if (pddo_polar_layout(&p, c->bodies[b].x, c->bodies[b].y, c->bodies[b].radius, &c->polar,
+                              s->dx) != NSPD_OK)
+            continue;
+        const double ring_nodes = (double)pddo_polar_count(&p);
+        const double removed = M_PI * p.r_cut * p.r_cut / (s->dx * s->dx);
+        *nodes += ring_nodes - removed;
+        /* ring families: about pi delta^2 / (dr r dtheta) at r = 2 R on average */
+        const double delta = h * s->dx;
+        *members += ring_nodes * M_PI * delta * delta / (p.dr * 2.0 * p.radius * p.dtheta) -
+                    removed * (M_PI * h * h - 1.0);
+    }
 }
 
 /* Bytes: the cloud (coordinates, area, indices, kinds: 52 per node, and
@@ -87,6 +108,7 @@ static FlowEstimate pddo_estimate(const FlowConfig *fc) {
 
 static void pddo_destroy(void *impl) {
     PddoFlow *f = impl;
+    pddo_forces_free(&f->forces);
     pddo_step_free(&f->step);
     pddo_ppe_free(&f->ppe);
     pddo_ops_free(&f->ops);
@@ -127,39 +149,58 @@ static int build_line(PddoFlow *f, int l) {
     if (w < 1e-9) w = 0.0;
     if (w > 1.0 - 1e-9) i0++, w = 0.0;
     const int i1 = w > 0.0 ? i0 + 1 : i0;
-    const int64_t rows = periodic_along ? n_along : n_along + 1;
+    const int64_t stations = periodic_along ? n_along : n_along + 1;
+    int64_t rows = 0; /* stations whose nodes exist (a polar patch removes some) */
+    for (int64_t r = 0; r < stations; r++) {
+        const int s = (int)r;
+        const int64_t a = along == 0 ? pddo_cloud_node(c, s, i0) : pddo_cloud_node(c, i0, s);
+        const int64_t b = along == 0 ? pddo_cloud_node(c, s, i1) : pddo_cloud_node(c, i1, s);
+        rows += a >= 0 && b >= 0;
+    }
+    if (rows == 0) return NSPD_FAIL(NSPD_ERR_INPUT, "line '%s': no lattice node on it", line->name);
     f->line_rows[l] = rows;
     TRY(nspd_alloc(&f->line_a[l], (size_t)rows, sizeof(int32_t)));
     TRY(nspd_alloc(&f->line_b[l], (size_t)rows, sizeof(int32_t)));
     TRY(nspd_alloc(&f->line_w[l], (size_t)rows, sizeof(double)));
     for (int k = 0; k < LINE_COLS; k++)
         TRY(nspd_alloc(&f->line_col[l][k], (size_t)rows, sizeof(double)));
-    for (int64_t r = 0; r < rows; r++) {
+    for (int64_t r = 0, st = 0; r < stations; r++) {
         const int s = (int)r;
         const int64_t a = along == 0 ? pddo_cloud_node(c, s, i0) : pddo_cloud_node(c, i0, s);
         const int64_t b = along == 0 ? pddo_cloud_node(c, s, i1) : pddo_cloud_node(c, i1, s);
-        if (a < 0 || b < 0)
-            return NSPD_FAIL(NSPD_ERR_INTERNAL, "line '%s': station %d has no node", line->name, s);
-        f->line_a[l][r] = (int32_t)a, f->line_b[l][r] = (int32_t)b, f->line_w[l][r] = w;
+        if (a < 0 || b < 0) continue;
+        f->line_a[l][st] = (int32_t)a, f->line_b[l][st] = (int32_t)b, f->line_w[l][st] = w;
+        st++;
     }
     snprintf(f->line_file[l], sizeof f->line_file[l], "line_%s", line->name);
     return NSPD_OK;
 }
 
+/* Nodes in the outputs and totals: fluid, side and a body's wall ring. */
+static bool is_physical(uint8_t kind) {
+    return kind == PDDO_NODE_FLUID || kind == PDDO_NODE_SIDE || kind == PDDO_NODE_WALL;
+}
+
 static int build(PddoFlow *f) {
     const double t0 = nspd_wall_time();
+    if (f->cfg.body_count > 0) {
+        f->cfg.cloud.holes = f->cfg.bodies;
+        f->cfg.cloud.nholes = f->cfg.body_count;
+        f->cfg.cloud.polar = &f->cfg.polar;
+    }
     TRY(pddo_cloud_build(&f->cloud, &f->cfg.cloud));
     const PddoCloud *c = &f->cloud;
     TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
     TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
     TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
+    if (c->npatches > 0) TRY(pddo_forces_build(&f->forces, c, 0));
     f->setup_s = nspd_wall_time() - t0;
     for (int64_t k = 0; k < c->n; k++)
-        if (c->kind[k] == PDDO_NODE_FLUID || c->kind[k] == PDDO_NODE_SIDE) f->physical++;
+        if (is_physical(c->kind[k])) f->physical++;
     TRY(nspd_alloc(&f->phys, (size_t)f->physical, sizeof(int64_t)));
     int64_t m = 0;
     for (int64_t k = 0; k < c->n; k++)
-        if (c->kind[k] == PDDO_NODE_FLUID || c->kind[k] == PDDO_NODE_SIDE) f->phys[m++] = k;
+        if (is_physical(c->kind[k])) f->phys[m++] = k;
     for (int k = 0; k < OUT_ARRAYS; k++)
         TRY(nspd_alloc(&f->out[k], (size_t)f->physical, sizeof(double)));
     for (int k = 0; k < NODE_ARRAYS; k++)
@@ -171,6 +212,7 @@ static int build(PddoFlow *f) {
         f->weight[q] = c->area[k];
         for (int s = 0; s < PDDO_SIDES; s++)
             if ((unsigned)c->sides[k] >> s & 1u) f->weight[q] *= 0.5;
+        if (c->kind[k] == PDDO_NODE_WALL) f->weight[q] *= 0.5; /* half in the body */
         f->out[OX][q] = c->x[k], f->out[OY][q] = c->y[k];
         f->out[OK_KIND][q] = c->kind[k];
     }
@@ -199,10 +241,34 @@ static double pddo_stable_dt(const void *impl) {
     return ((const PddoFlow *)impl)->cfg.step.dt;
 }
 
+/* The lift below which a crossing does not arm: |cl| = 1e-3 (round-off
+ * lifts of a symmetric steady flow, ~1e-13 N/m, never count). */
+static double lift_threshold(const PddoFlow *f) {
+    const PddoFlowConfig *c = &f->cfg;
+    return 1e-3 * 0.5 * c->step.rho * c->reference_velocity * c->reference_velocity *
+           c->reference_length;
+}
+
+/* The body's force after a step of dt; from average_from on its dt-weighted
+ * sums and the lift's periods (pddo_lift_periods_add). */
+static void record_force(PddoFlow *f, double dt) {
+    const PddoForce F = pddo_forces_eval(&f->forces, PDDO_TRACTION_FLUID_SIDE, NULL, f->step.u,
+                                         f->step.v, f->step.p, f->cfg.step.mu);
+    f->force = F;
+    const double t = f->step.time;
+    if (t < f->cfg.average_from) return;
+    const double part[6] = {F.fx, F.fy, F.fx_pressure, F.fx_viscous, F.fy_pressure, F.fy_viscous};
+    for (int k = 0; k < 6; k++) f->force_sum[k] += part[k] * dt;
+    f->averaged_s += dt;
+    f->lift.threshold = lift_threshold(f);
+    pddo_lift_periods_add(&f->lift, t, F.fy);
+}
+
 static int pddo_step(void *impl, double dt) {
     PddoFlow *f = impl;
     f->step.par.dt = dt; /* the driver shortens the last step to land on the end time */
     TRY(pddo_step_advance(&f->step));
+    if (f->cloud.npatches > 0) record_force(f, dt);
     if (f->steady_step < 0 && f->cfg.steady_tolerance > 0.0 &&
         f->step.dudt_max < f->cfg.steady_tolerance)
         f->steady_step = f->step.steps;
@@ -272,6 +338,10 @@ static double max_divergence(const PddoFlow *f) {
     return m;
 }
 
+static double dynamic_pressure(const PddoFlow *f) {
+    return 0.5 * f->cfg.step.rho * f->cfg.reference_velocity * f->cfg.reference_velocity;
+}
+
 static void pddo_history(const void *impl, Report *row) {
     const PddoFlow *f = impl;
     double totals[4];
@@ -283,6 +353,18 @@ static void pddo_history(const void *impl, Report *row) {
     report_precise(row, "momentum_y_kg_per_s", totals[2]);
     report_real(row, "div_max_per_s", max_divergence(f));
     report_real(row, "ppe_shift", f->ppe.shift);
+    if (f->cloud.npatches > 0) {
+        const PddoForce *F = &f->force;
+        const double qL = dynamic_pressure(f) * f->cfg.reference_length;
+        report_precise(row, "drag_n", F->fx);
+        report_precise(row, "lift_n", F->fy);
+        report_real(row, "drag_pressure_n", F->fx_pressure);
+        report_real(row, "drag_viscous_n", F->fx_viscous);
+        report_real(row, "lift_pressure_n", F->fy_pressure);
+        report_real(row, "lift_viscous_n", F->fy_viscous);
+        report_precise(row, "cd", F->fx / qL);
+        report_precise(row, "cl", F->fy / qL);
+    }
 }
 
 static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
@@ -308,6 +390,35 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "dudt_max_m_per_s2", f->step.dudt_max);
     report_real(out, "kinetic_energy_J_per_m", totals[3]);
     report_real(out, "div_max_per_s", max_divergence(f));
+    if (f->cloud.npatches > 0) {
+        const double qL = dynamic_pressure(f) * f->cfg.reference_length;
+        /* the means over the window; the last step's force when the run
+         * ended (steady) before it began */
+        const double T = f->averaged_s > 0.0 ? f->averaged_s : 1.0;
+        const double last[6] = {f->force.fx,         f->force.fy,          f->force.fx_pressure,
+                                f->force.fx_viscous, f->force.fy_pressure, f->force.fy_viscous};
+        const double *m = f->averaged_s > 0.0 ? f->force_sum : last;
+        report_real(out, "average_from_s", f->cfg.average_from);
+        report_real(out, "averaged_s", f->averaged_s);
+        report_real(out, "drag_n", m[0] / T);
+        report_real(out, "lift_n", m[1] / T);
+        report_real(out, "drag_pressure_n", m[2] / T);
+        report_real(out, "drag_viscous_n", m[3] / T);
+        report_real(out, "lift_pressure_n", m[4] / T);
+        report_real(out, "lift_viscous_n", m[5] / T);
+        report_real(out, "cd", m[0] / T / qL);
+        report_real(out, "cl", m[1] / T / qL);
+        double period, amp;
+        const int64_t periods = pddo_lift_periods_result(&f->lift, &period, &amp);
+        report_int(out, "lift_periods", periods);
+        if (periods > 0) {
+            report_real(out, "lift_amplitude_n", amp);
+            report_real(out, "cl_amplitude", amp / qL);
+            report_real(out, "period_s", period);
+            report_real(out, "strouhal",
+                        f->cfg.reference_length / (period * f->cfg.reference_velocity));
+        }
+    }
     report_real(out, "node_updates_per_s",
                 run->wall_s > 0 ? (double)c->n * (double)run->steps / run->wall_s : 0.0);
 }
@@ -463,6 +574,26 @@ static int pddo_checkpoint(void *impl, Checkpoint *ck) {
     TRY(checkpoint_io_double(ck, "pddo.dt", &f->step.par.dt));
     TRY(checkpoint_io_double(ck, "pddo.dudt_max", &f->step.dudt_max));
     TRY(checkpoint_io_double(ck, "pddo.shift", &f->ppe.shift));
+    if (f->cloud.npatches > 0) {
+        int64_t six = 6;
+        TRY(checkpoint_io_array(ck, "pddo.force_sum", f->force_sum, sizeof(double), &six, 6));
+        PddoLiftPeriods *lp = &f->lift;
+        double *const d[] = {&f->force.fx,         &f->force.fy,          &f->force.fx_pressure,
+                             &f->force.fx_viscous, &f->force.fy_pressure, &f->force.fy_viscous,
+                             &f->averaged_s,       &lp->prev_t,           &lp->prev,
+                             &lp->first_t,         &lp->last_t,           &lp->run_max,
+                             &lp->run_min,         &lp->amp_max,          &lp->amp_min};
+        static const char *const name[] = {"pddo.fx",         "pddo.fy",          "pddo.fx_p",
+                                           "pddo.fx_v",       "pddo.fy_p",        "pddo.fy_v",
+                                           "pddo.averaged_s", "pddo.lift_prev_t", "pddo.lift_prev",
+                                           "pddo.cross_0",    "pddo.cross_last",  "pddo.run_max",
+                                           "pddo.run_min",    "pddo.amp_max",     "pddo.amp_min"};
+        for (size_t k = 0; k < sizeof d / sizeof d[0]; k++)
+            TRY(checkpoint_io_double(ck, name[k], d[k]));
+        TRY(checkpoint_io_int64(ck, "pddo.lift_samples", &lp->samples));
+        TRY(checkpoint_io_int64(ck, "pddo.crossings", &lp->crossings));
+        TRY(checkpoint_io_int64(ck, "pddo.armed", &lp->armed));
+    }
     return checkpoint_io_int64(ck, "pddo.steady_step", &f->steady_step);
 }
 

@@ -18,7 +18,7 @@
 
 #include <stdbool.h>
 
-enum { PDDO_MAX_LINES = 2, PDDO_LINE_NAME = 32 };
+enum { PDDO_MAX_LINES = 2, PDDO_LINE_NAME = 32, PDDO_MAX_BODIES = 1 };
 
 /* A line table: the lattice row (along x) or column (along y) through
  * `at`, linearly interpolated between the two nearest when `at` lies
@@ -30,12 +30,17 @@ typedef struct {
 } PddoLine;
 
 typedef struct {
-    PddoCloudSpec cloud;       /* no holes yet (the cylinder is not behind the interface) */
+    PddoCloudSpec cloud; /* holes and polar set from bodies/polar when built */
+    int body_count;      /* circular bodies on polar patches (at most PDDO_MAX_BODIES) */
+    PddoHole bodies[PDDO_MAX_BODIES];
+    PddoPolarSpec polar;       /* the patch around each body */
+    double average_from;       /* s: force means and the lift's periods from this time on */
     PddoStepParams step;       /* step.dt: the step of the case (given or chosen) */
     double velocity_scale;     /* m/s: the lid, 1.5 times the inlet, or a body force's
                                   Poiseuille maximum; sets the stable step and pictures */
     double steady_tolerance;   /* m/s^2: the run ends once max |du/dt| falls below; 0: never */
-    double reference_length;   /* m: the rectangle's shorter side (the Reynolds number) */
+    double reference_length;   /* m: `reference.length`, else the body's diameter, else the
+                                  rectangle's shorter side (Reynolds number, coefficients) */
     double reference_velocity; /* m/s: the lid, the inlet's mean, or a body force's
                                   Poiseuille mean (the Reynolds number) */
     int line_count;

@@ -104,3 +104,28 @@ void pddo_forces_free(PddoForces *f) {
     nspd_free(&f->as);
     memset(f, 0, sizeof *f);
 }
+
+void pddo_lift_periods_add(PddoLiftPeriods *lp, double t, double lift) {
+    if (lp->samples > 0 && lp->armed && lp->prev < 0.0 && lift >= 0.0) {
+        const double tc = lp->prev_t + (t - lp->prev_t) * (-lp->prev) / (lift - lp->prev);
+        if (lp->crossings == 0)
+            lp->first_t = tc, lp->run_max = lp->run_min = lift;
+        else
+            lp->amp_max = lp->run_max, lp->amp_min = lp->run_min;
+        lp->last_t = tc;
+        lp->crossings++;
+        lp->armed = 0;
+    }
+    if (lp->crossings > 0)
+        lp->run_max = fmax(lp->run_max, lift), lp->run_min = fmin(lp->run_min, lift);
+    if (lift < -lp->threshold) lp->armed = 1;
+    lp->prev_t = t, lp->prev = lift;
+    lp->samples++;
+}
+
+int64_t pddo_lift_periods_result(const PddoLiftPeriods *lp, double *period, double *amplitude) {
+    const int64_t periods = lp->crossings > 1 ? lp->crossings - 1 : 0;
+    *period = periods > 0 ? (lp->last_t - lp->first_t) / (double)periods : 0.0;
+    *amplitude = periods > 0 ? 0.5 * (lp->amp_max - lp->amp_min) : 0.0;
+    return periods;
+}

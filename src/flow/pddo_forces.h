@@ -67,4 +67,26 @@ PddoForce pddo_forces_eval(const PddoForces *f, PddoTraction traction, const Pdd
 
 void pddo_forces_free(PddoForces *f);
 
+/* The period and amplitude of a lift signal (paper 002 Sec. 5.3, Re 100)
+ * from samples (t, lift) in time order: upward zero crossings, each at the
+ * time interpolated linearly between the sample below 0 and the next at 0
+ * or above, one counting only after the lift was below -threshold since
+ * the last (round-off lifts of a symmetric steady flow never count). The
+ * period is the time from the first crossing to the last over their number
+ * less one; the amplitude half of max - min of the samples between them.
+ * Zero it and set threshold before the first sample. */
+typedef struct {
+    double threshold; /* N/m, > 0 */
+    int64_t samples, crossings, armed;
+    double prev_t, prev, first_t, last_t;
+    double run_max, run_min; /* since the first crossing */
+    double amp_max, amp_min; /* between the first and the last */
+} PddoLiftPeriods;
+
+void pddo_lift_periods_add(PddoLiftPeriods *lp, double t, double lift);
+
+/* Whole periods so far (crossings less one, or 0); with at least one, the
+ * period (s) and amplitude (N/m). */
+int64_t pddo_lift_periods_result(const PddoLiftPeriods *lp, double *period, double *amplitude);
+
 #endif

@@ -129,6 +129,13 @@ check "PDDO lone periodic side" "flow.boundaries.x_max: the opposite side x_min 
     "$nspd" check "$cav" --set flow.boundaries.x_min.type=periodic
 check "PDDO flow probe" "probe 'probe0': probes on the flow need a grid; the 'pddo' solver has none" \
     "$nspd" run "$cav" -o "$work/result" --set "output.probes=[{type: point, on: flow, at: [0.0005, 0.0005]}]"
+cyl="$src/cases/cylinder_confined_re10.yaml"
+check "PDDO body patch too large" "flow.bodies\[0\].patch_radius: 2.01 m: the patch and 2 x 3 fictitious layers reach 3.18 m" \
+    "$nspd" check "$cyl" --set flow.spacing=0.2
+check "PDDO two bodies" "2 bodies; expected at most 1" \
+    "$nspd" check "$cyl" --set "flow.bodies=[{shape: circle, center: [5, 3], radius: 0.5}, {shape: circle, center: [9, 3], radius: 0.5}]"
+check "PDDO body shape" "flow.bodies\[0\].shape" \
+    "$nspd" check "$cyl" --set "flow.bodies=[{shape: naca, center: [5, 3], radius: 0.5}]"
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"
