@@ -6,7 +6,7 @@
  * (C4), the stable step with the penalty in the operator (C6), momentum
  * with damage and thread independence (C9). Fixtures as in
  * test_cpd_solid.c. */
-#include "pd_fixtures.h"
+#include "cpd_fixtures.h"
 #include "test_support.h"
 
 #include "core/mem.h"
@@ -19,38 +19,14 @@
 #include <string.h>
 
 /* paper 003's steel */
-static const double E_MOD = 200e9, NU = 0.29, RHO = 7870, YIELD = 0.4e9, HARD = 0.1e9;
+static const double RHO = CPD_STEEL_RHO, YIELD = CPD_STEEL_YIELD, HARD = CPD_STEEL_HARDENING;
 
-/* An nx x ny block of spacing h, plane strain, square families of 2.5 h,
- * the classic force with C_s = 0.5 (the case default), elastic unless the
- * caller sets yield_stress. */
 static CpdConfig block(int nx, int ny, double h) {
-    CpdConfig c = {0};
-    c.pd = fixture_block(2, nx, ny, 0, h);
-    c.pd.model = PD_PLANE_STRAIN;
-    c.pd.horizon_factor = 2.5;
-    c.pd.density = RHO;
-    c.pd.youngs_modulus = E_MOD;
-    c.pd.integrator = PD_VELOCITY_VERLET;
-    c.poisson_ratio = NU;
-    c.force = CPD_FORCE_CLASSIC;
-    c.stabilisation = 0.5;
-    c.family = CPD_FAMILY_SQUARE;
-    c.damage = CPD_DAMAGE_NONE;
-    return c;
+    return cpd_fixture_block(nx, ny, h, CPD_FORCE_CLASSIC);
 }
 
 static void make(CpdBody *b, CpdConfig c) {
     assert_ok(cpd_body_create(b, &c));
-}
-
-/* u = (F - I) X on every point, F = [[a, b], [c, d]] */
-static void set_homogeneous(CpdBody *b, double *const u[3], const double F[4]) {
-    for (int64_t i = 0; i < b->n; i++) {
-        const double X = b->x[0][i], Y = b->x[1][i];
-        u[0][i] = (F[0] - 1.0) * X + F[1] * Y;
-        u[1][i] = F[2] * X + (F[3] - 1.0) * Y;
-    }
 }
 
 /* Drives the body through homogeneous F(t) and checks after each
@@ -63,8 +39,8 @@ static double follow_path(CpdBody *b, const double (*path)[4], int steps, double
     double sig[4] = {0, 0, 0, 0}, eqps = 0.0, worst = 0.0;
     *worst_F = 0.0, *worst_boundary = 0.0;
     for (int s = 1; s <= steps; s++) {
-        set_homogeneous(b, b->u_prev, path[s - 1]);
-        set_homogeneous(b, b->u, path[s]);
+        cpd_fixture_homogeneous(b, b->u_prev, path[s - 1]);
+        cpd_fixture_homogeneous(b, b->u, path[s]);
         cpd_force(b, 0.0);
         double Fm[4], dF[4], de[3];
         for (int q = 0; q < 4; q++) {
@@ -133,41 +109,6 @@ static void test_homogeneous_paths_follow_the_material(void **state) {
     cpd_body_destroy(&b);
 }
 
-/* omega^2 of a plane wave u = A e sin(k x . n) at the points at least 3.5
- * delta inside: the least squares -sum L.u / (rho sum u.u) (as
- * test_cpd_solid.c, the state per point). */
-static double plane_wave_speed(CpdBody *b, double wavelength, const double n[2],
-                               const double e[2]) {
-    const double k = 2.0 * M_PI / wavelength, A = 1e-9;
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int64_t i = 0; i < b->n; i++)
-        for (int a = 0; a < 2; a++) {
-            lo[a] = fmin(lo[a], b->x[a][i]);
-            hi[a] = fmax(hi[a], b->x[a][i]);
-        }
-    for (int64_t i = 0; i < b->n; i++) {
-        const double s = A * sin(k * (n[0] * b->x[0][i] + n[1] * b->x[1][i]));
-        for (int a = 0; a < 2; a++) {
-            b->u[a][i] = s * e[a];
-            b->u_prev[a][i] = 0.0;
-        }
-    }
-    memset(b->sigma, 0, (size_t)(4 * b->n) * sizeof(double));
-    cpd_force(b, 0.0);
-    const double margin = 3.5 * b->delta;
-    double num = 0.0, den = 0.0;
-    for (int64_t i = 0; i < b->n; i++) {
-        if (b->x[0][i] < lo[0] + margin || b->x[0][i] > hi[0] - margin ||
-            b->x[1][i] < lo[1] + margin || b->x[1][i] > hi[1] - margin)
-            continue;
-        for (int a = 0; a < 2; a++) {
-            num -= b->force[a][i] * b->u[a][i];
-            den += RHO * b->u[a][i] * b->u[a][i];
-        }
-    }
-    return sqrt(num / den) / k;
-}
-
 /* C4: the P and shear wave speeds of plane strain steel from the interior
  * operator, along x and along the diagonal, bare (C_s = 0) and with the
  * default penalty C_s = 0.5. Measured (P, S; along x, diagonal):
@@ -196,8 +137,10 @@ static void test_wave_speeds(void **state) {
         const double cp = sqrt((b.lambda + 2.0 * b.mu) / RHO), cs = sqrt(b.mu / RHO);
         for (int l = 0; l < 3; l++)
             for (int d = 0; d < 2; d++) {
-                const double p = plane_wave_speed(&b, lengths[l] * h, dirs[d], dirs[d]) / cp - 1.0;
-                const double s = plane_wave_speed(&b, lengths[l] * h, dirs[d], perp[d]) / cs - 1.0;
+                const double p =
+                    cpd_fixture_plane_wave_speed(&b, lengths[l] * h, dirs[d], dirs[d]) / cp - 1.0;
+                const double s =
+                    cpd_fixture_plane_wave_speed(&b, lengths[l] * h, dirs[d], perp[d]) / cs - 1.0;
                 print_message("C_s %.1f, wavelength %2.0f h, %s: P %+.3f %%, S %+.3f %%\n",
                               c.stabilisation, lengths[l], d ? "diagonal" : "along x", 100 * p,
                               100 * s);
@@ -212,13 +155,6 @@ static void test_wave_speeds(void **state) {
     }
 }
 
-static double kinetic(const CpdBody *b) {
-    double e = 0.0;
-    for (int64_t i = 0; i < b->n; i++)
-        e += 0.5 * RHO * b->volume[i] * (b->v[0][i] * b->v[0][i] + b->v[1][i] * b->v[1][i]);
-    return e;
-}
-
 /* A free 16 x 16 block from a random velocity of 1e-3 m/s per point, run
  * for 1000 steps at a multiple of the power-iteration step; returns the
  * largest kinetic energy over the first one's. */
@@ -228,11 +164,11 @@ static double energy_growth(double factor) {
     srand(7);
     for (int64_t i = 0; i < b.n; i++)
         for (int a = 0; a < 2; a++) b.v[a][i] = 1e-3 * ((double)rand() / RAND_MAX - 0.5);
-    const double e0 = kinetic(&b), dt = factor * b.stable_dt;
+    const double e0 = cpd_fixture_kinetic(&b), dt = factor * b.stable_dt;
     double emax = e0;
     for (int s = 0; s < 1000 && emax < 1e6 * e0; s++) {
         assert_ok(cpd_step(&b, dt));
-        emax = fmax(emax, kinetic(&b));
+        emax = fmax(emax, cpd_fixture_kinetic(&b));
     }
     cpd_body_destroy(&b);
     return emax / e0;

@@ -6,7 +6,7 @@
  * stable step (C6), momentum with damage and thread independence (C9),
  * the damage ramp and Eq. 24 (C11), fragments, and the pressure load's
  * resultant. */
-#include "pd_fixtures.h"
+#include "cpd_fixtures.h"
 #include "test_support.h"
 
 #include "core/mem.h"
@@ -21,36 +21,14 @@
 #include <string.h>
 
 /* paper 003's steel */
-static const double E_MOD = 200e9, NU = 0.29, RHO = 7870, YIELD = 0.4e9, HARD = 0.1e9;
+static const double RHO = CPD_STEEL_RHO, YIELD = CPD_STEEL_YIELD, HARD = CPD_STEEL_HARDENING;
 
-/* An nx x ny block of spacing h, plane strain, square families of 2.5 h,
- * elastic unless the caller sets yield_stress. */
 static CpdConfig block(int nx, int ny, double h) {
-    CpdConfig c = {0};
-    c.pd = fixture_block(2, nx, ny, 0, h);
-    c.pd.model = PD_PLANE_STRAIN;
-    c.pd.horizon_factor = 2.5;
-    c.pd.density = RHO;
-    c.pd.youngs_modulus = E_MOD;
-    c.pd.integrator = PD_VELOCITY_VERLET;
-    c.poisson_ratio = NU;
-    c.force = CPD_FORCE_BOND_ASSOCIATED;
-    c.family = CPD_FAMILY_SQUARE;
-    c.damage = CPD_DAMAGE_NONE;
-    return c;
+    return cpd_fixture_block(nx, ny, h, CPD_FORCE_BOND_ASSOCIATED);
 }
 
 static void make(CpdBody *b, CpdConfig c) {
     assert_ok(cpd_body_create(b, &c));
-}
-
-/* u = (F - I) X on every point, F = [[a, b], [c, d]] */
-static void set_homogeneous(CpdBody *b, double *const u[3], const double F[4]) {
-    for (int64_t i = 0; i < b->n; i++) {
-        const double X = b->x[0][i], Y = b->x[1][i];
-        u[0][i] = (F[0] - 1.0) * X + F[1] * Y;
-        u[1][i] = F[2] * X + (F[3] - 1.0) * Y;
-    }
 }
 
 /* Drives the body through homogeneous F(t) (the caller's path) and checks
@@ -59,8 +37,8 @@ static void set_homogeneous(CpdBody *b, double *const u[3], const double F[4]) {
 static double follow_path(CpdBody *b, const double (*path)[4], int steps) {
     double sig[4] = {0, 0, 0, 0}, eqps = 0.0, worst = 0.0, zz = 0.0;
     for (int s = 1; s <= steps; s++) {
-        set_homogeneous(b, b->u_prev, path[s - 1]);
-        set_homogeneous(b, b->u, path[s]);
+        cpd_fixture_homogeneous(b, b->u_prev, path[s - 1]);
+        cpd_fixture_homogeneous(b, b->u, path[s]);
         cpd_force(b, 0.0);
         double Fm[4], dF[4], de[3];
         for (int q = 0; q < 4; q++) {
@@ -169,8 +147,8 @@ static void test_rigid_rotation_keeps_the_stress(void **state) {
                 F0[2 * r + q] = R0[2 * r] * stretch[q] + R0[2 * r + 1] * stretch[2 + q];
                 F1[2 * r + q] = R1[2 * r] * stretch[q] + R1[2 * r + 1] * stretch[2 + q];
             }
-        set_homogeneous(&b, b.u_prev, F0);
-        set_homogeneous(&b, b.u, F1);
+        cpd_fixture_homogeneous(&b, b.u_prev, F0);
+        cpd_fixture_homogeneous(&b, b.u, F1);
         cpd_force(&b, 0.0);
     }
     double ds = 0.0, df = 0.0;
@@ -186,41 +164,6 @@ static void test_rigid_rotation_keeps_the_stress(void **state) {
     free(f0[0]);
     free(f0[1]);
     cpd_body_destroy(&b);
-}
-
-/* omega^2 of a plane wave u = A e sin(k x . n) at the points at least 3.5
- * delta inside (their force is that of the infinite lattice): the least
- * squares -sum L.u / (rho sum u.u). */
-static double plane_wave_speed(CpdBody *b, double wavelength, const double n[2],
-                               const double e[2]) {
-    const double k = 2.0 * M_PI / wavelength, A = 1e-9;
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int64_t i = 0; i < b->n; i++)
-        for (int a = 0; a < 2; a++) {
-            lo[a] = fmin(lo[a], b->x[a][i]);
-            hi[a] = fmax(hi[a], b->x[a][i]);
-        }
-    for (int64_t i = 0; i < b->n; i++) {
-        const double s = A * sin(k * (n[0] * b->x[0][i] + n[1] * b->x[1][i]));
-        for (int a = 0; a < 2; a++) {
-            b->u[a][i] = s * e[a];
-            b->u_prev[a][i] = 0.0;
-        }
-    }
-    memset(b->sigma, 0, (size_t)(4 * b->bond_count) * sizeof(double));
-    cpd_force(b, 0.0);
-    const double margin = 3.5 * b->delta;
-    double num = 0.0, den = 0.0;
-    for (int64_t i = 0; i < b->n; i++) {
-        if (b->x[0][i] < lo[0] + margin || b->x[0][i] > hi[0] - margin ||
-            b->x[1][i] < lo[1] + margin || b->x[1][i] > hi[1] - margin)
-            continue;
-        for (int a = 0; a < 2; a++) {
-            num -= b->force[a][i] * b->u[a][i];
-            den += RHO * b->u[a][i] * b->u[a][i];
-        }
-    }
-    return sqrt(num / den) / k;
 }
 
 /* C4: the P and shear wave speeds of plane strain steel (5770.8 and
@@ -241,8 +184,10 @@ static void test_wave_speeds(void **state) {
     const double lengths[3] = {10.0, 20.0, 40.0};
     for (int l = 0; l < 3; l++)
         for (int d = 0; d < 2; d++) {
-            const double p = plane_wave_speed(&b, lengths[l] * h, dirs[d], dirs[d]) / cp - 1.0;
-            const double s = plane_wave_speed(&b, lengths[l] * h, dirs[d], perp[d]) / cs - 1.0;
+            const double p =
+                cpd_fixture_plane_wave_speed(&b, lengths[l] * h, dirs[d], dirs[d]) / cp - 1.0;
+            const double s =
+                cpd_fixture_plane_wave_speed(&b, lengths[l] * h, dirs[d], perp[d]) / cs - 1.0;
             print_message("wavelength %2.0f h, %s: P %+.3f %%, S %+.3f %%\n", lengths[l],
                           d ? "diagonal" : "along x", 100 * p, 100 * s);
             if (lengths[l] >= 20.0) {
@@ -251,13 +196,6 @@ static void test_wave_speeds(void **state) {
             }
         }
     cpd_body_destroy(&b);
-}
-
-static double kinetic(const CpdBody *b) {
-    double e = 0.0;
-    for (int64_t i = 0; i < b->n; i++)
-        e += 0.5 * RHO * b->volume[i] * (b->v[0][i] * b->v[0][i] + b->v[1][i] * b->v[1][i]);
-    return e;
 }
 
 /* A free 16 x 16 block from a random velocity of 1e-3 m/s per point, run
@@ -270,12 +208,12 @@ static double energy_growth(double factor) {
     srand(7);
     for (int64_t i = 0; i < b.n; i++)
         for (int a = 0; a < 2; a++) b.v[a][i] = 1e-3 * ((double)rand() / RAND_MAX - 0.5);
-    const double e0 = kinetic(&b), dt = factor * b.stable_dt;
+    const double e0 = cpd_fixture_kinetic(&b), dt = factor * b.stable_dt;
     double emax = e0;
     int s = 0;
     for (; s < STABLE_STEPS && emax < 1e6 * e0; s++) {
         assert_ok(cpd_step(&b, dt));
-        emax = fmax(emax, kinetic(&b));
+        emax = fmax(emax, cpd_fixture_kinetic(&b));
     }
     print_message("%.2f dt_stable: %d steps\n", factor, s);
     cpd_body_destroy(&b);
@@ -385,8 +323,8 @@ static void test_ductile_damage_ramp(void **state) {
     for (int s = 1; s <= 400 && b.damage[0] < 1.0; s++) {
         memcpy(prev, F, sizeof F);
         F[0] = 1.0 + 0.5 * s / 400.0;
-        set_homogeneous(&b, b.u_prev, prev);
-        set_homogeneous(&b, b.u, F);
+        cpd_fixture_homogeneous(&b, b.u_prev, prev);
+        cpd_fixture_homogeneous(&b, b.u, F);
         cpd_force(&b, 0.0);
         const double expect = j2_damage_ductile(b.eqps[0], 0.18, 0.2);
         for (int64_t k = 0; k < b.bond_count; k++) /* eqps alike to 1e-13 (above) */
@@ -511,7 +449,7 @@ static void test_debris_rule(void **state) {
     }
     assert_int_equal(lost, 12);
     const double F[4] = {1.001, 0.0, 0.0, 1.002};
-    set_homogeneous(&b, b.u, F);
+    cpd_fixture_homogeneous(&b, b.u, F);
     assert_ok(cpd_step(&b, 0.5 * b.stable_dt));
     for (int64_t i = 0; i < b.n; i++)
         assert_true(isfinite(b.force[0][i]) && isfinite(b.force[1][i]));
@@ -529,8 +467,8 @@ static void test_stretch_law(void **state) {
     CpdBody b;
     make(&b, c);
     const double F[4] = {1.011, 0.0, 0.0, 1.0};
-    set_homogeneous(&b, b.u_prev, (const double[4]){1, 0, 0, 1});
-    set_homogeneous(&b, b.u, F);
+    cpd_fixture_homogeneous(&b, b.u_prev, (const double[4]){1, 0, 0, 1});
+    cpd_fixture_homogeneous(&b, b.u, F);
     cpd_force(&b, 0.0);
     int64_t broken = 0;
     for (int64_t i = 0; i < b.n; i++)

@@ -1,0 +1,33 @@
+/* Correspondence bodies built in code for the tests (solid/cpd_body.h):
+ * paper 003's steel block, homogeneous fields, plane-wave speeds, energy. */
+#ifndef NSPD_TEST_CPD_FIXTURES_H
+#define NSPD_TEST_CPD_FIXTURES_H
+
+#include "solid/cpd_body.h"
+
+/* paper 003's steel: E, nu, rho, sigma_Y, H */
+#define CPD_STEEL_E         200e9
+#define CPD_STEEL_NU        0.29
+#define CPD_STEEL_RHO       7870.0
+#define CPD_STEEL_YIELD     0.4e9
+#define CPD_STEEL_HARDENING 0.1e9
+
+/* An nx x ny steel block of spacing h, plane strain, square families of
+ * 2.5 h, the given force (classic: C_s = 0.5, the case default), elastic
+ * and undamaged unless the caller changes it. */
+CpdConfig cpd_fixture_block(int nx, int ny, double h, CpdForce force);
+
+/* u = (F - I) X on every point, F = [[a, b], [c, d]] row-major. */
+void cpd_fixture_homogeneous(const CpdBody *b, double *const u[3], const double F[4]);
+
+/* The speed omega / k of a plane wave u = A e sin(k x . n) (A = 1e-9, from
+ * a stress-free state) at the points at least 3.5 delta inside: their
+ * force is the infinite lattice's; omega^2 by least squares
+ * -sum L.u / (rho sum u.u). Overwrites u, u_prev, the stresses and force. */
+double cpd_fixture_plane_wave_speed(CpdBody *b, double wavelength, const double n[2],
+                                    const double e[2]);
+
+/* The kinetic energy, J (sequential). */
+double cpd_fixture_kinetic(const CpdBody *b);
+
+#endif
