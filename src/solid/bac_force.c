@@ -8,6 +8,22 @@
 #include <stdbool.h>
 #include <string.h>
 
+void bac_gather(int dim, int64_t n, const int64_t *first, const int32_t *nbr,
+                const int64_t *reverse, const double *volume, const double *T,
+                double *const force[3]) {
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        double L[3] = {0, 0, 0};
+        for (int64_t k = first[i]; k < first[i + 1]; k++) {
+            const double V = volume[nbr[k]];
+            const int64_t r = reverse[k];
+            for (int a = 0; a < dim; a++)
+                L[a] += (T[(int64_t)dim * k + a] - T[(int64_t)dim * r + a]) * V;
+        }
+        for (int a = 0; a < dim; a++) force[a][i] = L[a];
+    }
+}
+
 int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, int64_t *reverse) {
     int64_t missing = 0;
 #pragma omp parallel for schedule(static) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
@@ -130,16 +146,5 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
                 T[(int64_t)dim * k + a] += v;
             }
     }
-    /* L_i = sum_j (T_ij - T_ji) V_j, in bond order */
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        double L[3] = {0, 0, 0};
-        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
-            const double V = s->volume[s->nbr[k]];
-            const int64_t r = s->reverse[k];
-            for (int a = 0; a < dim; a++)
-                L[a] += (T[(int64_t)dim * k + a] - T[(int64_t)dim * r + a]) * V;
-        }
-        for (int a = 0; a < dim; a++) force[a][i] = L[a];
-    }
+    bac_gather(dim, n, s->first, s->nbr, s->reverse, s->volume, T, force);
 }

@@ -62,6 +62,14 @@ typedef struct {
     double *strain_zz;
 } BacState;
 
+/* The owner-computes gather of both correspondence forces: L_i = sum_j
+ * (T_ij - T_ji) V_j in bond order, T_ji read through the reverse-bond
+ * index (dim values per bond); each point writes only its own force, so
+ * no atomics and the same bits at any thread count. */
+void bac_gather(int dim, int64_t n, const int64_t *first, const int32_t *nbr,
+                const int64_t *reverse, const double *volume, const double *T,
+                double *const force[3]);
+
 /* The reverse-bond index of a symmetric family CSR: for bond k = (i -> j),
  * reverse[k] is the bond (j -> i); -1 where the family is not symmetric.
  * Returns the number of bonds without a reverse. */

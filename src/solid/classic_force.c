@@ -1,5 +1,7 @@
 #include "solid/classic_force.h"
 
+#include "solid/bac_force.h"
+
 #include "core/parallel.h"
 #include "solid/svk.h"
 
@@ -170,17 +172,6 @@ int64_t classic_force(const ClassicSystem *s, ClassicState *st, const double *co
 #pragma omp parallel for schedule(static) reduction(+ : singular) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++)
         singular += point_state(s, st, i, u, g, F + 9 * i, P + 9 * i, T) ? 0 : 1;
-        /* L_i = sum_j (T_ij - T_ji) V_j, in bond order */
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        double L[3] = {0, 0, 0};
-        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
-            const double V = s->volume[s->nbr[k]];
-            const int64_t r = s->reverse[k];
-            for (int a = 0; a < dim; a++)
-                L[a] += (T[(int64_t)dim * k + a] - T[(int64_t)dim * r + a]) * V;
-        }
-        for (int a = 0; a < dim; a++) force[a][i] = L[a];
-    }
+    bac_gather(dim, n, s->first, s->nbr, s->reverse, s->volume, T, force);
     return singular;
 }
