@@ -1,8 +1,12 @@
 #include "cpd_fixtures.h"
 
 #include "pd_fixtures.h"
+#include "test_support.h"
+
+#include "core/status.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 CpdConfig cpd_fixture_block(int nx, int ny, double h, CpdForce force) {
@@ -69,4 +73,23 @@ double cpd_fixture_kinetic(const CpdBody *b) {
         e += 0.5 * CPD_STEEL_RHO * b->volume[i] *
              (b->v[0][i] * b->v[0][i] + b->v[1][i] * b->v[1][i]);
     return e;
+}
+
+double cpd_fixture_energy_growth(CpdForce force, double factor) {
+    CpdBody b;
+    CpdConfig c = cpd_fixture_block(16, 16, 1e-3, force);
+    assert_ok(cpd_body_create(&b, &c));
+    srand(7);
+    for (int64_t i = 0; i < b.n; i++)
+        for (int a = 0; a < 2; a++) b.v[a][i] = 1e-3 * ((double)rand() / RAND_MAX - 0.5);
+    const double e0 = cpd_fixture_kinetic(&b), dt = factor * b.stable_dt;
+    double emax = e0;
+    int s = 0;
+    for (; s < 1000 && emax < 1e6 * e0; s++) {
+        assert_ok(cpd_step(&b, dt));
+        emax = fmax(emax, cpd_fixture_kinetic(&b));
+    }
+    print_message("%.2f dt_stable: %d steps\n", factor, s);
+    cpd_body_destroy(&b);
+    return emax / e0;
 }

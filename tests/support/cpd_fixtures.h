@@ -27,6 +27,13 @@ void cpd_fixture_homogeneous(const CpdBody *b, double *const u[3], const double 
 double cpd_fixture_plane_wave_speed(CpdBody *b, double wavelength, const double n[2],
                                     const double e[2]);
 
+/* A free 16 x 16 block (spacing 1 mm) of the given force from a random
+ * velocity of 1e-3 m/s per point (seed 7), run for up to 1000 steps of
+ * `factor` times its power-iteration step, stopping at a 1e6-fold growth;
+ * returns the largest kinetic energy over the first one's (the C6 check
+ * of the stable step) and prints the steps taken. */
+double cpd_fixture_energy_growth(CpdForce force, double factor);
+
 /* The kinetic energy, J (sequential). */
 double cpd_fixture_kinetic(const CpdBody *b);
 
