@@ -385,10 +385,10 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
         cfg->kernel = (RkKernel)kernel;
         int64_t order;
         TRY(cfg_opt_int(c, "rk_order", 2, &order));
-        if (order != 1 && order != 2)
+        if (order < 1 || order > 3)
             return cfg_fail_at(c, "rk_order",
-                               "%lld; expected 1 (linear consistency) or 2 (quadratic, the "
-                               "paper's)",
+                               "%lld; expected 1 (linear consistency), 2 (quadratic, the "
+                               "paper's) or 3 (cubic where the family fits one)",
                                (long long)order);
         cfg->rk_order = (int)order;
         TRY(cfg_end_map(c));

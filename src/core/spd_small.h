@@ -11,7 +11,7 @@
 
 #include <stdbool.h>
 
-enum { SPD_SMALL_MAX = 9 }; /* 3D quadratic fit: x, y, z and six second-degree monomials */
+enum { SPD_SMALL_MAX = 19 }; /* 3D cubic fit: 3 linear, 6 quadratic and 10 cubic monomials */
 
 /* Factorises the m x m matrix in M's lower triangle (the upper one is not
  * read) after scaling it to a unit diagonal; scale[] receives the scaling.

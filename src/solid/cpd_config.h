@@ -47,8 +47,8 @@ typedef struct {
     double stabilisation; /* classic: C_s of the zero-energy penalty (Silling 2017) */
     CpdFamily family;
     RkKernel kernel; /* the influence function omega (both forces) */
-    int rk_order;    /* bond_associated: RK gradient weights of order 1 or 2 (the paper's;
-                        0 means 2) */
+    int rk_order;    /* bond_associated: RK gradient weights of order 1, 2 (the paper's;
+                        0 means 2) or 3 (cubic where the family fits one) */
     CpdDamageLaw damage;
     double plastic_strain_threshold, plastic_strain_critical; /* ductile: eps_th, eps_cr */
     double critical_stress;                                   /* brittle: sigma_cr, Pa */

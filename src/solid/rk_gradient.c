@@ -7,7 +7,7 @@
 #include <stdbool.h>
 #include <string.h>
 
-enum { RK_MAX_TERMS = SPD_SMALL_MAX }; /* 3D: x, y, z and the six quadratic monomials */
+enum { RK_MAX_TERMS = SPD_SMALL_MAX }; /* 3D cubic: 3 + 6 + 10 monomials */
 
 /* The cubic B-spline of the kernel, b(r) for r = |xi_a| / delta. */
 static double bspline(double r) {
@@ -32,7 +32,7 @@ double rk_kernel_of(RkKernel kind, int dim, const double xi[3], double delta) {
     return bspline(sqrt(r2) / delta);
 }
 
-/* Q(xi): the monomials of degree 1 to `order` (1 or 2), each over delta
+/* Q(xi): the monomials of degree 1 to `order` (1 to 3), each over delta
  * (so that the moment matrix is of order one whatever the units); returns
  * their count. */
 static int monomials(int order, int dim, const double xi[3], double delta, double q[RK_MAX_TERMS]) {
@@ -42,6 +42,10 @@ static int monomials(int order, int dim, const double xi[3], double delta, doubl
     if (order >= 2)
         for (int a = 0; a < dim; a++)
             for (int b = a; b < dim; b++) q[m++] = s[a] * s[b];
+    if (order >= 3)
+        for (int a = 0; a < dim; a++)
+            for (int b = a; b < dim; b++)
+                for (int c = b; c < dim; c++) q[m++] = s[a] * s[b] * s[c];
     return m;
 }
 
@@ -64,11 +68,12 @@ static bool point_weights(int order, RkKernel kernel, int dim, int64_t i, const 
         for (int r = 0; r < m; r++)
             for (int c = 0; c <= r; c++) M[r][c] += w * q[r] * q[c];
     }
-    if (m == 0) m = order == 1 ? dim : (dim == 3 ? 9 : 5); /* no neighbour: singular */
+    if (m == 0) m = dim; /* no neighbour: singular whatever the order */
     for (int r = 0; r < m; r++)
         for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
     double scale[RK_MAX_TERMS];
-    const bool ok = spd_small_factor(M, m, scale, RK_MIN_PIVOT);
+    const bool ok =
+        spd_small_factor(M, m, scale, order == 3 ? RK_MIN_PIVOT_CUBIC : RK_MIN_PIVOT);
     for (int64_t k = first[i]; k < first[i + 1]; k++) {
         double *out = phi + (int64_t)dim * k;
         if (!ok) {
@@ -96,16 +101,20 @@ int64_t rk_gradient_weights_of(int order, RkKernel kernel, int dim, int64_t n,
                                const double *const x[3], const double *volume, const int64_t *first,
                                const int32_t *nbr, double delta, const double *bond_scale,
                                const uint8_t *redo, double *phi, uint8_t *ok) {
-    if ((dim != 2 && dim != 3) || (order != 1 && order != 2)) return n;
+    if ((dim != 2 && dim != 3) || (order < 1 || order > 3)) return n;
     int64_t missing = 0;
     /* dynamic: a redo list is sparse and uneven; each point's weights are
      * its own, so the bits do not depend on the schedule */
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         if (redo && !redo[i]) continue;
-        ok[i] = point_weights(order, kernel, dim, i, x, volume, first, nbr, delta, bond_scale, phi)
-                    ? 1
-                    : 0;
+        /* order 3 falls back to 2 where the family cannot fit a cubic
+         * (on a face with delta = 2.5 h: two distinct offsets inward) */
+        const bool fit =
+            point_weights(order, kernel, dim, i, x, volume, first, nbr, delta, bond_scale, phi) ||
+            (order == 3 &&
+             point_weights(2, kernel, dim, i, x, volume, first, nbr, delta, bond_scale, phi));
+        ok[i] = fit ? 1 : 0;
         missing += ok[i] ? 0 : 1;
     }
     return missing;

@@ -39,6 +39,14 @@ double rk_kernel_of(RkKernel kind, int dim, const double xi[3], double delta);
  * family is too degenerate (too few or collinear neighbours) for a
  * quadratic fit, and the point gets no weights. */
 #define RK_MIN_PIVOT 1e-10
+/* The same for the cubic fit of order 3, which is an upgrade of accuracy,
+ * not a need: a family that fits a cubic only poorly keeps the quadratic
+ * fit. On a lattice the whole and the one-sided families of the second row
+ * from a face pass it by far (their pivot ratios exceed 1e-2); on clouds
+ * jittered by 20 % of h the threshold 1e-10 let fits through whose
+ * round-off reached 1.0e-12 of the gradient, 1e-3 keeps it at 2.5e-13
+ * (tests/unit/solid/test_rk_gradient.c). */
+#define RK_MIN_PIVOT_CUBIC 1e-3
 
 /* Weights of every bond: phi[dim * k + a] for bond k (of the family CSR
  * first[i] .. first[i+1], neighbours nbr[k]), component a. bond_scale (NULL:
@@ -50,7 +58,10 @@ int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const 
                             const double *bond_scale, double *phi, uint8_t *ok);
 
 /* The same of order 1 (linear consistency: Q = xi / delta only, exact for
- * linear fields) or 2, with the kernel of the given kind, for every point (redo NULL) or only those
+ * linear fields), 2, or 3 (Q adds the cubic monomials: exact for cubic
+ * fields; a point whose family cannot fit a cubic, such as one on a face
+ * at delta = 2.5 h, gets the order-2 weights instead), with
+ * the kernel of the given kind, for every point (redo NULL) or only those
  * with redo[i] != 0 (after damage grew in their families; the others' weights and ok untouched).
  * Returns the number of those points without weights; n for a dim or order out of range. */
 int64_t rk_gradient_weights_of(int order, RkKernel kernel, int dim, int64_t n,

@@ -168,15 +168,19 @@ static void test_rigid_rotation_keeps_the_stress(void **state) {
 
 /* C4: the P and shear wave speeds of plane strain steel (5770.8 and
  * 3138.5 m/s) from the interior operator, along x and along the diagonal.
- * Measured at 20 h: P -1.55 % (along x) and -1.65 % (diagonal), S -1.54 %
- * and -1.63 %; at 40 h -0.39 to -0.42 %; at 10 h -5.8 to -6.3 %: second
- * order in h / wavelength, nearly isotropic. Tolerance: the issue's 2 %
- * from 20 h on (the margin at 20 h is 0.35 %: this is the real bound). */
-static void test_wave_speeds(void **state) {
-    (void)state;
+ * The paper's RK order 2, measured at 20 h: P -1.55 % (along x) and
+ * -1.65 % (diagonal), S -1.54 % and -1.63 %; at 40 h -0.39 to -0.42 %; at
+ * 10 h -5.8 to -6.3 %: second order in h / wavelength, nearly isotropic.
+ * Tolerance: the issue's 2 % from 20 h on (the margin at 20 h is 0.35 %:
+ * this is the real bound). RK order 3: -0.44 to -0.48 % at 20 h, -0.11 to
+ * -0.12 % at 40 h, -1.9 to -2.0 % at 10 h (still second order: the bond's
+ * F_b averages F_i and F_j); bound 0.6 % from 20 h, so the gain is held. */
+static void wave_speeds(int order, double bound) {
     const double h = 1e-3;
     CpdBody b;
-    make(&b, block(36, 36, h));
+    CpdConfig c = block(36, 36, h);
+    c.rk_order = order;
+    make(&b, c);
     const double cp = sqrt((b.lambda + 2.0 * b.mu) / RHO), cs = sqrt(b.mu / RHO);
     assert_true(fabs(cp - 5770.8) < 0.5 && fabs(cs - 3138.5) < 0.5);
     const double r2 = sqrt(0.5);
@@ -188,14 +192,20 @@ static void test_wave_speeds(void **state) {
                 cpd_fixture_plane_wave_speed(&b, lengths[l] * h, dirs[d], dirs[d]) / cp - 1.0;
             const double s =
                 cpd_fixture_plane_wave_speed(&b, lengths[l] * h, dirs[d], perp[d]) / cs - 1.0;
-            print_message("wavelength %2.0f h, %s: P %+.3f %%, S %+.3f %%\n", lengths[l],
-                          d ? "diagonal" : "along x", 100 * p, 100 * s);
+            print_message("order %d, wavelength %2.0f h, %s: P %+.3f %%, S %+.3f %%\n", order,
+                          lengths[l], d ? "diagonal" : "along x", 100 * p, 100 * s);
             if (lengths[l] >= 20.0) {
-                assert_true(fabs(p) < 0.02);
-                assert_true(fabs(s) < 0.02);
+                assert_true(fabs(p) < bound);
+                assert_true(fabs(s) < bound);
             }
         }
     cpd_body_destroy(&b);
+}
+
+static void test_wave_speeds(void **state) {
+    (void)state;
+    wave_speeds(2, 0.02);
+    wave_speeds(3, 0.006);
 }
 
 /* C6: the power-iteration step is the stability limit: 2 % under it the

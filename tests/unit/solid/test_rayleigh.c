@@ -13,9 +13,11 @@
  * round-off at amplitude 1e-9 h), its eigenvalues found by Jacobi, and the
  * lowest gives omega^2, c = omega / k.
  *
- * Periodicity by tiling, as in test_zero_energy.c: three copies of the
- * strip side by side, every image moving together, forces read on the
- * centre copy only (they reach 3 delta = 7.5 h < N h). */
+ * Periodicity by tiling: the strip with PAD columns of its periodic
+ * images on either side, every image moving together, forces read on the
+ * strip only. A force depends on the displacements within 3 delta (7.5 h:
+ * the neighbours' F and their families' weighted volumes), so the images'
+ * truncated ends lie beyond its reach. */
 #include "jacobi.h"
 #include "test_support.h"
 
@@ -30,11 +32,12 @@ static const double E_MOD = 200e9, NU = 0.29, RHO = 7870, C_RAYLEIGH = 2905.7;
 /* the strip's depth in wavelengths: the Lamb pair's splitting falls as
  * exp(-2 k b H), b = sqrt(1 - (c_R / c_S)^2) = 0.378: measured 1.8 % of
  * omega^2 at H = 2 L, 0.13 % at 3 L */
-enum { DEPTH = 3 };
+enum { DEPTH = 3, PAD = 8 };
 
 typedef struct {
     int N, M;  /* columns per wavelength, rows */
-    int64_t n; /* points: 3 N M */
+    int W;     /* columns with the images: N + 2 PAD */
+    int64_t n; /* points: W M */
     double h, delta;
     double *x[3], *volume, *phi, *omega, *work_point, *work_bond, *u[3], *f[3];
     int64_t *first, *reverse;
@@ -44,13 +47,13 @@ typedef struct {
 } Strip;
 
 static int64_t index_of(const Strip *t, int i, int j) {
-    return (int64_t)j * (3 * t->N) + i;
+    return (int64_t)j * t->W + i;
 }
 
-static void strip_make(Strip *t, int N, int M, double h) {
+static void strip_make(Strip *t, int N, int M, double h, int order) {
     memset(t, 0, sizeof *t);
-    t->N = N, t->M = M, t->h = h, t->delta = 2.5 * h;
-    t->n = (int64_t)3 * N * M;
+    t->N = N, t->M = M, t->W = N + 2 * PAD, t->h = h, t->delta = 2.5 * h;
+    t->n = (int64_t)t->W * M;
     for (int a = 0; a < 3; a++) {
         t->x[a] = calloc((size_t)t->n, sizeof(double));
         t->u[a] = calloc((size_t)t->n, sizeof(double));
@@ -58,9 +61,9 @@ static void strip_make(Strip *t, int N, int M, double h) {
     }
     t->volume = calloc((size_t)t->n, sizeof(double));
     for (int j = 0; j < M; j++)
-        for (int i = 0; i < 3 * N; i++) {
+        for (int i = 0; i < t->W; i++) {
             const int64_t p = index_of(t, i, j);
-            t->x[0][p] = i * h;
+            t->x[0][p] = (i - PAD) * h;
             t->x[1][p] = j * h;
             t->volume[p] = h * h * h;
         }
@@ -70,12 +73,12 @@ static void strip_make(Strip *t, int N, int M, double h) {
     t->nbr = calloc((size_t)t->n * 24, sizeof(int32_t));
     int64_t k = 0;
     for (int64_t p = 0; p < t->n; p++) {
-        const int i = (int)(p % (3 * N)), j = (int)(p / (3 * N));
+        const int i = (int)(p % t->W), j = (int)(p / t->W);
         t->first[p] = k;
         for (int dj = -reach; dj <= reach; dj++)
             for (int di = -reach; di <= reach; di++) {
                 const int ii = i + di, jj = j + dj;
-                if ((di || dj) && ii >= 0 && ii < 3 * N && jj >= 0 && jj < M)
+                if ((di || dj) && ii >= 0 && ii < t->W && jj >= 0 && jj < M)
                     t->nbr[k++] = (int32_t)index_of(t, ii, jj);
             }
     }
@@ -92,8 +95,9 @@ static void strip_make(Strip *t, int N, int M, double h) {
                                   0.0};
             t->omega[q] = rk_kernel(2, xi, t->delta);
         }
-    assert_int_equal(rk_gradient_weights(2, t->n, (const double *const *)t->x, t->volume, t->first,
-                                         t->nbr, t->delta, NULL, t->phi, t->ok),
+    assert_int_equal(rk_gradient_weights_of(order, RK_KERNEL_CUBIC_TENSOR, 2, t->n,
+                                            (const double *const *)t->x, t->volume, t->first,
+                                            t->nbr, t->delta, NULL, NULL, t->phi, t->ok),
                      0);
     assert_int_equal(bac_reverse_bonds(t->n, t->first, t->nbr, t->reverse), 0);
     t->s = (BacSystem){.dim = 2,
@@ -126,7 +130,7 @@ static void strip_free(Strip *t) {
     free(t->ok);
 }
 
-/* Basis field q of the subspace, at column i (any copy) and row j: q =
+/* Basis field q of the subspace, at strip column i (any image) and row j: q =
  * 4 r + 2 a + s is row r, component a, cos (s = 0) or sin (s = 1). */
 static double basis(const Strip *t, int q, int i, int j, int a) {
     const int r = q / 4, comp = (q / 2) % 2, s = q % 2;
@@ -145,22 +149,23 @@ static double lowest_omega2(Strip *t) {
     for (int q = 0; q < m; q++) {
         for (int sign = 1; sign >= -1; sign -= 2) {
             for (int j = 0; j < t->M; j++)
-                for (int i = 0; i < 3 * t->N; i++)
+                for (int i = 0; i < t->W; i++)
                     for (int a = 0; a < 2; a++)
-                        t->u[a][index_of(t, i, j)] = sign * amp * basis(t, q, i % t->N, j, a);
+                        t->u[a][index_of(t, i, j)] =
+                            sign * amp * basis(t, q, (i - PAD + t->N) % t->N, j, a);
             bac_force(&t->s, NULL, (const double *const *)t->u, t->f, t->work_point, t->work_bond);
             if (sign == 1)
                 for (int a = 0; a < 2; a++) memcpy(fp[a], t->f[a], (size_t)t->n * sizeof(double));
         }
-        /* K[p][q] = -sum over the centre copy of basis_p . dL/du_q V */
+        /* K[p][q] = -sum over the strip of basis_p . dL/du_q V */
         for (int j = 0; j < t->M; j++)
-            for (int i = t->N; i < 2 * t->N; i++) {
+            for (int i = PAD; i < PAD + t->N; i++) {
                 const int64_t pt = index_of(t, i, j);
                 for (int a = 0; a < 2; a++) {
                     const double dL = (fp[a][pt] - t->f[a][pt]) / (2.0 * amp);
                     for (int p = 4 * j + 2 * a; p < 4 * j + 2 * a + 2; p++)
                         K[(size_t)p * (size_t)m + (size_t)q] -=
-                            basis(t, p, i - t->N, j, a) * dL * t->volume[pt];
+                            basis(t, p, i - PAD, j, a) * dL * t->volume[pt];
                 }
             }
     }
@@ -179,30 +184,43 @@ static double lowest_omega2(Strip *t) {
     return lowest;
 }
 
-/* Measured: -2.57 % at 20 h per wavelength, -1.20 % at 30 h (set
- * PER_WAVELENGTH=30 to see it; 25 s): the bulk waves' dispersion (-1.55 %
- * at 20 h, test_cpd_solid.c) plus the softer layer of truncated families
- * at the free surface, which a surface wave feels within a wavelength.
- * The issue asks 2 % from 20 h on: missed at 20 h, met from about 25 h.
- * The bound 3 % guards the measured 2.57 %; it is not the issue's. */
-static void test_rayleigh_speed(void **state) {
+/* The Rayleigh speed at N h per wavelength (PER_WAVELENGTH overrides N)
+ * with RK weights of the given order; fails beyond `bound` at 20 h. */
+static void rayleigh_speed(int order, double bound) {
+    Strip t;
+    const int N = getenv("PER_WAVELENGTH") ? atoi(getenv("PER_WAVELENGTH")) : 20;
+    strip_make(&t, N, DEPTH * N, 1e-3, order);
+    const double omega2 = lowest_omega2(&t);
+    const double speed = sqrt(omega2) / (2.0 * M_PI / (N * t.h));
+    print_message("order %d, %d h per wavelength: c_R %.1f m/s (%+.3f %%)\n", order, N, speed,
+                  100.0 * (speed / C_RAYLEIGH - 1.0));
+    if (N == 20) assert_true(fabs(speed / C_RAYLEIGH - 1.0) < bound);
+    strip_free(&t);
+}
+
+/* The paper's RK order 2. Measured: -2.58 % at 20 h per wavelength, -1.20 %
+ * at 30 h: the bulk waves' dispersion (-1.55 % at 20 h, test_cpd_solid.c)
+ * plus the softer layer of truncated families at the free surface, which a
+ * surface wave feels within a wavelength. The issue's 2 % from 20 h on is
+ * missed at 20 h with order 2 (met from about 25 h); the bound 3 % guards
+ * the measured 2.58 %, it is not the issue's. */
+static void test_rayleigh_speed_order2(void **state) {
     (void)state;
-    {
-        Strip t;
-        const int N = getenv("PER_WAVELENGTH") ? atoi(getenv("PER_WAVELENGTH")) : 20;
-        strip_make(&t, N, DEPTH * N, 1e-3);
-        const double omega2 = lowest_omega2(&t);
-        const double speed = sqrt(omega2) / (2.0 * M_PI / (N * t.h));
-        print_message("%d h per wavelength: c_R %.1f m/s (%+.3f %%)\n", N, speed,
-                      100.0 * (speed / C_RAYLEIGH - 1.0));
-        if (N == 20) assert_true(fabs(speed / C_RAYLEIGH - 1.0) < 0.03);
-        strip_free(&t);
-    }
+    rayleigh_speed(2, 0.03);
+}
+
+/* RK order 3 (cubic where the family fits one, quadratic on the faces):
+ * -1.34 % at 20 h, -0.64 % at 30 h (the bulk's -0.44 % at 20 h plus the
+ * surface layer's -0.9 %). The issue's 2 % (margin 0.66 %). */
+static void test_rayleigh_speed_order3(void **state) {
+    (void)state;
+    rayleigh_speed(3, 0.02);
 }
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_rayleigh_speed),
+        cmocka_unit_test(test_rayleigh_speed_order2),
+        cmocka_unit_test(test_rayleigh_speed_order3),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -41,7 +41,7 @@
 static const double E_MOD = 200e9, NU = 0.29;
 enum { SIDE = 8, TILES = 3 };
 
-typedef enum { BAC, CLASSIC } Model;
+typedef enum { BAC, BAC_CUBIC, CLASSIC } Model; /* BAC_CUBIC: RK order 3 */
 
 typedef struct {
     Cloud c;
@@ -73,11 +73,12 @@ static void patch_make(Patch *t, Model model, double cs, double jitter) {
     cloud_omega(c, t->omega);
     assert_int_equal(bac_reverse_bonds(c->n, c->first, c->nbr, t->reverse), 0);
     const double lambda = E_MOD * NU / ((1 + NU) * (1 - 2 * NU)), mu = E_MOD / (2 * (1 + NU));
-    if (model == BAC) {
+    if (model != CLASSIC) {
         /* the outer copies' corners may lack weights; the centre copy reads
          * none of them (the reach above) */
-        rk_gradient_weights(2, c->n, (const double *const *)c->x, c->volume, c->first, c->nbr,
-                            c->delta, NULL, t->phi, t->ok);
+        rk_gradient_weights_of(model == BAC_CUBIC ? 3 : 2, RK_KERNEL_CUBIC_TENSOR, 2, c->n,
+                               (const double *const *)c->x, c->volume, c->first, c->nbr, c->delta,
+                               NULL, NULL, t->phi, t->ok);
         t->bac = (BacSystem){.dim = 2,
                              .n = c->n,
                              .x = {c->x[0], c->x[1], NULL},
@@ -122,7 +123,7 @@ static void patch_free(Patch *t) {
 static void patch_force(Patch *t) {
     double *const f[3] = {t->f[0], t->f[1], NULL};
     const double *const u[3] = {t->u[0], t->u[1], NULL};
-    if (t->model == BAC)
+    if (t->model != CLASSIC)
         bac_force(&t->bac, NULL, u, f, t->work_point, t->work_bond);
     else
         classic_force(&t->classic, NULL, u, f, t->work_point, t->work_bond);
@@ -262,6 +263,7 @@ static void test_jacobi(void **state) {
 static void test_regular_lattice(void **state) {
     (void)state;
     assert_int_equal(report("bond-associative", BAC, 0.0, 0.0).zeros, 2);
+    assert_int_equal(report("bond-assoc. RK 3", BAC_CUBIC, 0.0, 0.0).zeros, 2);
     assert_int_equal(report("classic C_s 0", CLASSIC, 0.0, 0.0).zeros, 8);
     assert_int_equal(report("classic C_s 0.5", CLASSIC, 0.5, 0.0).zeros, 2);
 }
@@ -273,6 +275,7 @@ static void test_regular_lattice(void **state) {
 static void test_perturbed_lattice(void **state) {
     (void)state;
     assert_int_equal(report("bond-associative", BAC, 0.0, 0.1).zeros, 2);
+    assert_int_equal(report("bond-assoc. RK 3", BAC_CUBIC, 0.0, 0.1).zeros, 2);
     report("classic C_s 0", CLASSIC, 0.0, 0.1);
     assert_int_equal(report("classic C_s 0.5", CLASSIC, 0.5, 0.1).zeros, 2);
 }
