@@ -72,8 +72,7 @@ static bool point_weights(int order, RkKernel kernel, int dim, int64_t i, const 
     for (int r = 0; r < m; r++)
         for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
     double scale[RK_MAX_TERMS];
-    const bool ok =
-        spd_small_factor(M, m, scale, order == 3 ? RK_MIN_PIVOT_CUBIC : RK_MIN_PIVOT);
+    const bool ok = spd_small_factor(M, m, scale, order == 3 ? RK_MIN_PIVOT_CUBIC : RK_MIN_PIVOT);
     for (int64_t k = first[i]; k < first[i + 1]; k++) {
         double *out = phi + (int64_t)dim * k;
         if (!ok) {

@@ -51,7 +51,8 @@ static double cubic_full(const double p[3], double g[3]) {
     g[0] = 1e6 * (3 * x * x - 4 * x * y + y * z + z * z) + 1e3 * (2 * x + y);
     g[1] = 1e6 * (-2 * x * x + 3 * y * y + x * z) + 1e3 * x;
     g[2] = 1e6 * (x * y + 2 * x * z);
-    return 1e6 * (x * x * x - 2 * x * x * y + y * y * y + x * y * z + x * z * z) + 1e3 * (x * x + x * y);
+    return 1e6 * (x * x * x - 2 * x * x * y + y * y * y + x * y * z + x * z * z) +
+           1e3 * (x * x + x * y);
 }
 
 static double quartic(const double p[3], double g[3]) {
