@@ -17,7 +17,9 @@ static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
 
 /* `bodies`: circles on polar patches (paper 002 Sec. 4.1.2), at most
- * PDDO_MAX_BODIES; the patch options of the first apply to all. */
+ * PDDO_MAX_BODIES, each with its own patch options. Two patches must stay
+ * apart by their reaches (r_cut) plus a horizon, the room the cloud
+ * demands (flow/pddo_cloud.c): then no family holds the rings of both. */
 static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
     CfgNode *seq = cfg_map_find(flow, "bodies");
     if (!seq || seq->is_null) {
@@ -26,9 +28,10 @@ static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
     }
     TRY(cfg_req_seq(flow, "bodies", &seq));
     if (seq->count > PDDO_MAX_BODIES)
-        return cfg_fail(seq, "%d bodies; expected at most %d (one polar patch)", seq->count,
+        return cfg_fail(seq, "%d bodies; expected at most %d (one polar patch each)", seq->count,
                         PDDO_MAX_BODIES);
     const double dx = c->cloud.dx;
+    PddoPolarPatch patches[PDDO_MAX_BODIES];
     for (int b = 0; b < seq->count; b++) {
         CfgNode *m = seq->child[b];
         if (m->kind != CFG_MAP)
@@ -59,22 +62,33 @@ static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
         TRY(cfg_check_range(m, "dr_over_spacing", dr, 0.1, 2.0,
                             "the rings' radial spacing over the lattice spacing (the paper: "
                             "0.69)"));
-        c->polar = (PddoPolarSpec){.dtheta = dtheta, .dr = dr * dx, .r_patch = r_patch};
-        PddoPolarPatch patch;
-        if (pddo_polar_layout(&patch, h->x, h->y, h->radius, &c->polar, dx) != NSPD_OK)
+        c->polar[b] = (PddoPolarSpec){.dtheta = dtheta, .dr = dr * dx, .r_patch = r_patch};
+        PddoPolarPatch *patch = &patches[b];
+        if (pddo_polar_layout(patch, h->x, h->y, h->radius, &c->polar[b], dx) != NSPD_OK)
             return cfg_fail_at(m, "radius",
                                "%g m with patch_radius %g m, dtheta %g, dr %g m: no polar patch "
                                "fits (%s); expected a radius above three rings and a patch with "
                                "more fluid rings than three",
                                h->radius, r_patch, dtheta, dr * dx, nspd_error_message());
         /* the cloud's room: two fictitious layers' depth beyond r_cut */
-        const double reach = patch.r_cut + 2.0 * c->cloud.layers * dx;
+        const double reach = patch->r_cut + 2.0 * c->cloud.layers * dx;
         if (!(h->x - reach > c->cloud.lo[0] && h->x + reach < c->cloud.hi[0] &&
               h->y - reach > c->cloud.lo[1] && h->y + reach < c->cloud.hi[1]))
             return cfg_fail_at(m, "patch_radius",
                                "%g m: the patch and 2 x 3 fictitious layers reach %g m from "
                                "the centre, beyond the rectangle; expected a smaller patch",
                                r_patch, reach);
+        const double horizon = c->cloud.horizon_factor * dx;
+        for (int a = 0; a < b; a++) {
+            const double apart = patch->r_cut + patches[a].r_cut + horizon;
+            if (!(hypot(h->x - c->bodies[a].x, h->y - c->bodies[a].y) >= apart))
+                return cfg_fail_at(m, "center",
+                                   "[%g, %g]: its polar patch (reach %g m) overlaps that of "
+                                   "body %d at [%g, %g] (reach %g m); expected the centres at "
+                                   "least %g m apart (both reaches and a horizon)",
+                                   h->x, h->y, patch->r_cut, a, c->bodies[a].x, c->bodies[a].y,
+                                   patches[a].r_cut, apart);
+        }
         TRY(cfg_end_map(m));
         c->body_count = b + 1;
     }
