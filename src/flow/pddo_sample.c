@@ -45,15 +45,22 @@ int pddo_sample_add(PddoSample *s, const PddoCloud *c, double x, double y, const
     int32_t *all = NULL;
     /* the cloud families' margin: lattice nodes at exactly delta are in */
     TRY(neighbours_query(c->n, 2, xyz, 1, q, c->delta * (1.0 + 1e-9), &first, &all));
-    int64_t count = 0; /* the physical ones, in place */
-    for (int64_t m = 0; m < first[1]; m++)
-        if (pddo_node_physical(c->kind[all[m]])) all[count++] = all[m];
+    int64_t count = 0, on = -1; /* the physical ones, in place; one at the point */
+    for (int64_t m = 0; m < first[1]; m++) {
+        const int32_t j = all[m];
+        if (!pddo_node_physical(c->kind[j])) continue;
+        if (hypot(c->x[j] - x, c->y[j] - y) <= 1e-9 * c->dx) on = j;
+        all[count++] = j;
+    }
     nspd_free(&first);
+    if (on >= 0) all[0] = (int32_t)on, count = 1; /* a node: its own value */
     const int64_t n = s->n, total = n > 0 ? s->first[n] : 0;
     double *w = NULL;
     int status = nspd_alloc(&w, (size_t)count, sizeof(double));
     double cond = INFINITY;
-    if (status == NSPD_OK)
+    if (status == NSPD_OK && on >= 0)
+        w[0] = 1.0, cond = 1.0;
+    else if (status == NSPD_OK)
         cond = pddo_ops_interpolation(x, y, count, all, c->x, c->y, c->area, c->delta, w);
     if (status == NSPD_OK && !(cond <= PDDO_COND_MAX))
         status = NSPD_FAIL(NSPD_ERR_INPUT,

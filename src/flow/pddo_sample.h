@@ -10,9 +10,13 @@
  * every quadratic field and second order otherwise, and it never reads a
  * fictitious node (their values are boundary devices: the paper's zero
  * wall ghosts would bias a probe near a wall). Near a side or a body the
- * stencil is one-sided, like the lattice's truncated families. At a node
- * the value is the local fit's, not the node's own (a least-squares fit
- * does not interpolate).
+ * stencil is one-sided, like the lattice's truncated families. A point on
+ * a physical node (within 1e-9 dx) reads that node's value: the fit does
+ * not interpolate, and at a wall node, where the solution has a kink the
+ * quadratic cannot follow (a boundary layer thinner than delta), it would
+ * read 1 m/s of slip at the coarse confined cylinder's front (dx 0.2)
+ * instead of the wall's 0 - and the paper's wall probes are node values.
+ * Exactness for quadratics holds either way.
  *
  * Stencils are found once (core/neighbours.h, neighbours_query) and their
  * weights computed once when a point is added; a sample is one dot
