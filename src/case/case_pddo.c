@@ -16,6 +16,28 @@ static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
 
+/* A `name` (default `fallback`) into out (PDDO_LINE_NAME chars): letters,
+ * digits, _ (a file or column name), unlike the k names before it, which
+ * lie at seen + j stride (j < k). */
+static int read_name(CfgNode *m, const char *fallback, char *out, const char *seen, size_t stride,
+                     int k, const char *use) {
+    const char *name;
+    TRY(cfg_opt_string(m, "name", fallback, &name));
+    size_t len = strlen(name);
+    bool ok = len > 0 && len < PDDO_LINE_NAME;
+    for (const char *ch = name; *ch; ch++)
+        ok = ok && ((*ch >= 'a' && *ch <= 'z') || (*ch >= 'A' && *ch <= 'Z') ||
+                    (*ch >= '0' && *ch <= '9') || *ch == '_');
+    if (!ok)
+        return cfg_fail_at(m, "name", "'%s'; expected 1 to %d letters, digits or _ (%s)", name,
+                           PDDO_LINE_NAME - 1, use);
+    for (int j = 0; j < k; j++)
+        if (strcmp(seen + (size_t)j * stride, name) == 0)
+            return cfg_fail_at(m, "name", "'%s' used twice; expected unique names", name);
+    snprintf(out, PDDO_LINE_NAME, "%s", name);
+    return NSPD_OK;
+}
+
 /* `bodies`: circles on polar patches (paper 002 Sec. 4.1.2), at most
  * PDDO_MAX_BODIES, each with its own patch options. Two patches must stay
  * apart by their reaches (r_cut) plus a horizon, the room the cloud
@@ -38,6 +60,10 @@ static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
             return cfg_fail(m, "not a body; expected {shape: circle, center, radius}");
         int shape;
         TRY(cfg_req_enum(m, "shape", BODY_SHAPES, &shape));
+        char fallback[16];
+        snprintf(fallback, sizeof fallback, "body%d", b);
+        TRY(read_name(m, fallback, c->body_name[b], c->body_name[0], sizeof c->body_name[0], b,
+                      "the prefix of its columns"));
         PddoHole *h = &c->bodies[b];
         double centre[2];
         TRY(cfg_req_vec(m, "center", 2, centre));
@@ -241,23 +267,10 @@ static int read_lines(CfgNode *flow, PddoFlowConfig *c) {
         CfgNode *m = seq->child[l];
         if (m->kind != CFG_MAP) return cfg_fail(m, "not a line; expected {name, at, along}");
         PddoLine *line = &c->lines[l];
-        const char *name;
         char fallback[16];
         snprintf(fallback, sizeof fallback, "line%d", l);
-        TRY(cfg_opt_string(m, "name", fallback, &name));
-        size_t len = strlen(name);
-        bool ok = len > 0 && len < PDDO_LINE_NAME;
-        for (const char *ch = name; *ch; ch++)
-            ok = ok && ((*ch >= 'a' && *ch <= 'z') || (*ch >= 'A' && *ch <= 'Z') ||
-                        (*ch >= '0' && *ch <= '9') || *ch == '_');
-        if (!ok)
-            return cfg_fail_at(m, "name",
-                               "'%s'; expected 1 to %d letters, digits or _ (a file name)", name,
-                               PDDO_LINE_NAME - 1);
-        for (int k = 0; k < l; k++)
-            if (strcmp(c->lines[k].name, name) == 0)
-                return cfg_fail_at(m, "name", "'%s' used twice; expected unique names", name);
-        snprintf(line->name, sizeof line->name, "%s", name);
+        TRY(read_name(m, fallback, line->name, c->lines[0].name, sizeof c->lines[0], l,
+                      "a file name"));
         TRY(cfg_opt_vec(m, "at", 2, mid, line->at));
         TRY(cfg_opt_enum(m, "along", AXES, 1, &line->along));
         const int across = 1 - line->along;

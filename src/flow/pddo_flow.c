@@ -54,10 +54,9 @@ typedef struct {
     double *line_w[PDDO_MAX_LINES];
     double *line_col[PDDO_MAX_LINES][LINE_COLS];
     char line_file[PDDO_MAX_LINES][PDDO_LINE_NAME + 8];
-    /* the bodies' forces: each body's operators and record, and the
-     * record of their sum (with one body, body[0]'s own) */
+    /* the bodies' forces: each body's operators and record */
     PddoForces forces[PDDO_MAX_BODIES];
-    BodyRecord body[PDDO_MAX_BODIES], total;
+    BodyRecord body[PDDO_MAX_BODIES];
     double averaged_s; /* the time summed in the records */
     PddoSample probes; /* the driver's point probes (flow/pddo_sample.h) */
 } PddoFlow;
@@ -270,28 +269,27 @@ static void record_add(BodyRecord *r, double t, double dt, double threshold) {
     pddo_lift_periods_add(&r->lift, t, r->force.fy);
 }
 
-/* The bodies' forces after a step of dt, and their sum in body order (one
- * body: its own force, the same bits); from average_from on the records. */
+/* Each body's force after a step of dt; from average_from on the records. */
 static void record_force(PddoFlow *f, double dt) {
     const int nb = f->cloud.npatches;
     for (int b = 0; b < nb; b++)
         f->body[b].force = pddo_forces_eval(&f->forces[b], PDDO_TRACTION_FLUID_SIDE, NULL,
                                             f->step.u, f->step.v, f->step.p, f->cfg.step.mu);
-    PddoForce *T = &f->total.force;
-    *T = f->body[0].force;
-    for (int b = 1; b < nb; b++) {
-        const PddoForce *F = &f->body[b].force;
-        T->fx += F->fx, T->fy += F->fy;
-        T->fx_pressure += F->fx_pressure, T->fx_viscous += F->fx_viscous;
-        T->fy_pressure += F->fy_pressure, T->fy_viscous += F->fy_viscous;
-    }
     const double t = f->step.time;
     if (t < f->cfg.average_from) return;
     f->averaged_s += dt;
     const double threshold = lift_threshold(f);
-    record_add(&f->total, t, dt, threshold);
-    if (nb > 1)
-        for (int b = 0; b < nb; b++) record_add(&f->body[b], t, dt, threshold);
+    for (int b = 0; b < nb; b++) record_add(&f->body[b], t, dt, threshold);
+}
+
+/* The prefix of body b's history columns and summary keys: none for the
+ * first, "<name>_" for the others (the GKS flow's rule, couple/
+ * ghost_coupling.c). */
+static void body_prefix(const PddoFlow *f, int b, char *buf, size_t size) {
+    if (b == 0)
+        buf[0] = '\0';
+    else
+        snprintf(buf, size, "%s_", f->cfg.body_name[b]);
 }
 
 static int pddo_step(void *impl, double dt) {
@@ -389,7 +387,7 @@ static double dynamic_pressure(const PddoFlow *f) {
     return 0.5 * f->cfg.step.rho * f->cfg.reference_velocity * f->cfg.reference_velocity;
 }
 
-/* A force's history columns, their names prefixed ("" or "body<b>_"). */
+/* A body's history columns, their names prefixed (body_prefix). */
 static void history_force(Report *row, const char *prefix, const PddoForce *F, const PddoFlow *f) {
     const double qL = dynamic_pressure(f) * f->cfg.reference_length;
     char name[REPORT_MAX_NAME];
@@ -417,17 +415,14 @@ static void pddo_history(const void *impl, Report *row) {
     report_precise(row, "momentum_y_kg_per_s", totals[2]);
     report_real(row, "div_max_per_s", max_divergence(f));
     report_real(row, "ppe_shift", f->ppe.shift);
-    const int nb = f->cloud.npatches;
-    if (nb > 0) history_force(row, "", &f->total.force, f);
-    if (nb > 1)
-        for (int b = 0; b < nb; b++) {
-            char prefix[16];
-            snprintf(prefix, sizeof prefix, "body%d_", b);
-            history_force(row, prefix, &f->body[b].force, f);
-        }
+    for (int b = 0; b < f->cloud.npatches; b++) {
+        char prefix[PDDO_LINE_NAME + 1];
+        body_prefix(f, b, prefix, sizeof prefix);
+        history_force(row, prefix, &f->body[b].force, f);
+    }
 }
 
-/* A record's summary keys, their names prefixed ("" or "body<b>_"): the
+/* A body's summary keys, their names prefixed (body_prefix): the
  * means over the window (the last step's force when the run ended, steady,
  * before it began) and the lift's periods. */
 static void summary_force(Report *out, const char *prefix, const BodyRecord *r, const PddoFlow *f) {
@@ -487,14 +482,12 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     if (nb > 0) {
         report_real(out, "average_from_s", f->cfg.average_from);
         report_real(out, "averaged_s", f->averaged_s);
-        summary_force(out, "", &f->total, f);
     }
-    if (nb > 1)
-        for (int b = 0; b < nb; b++) {
-            char prefix[16];
-            snprintf(prefix, sizeof prefix, "body%d_", b);
-            summary_force(out, prefix, &f->body[b], f);
-        }
+    for (int b = 0; b < nb; b++) {
+        char prefix[PDDO_LINE_NAME + 1];
+        body_prefix(f, b, prefix, sizeof prefix);
+        summary_force(out, prefix, &f->body[b], f);
+    }
     report_real(out, "node_updates_per_s",
                 run->wall_s > 0 ? (double)c->n * (double)run->steps / run->wall_s : 0.0);
 }
@@ -633,8 +626,7 @@ static void pddo_fields(void *impl, FieldSet *out) {
     }
 }
 
-/* A force record's state (the sum's, and with several bodies each body's
- * in body order). */
+/* A body's force record. */
 static int checkpoint_record(Checkpoint *ck, BodyRecord *r) {
     int64_t six = 6;
     TRY(checkpoint_io_array(ck, "pddo.force_sum", r->sum, sizeof(double), &six, 6));
@@ -673,12 +665,8 @@ static int pddo_checkpoint(void *impl, Checkpoint *ck) {
     TRY(checkpoint_io_double(ck, "pddo.dudt_max", &f->step.dudt_max));
     TRY(checkpoint_io_double(ck, "pddo.shift", &f->ppe.shift));
     const int nb = f->cloud.npatches;
-    if (nb > 0) {
-        TRY(checkpoint_io_double(ck, "pddo.averaged_s", &f->averaged_s));
-        TRY(checkpoint_record(ck, &f->total));
-    }
-    if (nb > 1)
-        for (int b = 0; b < nb; b++) TRY(checkpoint_record(ck, &f->body[b]));
+    if (nb > 0) TRY(checkpoint_io_double(ck, "pddo.averaged_s", &f->averaged_s));
+    for (int b = 0; b < nb; b++) TRY(checkpoint_record(ck, &f->body[b]));
     return checkpoint_io_int64(ck, "pddo.steady_step", &f->steady_step);
 }
 

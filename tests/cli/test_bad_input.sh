@@ -142,6 +142,8 @@ check "PDDO nine bodies" "flow.bodies: 9 bodies; expected at most 8" \
 check "PDDO probe inside a body" "probe 'inside': at \\[5.1, 3\\] m is inside body 0" \
     "$nspd" run "$cyl" -o "$work/result" --set flow.spacing=0.2 --set flow.bodies.0.patch_radius=1.5 \
     --set "output.probes=[{type: point, name: inside, on: flow, at: [5.1, 3.0]}]"
+check "PDDO body names" "flow.bodies\[1\].name: .body0. used twice" \
+    "$nspd" check "$src/cases/cylinders_tandem_re10.yaml" --set flow.bodies.1.name=body0 --set flow.bodies.0.name=body0
 check "PDDO body shape" "flow.bodies\[0\].shape" \
     "$nspd" check "$cyl" --set "flow.bodies=[{shape: naca, center: [5, 3], radius: 0.5}]"
 mkdir -p "$work/existing"
