@@ -90,8 +90,9 @@ static int compare_int32(const void *a, const void *b) {
  * their number. */
 static int64_t visit_at(const CellList *cl, const double *const x[3], const double at[3],
                         int64_t self, double r2, int32_t *out) {
+    const int dim = cl->dim < 3 ? cl->dim : 3; /* at[] holds 3 (the analyser cannot tell) */
     int64_t c[3] = {0, 0, 0}, found = 0;
-    for (int d = 0; d < cl->dim; d++) c[d] = cell_coord(cl, at[d], d);
+    for (int d = 0; d < dim; d++) c[d] = cell_coord(cl, at[d], d);
     int64_t klo = cl->dim == 3 ? c[2] - 1 : 0, khi = cl->dim == 3 ? c[2] + 1 : 0;
     for (int64_t k = klo; k <= khi; k++) {
         if (k < 0 || k >= cl->ncell[2]) continue;
@@ -104,7 +105,7 @@ static int64_t visit_at(const CellList *cl, const double *const x[3], const doub
                     int32_t p = cl->cell_points[s];
                     if (p == self) continue;
                     double d2 = 0.0;
-                    for (int d = 0; d < cl->dim; d++) {
+                    for (int d = 0; d < dim; d++) {
                         double e = x[d][p] - at[d];
                         d2 += e * e;
                     }
