@@ -16,8 +16,32 @@ static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
 
+/* A `name` (default `fallback`) into out (PDDO_LINE_NAME chars): letters,
+ * digits, _ (a file or column name), unlike the k names before it, which
+ * lie at seen + j stride (j < k). */
+static int read_name(CfgNode *m, const char *fallback, char *out, const char *seen, size_t stride,
+                     int k, const char *use) {
+    const char *name;
+    TRY(cfg_opt_string(m, "name", fallback, &name));
+    size_t len = strlen(name);
+    bool ok = len > 0 && len < PDDO_LINE_NAME;
+    for (const char *ch = name; *ch; ch++)
+        ok = ok && ((*ch >= 'a' && *ch <= 'z') || (*ch >= 'A' && *ch <= 'Z') ||
+                    (*ch >= '0' && *ch <= '9') || *ch == '_');
+    if (!ok)
+        return cfg_fail_at(m, "name", "'%s'; expected 1 to %d letters, digits or _ (%s)", name,
+                           PDDO_LINE_NAME - 1, use);
+    for (int j = 0; j < k; j++)
+        if (strcmp(seen + (size_t)j * stride, name) == 0)
+            return cfg_fail_at(m, "name", "'%s' used twice; expected unique names", name);
+    snprintf(out, PDDO_LINE_NAME, "%s", name);
+    return NSPD_OK;
+}
+
 /* `bodies`: circles on polar patches (paper 002 Sec. 4.1.2), at most
- * PDDO_MAX_BODIES; the patch options of the first apply to all. */
+ * PDDO_MAX_BODIES, each with its own patch options. Two patches must stay
+ * apart by their reaches (r_cut) plus a horizon, the room the cloud
+ * demands (flow/pddo_cloud.c): then no family holds the rings of both. */
 static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
     CfgNode *seq = cfg_map_find(flow, "bodies");
     if (!seq || seq->is_null) {
@@ -26,15 +50,20 @@ static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
     }
     TRY(cfg_req_seq(flow, "bodies", &seq));
     if (seq->count > PDDO_MAX_BODIES)
-        return cfg_fail(seq, "%d bodies; expected at most %d (one polar patch)", seq->count,
+        return cfg_fail(seq, "%d bodies; expected at most %d (one polar patch each)", seq->count,
                         PDDO_MAX_BODIES);
     const double dx = c->cloud.dx;
+    PddoPolarPatch patches[PDDO_MAX_BODIES];
     for (int b = 0; b < seq->count; b++) {
         CfgNode *m = seq->child[b];
         if (m->kind != CFG_MAP)
             return cfg_fail(m, "not a body; expected {shape: circle, center, radius}");
         int shape;
         TRY(cfg_req_enum(m, "shape", BODY_SHAPES, &shape));
+        char fallback[16];
+        snprintf(fallback, sizeof fallback, "body%d", b);
+        TRY(read_name(m, fallback, c->body_name[b], c->body_name[0], sizeof c->body_name[0], b,
+                      "the prefix of its columns"));
         PddoHole *h = &c->bodies[b];
         double centre[2];
         TRY(cfg_req_vec(m, "center", 2, centre));
@@ -59,22 +88,33 @@ static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
         TRY(cfg_check_range(m, "dr_over_spacing", dr, 0.1, 2.0,
                             "the rings' radial spacing over the lattice spacing (the paper: "
                             "0.69)"));
-        c->polar = (PddoPolarSpec){.dtheta = dtheta, .dr = dr * dx, .r_patch = r_patch};
-        PddoPolarPatch patch;
-        if (pddo_polar_layout(&patch, h->x, h->y, h->radius, &c->polar, dx) != NSPD_OK)
+        c->polar[b] = (PddoPolarSpec){.dtheta = dtheta, .dr = dr * dx, .r_patch = r_patch};
+        PddoPolarPatch *patch = &patches[b];
+        if (pddo_polar_layout(patch, h->x, h->y, h->radius, &c->polar[b], dx) != NSPD_OK)
             return cfg_fail_at(m, "radius",
                                "%g m with patch_radius %g m, dtheta %g, dr %g m: no polar patch "
                                "fits (%s); expected a radius above three rings and a patch with "
                                "more fluid rings than three",
                                h->radius, r_patch, dtheta, dr * dx, nspd_error_message());
         /* the cloud's room: two fictitious layers' depth beyond r_cut */
-        const double reach = patch.r_cut + 2.0 * c->cloud.layers * dx;
+        const double reach = patch->r_cut + 2.0 * c->cloud.layers * dx;
         if (!(h->x - reach > c->cloud.lo[0] && h->x + reach < c->cloud.hi[0] &&
               h->y - reach > c->cloud.lo[1] && h->y + reach < c->cloud.hi[1]))
             return cfg_fail_at(m, "patch_radius",
                                "%g m: the patch and 2 x 3 fictitious layers reach %g m from "
                                "the centre, beyond the rectangle; expected a smaller patch",
                                r_patch, reach);
+        const double horizon = c->cloud.horizon_factor * dx;
+        for (int a = 0; a < b; a++) {
+            const double apart = patch->r_cut + patches[a].r_cut + horizon;
+            if (!(hypot(h->x - c->bodies[a].x, h->y - c->bodies[a].y) >= apart))
+                return cfg_fail_at(m, "center",
+                                   "[%g, %g]: its polar patch (reach %g m) overlaps that of "
+                                   "body %d at [%g, %g] (reach %g m); expected the centres at "
+                                   "least %g m apart (both reaches and a horizon)",
+                                   h->x, h->y, patch->r_cut, a, c->bodies[a].x, c->bodies[a].y,
+                                   patches[a].r_cut, apart);
+        }
         TRY(cfg_end_map(m));
         c->body_count = b + 1;
     }
@@ -227,23 +267,10 @@ static int read_lines(CfgNode *flow, PddoFlowConfig *c) {
         CfgNode *m = seq->child[l];
         if (m->kind != CFG_MAP) return cfg_fail(m, "not a line; expected {name, at, along}");
         PddoLine *line = &c->lines[l];
-        const char *name;
         char fallback[16];
         snprintf(fallback, sizeof fallback, "line%d", l);
-        TRY(cfg_opt_string(m, "name", fallback, &name));
-        size_t len = strlen(name);
-        bool ok = len > 0 && len < PDDO_LINE_NAME;
-        for (const char *ch = name; *ch; ch++)
-            ok = ok && ((*ch >= 'a' && *ch <= 'z') || (*ch >= 'A' && *ch <= 'Z') ||
-                        (*ch >= '0' && *ch <= '9') || *ch == '_');
-        if (!ok)
-            return cfg_fail_at(m, "name",
-                               "'%s'; expected 1 to %d letters, digits or _ (a file name)", name,
-                               PDDO_LINE_NAME - 1);
-        for (int k = 0; k < l; k++)
-            if (strcmp(c->lines[k].name, name) == 0)
-                return cfg_fail_at(m, "name", "'%s' used twice; expected unique names", name);
-        snprintf(line->name, sizeof line->name, "%s", name);
+        TRY(read_name(m, fallback, line->name, c->lines[0].name, sizeof c->lines[0], l,
+                      "a file name"));
         TRY(cfg_opt_vec(m, "at", 2, mid, line->at));
         TRY(cfg_opt_enum(m, "along", AXES, 1, &line->along));
         const int across = 1 - line->along;

@@ -85,12 +85,14 @@ static int compare_int32(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
-/* Visits the neighbours of point i; writes them to out (if not NULL) and
- * returns their number. */
-static int64_t visit(const CellList *cl, const double *const x[3], int64_t i, double r2,
-                     int32_t *out) {
+/* Visits the neighbours of the position at[] (point `self`, skipped, or
+ * -1 for a query point); writes them to out (if not NULL) and returns
+ * their number. */
+static int64_t visit_at(const CellList *cl, const double *const x[3], const double at[3],
+                        int64_t self, double r2, int32_t *out) {
+    const int dim = cl->dim < 3 ? cl->dim : 3; /* at[] holds 3 (the analyser cannot tell) */
     int64_t c[3] = {0, 0, 0}, found = 0;
-    for (int d = 0; d < cl->dim; d++) c[d] = cell_coord(cl, x[d][i], d);
+    for (int d = 0; d < dim; d++) c[d] = cell_coord(cl, at[d], d);
     int64_t klo = cl->dim == 3 ? c[2] - 1 : 0, khi = cl->dim == 3 ? c[2] + 1 : 0;
     for (int64_t k = klo; k <= khi; k++) {
         if (k < 0 || k >= cl->ncell[2]) continue;
@@ -101,10 +103,10 @@ static int64_t visit(const CellList *cl, const double *const x[3], int64_t i, do
                 int64_t cell = (k * cl->ncell[1] + j) * cl->ncell[0] + ii;
                 for (int64_t s = cl->cell_start[cell]; s < cl->cell_start[cell + 1]; s++) {
                     int32_t p = cl->cell_points[s];
-                    if (p == i) continue;
+                    if (p == self) continue;
                     double d2 = 0.0;
-                    for (int d = 0; d < cl->dim; d++) {
-                        double e = x[d][p] - x[d][i];
+                    for (int d = 0; d < dim; d++) {
+                        double e = x[d][p] - at[d];
                         d2 += e * e;
                     }
                     if (d2 <= r2) {
@@ -116,6 +118,14 @@ static int64_t visit(const CellList *cl, const double *const x[3], int64_t i, do
         }
     }
     return found;
+}
+
+/* Visits the neighbours of point i (visit_at). */
+static int64_t visit(const CellList *cl, const double *const x[3], int64_t i, double r2,
+                     int32_t *out) {
+    double at[3] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < cl->dim; d++) at[d] = x[d][i];
+    return visit_at(cl, x, at, i, r2, out);
 }
 
 int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
@@ -142,6 +152,32 @@ int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon
     } else {
         nspd_free(first);
     }
+    nspd_free(&cl.cell_start);
+    nspd_free(&cl.cell_points);
+    return status;
+}
+
+int neighbours_query(int64_t n, int dim, const double *const x[3], int64_t m,
+                     const double *const q[3], double horizon, int64_t **first, int32_t **nbr) {
+    CellList cl = {0};
+    TRY(cells_build(&cl, n, dim, x, horizon));
+    const double r2 = horizon * horizon * (1.0 + 1e-12);
+    int status = nspd_alloc(first, (size_t)m + 1, sizeof(int64_t));
+    for (int pass = 0; pass < 2 && status == NSPD_OK; pass++) {
+        int64_t *f = *first;
+        for (int64_t i = 0; i < m; i++) {
+            double at[3] = {0.0, 0.0, 0.0};
+            for (int d = 0; d < dim; d++) at[d] = q[d][i];
+            if (pass == 0) {
+                f[i + 1] = f[i] + visit_at(&cl, x, at, -1, r2, NULL);
+            } else {
+                visit_at(&cl, x, at, -1, r2, *nbr + f[i]);
+                qsort(*nbr + f[i], (size_t)(f[i + 1] - f[i]), sizeof(int32_t), compare_int32);
+            }
+        }
+        if (pass == 0) status = nspd_alloc(nbr, (size_t)f[m], sizeof(int32_t));
+    }
+    if (status != NSPD_OK) nspd_free(first);
     nspd_free(&cl.cell_start);
     nspd_free(&cl.cell_points);
     return status;

@@ -1,7 +1,8 @@
 /* Neighbour search: the family of every point within a horizon, as
  * compressed rows (each point lists all its neighbours, ascending). The one
  * neighbour search of the code base: the PD solid's bonds and the PDDO
- * flow's families (flow/pddo_cloud.c) both come from it. */
+ * flow's families (flow/pddo_cloud.c) and its probes' stencils
+ * (flow/pddo_sample.c) all come from it. */
 #ifndef NSPD_CORE_NEIGHBOURS_H
 #define NSPD_CORE_NEIGHBOURS_H
 
@@ -13,5 +14,11 @@
  * result does not depend on the thread count. */
 int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
                     int32_t **nbr);
+
+/* The same for m query points q (not among the n points): for each, all
+ * points j with |x_j - q| <= horizon, ascending, into *first (m + 1
+ * offsets) and *nbr (first[m] indices). Serial (queries are few: probes). */
+int neighbours_query(int64_t n, int dim, const double *const x[3], int64_t m,
+                     const double *const q[3], double horizon, int64_t **first, int32_t **nbr);
 
 #endif

@@ -114,6 +114,19 @@ int flow_set_sources(Flow *f, FlowSources *src) {
     return f->ops->set_sources(f->impl, src);
 }
 
+int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id) {
+    if (!f->ops->probe_add)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "probe '%s': point probes on the flow need a grid or a solver that "
+                         "samples its nodes; the '%s' solver has neither",
+                         name, f->ops->name);
+    return f->ops->probe_add(f->impl, name, x, y, id);
+}
+
+void flow_probe_state(const Flow *f, int64_t id, double out[5]) {
+    f->ops->probe_state(f->impl, id, out);
+}
+
 void flow_totals(const Flow *f, double totals[4]) {
     f->ops->totals(f->impl, totals);
 }

@@ -112,6 +112,15 @@ typedef struct FlowOps {
     /* replaces the sources of the next steps (NULL src: none); NULL op:
      * the solver takes none (an input error when asked) */
     int (*set_sources)(void *impl, FlowSources *src);
+    /* point probes on a mesh without cells (MESH_POINTS): prepares the
+     * state at (x, y) once, before the run (it may allocate), and returns
+     * its handle for probe_state in *id; NSPD_ERR_INPUT naming the probe
+     * `name` for a point outside the fluid. NULL: none (a grid's probes
+     * read cell_state) */
+    int (*probe_add)(void *impl, const char *name, double x, double y, int64_t *id);
+    /* density, u, v, pressure, temperature at probe `id` (NaN for what the
+     * solver does not have); allocation free */
+    void (*probe_state)(const void *impl, int64_t id, double out[5]);
     /* integrals of mass, x and y momentum, energy over the fluid */
     void (*totals)(const void *impl, double totals[4]);
     void (*history)(const void *impl, Report *row);
@@ -152,6 +161,9 @@ void flow_cell_state(const Flow *f, int64_t cell, double out[5]);
 FlowReference flow_reference(const Flow *f);
 int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out);
 int flow_set_sources(Flow *f, FlowSources *src);
+/* FlowOps.probe_add; NSPD_ERR_INPUT for a solver without point probes. */
+int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id);
+void flow_probe_state(const Flow *f, int64_t id, double out[5]);
 void flow_totals(const Flow *f, double totals[4]);
 void flow_history(const Flow *f, Report *row);
 void flow_summary(const Flow *f, const RunStats *run, Report *out);

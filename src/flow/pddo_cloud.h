@@ -43,6 +43,7 @@
 
 #include "flow/pddo_polar.h"
 
+#include <stdbool.h>
 #include <stdint.h>
 
 enum { PDDO_LEFT, PDDO_RIGHT, PDDO_BOTTOM, PDDO_TOP, PDDO_SIDES };
@@ -62,6 +63,12 @@ typedef enum {
                             (staircase) or on a polar patch's fictitious rings */
     PDDO_NODE_WALL,      /* on a polar patch's wall ring (r = R): at rest, a PPE row */
 } PddoNodeKind;
+
+/* The nodes that carry the solution (outputs, totals, probes): fluid, side
+ * and wall ring nodes; the fictitious ones are boundary devices. */
+static inline bool pddo_node_physical(uint8_t kind) {
+    return kind == PDDO_NODE_FLUID || kind == PDDO_NODE_SIDE || kind == PDDO_NODE_WALL;
+}
 
 typedef struct {
     double x, y, radius; /* m */

@@ -10,6 +10,7 @@
 #include "flow/pddo_forces.h"
 #include "flow/pddo_ops.h"
 #include "flow/pddo_ppe.h"
+#include "flow/pddo_sample.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -23,6 +24,15 @@ enum { OX, OY, OU, OV, OP, OW, OD, OS, OK_KIND, OUT_ARRAYS };
  * sum's terms. */
 enum { GUX, GUY, GVX, GVY, TERM, NODE_ARRAYS };
 enum { LINE_COLS = 5 };
+
+/* A force's record: the last step's force, the dt-weighted sums from
+ * average_from on (fx, fy, fx_p, fx_v, fy_p, fy_v) and the lift's upward
+ * zero crossings there. */
+typedef struct {
+    PddoForce force;
+    double sum[6];
+    PddoLiftPeriods lift;
+} BodyRecord;
 
 typedef struct {
     PddoFlowConfig cfg;
@@ -44,13 +54,11 @@ typedef struct {
     double *line_w[PDDO_MAX_LINES];
     double *line_col[PDDO_MAX_LINES][LINE_COLS];
     char line_file[PDDO_MAX_LINES][PDDO_LINE_NAME + 8];
-    /* the body's force (one body): the operators, the last step's force,
-     * the dt-weighted sums from average_from on (fx, fy, fx_p, fx_v, fy_p,
-     * fy_v; the time), and the lift's upward zero crossings there */
-    PddoForces forces;
-    PddoForce force;
-    double force_sum[6], averaged_s;
-    PddoLiftPeriods lift;
+    /* the bodies' forces: each body's operators and record */
+    PddoForces forces[PDDO_MAX_BODIES];
+    BodyRecord body[PDDO_MAX_BODIES];
+    double averaged_s; /* the time summed in the records */
+    PddoSample probes; /* the driver's point probes (flow/pddo_sample.h) */
 } PddoFlow;
 
 double pddo_flow_dt_limit(const PddoFlowConfig *c) {
@@ -72,7 +80,7 @@ static void count_nodes(const PddoFlowConfig *c, double *nodes, double *members)
     *members = *nodes * fmax(4.0, M_PI * h * h - 1.0);
     for (int b = 0; b < c->body_count; b++) { /* the patch's rings for the lattice it removes */
         PddoPolarPatch p;
-        if (pddo_polar_layout(&p, c->bodies[b].x, c->bodies[b].y, c->bodies[b].radius, &c->polar,
+        if (pddo_polar_layout(&p, c->bodies[b].x, c->bodies[b].y, c->bodies[b].radius, &c->polar[b],
                               s->dx) != NSPD_OK)
             continue;
         const double ring_nodes = (double)pddo_polar_count(&p);
@@ -111,7 +119,8 @@ static FlowEstimate pddo_estimate(const FlowConfig *fc) {
 
 static void pddo_destroy(void *impl) {
     PddoFlow *f = impl;
-    pddo_forces_free(&f->forces);
+    for (int b = 0; b < PDDO_MAX_BODIES; b++) pddo_forces_free(&f->forces[b]);
+    pddo_sample_free(&f->probes);
     pddo_step_free(&f->step);
     pddo_ppe_free(&f->ppe);
     pddo_ops_free(&f->ops);
@@ -179,31 +188,26 @@ static int build_line(PddoFlow *f, int l) {
     return NSPD_OK;
 }
 
-/* Nodes in the outputs and totals: fluid, side and a body's wall ring. */
-static bool is_physical(uint8_t kind) {
-    return kind == PDDO_NODE_FLUID || kind == PDDO_NODE_SIDE || kind == PDDO_NODE_WALL;
-}
-
 static int build(PddoFlow *f) {
     const double t0 = nspd_wall_time();
     if (f->cfg.body_count > 0) {
         f->cfg.cloud.holes = f->cfg.bodies;
         f->cfg.cloud.nholes = f->cfg.body_count;
-        f->cfg.cloud.polar = &f->cfg.polar;
+        f->cfg.cloud.polar = f->cfg.polar;
     }
     TRY(pddo_cloud_build(&f->cloud, &f->cfg.cloud));
     const PddoCloud *c = &f->cloud;
     TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
     TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
     TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
-    if (c->npatches > 0) TRY(pddo_forces_build(&f->forces, c, 0));
+    for (int b = 0; b < c->npatches; b++) TRY(pddo_forces_build(&f->forces[b], c, b));
     f->setup_s = nspd_wall_time() - t0;
     for (int64_t k = 0; k < c->n; k++)
-        if (is_physical(c->kind[k])) f->physical++;
+        if (pddo_node_physical(c->kind[k])) f->physical++;
     TRY(nspd_alloc(&f->phys, (size_t)f->physical, sizeof(int64_t)));
     int64_t m = 0;
     for (int64_t k = 0; k < c->n; k++)
-        if (is_physical(c->kind[k])) f->phys[m++] = k;
+        if (pddo_node_physical(c->kind[k])) f->phys[m++] = k;
     for (int k = 0; k < OUT_ARRAYS; k++)
         TRY(nspd_alloc(&f->out[k], (size_t)f->physical, sizeof(double)));
     for (int k = 0; k < NODE_ARRAYS; k++)
@@ -252,19 +256,43 @@ static double lift_threshold(const PddoFlow *f) {
            c->reference_length;
 }
 
-/* The body's force after a step of dt; from average_from on its dt-weighted
- * sums and the lift's periods (pddo_lift_periods_add). */
+/* The six parts of a force in the order of BodyRecord.sum. */
+static void force_parts(const PddoForce *F, double part[6]) {
+    part[0] = F->fx, part[1] = F->fy, part[2] = F->fx_pressure;
+    part[3] = F->fx_viscous, part[4] = F->fy_pressure, part[5] = F->fy_viscous;
+}
+
+/* From average_from on: the record's dt-weighted sums and the lift's
+ * periods (pddo_lift_periods_add). */
+static void record_add(BodyRecord *r, double t, double dt, double threshold) {
+    double part[6];
+    force_parts(&r->force, part);
+    for (int k = 0; k < 6; k++) r->sum[k] += part[k] * dt;
+    r->lift.threshold = threshold;
+    pddo_lift_periods_add(&r->lift, t, r->force.fy);
+}
+
+/* Each body's force after a step of dt; from average_from on the records. */
 static void record_force(PddoFlow *f, double dt) {
-    const PddoForce F = pddo_forces_eval(&f->forces, PDDO_TRACTION_FLUID_SIDE, NULL, f->step.u,
-                                         f->step.v, f->step.p, f->cfg.step.mu);
-    f->force = F;
+    const int nb = f->cloud.npatches;
+    for (int b = 0; b < nb; b++)
+        f->body[b].force = pddo_forces_eval(&f->forces[b], PDDO_TRACTION_FLUID_SIDE, NULL,
+                                            f->step.u, f->step.v, f->step.p, f->cfg.step.mu);
     const double t = f->step.time;
     if (t < f->cfg.average_from) return;
-    const double part[6] = {F.fx, F.fy, F.fx_pressure, F.fx_viscous, F.fy_pressure, F.fy_viscous};
-    for (int k = 0; k < 6; k++) f->force_sum[k] += part[k] * dt;
     f->averaged_s += dt;
-    f->lift.threshold = lift_threshold(f);
-    pddo_lift_periods_add(&f->lift, t, F.fy);
+    const double threshold = lift_threshold(f);
+    for (int b = 0; b < nb; b++) record_add(&f->body[b], t, dt, threshold);
+}
+
+/* The prefix of body b's history columns and summary keys: none for the
+ * first, "<name>_" for the others (the GKS flow's rule, couple/
+ * ghost_coupling.c). */
+static void body_prefix(const PddoFlow *f, int b, char *buf, size_t size) {
+    if (b == 0)
+        buf[0] = '\0';
+    else
+        snprintf(buf, size, "%s_", f->cfg.body_name[b]);
 }
 
 static int pddo_step(void *impl, double dt) {
@@ -298,6 +326,23 @@ static void pddo_cell_state(const void *impl, int64_t node, double out[5]) {
     out[2] = f->step.v[node];
     out[3] = f->step.p[node];
     out[4] = 0.0; /* incompressible: no temperature */
+}
+
+/* A point probe: its interpolation stencil (flow/pddo_sample.h). */
+static int pddo_probe_add(void *impl, const char *name, double x, double y, int64_t *id) {
+    PddoFlow *f = impl;
+    TRY(pddo_sample_add(&f->probes, &f->cloud, x, y, name));
+    *id = f->probes.n - 1;
+    return NSPD_OK;
+}
+
+static void pddo_probe_state(const void *impl, int64_t id, double out[5]) {
+    const PddoFlow *f = impl;
+    out[0] = f->cfg.step.rho;
+    out[1] = pddo_sample_at(&f->probes, f->step.u, id);
+    out[2] = pddo_sample_at(&f->probes, f->step.v, id);
+    out[3] = pddo_sample_at(&f->probes, f->step.p, id);
+    out[4] = (double)NAN; /* incompressible: no temperature */
 }
 
 static FlowReference pddo_reference(const void *impl) {
@@ -345,6 +390,23 @@ static double dynamic_pressure(const PddoFlow *f) {
     return 0.5 * f->cfg.step.rho * f->cfg.reference_velocity * f->cfg.reference_velocity;
 }
 
+/* A body's history columns, their names prefixed (body_prefix). */
+static void history_force(Report *row, const char *prefix, const PddoForce *F, const PddoFlow *f) {
+    const double qL = dynamic_pressure(f) * f->cfg.reference_length;
+    char name[REPORT_MAX_NAME];
+#define COLUMN(report, key, value)                                                                 \
+    (snprintf(name, sizeof name, "%s%s", prefix, key), report(row, name, value))
+    COLUMN(report_precise, "drag_n", F->fx);
+    COLUMN(report_precise, "lift_n", F->fy);
+    COLUMN(report_real, "drag_pressure_n", F->fx_pressure);
+    COLUMN(report_real, "drag_viscous_n", F->fx_viscous);
+    COLUMN(report_real, "lift_pressure_n", F->fy_pressure);
+    COLUMN(report_real, "lift_viscous_n", F->fy_viscous);
+    COLUMN(report_precise, "cd", F->fx / qL);
+    COLUMN(report_precise, "cl", F->fy / qL);
+#undef COLUMN
+}
+
 static void pddo_history(const void *impl, Report *row) {
     const PddoFlow *f = impl;
     double totals[4];
@@ -356,18 +418,44 @@ static void pddo_history(const void *impl, Report *row) {
     report_precise(row, "momentum_y_kg_per_s", totals[2]);
     report_real(row, "div_max_per_s", max_divergence(f));
     report_real(row, "ppe_shift", f->ppe.shift);
-    if (f->cloud.npatches > 0) {
-        const PddoForce *F = &f->force;
-        const double qL = dynamic_pressure(f) * f->cfg.reference_length;
-        report_precise(row, "drag_n", F->fx);
-        report_precise(row, "lift_n", F->fy);
-        report_real(row, "drag_pressure_n", F->fx_pressure);
-        report_real(row, "drag_viscous_n", F->fx_viscous);
-        report_real(row, "lift_pressure_n", F->fy_pressure);
-        report_real(row, "lift_viscous_n", F->fy_viscous);
-        report_precise(row, "cd", F->fx / qL);
-        report_precise(row, "cl", F->fy / qL);
+    for (int b = 0; b < f->cloud.npatches; b++) {
+        char prefix[PDDO_LINE_NAME + 1];
+        body_prefix(f, b, prefix, sizeof prefix);
+        history_force(row, prefix, &f->body[b].force, f);
     }
+}
+
+/* A body's summary keys, their names prefixed (body_prefix): the
+ * means over the window (the last step's force when the run ended, steady,
+ * before it began) and the lift's periods. */
+static void summary_force(Report *out, const char *prefix, const BodyRecord *r, const PddoFlow *f) {
+    const double qL = dynamic_pressure(f) * f->cfg.reference_length;
+    const double T = f->averaged_s > 0.0 ? f->averaged_s : 1.0;
+    double last[6];
+    force_parts(&r->force, last);
+    const double *m = f->averaged_s > 0.0 ? r->sum : last;
+    char name[REPORT_MAX_NAME];
+#define KEY(report, key, value)                                                                    \
+    (snprintf(name, sizeof name, "%s%s", prefix, key), report(out, name, value))
+    KEY(report_real, "drag_n", m[0] / T);
+    KEY(report_real, "lift_n", m[1] / T);
+    KEY(report_real, "drag_pressure_n", m[2] / T);
+    KEY(report_real, "drag_viscous_n", m[3] / T);
+    KEY(report_real, "lift_pressure_n", m[4] / T);
+    KEY(report_real, "lift_viscous_n", m[5] / T);
+    KEY(report_real, "cd", m[0] / T / qL);
+    KEY(report_real, "cl", m[1] / T / qL);
+    double period, amp;
+    const int64_t periods = pddo_lift_periods_result(&r->lift, &period, &amp);
+    KEY(report_int, "lift_periods", periods);
+    if (periods > 0) {
+        KEY(report_real, "lift_amplitude_n", amp);
+        KEY(report_real, "cl_amplitude", amp / qL);
+        KEY(report_real, "period_s", period);
+        KEY(report_real, "strouhal",
+            f->cfg.reference_length / (period * f->cfg.reference_velocity));
+    }
+#undef KEY
 }
 
 static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
@@ -393,34 +481,15 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "dudt_max_m_per_s2", f->step.dudt_max);
     report_real(out, "kinetic_energy_J_per_m", totals[3]);
     report_real(out, "div_max_per_s", max_divergence(f));
-    if (f->cloud.npatches > 0) {
-        const double qL = dynamic_pressure(f) * f->cfg.reference_length;
-        /* the means over the window; the last step's force when the run
-         * ended (steady) before it began */
-        const double T = f->averaged_s > 0.0 ? f->averaged_s : 1.0;
-        const double last[6] = {f->force.fx,         f->force.fy,          f->force.fx_pressure,
-                                f->force.fx_viscous, f->force.fy_pressure, f->force.fy_viscous};
-        const double *m = f->averaged_s > 0.0 ? f->force_sum : last;
+    const int nb = f->cloud.npatches;
+    if (nb > 0) {
         report_real(out, "average_from_s", f->cfg.average_from);
         report_real(out, "averaged_s", f->averaged_s);
-        report_real(out, "drag_n", m[0] / T);
-        report_real(out, "lift_n", m[1] / T);
-        report_real(out, "drag_pressure_n", m[2] / T);
-        report_real(out, "drag_viscous_n", m[3] / T);
-        report_real(out, "lift_pressure_n", m[4] / T);
-        report_real(out, "lift_viscous_n", m[5] / T);
-        report_real(out, "cd", m[0] / T / qL);
-        report_real(out, "cl", m[1] / T / qL);
-        double period, amp;
-        const int64_t periods = pddo_lift_periods_result(&f->lift, &period, &amp);
-        report_int(out, "lift_periods", periods);
-        if (periods > 0) {
-            report_real(out, "lift_amplitude_n", amp);
-            report_real(out, "cl_amplitude", amp / qL);
-            report_real(out, "period_s", period);
-            report_real(out, "strouhal",
-                        f->cfg.reference_length / (period * f->cfg.reference_velocity));
-        }
+    }
+    for (int b = 0; b < nb; b++) {
+        char prefix[PDDO_LINE_NAME + 1];
+        body_prefix(f, b, prefix, sizeof prefix);
+        summary_force(out, prefix, &f->body[b], f);
     }
     report_real(out, "node_updates_per_s",
                 run->wall_s > 0 ? (double)c->n * (double)run->steps / run->wall_s : 0.0);
@@ -560,6 +629,27 @@ static void pddo_fields(void *impl, FieldSet *out) {
     }
 }
 
+/* A body's force record. */
+static int checkpoint_record(Checkpoint *ck, BodyRecord *r) {
+    int64_t six = 6;
+    TRY(checkpoint_io_array(ck, "pddo.force_sum", r->sum, sizeof(double), &six, 6));
+    PddoLiftPeriods *lp = &r->lift;
+    PddoForce *F = &r->force;
+    double *const d[] = {&F->fx,          &F->fy,         &F->fx_pressure, &F->fx_viscous,
+                         &F->fy_pressure, &F->fy_viscous, &lp->prev_t,     &lp->prev,
+                         &lp->first_t,    &lp->last_t,    &lp->run_max,    &lp->run_min,
+                         &lp->amp_max,    &lp->amp_min};
+    static const char *const name[] = {
+        "pddo.fx",      "pddo.fy",          "pddo.fx_p",      "pddo.fx_v",    "pddo.fy_p",
+        "pddo.fy_v",    "pddo.lift_prev_t", "pddo.lift_prev", "pddo.cross_0", "pddo.cross_last",
+        "pddo.run_max", "pddo.run_min",     "pddo.amp_max",   "pddo.amp_min"};
+    for (size_t k = 0; k < sizeof d / sizeof d[0]; k++)
+        TRY(checkpoint_io_double(ck, name[k], d[k]));
+    TRY(checkpoint_io_int64(ck, "pddo.lift_samples", &lp->samples));
+    TRY(checkpoint_io_int64(ck, "pddo.crossings", &lp->crossings));
+    return checkpoint_io_int64(ck, "pddo.armed", &lp->armed);
+}
+
 /* Everything a step changes: the velocity and pressure of every node, the
  * clock, the last step's rate and the steady-state mark. */
 static int pddo_checkpoint(void *impl, Checkpoint *ck) {
@@ -577,26 +667,9 @@ static int pddo_checkpoint(void *impl, Checkpoint *ck) {
     TRY(checkpoint_io_double(ck, "pddo.dt", &f->step.par.dt));
     TRY(checkpoint_io_double(ck, "pddo.dudt_max", &f->step.dudt_max));
     TRY(checkpoint_io_double(ck, "pddo.shift", &f->ppe.shift));
-    if (f->cloud.npatches > 0) {
-        int64_t six = 6;
-        TRY(checkpoint_io_array(ck, "pddo.force_sum", f->force_sum, sizeof(double), &six, 6));
-        PddoLiftPeriods *lp = &f->lift;
-        double *const d[] = {&f->force.fx,         &f->force.fy,          &f->force.fx_pressure,
-                             &f->force.fx_viscous, &f->force.fy_pressure, &f->force.fy_viscous,
-                             &f->averaged_s,       &lp->prev_t,           &lp->prev,
-                             &lp->first_t,         &lp->last_t,           &lp->run_max,
-                             &lp->run_min,         &lp->amp_max,          &lp->amp_min};
-        static const char *const name[] = {"pddo.fx",         "pddo.fy",          "pddo.fx_p",
-                                           "pddo.fx_v",       "pddo.fy_p",        "pddo.fy_v",
-                                           "pddo.averaged_s", "pddo.lift_prev_t", "pddo.lift_prev",
-                                           "pddo.cross_0",    "pddo.cross_last",  "pddo.run_max",
-                                           "pddo.run_min",    "pddo.amp_max",     "pddo.amp_min"};
-        for (size_t k = 0; k < sizeof d / sizeof d[0]; k++)
-            TRY(checkpoint_io_double(ck, name[k], d[k]));
-        TRY(checkpoint_io_int64(ck, "pddo.lift_samples", &lp->samples));
-        TRY(checkpoint_io_int64(ck, "pddo.crossings", &lp->crossings));
-        TRY(checkpoint_io_int64(ck, "pddo.armed", &lp->armed));
-    }
+    const int nb = f->cloud.npatches;
+    if (nb > 0) TRY(checkpoint_io_double(ck, "pddo.averaged_s", &f->averaged_s));
+    for (int b = 0; b < nb; b++) TRY(checkpoint_record(ck, &f->body[b]));
     return checkpoint_io_int64(ck, "pddo.steady_step", &f->steady_step);
 }
 
@@ -614,6 +687,8 @@ const FlowOps PDDO_FLOW_OPS = {
     .reference = pddo_reference,
     .sample = NULL,
     .set_sources = NULL,
+    .probe_add = pddo_probe_add,
+    .probe_state = pddo_probe_state,
     .totals = pddo_totals,
     .history = pddo_history,
     .summary = pddo_summary,

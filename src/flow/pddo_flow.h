@@ -5,10 +5,14 @@
  * are the physical nodes (fluid and side nodes; the fictitious layers are
  * left out) with velocity, pressure, vorticity and divergence, pictures of
  * speed, pressure and vorticity, and up to two line tables (u, v, p along a
- * lattice row or column, the cavity's centrelines by default). The flow
- * takes no sources and cannot be sampled between nodes (couplings and the
- * driver's probes need a grid): both are refused with an input error by
- * the interface. A steady-state tolerance on max |du/dt| ends the run
+ * lattice row or column, the cavity's centrelines by default). The
+ * driver's point probes read u, v, p interpolated from the nodes
+ * (flow/pddo_sample.h; FlowOps.probe_add). The flow takes no sources and
+ * has no general `sample` (couplings need a grid): both are refused with
+ * an input error by the interface. Bodies: circles on polar patches, each
+ * with its force (flow/pddo_forces.h): the first body's under the plain
+ * names of the history and summary, the others' under <name>_ (the GKS
+ * flow's rule; docs/CASES.md). A steady-state tolerance on max |du/dt| ends the run
  * early through FlowOps.finished. */
 #ifndef NSPD_FLOW_PDDO_FLOW_H
 #define NSPD_FLOW_PDDO_FLOW_H
@@ -18,7 +22,7 @@
 
 #include <stdbool.h>
 
-enum { PDDO_MAX_LINES = 2, PDDO_LINE_NAME = 32, PDDO_MAX_BODIES = 1 };
+enum { PDDO_MAX_LINES = 2, PDDO_LINE_NAME = 32, PDDO_MAX_BODIES = 8 };
 
 /* A line table: the lattice row (along x) or column (along y) through
  * `at`, linearly interpolated between the two nearest when `at` lies
@@ -33,7 +37,9 @@ typedef struct {
     PddoCloudSpec cloud; /* holes and polar set from bodies/polar when built */
     int body_count;      /* circular bodies on polar patches (at most PDDO_MAX_BODIES) */
     PddoHole bodies[PDDO_MAX_BODIES];
-    PddoPolarSpec polar;       /* the patch around each body */
+    char body_name[PDDO_MAX_BODIES][PDDO_LINE_NAME]; /* the prefix of the second and later
+                                                        bodies' columns: <name>_drag_n ... */
+    PddoPolarSpec polar[PDDO_MAX_BODIES];            /* the patch around each body */
     double average_from;       /* s: force means and the lift's periods from this time on */
     PddoStepParams step;       /* step.dt: the step of the case (given or chosen) */
     double velocity_scale;     /* m/s: the lid, 1.5 times the inlet, or a body force's

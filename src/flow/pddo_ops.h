@@ -72,4 +72,17 @@ double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k);
 
 void pddo_ops_free(PddoOps *ops);
 
+/* Interpolation at a point (xc, yc) that need not be a node (the flow's
+ * probes): moving least squares with the operators' weight w(xi) and
+ * moments, the basis (1, P(xi)) with xi = x_j - (xc, yc), so f(c) =
+ * sum_j w_j f_j is the weighted least-squares quadratic's value at c and
+ * exact for every polynomial of degree <= 2 (but not interpolating at the
+ * nodes). Writes the `count` weights of the nodes nbr[] into w and
+ * returns the condition number of the 6 x 6 shape matrix (the rule
+ * above), INFINITY when it is singular (then w is not written). Pure:
+ * thread safe, allocates nothing. */
+double pddo_ops_interpolation(double xc, double yc, int64_t count, const int32_t *nbr,
+                              const double *x, const double *y, const double *area, double delta,
+                              double *w);
+
 #endif

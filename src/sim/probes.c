@@ -46,9 +46,12 @@ static int sort_members(ProbeState *p, const PdPoints *body) {
     return NSPD_OK;
 }
 
-static int setup_flow(ProbeState *p, const Flow *flow) {
+static int setup_flow(ProbeState *p, Flow *flow) {
     const ProbeConfig *c = p->cfg;
     const FlowMesh mesh = flow_mesh(flow);
+    /* a node cloud: the solver prepares the point's interpolation */
+    if (mesh.kind != MESH_GRID && c->kind == PROBE_POINT)
+        return flow_probe_add(flow, c->name, c->at[0], c->at[1], &p->point);
     if (mesh.kind != MESH_GRID)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "probe '%s': probes on the flow need a grid; the '%s' solver has none",
@@ -72,7 +75,7 @@ static int setup_flow(ProbeState *p, const Flow *flow) {
     return NSPD_OK;
 }
 
-static int setup_one(ProbeState *p, const PdPoints *body, const Flow *flow, int max_samples) {
+static int setup_one(ProbeState *p, const PdPoints *body, Flow *flow, int max_samples) {
     const ProbeConfig *c = p->cfg;
     if (c->kind != PROBE_CRACK_TIP && c->target == PROBE_ON_FLOW) {
         if (!flow)
@@ -160,8 +163,8 @@ static int setup_table(ProbeState *p, const PdPoints *body) {
     return NSPD_OK;
 }
 
-int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body,
-                  const Flow *flow, int max_samples) {
+int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body, Flow *flow,
+                  int max_samples) {
     *probes = NULL;
     if (cfg->probe_count == 0) return NSPD_OK;
     TRY(nspd_alloc(probes, (size_t)cfg->probe_count, sizeof(ProbeState)));
@@ -239,8 +242,13 @@ void probes_sample(ProbeState *probes, int count, const PdPoints *body, const do
             static const char *const QUANTITY[5] = {"rho_kg_per_m3", "u_m_per_s", "v_m_per_s",
                                                     "p_Pa", "T_K"};
             double q[5];
-            flow_cell_state(flow, p->point, q);
-            for (int m = 0; m < 5; m++) report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
+            if (flow_mesh(flow).kind == MESH_GRID) {
+                flow_cell_state(flow, p->point, q);
+                for (int m = 0; m < 5; m++) report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
+            } else { /* a node cloud (incompressible): u, v, p */
+                flow_probe_state(flow, p->point, q);
+                for (int m = 1; m < 4; m++) report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
+            }
         } else if (c->kind == PROBE_POINT) {
             double ux = body->u[0][p->point];
             if (p->samples++ == 0 || ux > p->dx_max) {

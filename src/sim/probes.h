@@ -32,7 +32,8 @@ typedef struct {
 
 typedef struct {
     const ProbeConfig *cfg;
-    int64_t point;    /* PROBE_POINT: the nearest material point, or the flow cell (grid index) */
+    int64_t point;    /* PROBE_POINT: the nearest material point, the flow cell (grid index) or
+                         the flow's probe handle (flow_probe_add) */
     int64_t *members; /* PROBE_LINE: points inside the region sorted, or the cells of the line */
     int64_t member_count;
     /* PROBE_CRACK_TIP history: position along `direction` at each sample */
@@ -55,10 +56,12 @@ typedef struct {
 
 /* Sets up the probes of `cfg` on the solid and/or flow (either may be
  * NULL): nearest points, line members, history buffers for `max_samples`
- * samples. NSPD_ERR_INPUT if a probe targets a part the case lacks, or
- * finds nothing. */
-int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body,
-                  const Flow *flow, int max_samples);
+ * samples; a point probe on a flow without a grid has the flow prepare
+ * its interpolation (flow_probe_add: that much changes the flow).
+ * NSPD_ERR_INPUT if a probe targets a part the case lacks, or finds
+ * nothing. */
+int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *body, Flow *flow,
+                  int max_samples);
 void probes_destroy(ProbeState **probes, int count);
 
 /* True if some probe needs the damage field at every history sample. */

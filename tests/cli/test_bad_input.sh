@@ -118,8 +118,9 @@ check "steps past the limit" "^--set time.end=1e3: time.end = 1000 s needs 7.48e
     "$nspd" run "$src/cases/plate_crack.yaml" -o "$work/result" --set time.end=1e3 \
     --set output.history_interval=1e-3 --set output.field_interval=1
 # the PDDO flow (flow.method: pddo): a step above its stable limit, a
-# lattice that does not divide the rectangle, a lone periodic side, and
-# probes that need a grid
+# lattice that does not divide the rectangle, a lone periodic side, line
+# probes (they need a grid), point probes outside the fluid, bodies whose
+# patches overlap and too many bodies
 cav="$src/cases/cavity_re1.yaml"
 check "PDDO step above the limit" "^--set time.dt=2e-4: time.dt: 0.0002 s exceeds the PDDO flow's stable limit 0.00016 s" \
     "$nspd" run "$cav" -o "$work/result" --set time.dt=2e-4
@@ -127,13 +128,22 @@ check "PDDO spacing" "flow.spacing: 3e-05 m gives 33.33333333 spacings along x" 
     "$nspd" check "$cav" --set flow.spacing=3e-5
 check "PDDO lone periodic side" "flow.boundaries.x_max: the opposite side x_min is periodic; expected both" \
     "$nspd" check "$cav" --set flow.boundaries.x_min.type=periodic
-check "PDDO flow probe" "probe 'probe0': probes on the flow need a grid; the 'pddo' solver has none" \
-    "$nspd" run "$cav" -o "$work/result" --set "output.probes=[{type: point, on: flow, at: [0.0005, 0.0005]}]"
+check "PDDO flow line probe" "probe 'probe0': probes on the flow need a grid; the 'pddo' solver has none" \
+    "$nspd" run "$cav" -o "$work/result" --set "output.probes=[{type: line, on: flow, at: [0.0005, 0.0005]}]"
+check "PDDO probe outside" "probe 'far': at \\[0.0015, 0.0005\\] m is outside the flow's rectangle" \
+    "$nspd" run "$cav" -o "$work/result" --set "output.probes=[{type: point, name: far, on: flow, at: [0.0015, 0.0005]}]"
 cyl="$src/cases/cylinder_confined_re10.yaml"
 check "PDDO body patch too large" "flow.bodies\[0\].patch_radius: 2.01 m: the patch and 2 x 3 fictitious layers reach 3.18 m" \
     "$nspd" check "$cyl" --set flow.spacing=0.2
-check "PDDO two bodies" "2 bodies; expected at most 1" \
-    "$nspd" check "$cyl" --set "flow.bodies=[{shape: circle, center: [5, 3], radius: 0.5}, {shape: circle, center: [9, 3], radius: 0.5}]"
+check "PDDO overlapping patches" "flow.bodies\\[1\\].center: \\[7, 3\\]: its polar patch \\(reach 1.5086 m\\) overlaps that of body 0 at \\[5, 3\\]" \
+    "$nspd" check "$cyl" --set "flow.bodies=[{shape: circle, center: [5, 3], radius: 0.5}, {shape: circle, center: [7, 3], radius: 0.5}]"
+check "PDDO nine bodies" "flow.bodies: 9 bodies; expected at most 8" \
+    "$nspd" check "$cyl" --set "flow.bodies=[$(for i in 1 2 3 4 5 6 7 8 9; do printf '{shape: circle, center: [%d, 3], radius: 0.1}, ' "$i"; done)]"
+check "PDDO probe inside a body" "probe 'inside': at \\[5.1, 3\\] m is inside body 0" \
+    "$nspd" run "$cyl" -o "$work/result" --set flow.spacing=0.2 --set flow.bodies.0.patch_radius=1.5 \
+    --set "output.probes=[{type: point, name: inside, on: flow, at: [5.1, 3.0]}]"
+check "PDDO body names" "flow.bodies\[1\].name: .body0. used twice" \
+    "$nspd" check "$src/cases/cylinders_tandem_re10.yaml" --set flow.bodies.1.name=body0 --set flow.bodies.0.name=body0
 check "PDDO body shape" "flow.bodies\[0\].shape" \
     "$nspd" check "$cyl" --set "flow.bodies=[{shape: naca, center: [5, 3], radius: 0.5}]"
 mkdir -p "$work/existing"

@@ -8,7 +8,11 @@
  *  - exactness of every operator for quadratics at every node (rings,
  *    wall, junction), not for cubics;
  *  - convergence of the operators on self-similar patches (h halved twice)
- *    on the pure ring families, the junction families and near the wall. */
+ *    on the pure ring families, the junction families and near the wall;
+ *  - two patches in one cloud (issue 13: several bodies): every family
+ *    exact for quadratics, and the probes' interpolation
+ *    (flow/pddo_sample.h) exact for quadratics on the lattice, the rings
+ *    and the junctions, its refusals. */
 #include "test_support.h"
 
 #include "core/mem.h"
@@ -17,6 +21,7 @@
 #include "flow/pddo_ops.h"
 #include "flow/pddo_polar.h"
 #include "flow/pddo_ppe.h"
+#include "flow/pddo_sample.h"
 #include "flow/pddo_step.h"
 
 #include <math.h>
@@ -306,6 +311,129 @@ static void test_patch_convergence(void **state) {
     }
 }
 
+/* Two cylinders in tandem, radius 0.5 m at (-1.6, 0) and (1.6, 0) m, in
+ * the box [-3.5, 3.5] x [-2, 2] m, dx 0.1, each on its own patch (r_patch
+ * 1 m, dtheta dx / r_patch: 62 nodes per ring). Measured: 4,301 nodes,
+ * 11 rings of 62 per patch; 788 junction nodes; largest shape-matrix
+ * condition 71.7 (the lattice's outer corner). V1 on two patches:
+ * quadratics at every node to 4.0e-14 (first derivatives), 2.8e-13
+ * (Laplacian) and 9.1e-13 (d2/dxdy) relative, asserted 1e-10 as for one
+ * patch.
+ *
+ * The probes' interpolation (pddo_ops_interpolation over the physical
+ * nodes within delta): a random quadratic at 200 random points of each
+ * kind - lattice (farther than r_cut + delta from both centres), patch
+ * (R to r_out - delta), junction (r_out - delta to r_cut + delta), the
+ * wall itself (r = R), a side (y = 2) - measured largest relative errors
+ * 8.4e-16 (lattice), 4.8e-16 (patch), 5.7e-16 (junction), 6.0e-16
+ * (wall), 1.3e-15 (side); asserted 1e-12 (the operators' 1e-10 less the
+ * derivatives' 1/delta^2). On a node a probe reads the node (the same
+ * bits); 0.01 dx off a wall node the fit of a cubic misses by 1.3e-4
+ * (asserted > 1e-6, so the check can fail). Refused: a point inside a body, one outside the
+ * rectangle. */
+static void test_two_patches(void **state) {
+    (void)state;
+    static const PddoHole holes[2] = {{.x = -1.6, .y = 0.0, .radius = 0.5},
+                                      {.x = 1.6, .y = 0.0, .radius = 0.5}};
+    const double dx = 0.1;
+    const PddoPolarSpec polar[2] = {{.dtheta = dx / 1.0, .r_patch = 1.0},
+                                    {.dtheta = dx / 1.0, .r_patch = 1.0}};
+    const PddoCloudSpec s = {.lo = {-3.5, -2.0},
+                             .hi = {3.5, 2.0},
+                             .dx = dx,
+                             .layers = 3,
+                             .horizon_factor = 3.0,
+                             .holes = holes,
+                             .nholes = 2,
+                             .polar = polar};
+    PddoCloud c = {0};
+    assert_ok(pddo_cloud_build(&c, &s));
+    assert_int_equal(c.npatches, 2);
+    const PddoPolarPatch *p = c.patch;
+    assert_true(p[1].first == p[0].first + pddo_polar_count(&p[0]));
+    int64_t njunction = 0;
+    for (int64_t k = 0; k < c.n; k++) njunction += junction(&c, k);
+    PddoOps ops = {0};
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    printf("two patches: %lld nodes, %d rings of %d per patch, %lld junction nodes, largest "
+           "condition %.4g\n",
+           (long long)c.n, p[0].rings, p[0].ntheta, (long long)njunction, ops.cond_max);
+    assert_true(njunction > 0 && ops.cond_max < 1e3);
+    double *f = calloc((size_t)c.n, sizeof(double)), *out = calloc((size_t)c.n, sizeof(double));
+    double q[9], d[PDDO_OPS];
+    for (int t = 0; t < 9; t++) q[t] = uniform();
+    for (int64_t k = 0; k < c.n; k++) f[k] = poly(q, 0, c.x[k], c.y[k], d);
+    for (int op = 0; op < PDDO_OPS; op++) {
+        pddo_ops_apply(&ops, (PddoOp)op, f, out);
+        double err = 0.0, size = 0.0;
+        for (int64_t k = 0; k < c.n; k++) {
+            poly(q, 0, c.x[k], c.y[k], d);
+            err = fmax(err, fabs(out[k] - d[op]));
+            size = fmax(size, fabs(d[op]));
+        }
+        printf("two patches, quadratic %-8s: all nodes %.2e (relative)\n", OP_NAME[op], err / size);
+        assert_true(err / size < 1e-10);
+    }
+
+    /* the probes' interpolation: points of each kind around patch b */
+    enum { LATTICE_PT, PATCH_PT, JUNCTION_PT, WALL_PT, SIDE_PT, KINDS };
+    static const char *const KIND[KINDS] = {"lattice", "patch", "junction", "wall", "side"};
+    PddoSample smp = {0};
+    double size = 0.0;
+    for (int64_t k = 0; k < c.n; k++) size = fmax(size, fabs(f[k]));
+    for (int kind = 0; kind < KINDS; kind++) {
+        double err = 0.0;
+        for (int i = 0; i < 200; i++) {
+            const PddoPolarPatch *pb = &p[i % 2];
+            double x = 0.0, y = 0.0;
+            const double a = M_PI * uniform(), r01 = 0.5 * (1.0 + uniform());
+            if (kind == LATTICE_PT) {
+                do {
+                    x = 3.5 * uniform(), y = 2.0 * uniform();
+                } while (hypot(x - p[0].x, y) < p[0].r_cut + c.delta ||
+                         hypot(x - p[1].x, y) < p[1].r_cut + c.delta);
+            } else if (kind == SIDE_PT) {
+                x = 3.5 * uniform(), y = 2.0;
+            } else {
+                const double lo[3] = {pb->radius, pb->radius, pb->r_out - c.delta};
+                const double hi[3] = {pb->r_out - c.delta, pb->radius, pb->r_cut + c.delta};
+                const int m = kind - PATCH_PT;
+                const double r = lo[m] + r01 * (hi[m] - lo[m]);
+                x = pb->x + r * cos(a), y = pb->y + r * sin(a);
+            }
+            assert_ok(pddo_sample_add(&smp, &c, x, y, "test"));
+            const double got = pddo_sample_at(&smp, f, smp.n - 1);
+            err = fmax(err, fabs(got - poly(q, 0, x, y, d)));
+        }
+        printf("probe interpolation, quadratic, %-8s points: %.2e (relative)\n", KIND[kind],
+               err / size);
+        assert_true(err / size < 1e-12);
+    }
+    /* a cubic: on a wall node the node's own value, the same bits; a
+     * hundredth of a spacing away the fit, which does not interpolate */
+    for (int64_t k = 0; k < c.n; k++) f[k] = poly(q, 1, c.x[k], c.y[k], d);
+    const int64_t wall = p[0].first + (int64_t)p[0].rings_inside * p[0].ntheta + 5;
+    assert_ok(pddo_sample_add(&smp, &c, c.x[wall], c.y[wall], "test"));
+    assert_true(pddo_sample_at(&smp, f, smp.n - 1) == f[wall]);
+    const double ox = c.x[wall] + 0.01 * dx * (c.x[wall] - p[0].x) / p[0].radius;
+    const double oy = c.y[wall] + 0.01 * dx * (c.y[wall] - p[0].y) / p[0].radius;
+    assert_ok(pddo_sample_add(&smp, &c, ox, oy, "test"));
+    const double miss = fabs(pddo_sample_at(&smp, f, smp.n - 1) - poly(q, 1, ox, oy, d));
+    printf("cubic 0.01 dx off a wall node: the fit misses by %.2e\n", miss);
+    assert_true(miss > 1e-6);
+    const int64_t before = smp.n;
+    assert_int_equal(pddo_sample_add(&smp, &c, 1.7, 0.1, "inside"), NSPD_ERR_INPUT);
+    assert_non_null(strstr(nspd_error_message(), "inside body 1"));
+    assert_int_equal(pddo_sample_add(&smp, &c, 0.0, 2.1, "out"), NSPD_ERR_INPUT);
+    assert_non_null(strstr(nspd_error_message(), "outside the flow's rectangle"));
+    assert_int_equal(smp.n, before);
+    pddo_sample_free(&smp);
+    free(f);
+    free(out);
+    pddo_ops_free(&ops);
+    pddo_cloud_free(&c);
+}
+
 /* The layout's refusals and the staircase path untouched by a NULL polar. */
 static void test_layout_rules(void **state) {
     (void)state;
@@ -407,9 +535,8 @@ static void test_step_hook(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_paper_patch),
-        cmocka_unit_test(test_patch_convergence),
-        cmocka_unit_test(test_layout_rules),
+        cmocka_unit_test(test_paper_patch),  cmocka_unit_test(test_patch_convergence),
+        cmocka_unit_test(test_layout_rules), cmocka_unit_test(test_two_patches),
         cmocka_unit_test(test_step_hook),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
