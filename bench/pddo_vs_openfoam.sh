@@ -53,12 +53,21 @@ command -v icoFoam >/dev/null || { echo "OpenFOAM not found: scripts/deps.sh ben
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 median() { sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
-now() { date +%s.%N; }
-since() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.3f", b - a }'; }
+# timed FILE COMMAND...: appends 'wall_s cpu_s' of COMMAND to FILE (on a
+# loaded machine the CPU time, user + system, is the steadier of the two)
+timed() {
+    f=$1
+    shift
+    /usr/bin/time -f '%e %U %S' -o "$work/time" "$@"
+    awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }' "$work/time" >>"$f"
+}
 # foam DIR COMMAND: runs COMMAND in DIR in OpenFOAM's environment (bash)
 foam() { bash -c ". /usr/share/openfoam/etc/bashrc >/dev/null 2>&1; cd '$1' && $2"; }
-# foam_timed DIR SOLVER: runs it there, prints its wall time (s)
-foam_timed() { foam "$1" "t0=\$(date +%s.%N); $2 >log.$2 2>&1; awk -v a=\$t0 -v b=\$(date +%s.%N) 'BEGIN { printf \"%.3f\", b - a }'"; }
+# foam_timed DIR SOLVER FILE: runs it there, appends its times to FILE
+foam_timed() {
+    foam "$1" "/usr/bin/time -f '%e %U %S' -o '$work/time' $2 >log.$2 2>&1"
+    awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }' "$work/time" >>"$3"
+}
 json() { sed -n "s/.*\"$2\": \([^,]*\),*/\1/p" "$1"; } # FILE KEY
 # ghia RUN_DIR RE L U LABEL ID: scores the last line tables, writes ID.info
 ghia() {
@@ -74,8 +83,7 @@ run_foam_cavity() { # N
     rm -rf "$d"
     sh "$here/openfoam/make_cavity.sh" "$d" "$1"
     foam "$d" "blockMesh >log.blockMesh 2>&1"
-    foam_timed "$d" icoFoam >>"$out/$id.time"
-    echo >>"$out/$id.time"
+    foam_timed "$d" icoFoam "$out/$id.time"
     foam "$d" "postProcess -func sample -latestTime >log.sample 2>&1"
     t=$(ls "$d/postProcessing/sample")
     for s in vertical horizontal; do # nspd's line table layout, for ghia_compare.sh
@@ -84,7 +92,7 @@ run_foam_cavity() { # N
             >"$d/line_${s}_00001.csv"
     done
     steps=$(grep -c '^Time = ' "$d/log.icoFoam")
-    echo "icoFoam $1 x $1: t = $t s, $steps steps, $(tail -1 "$out/$id.time") s" >>"$raw"
+    echo "icoFoam $1 x $1: t = $t s, $steps steps, $(tail -1 "$out/$id.time" | sed "s/ / s wall, /") s CPU" >>"$raw"
     echo "icoFoam - $1x$1 $(($1 * $1)) $steps $(ghia "$d" 100 1 1 "icoFoam $1 x $1" "$id")" >"$out/$id.info"
 }
 run_nspd_cavity() { # INTERVALS:WALLS:DT
@@ -93,16 +101,13 @@ run_nspd_cavity() { # INTERVALS:WALLS:DT
     id=cavity_nspd_${m}_${walls}_$dt
     d=$work/$id
     dx=$(awk -v m="$m" 'BEGIN { printf "%.10g", 0.001 / m }')
-    t0=$(now)
-    "$nspd" run "$root/cases/cavity_re200.yaml" -o "$d" --force --quiet --threads 1 \
+    timed "$out/$id.time" "$nspd" run "$root/cases/cavity_re200.yaml" -o "$d" --force --quiet --threads 1 \
         --set flow.spacing="$dx" --set flow.walls="$walls" --set flow.boundaries.y_max.velocity=0.1 \
         --set time.dt="$dt" --set time.end=1.0 --set flow.steady_tolerance=1e-5 \
         --set output.field_interval=1.0 --set output.history_interval=0.005 \
         --set output.png=false --set output.plots=false
-    since "$t0" >>"$out/$id.time"
-    echo >>"$out/$id.time"
     steps=$(json "$d/summary.json" steps)
-    echo "nspd $m x $m $walls dt $dt: t = $(json "$d/summary.json" time_s) s, $steps steps, $(tail -1 "$out/$id.time") s" >>"$raw"
+    echo "nspd $m x $m $walls dt $dt: t = $(json "$d/summary.json" time_s) s, $steps steps, $(tail -1 "$out/$id.time" | sed "s/ / s wall, /") s CPU" >>"$raw"
     echo "nspd $walls,dt=$dt ${m}x$m $(json "$d/summary.json" physical_nodes) $steps $(ghia "$d" 100 0.001 0.1 "$walls ghosts, dt $dt s" "$id")" \
         >"$out/$id.info"
 }
@@ -115,8 +120,7 @@ run_foam_cylinder() { # NT:DT
     rm -rf "$d"
     sh "$here/openfoam/make_cylinder.sh" "$d" "$nt" "$dt"
     foam "$d" "blockMesh >log.blockMesh 2>&1"
-    foam_timed "$d" icoFoam >>"$out/$id.time"
-    echo >>"$out/$id.time"
+    foam_timed "$d" icoFoam "$out/$id.time"
     foam "$d" "postProcess -func sample -latestTime >log.sample 2>&1"
     s=$d/postProcessing/sample/4
     cells=$(sed -n 's/.*nCells: *\([0-9]*\).*/\1/p' "$d/log.blockMesh" | tail -1)
@@ -127,19 +131,16 @@ run_foam_cylinder() { # NT:DT
     # drag per unit span at t = 4 s: total, pressure, viscous; and at t = 3 s (steady?)
     drag=$(tr -d '()' <"$d/postProcessing/forces/0/force.dat" | awk '!/^#/ { if ($1 <= 3 + 1e-9) d3 = $2; t = $2; p = $5; v = $8 }
         END { printf "%.1f %.1f %.1f %.2g", t, p, v, (t - d3) / t }')
-    echo "icoFoam cylinder $nt per quarter, dt $dt: $cells cells, $steps steps, $(tail -1 "$out/$id.time") s; probes $probes; drag $drag" >>"$raw"
+    echo "icoFoam cylinder $nt per quarter, dt $dt: $cells cells, $steps steps, $(tail -1 "$out/$id.time" | sed "s/ / s wall, /") s CPU; probes $probes; drag $drag" >>"$raw"
     echo "icoFoam H=$(awk -v n="$nt" 'BEGIN { print 2 / n }'),dt=$dt $cells $steps $probes $drag" >"$out/$id.info"
 }
 run_nspd_cylinder() { # SPACING:DT
     dx=${1%%:*} dt=${1#*:}
     id=cylinder_nspd_$dx
     d=$work/$id
-    t0=$(now)
-    "$nspd" run "$root/cases/cylinder_confined_re10.yaml" -o "$d" --force --quiet --threads 1 \
+    timed "$out/$id.time" "$nspd" run "$root/cases/cylinder_confined_re10.yaml" -o "$d" --force --quiet --threads 1 \
         --set flow.spacing="$dx" --set time.dt="$dt" --set output.field_interval=4.0 \
         --set output.png=false --set output.plots=false
-    since "$t0" >>"$out/$id.time"
-    echo >>"$out/$id.time"
     # the nearest output node to each probe (as docs/VALIDATION.md): p in
     # front (4.5, 3), beside (5, 3.5); |u| at (5, 4.2), (5, 1.8), (15, 3)
     probes=$(/usr/bin/python3 - "$(ls "$d"/flow_*.vtu | tail -1)" <<'EOF'
@@ -160,7 +161,7 @@ EOF
     s=$d/summary.json
     drag=$(printf "%.1f %.1f %.1f" "$(json "$s" drag_n)" "$(json "$s" drag_pressure_n)" "$(json "$s" drag_viscous_n)")
     steps=$(json "$s" steps)
-    echo "nspd cylinder dx $dx, dt $dt: $(json "$s" nodes) nodes, $steps steps, $(tail -1 "$out/$id.time") s; probes $probes; drag $drag (3-4 s mean)" >>"$raw"
+    echo "nspd cylinder dx $dx, dt $dt: $(json "$s" nodes) nodes, $steps steps, $(tail -1 "$out/$id.time" | sed "s/ / s wall, /") s CPU; probes $probes; drag $drag (3-4 s mean)" >>"$raw"
     echo "nspd dx=$dx,dt=$dt $(json "$s" nodes) $steps $probes $drag -" >"$out/$id.info"
 }
 
@@ -184,33 +185,35 @@ for r in $(seq "$repeats"); do
 done
 
 # ---- tables ---------------------------------------------------------------------
-wall() { median <"$out/$1.time"; }
-echo "Cavity, Re 100: max deviation from Ghia et al. (1982) in units of U, wall time to steady state"
-printf "%-8s %-26s %-9s %-7s %-7s %-9s %-9s %s\n" code setting grid nodes steps "u(y)" "v(x)" "wall s"
+wall() { cut -d' ' -f1 <"$out/$1.time" | median; }
+cpu() { cut -d' ' -f2 <"$out/$1.time" | median; }
+echo "Cavity, Re 100: max deviation from Ghia et al. (1982) in units of U; time to steady state"
+printf "%-8s %-26s %-9s %-7s %-7s %-8s %-8s %-8s %s\n" code setting grid nodes steps "u(y)" "v(x)" "wall s" "CPU s"
 for f in "$out"/cavity_*.info; do
     [ -e "$f" ] || continue
     id=$(basename "$f" .info)
     read -r code setting grid nodes steps eu ev <"$f"
-    printf "%-8s %-26s %-9s %-7s %-7s %-9s %-9s %.2f\n" "$code" "$setting" "$grid" "$nodes" "$steps" "$eu" "$ev" "$(wall "$id")"
+    printf "%-8s %-26s %-9s %-7s %-7s %-8s %-8s %-8.2f %.2f\n" "$code" "$setting" "$grid" "$nodes" "$steps" "$eu" "$ev" \
+        "$(wall "$id")" "$(cpu "$id")"
 done | sort -k1,2 -k4n | tee "$out/cavity.txt"
 echo
-echo "Matched accuracy: the coarsest grid of each setting within the level (max of u and v deviations)"
+echo "Matched accuracy: the coarsest grid of each setting within the level (the larger of the u and v deviations)"
 for level in 0.02 0.01; do
     awk -v lvl="$level" '{ e = $6 > $7 ? $6 : $7; key = $1 " " $2
         if (e <= lvl && !(key in best)) { best[key] = $0; order[++n] = key } }
         END { for (i = 1; i <= n; i++) { split(best[order[i]], f, " ")
-            printf "  <= %s U: %s %s at %s: %.4f U, %s s\n", lvl, f[1], f[2], f[3], (f[6] > f[7] ? f[6] : f[7]), f[8] } }' \
+            printf "  <= %s U: %-8s %-26s %-9s %.4f U, %s s wall, %s s CPU\n", lvl, f[1], f[2], f[3], (f[6] > f[7] ? f[6] : f[7]), f[8], f[9] } }' \
         "$out/cavity.txt"
 done | tee "$out/matched.txt"
 echo
-echo "Confined cylinder, Re 10, t = 4 s (paper: 220 Pa, -37 Pa, 16.9 m/s, 13.81 m/s)"
-printf "%-8s %-22s %-7s %-6s %-8s %-8s %-9s %-9s %-9s %-8s %-8s %-8s %-9s %s\n" code setting nodes steps \
-    "p front" "p side" "|u| top" "|u| bot" "|u| out" drag "pressure" viscous "d(3-4s)" "wall s"
+echo "Confined cylinder, Re 10, t = 4 s (paper: 220 Pa, -37 Pa, 16.9 m/s, 13.81 m/s); drag in N/m"
+printf "%-8s %-18s %-7s %-6s %-8s %-8s %-8s %-8s %-8s %-7s %-9s %-8s %-8s %-7s %s\n" code setting nodes steps \
+    "p front" "p side" "|u| top" "|u| bot" "|u| out" drag pressure viscous "d(3-4s)" "wall s" "CPU s"
 for f in "$out"/cylinder_*.info; do
     [ -e "$f" ] || continue
     id=$(basename "$f" .info)
     read -r code setting nodes steps pf ps ut ub uo d dp dv dd <"$f"
-    printf "%-8s %-22s %-7s %-6s %-8s %-8s %-9s %-9s %-9s %-8s %-8s %-8s %-9s %.1f\n" "$code" "$setting" "$nodes" "$steps" \
-        "$pf" "$ps" "$ut" "$ub" "$uo" "$d" "$dp" "$dv" "$dd" "$(wall "$id")"
+    printf "%-8s %-18s %-7s %-6s %-8s %-8s %-8s %-8s %-8s %-7s %-9s %-8s %-8s %-7.1f %.1f\n" "$code" "$setting" "$nodes" "$steps" \
+        "$pf" "$ps" "$ut" "$ub" "$uo" "$d" "$dp" "$dv" "$dd" "$(wall "$id")" "$(cpu "$id")"
 done | tee "$out/cylinder.txt"
 echo "(medians of $repeats runs, 1 core each; raw: $raw; plots: $out/*.png)"
