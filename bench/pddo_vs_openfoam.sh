@@ -26,7 +26,8 @@
 # validate build). The lists below can be narrowed from the environment
 # (PDDO_FOAM_CAVITY, PDDO_NSPD_CAVITY, PDDO_FOAM_CYLINDER,
 # PDDO_NSPD_CYLINDER; empty skips), PDDO_CYLINDER_REPEATS runs the cylinders
-# fewer times.
+# fewer times; PDDO_FOAM_RE100 adds icoFoam's Re 100 cylinder (a reference
+# for docs/VALIDATION.md, not a timing).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
@@ -43,6 +44,9 @@ nspd_cavity=${PDDO_NSPD_CAVITY-80:paper:4e-5 90:paper:4e-5 100:paper:4e-5 \
 # 40:1e-3, Courant 0.7, grows unstable from step 60), nspd spacing:dt
 foam_cylinder=${PDDO_FOAM_CYLINDER-20:2e-3 30:1e-3}
 nspd_cylinder=${PDDO_NSPD_CYLINDER-0.1:1e-3 0.05:1e-3}
+# icoFoam only, once, if set (about 5 and 13 min): the Re 100 cylinder to
+# t = 2 s, cells per quarter:dt (Courant 0.44), e.g. "20:1e-4 30:7e-5"
+foam_re100=${PDDO_FOAM_RE100-}
 # the cylinders take about 10 min of CPU a repeat: fewer repeats of them
 cylinder_repeats=${PDDO_CYLINDER_REPEATS:-$repeats}
 
@@ -169,6 +173,35 @@ EOF
     echo "nspd dx=$dx,dt=$dt $(json "$s" nodes) $steps $probes $drag -" >"$out/$id.info"
 }
 
+# ---- confined cylinder, Re 100: icoFoam only (a reference, not a timing) -----
+# mean drag over 1-2 s, lift amplitude and period by nspd's rule (CASES.md,
+# summary.json): upward zero crossings of the lift from 1 s, each re-armed
+# once the lift was below -1e-3 q L; the period between the first and last
+# crossing over their number less one; the amplitude half of max - min
+# between them
+run_foam_re100() { # NT:DT
+    nt=${1%%:*} dt=${1#*:}
+    id=re100_foam_$nt
+    d=$work/$id
+    rm -rf "$d"
+    sh "$here/openfoam/make_cylinder.sh" "$d" "$nt" "$dt" 2 1 100 2
+    foam "$d" "blockMesh >log.blockMesh 2>&1"
+    foam_timed "$d" icoFoam "$out/$id.time"
+    tr -d '()' <"$d/postProcessing/forces/0/force.dat" | awk -v t0=1 -v t1=2 -v nt="$nt" -v dt="$dt" '
+        !/^#/ { t = $1; d = $2; l = $3
+            if (t >= t0 && t <= t1 + 1e-9) { sd += d; n++
+                if (nc >= 1) { if (l > mx) mx = l; if (l < mn) mn = l }
+                if (pl < 0 && l >= 0 && armed) { c[++nc] = pt + (t - pt) * pl / (pl - l); armed = 0
+                    if (nc == 1) { mx = l; mn = l } else { amx = mx; amn = mn } }
+                if (l < -1e-3 * 0.5 * 100 * 100) armed = 1 }
+            pt = t; pl = l }
+        END { T = (c[nc] - c[1]) / (nc - 1)
+            printf "icoFoam Re 100, H %.3g m, dt %s s: mean drag %.1f N/m, lift amplitude %.1f N/m, period %.5f s (St %.4f), %d periods\n",
+                2 / nt, dt, sd / n, (amx - amn) / 2, T, 1 / (T * 100), nc - 1 }' |
+        tee -a "$raw" >"$out/$id.info"
+    echo "  $(tail -1 "$out/$id.time" | sed "s/ / s wall, /") s CPU (paper: 9501 N/m, 2153 N/m, 0.0447 s; Fluent 9448.4, 2224)" >>"$out/$id.info"
+}
+
 # ---- runs, the two codes alternately ------------------------------------------
 alternate() { # RUN_A LIST_A RUN_B LIST_B: A1 B1 A2 B2 ... then the rest
     la=$2 lb=$4
@@ -188,6 +221,8 @@ for r in $(seq "$repeats"); do
     [ "$r" -le "$cylinder_repeats" ] || continue
     alternate run_foam_cylinder "$foam_cylinder" run_nspd_cylinder "$nspd_cylinder"
 done
+
+for c in $(squash "$foam_re100"); do run_foam_re100 "$c"; done
 
 # ---- tables ---------------------------------------------------------------------
 wall() { cut -d' ' -f1 <"$out/$1.time" | median; }
@@ -221,4 +256,5 @@ for f in "$out"/cylinder_*.info; do
     printf "%-8s %-18s %-7s %-6s %-8s %-8s %-8s %-8s %-8s %-7s %-9s %-8s %-8s %-7.1f %.1f\n" "$code" "$setting" "$nodes" "$steps" \
         "$pf" "$ps" "$ut" "$ub" "$uo" "$d" "$dp" "$dv" "$dd" "$(wall "$id")" "$(cpu "$id")"
 done | tee "$out/cylinder.txt"
+for f in "$out"/re100_*.info; do [ -e "$f" ] || continue; cat "$f"; done
 echo "(medians of $repeats runs, cylinders $cylinder_repeats, 1 core each; raw: $raw; plots: $out/*.png)"

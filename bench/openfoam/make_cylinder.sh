@@ -13,11 +13,12 @@
 # cylinder (NT cells along it) and NR = NT/2 cells from the box to the
 # wall, shrinking 4-fold towards the wall (the first cell about H/4 thick).
 #
-#   make_cylinder.sh DIR NT DT [END] [NU] [U0]   (END 4 s, the paper's)
+#   make_cylinder.sh DIR NT DT [END] [NU] [U0] [EVERY]
+# (END 4 s, the paper's; NU 1, U0 10: Re 10; U0 100 is Re 100)
 # Sampled after the run (postProcess -func sample -latestTime), cellPoint:
 # p in front (4.5, 3), beside (5, 3.5), |u| at (5, 4.2), (5, 1.8) and at the
 # outlet (15, 3) (just inside each boundary); the forces function object
-# writes drag and lift on the cylinder every step.
+# writes drag and lift on the cylinder every EVERY steps (default 50).
 set -eu
 dir=$1
 nt=$2
@@ -25,6 +26,7 @@ dt=$3
 end=${4:-4}
 nu=${5:-1}
 u0=${6:-10}
+every=${7:-50}
 nr=$((nt / 2))
 mkdir -p "$dir/system" "$dir/constant" "$dir/0"
 header() { # class object
@@ -112,7 +114,7 @@ functions
     {
         type forces; libs ("libforces.so"); patches (cylinder);
         rho rhoInf; rhoInf 1; CofR (5 3 0.5); log false;
-        executeControl timeStep; executeInterval 50; writeControl timeStep; writeInterval 50;
+        executeControl timeStep; executeInterval $every; writeControl timeStep; writeInterval $every;
     }
 }
 EOT
