@@ -12,18 +12,18 @@
 # same steady criterion, max |du/dt| < 1e-6 U^2/L, and both are scored by
 # scripts/ghia_compare.sh: the largest deviation from Ghia's 17 stations of
 # u/U on x = L/2 and of v/U on y = L/2. For each code and setting, the
-# coarsest resolution within 0.02 U (and 0.01 U) and its wall time.
+# coarsest resolution within 0.02 U (and 0.01 U) and its times.
 #
 # Confined cylinder, Re 10 (cases/cylinder_confined_re10.yaml): nspd at the
 # coarse lattices of docs/VALIDATION.md, icoFoam on the O-grid of
 # bench/openfoam/make_cylinder.sh at about the same cell size, both to the
 # paper's t = 4 s: the paper's probes and the drag per unit span.
 #
-# Wall times are of the solver command alone (nspd run; icoFoam without
-# blockMesh and sampling), medians of REPEATS runs (default 3). Errors and
-# probes are deterministic and come from the last run. Needs OpenFOAM
-# (scripts/deps.sh bench), gnuplot and VTK for Python (scripts/deps.sh
-# validate build). The lists below can be narrowed from the environment
+# Wall and CPU times are of the solver command alone (nspd run; icoFoam
+# without blockMesh and sampling), medians of REPEATS runs (default 3).
+# Errors and probes are deterministic and come from the last run. Needs
+# scripts/deps.sh build bench (OpenFOAM, gnuplot, GNU time, VTK for
+# Python). The lists below can be narrowed from the environment
 # (PDDO_FOAM_CAVITY, PDDO_NSPD_CAVITY, PDDO_FOAM_CYLINDER,
 # PDDO_NSPD_CYLINDER; empty skips), PDDO_CYLINDER_REPEATS runs the cylinders
 # fewer times; PDDO_FOAM_RE100 adds icoFoam's Re 100 cylinder (a reference
