@@ -29,3 +29,5 @@ echo "== correspondence against LAMMPS peri/eps"
 "$here/cpd_vs_lammps.sh" "$nspd" 5
 echo "== GKS against OpenFOAM rhoCentralFoam"
 "$here/gks_vs_openfoam.sh" "$nspd" 3
+echo "== PDDO flow against OpenFOAM icoFoam at matched accuracy (about 30 min)"
+"$here/pddo_vs_openfoam.sh" "$nspd" 3

@@ -7,7 +7,10 @@
 #                              SuiteSparse (UMFPACK: the PDDO flow's sparse LU of its
 #                              pressure matrix, which is not symmetric)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
-#   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine
+#   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine, OpenFOAM (reference
+#                              flow code), gnuplot and GNU time (bench/pddo_vs_openfoam.sh
+#                              scores its cavities with scripts/ghia_compare.sh, which
+#                              plots, and takes each solver's CPU time)
 #   scripts/deps.sh fuzz       + clang, libFuzzer (libclang-rt-14-dev), OpenMP for clang (make fuzz)
 # As root the missing packages are installed with apt-get; otherwise the exact
 # command is printed and the script fails, so nothing runs half set up.
@@ -18,7 +21,7 @@ for group in "$@"; do
     case "$group" in
     build) ;;
     validate) want="$want gnuplot-nox" ;;
-    bench) want="$want lammps hyperfine openfoam" ;;
+    bench) want="$want lammps hyperfine openfoam gnuplot-nox time" ;;
     fuzz) want="$want clang libclang-rt-14-dev libomp-14-dev" ;;
     *) echo "deps.sh: unknown group '$group' (expected build, validate, bench or fuzz)" >&2; exit 2 ;;
     esac
