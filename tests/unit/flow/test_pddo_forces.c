@@ -82,6 +82,21 @@ static PddoForce eval(const PddoCloud *c, const PddoForces *f, Fields fields) {
     return out;
 }
 
+/* Prescribed fields and the exact force of each on a ring (both tests). */
+#define AREA (M_PI * RADIUS * RADIUS)
+static const struct {
+    const char *name;
+    Fields fields;
+    double fx, fy, scale;
+} cases[] = {
+    {"p = 12.5", const_p, 0.0, 0.0, 12.5 * AREA},
+    {"p = 3x - 2y + 1", linear_p, -3.0 * AREA, 2.0 * AREA, 3.0 * AREA},
+    {"rigid rotation", rotation, 0.0, 0.0, 1.5 * MU *AREA},
+    {"uniform shear", uniform_shear, 0.0, 0.0, 4.0 * MU *AREA},
+    {"u = 2 (y-yc)^2, v = -3 (x-xc)^2", quad_shear, 4.0 * MU *AREA, -6.0 * MU *AREA,
+     6.0 * MU *AREA},
+};
+
 /* V11 with the paper's m = 422 (dtheta 0.0149, dx 0.03, dr 0.69 dx; patch
  * to 0.8 m to keep the cloud small). Every field here is a polynomial of
  * degree <= 2, so the fluid-side derivatives are exact (V1) and the
@@ -95,19 +110,6 @@ static void test_exact_integration(void **state) {
     PddoForces f = {0};
     build(&c, &ops, &f, 0.03, PDDO_POLAR_DTHETA, 0.8, 1.05);
     assert_int_equal(f.m, 422);
-    const double area = M_PI * RADIUS * RADIUS;
-    const struct {
-        const char *name;
-        Fields fields;
-        double fx, fy, scale;
-    } cases[] = {
-        {"p = 12.5", const_p, 0.0, 0.0, 12.5 * area},
-        {"p = 3x - 2y + 1", linear_p, -3.0 * area, 2.0 * area, 3.0 * area},
-        {"rigid rotation", rotation, 0.0, 0.0, 1.5 * MU * area},
-        {"uniform shear", uniform_shear, 0.0, 0.0, 4.0 * MU * area},
-        {"u = 2 (y-yc)^2, v = -3 (x-xc)^2", quad_shear, 4.0 * MU * area, -6.0 * MU * area,
-         6.0 * MU * area},
-    };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         const PddoForce F = eval(&c, &f, cases[i].fields);
         const double ex = fabs(F.fx - cases[i].fx) / cases[i].scale,
@@ -146,19 +148,6 @@ static void test_two_rings(void **state) {
                              .polar = polar};
     PddoCloud c = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    const double area = M_PI * RADIUS * RADIUS;
-    const struct {
-        const char *name;
-        Fields fields;
-        double fx, fy, scale;
-    } cases[] = {
-        {"p = 12.5", const_p, 0.0, 0.0, 12.5 * area},
-        {"p = 3x - 2y + 1", linear_p, -3.0 * area, 2.0 * area, 3.0 * area},
-        {"rigid rotation", rotation, 0.0, 0.0, 1.5 * MU * area},
-        {"uniform shear", uniform_shear, 0.0, 0.0, 4.0 * MU * area},
-        {"u = 2 (y-yc)^2, v = -3 (x-xc)^2", quad_shear, 4.0 * MU * area, -6.0 * MU * area,
-         6.0 * MU * area},
-    };
     for (int b = 0; b < 2; b++) {
         PddoForces f = {0};
         assert_ok(pddo_forces_build(&f, &c, b));
