@@ -42,6 +42,29 @@ static int read_name(CfgNode *m, const char *fallback, char *out, const char *se
  * PDDO_MAX_BODIES, each with its own patch options. Two patches must stay
  * apart by their reaches (r_cut) plus a horizon, the room the cloud
  * demands (flow/pddo_cloud.c): then no family holds the rings of both. */
+/* flow.seed: {spin, until}: the bodies' walls turn counterclockwise at
+ * `spin` m/s until `until` s, then stop. A mirror-symmetric cloud holds the
+ * lift at round-off until the wake's instability has grown from it (at Re
+ * 100 on the paper's lattice, most of the paper's 2 s); a brief spin
+ * gives it a finite start, as a body-fitted mesh's asymmetry does. */
+static int read_seed(CfgNode *flow, PddoFlowConfig *c) {
+    CfgNode *seed = cfg_map_find(flow, "seed");
+    if (!seed || seed->is_null) {
+        if (seed) seed->used = true;
+        return NSPD_OK;
+    }
+    TRY(cfg_req_map(flow, "seed", &seed));
+    if (c->body_count == 0)
+        return cfg_fail(seed, "a seed without bodies; expected flow.bodies to turn");
+    TRY(cfg_req_double(seed, "spin", &c->step.spin_speed));
+    TRY(cfg_check_range(seed, "spin", c->step.spin_speed, -1e30, 1e30,
+                        "the walls' speed in m/s, counterclockwise positive"));
+    TRY(cfg_req_double(seed, "until", &c->step.spin_until));
+    TRY(cfg_check_positive(seed, "until", c->step.spin_until,
+                           "the time in s at which the walls stop"));
+    return cfg_end_map(seed);
+}
+
 static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
     CfgNode *seq = cfg_map_find(flow, "bodies");
     if (!seq || seq->is_null) {
@@ -314,6 +337,7 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
                         "max |du/dt| in m/s^2 below which the run ends, 0 for never"));
     TRY(read_lines(flow, c));
     TRY(read_bodies(flow, c));
+    TRY(read_seed(flow, c));
     /* scales: the lid, the inlet (a channel's middle reaches 1.5 times its
      * mean), a body force's Poiseuille maximum F H^2 / (8 nu) */
     const double len[2] = {c->cloud.hi[0] - c->cloud.lo[0], c->cloud.hi[1] - c->cloud.lo[1]};

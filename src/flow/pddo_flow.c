@@ -520,6 +520,10 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
            cfg->reference_velocity, cfg->reference_length);
     APPEND("time step            %.6g s (stable limit %.6g s)\n", cfg->step.dt,
            pddo_flow_dt_limit(cfg));
+    if (cfg->step.spin_speed != 0.0)
+        APPEND("seed                 the bodies' walls turn at %.4g m/s (counterclockwise "
+               "positive) until t = %.4g s\n",
+               cfg->step.spin_speed, cfg->step.spin_until);
     APPEND("pressure equation    %lld nonzeros, L+U %.4g nonzeros (%.1f MB), rcond %.2g, %s, "
            "set up in %.2f s\n",
            (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, f->ppe.rcond,

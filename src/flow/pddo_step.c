@@ -91,6 +91,32 @@ static void node_rule(PddoStep *ps, int64_t k) {
     }
 }
 
+/* The bodies' wall velocity: spin_speed counterclockwise about each polar
+ * patch's centre while time < spin_until, else rest. A wall ring node or
+ * fictitious body node takes the wall's velocity at its own angle (the
+ * reflection of PDDO_VEL_ANTI needs the wall's, not a rigid rotation's).
+ * Loops only when the state changes: twice a run. */
+static void update_spin(PddoStep *ps) {
+    const bool spin = ps->par.spin_speed != 0.0 && ps->time < ps->par.spin_until;
+    if (spin == ps->spinning) return;
+    ps->spinning = spin;
+    const PddoCloud *c = ps->cloud;
+    const double speed = spin ? ps->par.spin_speed : 0.0;
+    for (int64_t k = 0; k < c->n; k++) {
+        if (c->kind[k] != PDDO_NODE_WALL && c->kind[k] != PDDO_NODE_BODY) continue;
+        int best = 0; /* the patch whose wall is nearest */
+        double gap = INFINITY;
+        for (int b = 0; b < c->npatches; b++) {
+            const PddoPolarPatch *pt = &c->patch[b];
+            const double d = fabs(hypot(c->x[k] - pt->x, c->y[k] - pt->y) - pt->radius);
+            if (d < gap) gap = d, best = b;
+        }
+        const PddoPolarPatch *pt = &c->patch[best];
+        const double dx = c->x[k] - pt->x, dy = c->y[k] - pt->y, r = hypot(dx, dy);
+        ps->fix_u[k] = -speed * dy / r, ps->fix_v[k] = speed * dx / r;
+    }
+}
+
 int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, PddoPpe *ppe,
                    const PddoStepParams *par) {
     pddo_step_free(ps);
@@ -98,6 +124,10 @@ int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, Pdd
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "PDDO step: dt %g s, rho %g kg/m^3, mu %g Pa s; expected all > 0", par->dt,
                          par->rho, par->mu);
+    if (par->spin_speed != 0.0 && cloud->npatches == 0)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "PDDO step: a spin of %g m/s; expected polar bodies to turn",
+                         par->spin_speed);
     ps->cloud = cloud, ps->ops = ops, ps->ppe = ppe, ps->par = *par;
     const size_t n = (size_t)cloud->n;
     int status = NSPD_OK;
@@ -122,6 +152,7 @@ int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, Pdd
                              (long long)k);
         }
     }
+    update_spin(ps);
     pddo_step_apply_bc(ps);
     return NSPD_OK;
 }
@@ -186,6 +217,7 @@ int pddo_step_advance(PddoStep *ps) {
     double *const *w = ps->scratch;
     double *u = ps->u, *v = ps->v, *p = ps->p;
     const double rho = ps->par.rho, mu = ps->par.mu, dt = ps->par.dt, nu = mu / rho;
+    update_spin(ps);        /* a no-op unless the caller set the time (a restart) */
     pddo_step_apply_bc(ps); /* 7.1 (a no-op between steps; the caller may have set u) */
 
     /* 7.2: first and second derivatives of the velocity (Eqs. 20, 21) */
@@ -242,9 +274,10 @@ int pddo_step_advance(PddoStep *ps) {
         if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
     }
     ps->dudt_max = rate;
-    pddo_step_apply_bc(ps);
     ps->time += dt;
     ps->steps++;
+    update_spin(ps); /* the walls' velocity at the new time */
+    pddo_step_apply_bc(ps);
     if (bad < n) return blow_up(ps, bad);
     return NSPD_OK;
 }

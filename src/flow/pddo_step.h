@@ -38,6 +38,7 @@
 #include "flow/pddo_ops.h"
 #include "flow/pddo_ppe.h"
 
+#include <stdbool.h>
 #include <stdint.h>
 
 typedef enum {
@@ -62,6 +63,9 @@ typedef struct {
     PddoWallGhosts walls;    /* fictitious velocities of walls, lids and bodies */
     double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
                                 Eq. 33 is unchanged) */
+    double spin_speed;       /* a start-up seed: every polar body's wall turns counterclockwise
+                                at this speed, m/s, while time < spin_until (0: at rest) */
+    double spin_until;       /* s */
 } PddoStepParams;
 
 enum { PDDO_VEL_FREE = 0, PDDO_VEL_FIXED, PDDO_VEL_COPY, PDDO_VEL_PERIODIC, PDDO_VEL_ANTI };
@@ -77,6 +81,7 @@ typedef struct {
     double *fix_u, *fix_v; /* FIXED: the values; ANTI: the wall velocity */
     double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
     double time;
+    bool spinning; /* the bodies' walls turn now (spin_speed, spin_until) */
     int64_t steps;
     double dudt_max; /* the last step's max |du/dt|, |dv/dt| over updated nodes (m/s^2): the
                         steady-state criterion */
@@ -84,8 +89,8 @@ typedef struct {
 
 /* Sets up the step on a cloud with its operators and PPE (borrowed: they
  * must outlive it); u = v = p = 0, then the velocity conditions. ps is
- * zeroed or freed before. NSPD_ERR_INPUT for dt, rho or mu not positive;
- * NSPD_ERR_NOMEM. */
+ * zeroed or freed before. NSPD_ERR_INPUT for dt, rho or mu not positive or
+ * a spin without polar bodies; NSPD_ERR_NOMEM. */
 int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, PddoPpe *ppe,
                    const PddoStepParams *par);
 

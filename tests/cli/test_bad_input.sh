@@ -146,6 +146,10 @@ check "PDDO body names" "flow.bodies\[1\].name: .body0. used twice" \
     "$nspd" check "$src/cases/cylinders_tandem_re10.yaml" --set flow.bodies.1.name=body0 --set flow.bodies.0.name=body0
 check "PDDO body shape" "flow.bodies\[0\].shape" \
     "$nspd" check "$cyl" --set "flow.bodies=[{shape: naca, center: [5, 3], radius: 0.5}]"
+check "PDDO seed without bodies" "flow.seed: a seed without bodies; expected flow.bodies to turn" \
+    "$nspd" check "$cav" --set "flow.seed={spin: 1.0, until: 0.1}"
+check "PDDO seed duration" "flow.seed.until: .*expected the time in s at which the walls stop" \
+    "$nspd" check "$cyl" --set "flow.seed={spin: 1.0, until: 0.0}"
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"
