@@ -13,6 +13,7 @@ static const char *const SIDE_TYPES[] = {"wall", "lid", "inlet", "outlet", "peri
 enum { T_WALL, T_LID, T_INLET, T_OUTLET, T_PERIODIC };
 static const char *const PROFILES[] = {"uniform", "parabolic", NULL};
 static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
+static const char *const DIVERGENCE_TERM[] = {"paper", "updated", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
 
@@ -328,6 +329,10 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     int walls;
     TRY(cfg_opt_enum(flow, "walls", WALL_GHOSTS, PDDO_WALL_ZERO, &walls));
     c->step.walls = (PddoWallGhosts)walls;
+    int divergence;
+    TRY(cfg_opt_enum(flow, "divergence_term", DIVERGENCE_TERM, PDDO_DIVERGENCE_ALL_ROWS,
+                     &divergence));
+    c->step.divergence = (PddoDivergenceTerm)divergence;
     const double zero[2] = {0, 0};
     double force[2];
     TRY(cfg_opt_vec(flow, "body_force", 2, zero, force));

@@ -511,9 +511,12 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
            "%.1f neighbours per node\n",
            (long long)c->n, (long long)f->physical, c->layers, cfg->cloud.horizon_factor,
            (double)c->first[c->n] / (double)c->n);
-    APPEND("sides                left %s, right %s, bottom %s, top %s; wall ghosts %s\n",
+    APPEND("sides                left %s, right %s, bottom %s, top %s; wall ghosts %s; "
+           "(rho/dt) div u on %s\n",
            KIND[c->side[0]], KIND[c->side[1]], KIND[c->side[2]], KIND[c->side[3]],
-           cfg->step.walls == PDDO_WALL_ANTISYMMETRIC ? "antisymmetric" : "paper (zero)");
+           cfg->step.walls == PDDO_WALL_ANTISYMMETRIC ? "antisymmetric" : "paper (zero)",
+           cfg->step.divergence == PDDO_DIVERGENCE_UPDATED ? "the updated nodes' rows"
+                                                           : "every PPE row (paper)");
     APPEND("fluid                rho %.6g kg/m^3, mu %.6g Pa s, Re %.6g (U %.4g m/s, L %.4g m)\n",
            cfg->step.rho, cfg->step.mu,
            cfg->step.rho * cfg->reference_velocity * cfg->reference_length / cfg->step.mu,

@@ -251,7 +251,9 @@ int pddo_step_advance(PddoStep *ps) {
             pddo_ops_at(ops, PDDO_D_X, w[D1], k) + pddo_ops_at(ops, PDDO_D_Y, w[D2], k);
         const double div_l =
             pddo_ops_at(ops, PDDO_D_X, w[LU], k) + pddo_ops_at(ops, PDDO_D_Y, w[LV], k);
-        w[R][k] = rho / dt * div_u - rho * div_d + mu * div_l;
+        const bool feeds_back =
+            ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
+        w[R][k] = (feeds_back ? rho / dt * div_u : 0.0) - rho * div_d + mu * div_l;
     }
     /* 7.3 */
     TRY(pddo_ppe_solve(ps->ppe, w[R], p));

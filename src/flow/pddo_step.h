@@ -46,6 +46,19 @@ typedef enum {
     PDDO_WALL_ANTISYMMETRIC, /* u_g = 2 u_wall - u(image): second order (notes 1.6, V6) */
 } PddoWallGhosts;
 
+/* Where the PPE's divergence term (rho/dt) div u (Eq. 33b) acts. Eq. 33b
+ * comes from asking that Eq. 8's update leave div u = 0; on a node whose
+ * velocity is prescribed (a wall, lid or inlet node, a body's wall ring)
+ * Eq. 8 never acts, its divergence is never fed back, and the term turns
+ * it into a wall pressure that grows as 1/dt (measured: the Re 100
+ * cylinder's front pressure 11.7 and 13.2 kPa at dt 5e-5 and 2.5e-5 s,
+ * icoFoam's 9.28 kPa; docs/VALIDATION.md). */
+typedef enum {
+    PDDO_DIVERGENCE_ALL_ROWS = 0, /* the paper: every PPE row */
+    PDDO_DIVERGENCE_UPDATED,      /* the rows of nodes Eq. 8 updates; a prescribed node's row
+                                     keeps -rho div d + mu div L, the continuous PPE's source */
+} PddoDivergenceTerm;
+
 typedef enum {
     PDDO_INLET_UNIFORM = 0, /* the paper: (inlet_u, inlet_v) on the whole side */
     PDDO_INLET_PARABOLIC,   /* 6 s (1 - s) (inlet_u, inlet_v), s in [0, 1] across the side: a
@@ -60,7 +73,8 @@ typedef struct {
     double wall_v[PDDO_SIDES];
     double inlet_u, inlet_v; /* inflow, m/s (the mean of a parabolic one) */
     PddoInletProfile inlet_profile;
-    PddoWallGhosts walls;    /* fictitious velocities of walls, lids and bodies */
+    PddoWallGhosts walls; /* fictitious velocities of walls, lids and bodies */
+    PddoDivergenceTerm divergence;
     double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
                                 Eq. 33 is unchanged) */
     double spin_speed;       /* a start-up seed: every polar body's wall turns counterclockwise

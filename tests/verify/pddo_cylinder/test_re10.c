@@ -39,8 +39,11 @@
  * 1e-3: antisymmetric 276.4 on the wall, 206.1, 187.0 on the next rings;
  * zero 210.0, 202.1, 185.7). Dropping that term on prescribed nodes (an
  * experiment, not kept) turns the spike into a dip (171 vs 201 Pa next
- * ring): the wall-ring pressure row needs a different treatment (notes
- * 1.6's homogeneous Neumann layer), the next step for issue 13. The
+ * ring) at Re 10; it is now flow.divergence_term: updated
+ * (test_divergence_term.c). With it, dx 0.05, antisymmetric ghosts, dt
+ * 1e-3 (PCYL_DIV=1): front 208.65 Pa (rays f0 .. f2: 208.6, 219.2, 208.3),
+ * drag 292.6 N/m (159.4 + 133.2) against icoFoam's 288.8 (169.8 + 119.0);
+ * zero ghosts 192.9 Pa, 384.7 N/m (149.4 + 235.3). The
  * viscous drag differs by a factor 1.8 between the two ghost treatments
  * (zero: first order at walls, notes V6). Stability (notes 1.5 left the
  * patch unmeasured): at dx 0.1 dt 1e-2 is stable (nu dt / dx^2 = 1.0; on
@@ -50,7 +53,8 @@
  * steady state at dt 1e-2 has front 169.8 Pa, drag 397.9 N/m, in line
  * with the dt trend above. The default runs both at dx 0.1,
  * dt 1e-3 (about 40 s each) as a regression; PCYL_DX, PCYL_DT, PCYL_T,
- * PCYL_RP, PCYL_ANTI (0 or 1: one treatment only) make studies. */
+ * PCYL_RP, PCYL_ANTI (0 or 1: one treatment only), PCYL_DIV (1: the
+ * divergence term on the updated rows only) make studies. */
 #include "test_support.h"
 
 #include "core/timer.h"
@@ -123,7 +127,10 @@ static void run(int anti, bool study) {
                                 .mu = mu,
                                 .dt = dt,
                                 .inlet_u = u0,
-                                .walls = anti ? PDDO_WALL_ANTISYMMETRIC : PDDO_WALL_ZERO};
+                                .walls = anti ? PDDO_WALL_ANTISYMMETRIC : PDDO_WALL_ZERO,
+                                .divergence = env_or("PCYL_DIV", 0.0) != 0.0
+                                                  ? PDDO_DIVERGENCE_UPDATED
+                                                  : PDDO_DIVERGENCE_ALL_ROWS};
     assert_ok(pddo_step_init(&st, &c, &ops, &ppe, &par));
     const double setup_s = nspd_wall_time() - t0;
     const PddoPolarPatch *p = &c.patch[0];
@@ -215,8 +222,8 @@ static void run(int anti, bool study) {
 
 static void test_re10(void **state) {
     (void)state;
-    const bool study =
-        getenv("PCYL_DX") || getenv("PCYL_DT") || getenv("PCYL_T") || getenv("PCYL_RP");
+    const bool study = getenv("PCYL_DX") || getenv("PCYL_DT") || getenv("PCYL_T") ||
+                       getenv("PCYL_RP") || getenv("PCYL_DIV");
     const char *only = getenv("PCYL_ANTI"); /* "0" or "1": one treatment only */
     for (int anti = 0; anti < 2; anti++)
         if (!only || atoi(only) == anti) run(anti, study);
