@@ -95,6 +95,12 @@ PddoForce pddo_forces_eval(const PddoForces *f, PddoTraction traction, const Pdd
     return out;
 }
 
+void pddo_forces_wall_vorticity(const PddoForces *f, const double *u, const double *v,
+                                double *omega) {
+    for (int32_t t = 0; t < f->m; t++)
+        omega[t] = side_derivative(f, PDDO_D_X, v, t) - side_derivative(f, PDDO_D_Y, u, t);
+}
+
 void pddo_forces_free(PddoForces *f) {
     pddo_ops_free(&f->side);
     nspd_free(&f->first);

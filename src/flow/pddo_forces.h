@@ -65,6 +65,11 @@ int pddo_forces_build(PddoForces *f, const PddoCloud *cloud, int patch);
 PddoForce pddo_forces_eval(const PddoForces *f, PddoTraction traction, const PddoOps *ops,
                            const double *u, const double *v, const double *p, double mu);
 
+/* The vorticity dv/dx - du/dy at the m wall nodes (angle order), from
+ * the fluid-side derivatives, into omega (m). */
+void pddo_forces_wall_vorticity(const PddoForces *f, const double *u, const double *v,
+                                double *omega);
+
 void pddo_forces_free(PddoForces *f);
 
 /* The period and amplitude of a lift signal (paper 002 Sec. 5.3, Re 100)

@@ -243,7 +243,7 @@ int pddo_step_advance(PddoStep *ps) {
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
         if (row[k] != PDDO_ROW_PPE) {
-            w[R][k] = 0.0;
+            w[R][k] = row[k] == PDDO_ROW_IMAGE && ps->image_rhs ? ps->image_rhs[k] : 0.0;
             continue;
         }
         const double div_u = w[UX][k] + w[VY][k];

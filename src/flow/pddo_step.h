@@ -89,11 +89,13 @@ typedef struct {
     const PddoOps *ops;
     PddoPpe *ppe;
     PddoStepParams par;
-    double *u, *v, *p;     /* the state, n each (p of the last step) */
-    uint8_t *rule;         /* PDDO_VEL_* per node */
-    int32_t *source;       /* COPY / PERIODIC / ANTI: the node read; else -1 */
-    double *fix_u, *fix_v; /* FIXED: the values; ANTI: the wall velocity */
-    double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
+    double *u, *v, *p;       /* the state, n each (p of the last step) */
+    uint8_t *rule;           /* PDDO_VEL_* per node */
+    int32_t *source;         /* COPY / PERIODIC / ANTI: the node read; else -1 */
+    double *fix_u, *fix_v;   /* FIXED: the values; ANTI: the wall velocity */
+    double *scratch[9];      /* ux, uy, vx, vy, lu, lv, d1, d2, r */
+    const double *image_rhs; /* NULL, or n: the right-hand side of each fictitious node's
+                                pressure row p_g - s p_image (a Neumann datum; borrowed) */
     double time;
     bool spinning; /* the bodies' walls turn now (spin_speed, spin_until) */
     int64_t steps;
