@@ -171,6 +171,26 @@ cp "$(ls "$out/channel_re56"/speed_*.png | tail -1)" docs/img/pddo_channel_re56_
     --set flow.boundaries.x_min.profile=parabolic --set flow.walls=antisymmetric
 awk -F, 'NR > 2 && $3 > m { m = $3 } END { printf "channel, parabolic inflow, antisymmetric ghosts: u_max/u0 at exit = %.4f (%+.2f %%)\n", m / 0.05, 100 * (m / 0.075 - 1) }' \
     "$(ls "$out/channel_re56_parabolic"/line_exit_*.csv | tail -1)" | tee -a "$out/channel.txt"
+echo "== PDDO confined cylinder (paper 002 Sec. 5.3), Re 100"
+# The case file at dx 0.05 m to t = 1 s (13 min on one core), averaged from
+# 0.5 s; with PDDO_RE100_PAPER=1 the case file as it is, the paper's
+# lattice and 2 s (81 min). docs/VALIDATION.md's tables; references: paper
+# 9501 N/m, 2153 N/m, 0.0447 s; Fluent 9448.4, 2224; icoFoam 9407, 2243,
+# 0.0461 s.
+re100() { # NAME, then --set overrides
+    name=$1
+    shift
+    "$nspd" run cases/cylinder_confined_re100.yaml -o "$out/$name" --force --quiet "$@"
+    sed -n 's/.*"\(drag_n\|drag_pressure_n\|drag_viscous_n\|lift_amplitude_n\|period_s\|strouhal\|lift_periods\|wall_s\)": \([^,]*\),*/'"$name"': \1 = \2/p' \
+        "$out/$name/summary.json" | tee "$out/$name.txt"
+}
+re100 cylinder_re100_dx05 --set flow.spacing=0.05 --set time.end=1.0 --set output.average_from=0.5
+if [ "${PDDO_RE100_PAPER:-0}" = 1 ]; then
+    re100 cylinder_re100
+    cp "$out/cylinder_re100/history_lift_n.png" docs/img/pddo_cylinder_re100_lift.png
+    cp "$(ls "$out/cylinder_re100"/vorticity_*.png | tail -1)" docs/img/pddo_cylinder_re100_vorticity.png
+fi
+
 echo "== correspondence solid (paper 003 geometry, issue 14): hollow square, ductile"
 "$nspd" run cases/hollow_square_pressure.yaml -o "$out/hollow_square" --force --quiet
 cp "$out/hollow_square/plastic_strain_00009.png" docs/img/hollow_square_plastic_180us.png
