@@ -62,12 +62,9 @@ static int read_seed(CfgNode *flow, PddoFlowConfig *c) {
  * apart by their reaches (r_cut) plus a horizon, the room the cloud
  * demands (flow/pddo_cloud.c): then no family holds the rings of both. */
 static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
-    CfgNode *seq = cfg_map_find(flow, "bodies");
-    if (!seq || seq->is_null) {
-        if (seq) seq->used = true;
-        return NSPD_OK;
-    }
-    TRY(cfg_req_seq(flow, "bodies", &seq));
+    CfgNode *seq;
+    TRY(cfg_opt_seq(flow, "bodies", &seq));
+    if (!seq) return NSPD_OK;
     if (seq->count > PDDO_MAX_BODIES)
         return cfg_fail(seq, "%d bodies; expected at most %d (one polar patch each)", seq->count,
                         PDDO_MAX_BODIES);
@@ -270,15 +267,14 @@ static int read_lattice(CfgNode *flow, PddoFlowConfig *c) {
 static int read_lines(CfgNode *flow, PddoFlowConfig *c) {
     const double mid[2] = {0.5 * (c->cloud.lo[0] + c->cloud.hi[0]),
                            0.5 * (c->cloud.lo[1] + c->cloud.hi[1])};
-    CfgNode *seq = cfg_map_find(flow, "lines");
-    if (!seq || seq->is_null) { /* the two centrelines */
-        if (seq) seq->used = true;
+    CfgNode *seq;
+    TRY(cfg_opt_seq(flow, "lines", &seq));
+    if (!seq) { /* the two centrelines */
         c->line_count = 2;
         c->lines[0] = (PddoLine){.name = "vertical", .at = {mid[0], mid[1]}, .along = 1};
         c->lines[1] = (PddoLine){.name = "horizontal", .at = {mid[0], mid[1]}, .along = 0};
         return NSPD_OK;
     }
-    TRY(cfg_req_seq(flow, "lines", &seq));
     if (seq->count > PDDO_MAX_LINES)
         return cfg_fail(seq, "%d lines; expected at most %d", seq->count, PDDO_MAX_LINES);
     c->line_count = seq->count;
@@ -347,9 +343,9 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     c->velocity_scale = fmax(fmax(lid, 1.5 * inlet), driven);
     c->reference_length = c->body_count > 0 ? 2.0 * c->bodies[0].radius : fmin(len[0], len[1]);
     c->reference_velocity = lid > 0.0 ? lid : inlet > 0.0 ? inlet : 2.0 / 3.0 * driven;
-    CfgNode *ref = cfg_map_find(flow, "reference");
-    if (ref && !ref->is_null) {
-        TRY(cfg_req_map(flow, "reference", &ref));
+    CfgNode *ref;
+    TRY(cfg_opt_map(flow, "reference", &ref));
+    if (ref) {
         TRY(cfg_opt_double(ref, "velocity", c->reference_velocity, &c->reference_velocity));
         TRY(cfg_check_positive(ref, "velocity", c->reference_velocity,
                                "the reference speed of Re, cd and cl in m/s"));
@@ -357,8 +353,6 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
         TRY(cfg_check_positive(ref, "length", c->reference_length,
                                "the reference length of Re, cd and cl in m"));
         TRY(cfg_end_map(ref));
-    } else if (ref) {
-        ref->used = true;
     }
     if (!(c->velocity_scale > 0.0))
         return cfg_fail_at(flow, "boundaries",
