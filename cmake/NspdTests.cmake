@@ -1,5 +1,7 @@
 # Test registration. Adding a test is adding a file:
-#   tests/unit/<module>/test_<topic>.c    -> ctest name unit.<module>.<topic>, label "unit"
+#   tests/unit/<folder>/test_<topic>.c    -> ctest name unit.<folder>.<topic>, label "unit"
+#                                            (the folder of src/ it tests: tests/unit/flow/gks/test_flux.c
+#                                            is unit.flow.gks.flux)
 #   tests/verify/<case>/test_<topic>.c    -> ctest name verify.<case>.<topic>, label "verify"
 #   tests/cli/test_<topic>.sh             -> ctest name cli.<topic>, label "cli"
 # A file whose first line contains "ctest-labels: a b" gets those labels too
@@ -30,11 +32,11 @@ foreach(kind unit verify)
     endif()
     foreach(src ${tests})
         get_filename_component(dir ${src} DIRECTORY)
-        get_filename_component(group ${dir} NAME)
+        file(RELATIVE_PATH group ${PROJECT_SOURCE_DIR}/tests/${kind} ${dir})
         get_filename_component(stem ${src} NAME_WE)
         string(REGEX REPLACE "^test_" "" topic ${stem})
-        set(name ${kind}.${group}.${topic})
-        set(exe ${kind}_${group}_${topic})
+        string(REPLACE "/" "." name ${kind}.${group}.${topic})
+        string(REPLACE "/" "_" exe ${kind}_${group}_${topic})
         add_executable(${exe} ${src})
         target_link_libraries(${exe} PRIVATE nspd_test_support)
         add_test(NAME ${name} COMMAND ${exe} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})

@@ -1,13 +1,14 @@
-/* nspd bench: throughput of the solvers' hot loops, one JSON object each. */
+/* nspd bench: throughput of the solvers' hot loops, one JSON object each.
+ * A model's benchmark is its own (SolidOps.bench, FlowOps.bench: pd, cpd,
+ * gks); the machine's memory bandwidth is measured here. */
 #include "app/commands.h"
 #include "core/mem.h"
+#include "core/report.h"
 #include "core/status.h"
 #include "core/timer.h"
-#include "flow/gks_solver.h"
+#include "flow/flow.h"
 #include "io/json.h"
-#include "solid/bond_body.h"
-#include "solid/cpd_body.h"
-#include "solid/pd_integrate.h"
+#include "solid/solid.h"
 
 #include <math.h>
 #include <omp.h>
@@ -41,176 +42,28 @@ static bool parse(int argc, char **argv, BenchOptions *opt) {
     return true;
 }
 
-/* The PD plate of paper 000 Sec. 4.2 (square lattice, delta = 3.015 dx,
- * failure test on every bond) under a small uniform strain, so that every
- * bond does the full work; N points as the nearest square. */
-static int bench_pd(const BenchOptions *opt) {
-    int side = (int)lround(sqrt((double)opt->points));
-    if (side < 8) side = 8;
-    double dx = 1e-4, length = side * dx;
-    PdConfig cfg = {0};
-    cfg.model = PD_PLANE_STRESS;
-    cfg.dim = 2;
-    cfg.spacing = dx;
-    cfg.thickness = dx;
-    cfg.horizon_factor = 3.015;
-    cfg.density = 8000;
-    cfg.youngs_modulus = 192e9;
-    cfg.critical_stretch = 0.04472;
-    cfg.failure = true;
-    cfg.volume_correction = PD_VOLUME_LINEAR;
-    cfg.surface_correction = PD_SURFACE_ENERGY;
-    cfg.integrator = PD_EULER_CROMER;
-    TRY(nspd_alloc(&cfg.geometry.shapes, 1, sizeof(Shape)));
-    cfg.geometry.count = 1;
-    cfg.geometry.shapes[0] =
-        (Shape){.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {length, length, 0}};
-
-    double t0 = nspd_wall_time();
-    BondBody body;
-    TRY(bond_body_create(&body, &cfg));
-    double setup_s = nspd_wall_time() - t0;
-    for (int64_t i = 0; i < body.n; i++) {
-        body.u[0][i] = 1e-4 * body.x[0][i];
-        body.u[1][i] = -3e-5 * body.x[1][i];
-    }
-    double dt = 0.8 * pd_stable_time_step(&body);
-    int status = NSPD_OK;
-    for (int s = 0; s < 3 && status == NSPD_OK; s++) status = pd_step(&body, dt); /* warm-up */
-    t0 = nspd_wall_time();
-    for (long s = 0; s < opt->steps && status == NSPD_OK; s++) status = pd_step(&body, dt);
-    double seconds = nspd_wall_time() - t0;
-    if (status == NSPD_OK) {
-        size_t bytes = nspd_mem_live_bytes();
-        double bond_bytes = (double)body.bond_count * PD_BYTES_PER_BOND;
+/* A model's benchmark `name` (*found false when no model has one). */
+static int bench_model(const char *name, const BenchOptions *opt, bool *found) {
+    Report *r;
+    TRY(nspd_alloc(&r, 1, sizeof *r));
+    int status = solid_bench(name, opt->points, opt->steps, r, found);
+    if (status == NSPD_OK && !*found) status = flow_bench(name, opt->points, opt->steps, r, found);
+    if (status == NSPD_OK && *found) {
         JsonWriter w;
         json_begin(&w, stdout);
-        json_string(&w, "bench", "pd");
-        json_int(&w, "points", body.n);
-        json_int(&w, "bonds", body.bond_count); /* once from each end, as LAMMPS counts */
-        json_int(&w, "steps", opt->steps);
-        json_int(&w, "threads", omp_get_max_threads());
-        json_number(&w, "seconds", seconds);
-        json_number(&w, "bond_updates_per_s",
-                    (double)body.bond_count * (double)opt->steps / seconds);
-        json_number(&w, "bytes_per_bond", PD_BYTES_PER_BOND);
-        json_number(&w, "bytes_per_point", ((double)bytes - bond_bytes) / (double)body.n);
-        json_number(&w, "setup_s", setup_s);
-        json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
-        json_end(&w);
-    }
-    bond_body_destroy(&body);
-    return status;
-}
-
-/* The correspondence solid (issue 14, paper 003): a square plane-strain
- * steel block (E 200 GPa, nu 0.29, rho 7870, J2 with sigma_Y 0.4 GPa and
- * H 0.1 GPa, ductile damage between eqps 0.18 and 0.2 evaluated on every
- * bond), delta = 2.5 h square families (24 neighbours inside), N points as
- * the nearest square, built through cpd_body_create. A homogeneous stretch
- * past yield (eps_xx 3e-3, eps_yy -1e-3, applied as one increment so the
- * bonds' hypoelastic stresses hold it) and random velocities up to 0.5 m/s
- * (so every step has a nonzero stress increment, loading and unloading),
- * then S velocity Verlet steps at 0.8 of the stable step. Bonds and bond
- * updates count each pair from both ends, as stored (and as bench pd and
- * LAMMPS count); bytes are nspd_mem_live_bytes before and after creation. */
-static int bench_cpd(const BenchOptions *opt) {
-    int side = (int)lround(sqrt((double)opt->points));
-    if (side < 8) side = 8;
-    double h = 1e-3, length = side * h;
-    CpdConfig cfg = {0};
-    cfg.pd.model = PD_PLANE_STRAIN;
-    cfg.pd.dim = 2;
-    cfg.pd.spacing = h;
-    cfg.pd.thickness = h;
-    cfg.pd.horizon_factor = 2.5;
-    cfg.pd.density = 7870;
-    cfg.pd.youngs_modulus = 200e9;
-    cfg.pd.integrator = PD_VELOCITY_VERLET;
-    cfg.poisson_ratio = 0.29;
-    cfg.yield_stress = 0.4e9;
-    cfg.hardening = 0.1e9;
-    cfg.force = CPD_FORCE_BOND_ASSOCIATED;
-    cfg.family = CPD_FAMILY_SQUARE;
-    cfg.damage = CPD_DAMAGE_DUCTILE;
-    cfg.plastic_strain_threshold = 0.18;
-    cfg.plastic_strain_critical = 0.2;
-    TRY(nspd_alloc(&cfg.pd.geometry.shapes, 1, sizeof(Shape)));
-    cfg.pd.geometry.count = 1;
-    cfg.pd.geometry.shapes[0] =
-        (Shape){.kind = SHAPE_RECTANGLE, .lo = {0, 0, 0}, .hi = {length, length, 0}};
-
-    const size_t before = nspd_mem_live_bytes();
-    double t0 = nspd_wall_time();
-    CpdBody body;
-    TRY(cpd_body_create(&body, &cfg)); /* includes the power iteration for the stable step */
-    double setup_s = nspd_wall_time() - t0;
-    const double allocated = (double)(nspd_mem_live_bytes() - before);
-    uint64_t r = 0x9E3779B97F4A7C15ull;
-    for (int64_t i = 0; i < body.n; i++) {
-        body.u[0][i] = 3e-3 * body.x[0][i];
-        body.u[1][i] = -1e-3 * body.x[1][i];
-        for (int d = 0; d < 2; d++) {
-            r ^= r << 13, r ^= r >> 7, r ^= r << 17;
-            body.v[d][i] = (double)(r >> 11) * 0x1.0p-53 - 0.5;
+        for (int k = 0; k < r->n; k++) {
+            const ReportItem *it = &r->item[k];
+            if (it->kind == REPORT_TEXT)
+                json_string(&w, it->name, it->text);
+            else if (it->kind == REPORT_INT)
+                json_int(&w, it->name, it->count);
+            else
+                json_number(&w, it->name, it->real);
         }
-    }
-    cpd_force(&body, 0.0); /* u_prev = 0 to u: the stretch's stresses, past yield */
-    body.force_valid = true;
-    double dt = 0.8 * body.stable_dt;
-    int status = NSPD_OK;
-    for (int s = 0; s < 3 && status == NSPD_OK; s++) status = cpd_step(&body, dt); /* warm-up */
-    t0 = nspd_wall_time();
-    for (long s = 0; s < opt->steps && status == NSPD_OK; s++) status = cpd_step(&body, dt);
-    double seconds = nspd_wall_time() - t0;
-    if (status == NSPD_OK) {
-        double eqps = 0.0;
-        for (int64_t k = 0; k < body.bond_count; k++) eqps = fmax(eqps, body.eqps[k]);
-        const double bond_bytes = (double)body.bond_count * CPD_BYTES_PER_BOND;
-        JsonWriter w;
-        json_begin(&w, stdout);
-        json_string(&w, "bench", "cpd");
-        json_int(&w, "points", body.n);
-        json_int(&w, "bonds", body.bond_count); /* stored: each pair from both ends */
-        json_int(&w, "bond_pairs", body.bond_count / 2);
-        json_int(&w, "steps", opt->steps);
-        json_int(&w, "threads", omp_get_max_threads());
-        json_number(&w, "seconds", seconds);
-        json_number(&w, "seconds_per_step", seconds / (double)opt->steps);
-        json_number(&w, "bond_updates_per_s",
-                    (double)body.bond_count * (double)opt->steps / seconds);
-        json_number(&w, "bytes_per_bond", CPD_BYTES_PER_BOND); /* itemised in cpd_body.h */
-        json_number(&w, "bytes_per_point", (allocated - bond_bytes) / (double)body.n);
-        json_number(&w, "allocated_bytes", allocated);
-        json_number(&w, "allocated_bytes_per_bond", allocated / (double)body.bond_count);
-        json_number(&w, "setup_s", setup_s);
-        json_number(&w, "dt", dt);
-        json_number(&w, "max_plastic_strain", eqps);
-        json_int(&w, "substeps_max", body.substeps_max);
-        json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
         json_end(&w);
     }
-    cpd_body_destroy(&body);
+    nspd_free(&r);
     return status;
-}
-
-/* The viscous 2D GKS step on an N x N periodic grid (flow_bench). */
-static int bench_gks(const BenchOptions *opt) {
-    FlowBenchResult r;
-    TRY(flow_bench((int)opt->points, opt->threads > 0 ? opt->threads : omp_get_max_threads(),
-                   (int)opt->steps, &r));
-    JsonWriter w;
-    json_begin(&w, stdout);
-    json_string(&w, "bench", "gks");
-    json_int(&w, "cells", r.cells);
-    json_int(&w, "steps", r.steps);
-    json_int(&w, "threads", r.threads);
-    json_number(&w, "seconds", r.seconds);
-    json_number(&w, "cell_updates_per_s", r.cell_updates_per_s);
-    json_number(&w, "bytes_per_cell", r.bytes_per_cell);
-    json_number(&w, "peak_rss_mb", nspd_peak_rss_mb());
-    json_end(&w);
-    return NSPD_OK;
 }
 
 /* STREAM-style triad a = b + s c over three arrays of `points` doubles
@@ -277,15 +130,13 @@ int cmd_bench(int argc, char **argv) {
     if (!parse(argc - 1, argv + 1, &opt)) return EXIT_BAD_INPUT;
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
     int status;
-    if (strcmp(argv[0], "pd") == 0) {
-        status = bench_pd(&opt);
-    } else if (strcmp(argv[0], "cpd") == 0) {
-        status = bench_cpd(&opt);
-    } else if (gks) {
-        status = bench_gks(&opt);
-    } else if (memory) {
+    bool found = true;
+    if (memory) {
         status = bench_memory(&opt);
     } else {
+        status = bench_model(argv[0], &opt, &found);
+    }
+    if (!found) {
         fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd, cpd, gks or memory)\n",
                 argv[0]);
         return EXIT_BAD_INPUT;

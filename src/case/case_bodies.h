@@ -27,7 +27,7 @@
 #ifndef NSPD_CASE_CASE_BODIES_H
 #define NSPD_CASE_CASE_BODIES_H
 
-#include "couple/ibm_body.h"
+#include "couple/ghost/markers.h"
 #include "io/cfg_tree.h"
 
 #include <stdbool.h>

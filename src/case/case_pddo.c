@@ -60,7 +60,7 @@ static int read_seed(CfgNode *flow, PddoFlowConfig *c) {
 /* `bodies`: circles on polar patches (paper 002 Sec. 4.1.2), at most
  * PDDO_MAX_BODIES, each with its own patch options. Two patches must stay
  * apart by their reaches (r_cut) plus a horizon, the room the cloud
- * demands (flow/pddo_cloud.c): then no family holds the rings of both. */
+ * demands (flow/pddo/cloud.c): then no family holds the rings of both. */
 static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
     CfgNode *seq;
     TRY(cfg_opt_seq(flow, "bodies", &seq));

@@ -3,7 +3,7 @@
 #ifndef NSPD_CASE_CASE_PDDO_H
 #define NSPD_CASE_CASE_PDDO_H
 
-#include "flow/pddo_flow.h"
+#include "flow/pddo/model.h"
 #include "io/cfg_tree.h"
 
 #include <stdbool.h>

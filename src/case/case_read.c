@@ -3,7 +3,7 @@
 #include "core/hash.h"
 #include "core/mem.h"
 #include "core/status.h"
-#include "case/case_flow.h"
+#include "case/case_gks.h"
 #include "case/case_pddo.h"
 #include "case/case_shapes.h"
 #include "case/case_solid.h"
@@ -199,8 +199,8 @@ static const char *const WALLS[] = {"adiabatic", "isothermal", NULL};
 /* The `coupling:` section: the wall condition of the solid's surface, the
  * start-up and the reference state of the surface loads. */
 static int read_coupling(CfgNode *m, SimConfig *cfg) {
-    FsiConfig *c = &cfg->coupling.ghost.fsi;
-    const GksCaseConfig *f = &cfg->flow.gks;
+    FsiConfig *c = &((GhostCouplingConfig *)cfg->coupling.model)->fsi;
+    const GksCaseConfig *f = cfg->flow.model;
     TRY(cfg_opt_enum(m, "hold", FSI_HOLD_NAMES, FSI_HOLD_NONE, &c->hold));
     TRY(cfg_opt_enum(m, "wall", WALLS, IBM_WALL_ADIABATIC, &c->thermal));
     if (c->thermal == IBM_WALL_ISOTHERMAL) {
@@ -254,11 +254,13 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
                                "pddo with a solid; expected no solid section (the PDDO flow "
                                "takes no coupling yet)");
         cfg->flow.method = FLOW_METHOD_PDDO;
+        TRY(nspd_alloc(&cfg->flow.model, 1, sizeof(PddoFlowConfig)));
         TRY(case_read_pddo(flow, cfg_map_find(root, "time"), cfg->dt_given, cfg->dt,
-                           &cfg->flow.pddo));
+                           cfg->flow.model));
     } else if (flow) {
         cfg->flow.method = FLOW_METHOD_GKS;
-        int status = case_read_flow(flow, &cfg->flow.gks, &walls);
+        int status = nspd_alloc(&cfg->flow.model, 1, sizeof(GksCaseConfig));
+        if (status == NSPD_OK) status = case_read_gks(flow, cfg->flow.model, &walls);
         if (status != NSPD_OK) {
             ghost_coupling_config_free(&walls);
             return status;
@@ -267,11 +269,17 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     if (walls.bodies.count > 0 && !solid) {
         /* fixed bodies: a ghost-cell coupling with rigid walls, measured
          * against the free stream (else the initial state) */
-        cfg->coupling.kind = COUPLING_GHOST_CELL;
-        cfg->coupling.ghost = walls;
-        const GksCaseConfig *f = &cfg->flow.gks;
+        GhostCouplingConfig *ghost;
+        const int status = nspd_alloc(&ghost, 1, sizeof *ghost);
+        if (status != NSPD_OK) {
+            ghost_coupling_config_free(&walls);
+            return status;
+        }
+        *ghost = walls;
+        cfg->coupling = (CouplingConfig){.kind = COUPLING_GHOST_CELL, .model = ghost};
+        const GksCaseConfig *f = cfg->flow.model;
         const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
-        cfg->coupling.ghost.fsi.reference =
+        ghost->fsi.reference =
             (IbmReference){.rho = q->rho,
                            .u = q->u,
                            .v = q->v,
@@ -301,6 +309,7 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
             coupling->used = true;
         }
         cfg->coupling.kind = COUPLING_GHOST_CELL;
+        TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(GhostCouplingConfig)));
         TRY(read_coupling(coupling, cfg));
     } else if (coupling) {
         return cfg_fail(coupling, "a coupling needs both a solid and a flow section");

@@ -4,6 +4,8 @@
 #include "core/status.h"
 #include "case/case_shapes.h"
 #include "io/cfg_read.h"
+#include "solid/correspondence/config.h"
+#include "solid/pd/config.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -359,7 +361,7 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
     /* C_s = 0.5: Peridynamics.jl's default for this penalty (ZEMSilling,
      * notes 1c.3), so the control model is the one most users run; on a
      * periodic patch it lifts every spurious zero-energy mode of the bare
-     * model (tests/unit/solid/test_zero_energy.c: the smallest nonzero
+     * model (tests/unit/solid/correspondence/test_zero_energy.c: the smallest nonzero
      * eigenvalue from 1.1e-3 to 0.17 of the largest) while it moves the
      * speeds of a 20 h wave by +0.1 % (P) and +0.4 % (S) only
      * (test_cpd_classic.c) */
@@ -406,12 +408,18 @@ int case_read_solid(CfgNode *s, SolidConfig *out) {
     memset(out, 0, sizeof *out);
     int formulation;
     TRY(cfg_opt_enum(s, "formulation", FORMULATION_NAMES, 0, &formulation));
+    /* the kind is set with the model's configuration, so that
+     * solid_config_free frees what a failed read left */
     if (formulation == 1) {
-        out->kind = SOLID_CORRESPONDENCE;
-        TRY(read_correspondence(s, &out->correspondence));
+        CpdConfig *cpd;
+        TRY(nspd_alloc(&cpd, 1, sizeof *cpd));
+        *out = (SolidConfig){SOLID_CORRESPONDENCE, cpd};
+        TRY(read_correspondence(s, cpd));
     } else {
-        out->kind = SOLID_BOND;
-        TRY(read_bond(s, &out->bond));
+        PdConfig *pd;
+        TRY(nspd_alloc(&pd, 1, sizeof *pd));
+        *out = (SolidConfig){SOLID_BOND, pd};
+        TRY(read_bond(s, pd));
     }
     return cfg_end_map(s);
 }

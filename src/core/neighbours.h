@@ -1,8 +1,8 @@
 /* Neighbour search: the family of every point within a horizon, as
  * compressed rows (each point lists all its neighbours, ascending). The one
  * neighbour search of the code base: the PD solid's bonds and the PDDO
- * flow's families (flow/pddo_cloud.c) and its probes' stencils
- * (flow/pddo_sample.c) all come from it. */
+ * flow's families (flow/pddo/cloud.c) and its probes' stencils
+ * (flow/pddo/sample.c) all come from it. */
 #ifndef NSPD_CORE_NEIGHBOURS_H
 #define NSPD_CORE_NEIGHBOURS_H
 

@@ -1,6 +1,6 @@
 /* Small dense symmetric positive definite systems (up to 9 unknowns): the
  * moment matrices of the meshfree operators, one per point (the RK gradient
- * of solid/rk_gradient.c, the PDDO shape matrix of flow/pddo_ops.c).
+ * of solid/correspondence/rk_gradient.c, the PDDO shape matrix of flow/pddo/operators.c).
  *
  * The matrix is first scaled to a unit diagonal (scale[r] = 1/sqrt(M_rr)),
  * so the pivot test below is independent of units and of how unevenly the

@@ -6,6 +6,11 @@
 #include <math.h>
 #include <string.h>
 
+/* The built-in couplings' ops tables, each defined in its own folder
+ * (couple/ghost/model.c): the one place the interface names a coupling,
+ * by declaration only, so no coupling header is in its include tree. */
+extern const CouplingOps GHOST_COUPLING_OPS;
+
 /* The registry: one ops table per CouplingKind; coupling_register fills
  * the slots after the built-in ones. */
 static const CouplingOps *COUPLING_MODELS[COUPLING_KIND_MAX] = {
@@ -28,7 +33,13 @@ struct Coupling {
 };
 
 void coupling_config_free(CouplingConfig *cfg) {
-    if (cfg->kind == COUPLING_GHOST_CELL) ghost_coupling_config_free(&cfg->ghost);
+    const CouplingOps *ops = cfg->kind > COUPLING_NONE && cfg->kind < COUPLING_KIND_MAX
+                                 ? COUPLING_MODELS[cfg->kind]
+                                 : NULL;
+    if (cfg->model && ops && ops->config_free) {
+        ops->config_free(cfg->model);
+        nspd_free(&cfg->model);
+    }
     memset(cfg, 0, sizeof *cfg);
 }
 

@@ -5,37 +5,40 @@
  *     coupling_after_flow    the flow's state becomes the solid's load
  *     solid sub-steps        no longer than coupling_solid_dt_limit
  * A coupling may have no solid (rigid walls) but always has a flow. A new
- * coupling adds a CouplingKind, its ops table (registered in
- * COUPLING_MODELS, coupling.c) and its configuration in the CouplingConfig
- * union; create refuses the solid/flow pairs it does not support with
- * NSPD_ERR_INPUT. */
+ * coupling is a folder couple/<name>/ (its own library,
+ * docs/ARCHITECTURE.md) with an ops table and its configuration struct, a
+ * CouplingKind and a line in the registry (coupling.c); create refuses
+ * the solid/flow pairs it does not support with NSPD_ERR_INPUT. This
+ * header names no coupling's types: a configuration reaches its coupling
+ * as an opaque pointer. */
 #ifndef NSPD_COUPLE_COUPLING_H
 #define NSPD_COUPLE_COUPLING_H
 
 #include "core/fields.h"
 #include "core/report.h"
-#include "couple/ghost_coupling.h"
 #include "flow/flow.h"
 #include "solid/solid.h"
 
 typedef enum {
     COUPLING_NONE = 0,
-    COUPLING_GHOST_CELL, /* sharp ghost-cell immersed boundary: couple/ghost_coupling.c */
+    COUPLING_GHOST_CELL, /* sharp ghost-cell immersed boundary: couple/ghost/ */
     COUPLING_KIND_COUNT, /* the built-in couplings; coupling_register adds more after these */
     COUPLING_KIND_MAX = COUPLING_KIND_COUNT + 4
 } CouplingKind;
 
-/* A coupling's configuration: a tagged union over the couplings, and what
- * every coupling shares. */
+/* A coupling's configuration: the kind, what every coupling shares, and
+ * the coupling's own configuration behind an opaque pointer
+ * (GhostCouplingConfig of couple/ghost/model.h, ...), which only the case
+ * reader and the coupling know. */
 typedef struct {
     CouplingKind kind;
     /* s: the loads are time-averaged from this time on (the driver sets it
      * from output.average_from, less a round-off margin of the end time) */
     double average_from;
-    union {
-        GhostCouplingConfig ghost; /* COUPLING_GHOST_CELL */
-        const void *external;      /* a registered coupling's configuration (borrowed) */
-    };
+    /* owned (nspd_alloc) when the kind's ops have config_free: the coupling's
+     * create takes it (and sets this NULL), else coupling_config_free frees it; otherwise
+     * borrowed (a registered coupling's configuration, never freed) */
+    void *model;
 } CouplingConfig;
 
 void coupling_config_free(CouplingConfig *cfg);
@@ -55,6 +58,10 @@ typedef struct {
 
 typedef struct CouplingOps {
     const char *name;
+    /* frees what a configuration of this coupling owns, not the struct
+     * itself (one that no create took); NULL: configurations are borrowed,
+     * and create leaves them */
+    void (*config_free)(void *model);
     /* the estimate for a flow of estimate *flow (NULL op: nothing beyond
      * the models) */
     CouplingEstimate (*estimate)(const CouplingConfig *cfg, const FlowEstimate *flow);

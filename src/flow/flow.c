@@ -5,6 +5,11 @@
 
 #include <string.h>
 
+/* The built-in solvers' ops tables, each defined in its own folder
+ * (flow/gks/model.c, flow/pddo/model.c): the one place the interface names
+ * a model, by declaration only, so no model header is in its include tree. */
+extern const FlowOps GKS_FLOW_OPS, PDDO_FLOW_OPS;
+
 /* The registry: one ops table per FlowMethod; flow_register fills the
  * slots after the built-in ones. */
 static const FlowOps *FLOW_METHODS[FLOW_METHOD_MAX] = {
@@ -27,23 +32,42 @@ struct Flow {
     void *impl;
 };
 
+/* The ops table of a method, or NULL for none or an unknown one. */
+static const FlowOps *method_ops(FlowMethod method) {
+    return method > FLOW_METHOD_NONE && method < FLOW_METHOD_MAX ? FLOW_METHODS[method] : NULL;
+}
+
 void flow_config_free(FlowConfig *cfg) {
-    if (cfg->method == FLOW_METHOD_GKS) gks_case_config_free(&cfg->gks);
+    const FlowOps *ops = method_ops(cfg->method);
+    if (cfg->model && ops && ops->config_free) {
+        ops->config_free(cfg->model);
+        nspd_free(&cfg->model);
+    }
     memset(cfg, 0, sizeof *cfg);
 }
 
 FlowEstimate flow_estimate(const FlowConfig *cfg) {
     const FlowEstimate none = {0, 0, 0};
-    if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||
-        !FLOW_METHODS[cfg->method] || !FLOW_METHODS[cfg->method]->estimate)
-        return none;
-    return FLOW_METHODS[cfg->method]->estimate(cfg);
+    const FlowOps *ops = method_ops(cfg->method);
+    if (!ops || !ops->estimate) return none;
+    return ops->estimate(cfg);
+}
+
+int flow_bench(const char *name, long size, long steps, Report *out, bool *found) {
+    *found = false;
+    for (int m = FLOW_METHOD_NONE + 1; m < FLOW_METHOD_MAX; m++) {
+        const FlowOps *ops = FLOW_METHODS[m];
+        if (ops && ops->bench && ops->bench_name && strcmp(ops->bench_name, name) == 0) {
+            *found = true;
+            return ops->bench(size, steps, out);
+        }
+    }
+    return NSPD_OK;
 }
 
 int flow_create(Flow **out, FlowConfig *cfg) {
     *out = NULL;
-    if (cfg->method <= FLOW_METHOD_NONE || cfg->method >= FLOW_METHOD_MAX ||
-        !FLOW_METHODS[cfg->method])
+    if (!method_ops(cfg->method))
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown flow solver %d", (int)cfg->method);
     Flow *f;
     TRY(nspd_alloc(&f, 1, sizeof *f));
@@ -95,6 +119,27 @@ FlowMesh flow_mesh(const Flow *f) {
 
 void flow_cell_state(const Flow *f, int64_t cell, double out[5]) {
     f->ops->cell_state(f->impl, cell, out);
+}
+
+int flow_cell_at(const Flow *f, const char *name, double x, double y, int64_t *cell) {
+    if (!f->ops->cell_at)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "probe '%s': probes on the flow need a grid; the '%s' solver has none",
+                         name, f->ops->name);
+    return f->ops->cell_at(f->impl, name, x, y, cell);
+}
+
+int flow_grid_line(const Flow *f, const char *name, int64_t through, int along, int64_t **cells,
+                   int64_t *count) {
+    if (!f->ops->grid_line)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "probe '%s': probes on the flow need a grid; the '%s' solver has none",
+                         name, f->ops->name);
+    return f->ops->grid_line(f->impl, through, along, cells, count);
+}
+
+void flow_cell_centre(const Flow *f, int64_t cell, double xy[2]) {
+    f->ops->cell_centre(f->impl, cell, xy);
 }
 
 FlowReference flow_reference(const Flow *f) {

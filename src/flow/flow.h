@@ -2,10 +2,12 @@
  *
  * The driver (sim/), the couplings and the probes call the flow_* functions,
  * which dispatch through the FlowOps table once per step, sample or output;
- * hot loops stay inside a solver. A new solver adds a FlowMethod, its ops
- * table (registered in FLOW_METHODS, flow.c) and its configuration in the
- * FlowConfig union; nothing in sim/, case/ output or the probes
- * changes. A coupling tied to one representation (the ghost-cell immersed
+ * hot loops stay inside a solver. A new solver is a folder flow/<name>/
+ * (its own library, docs/ARCHITECTURE.md) with an ops table and its
+ * configuration struct, a FlowMethod and a line in the registry (flow.c);
+ * nothing in sim/, case/ output or the probes changes. This header names
+ * no solver's types: a configuration reaches its solver as an opaque
+ * pointer. A coupling tied to one representation (the ghost-cell immersed
  * boundary needs the GKS grid) reaches the concrete solver through the
  * checked accessor of that solver (gks_flow_solver) and refuses the others
  * when it is created. */
@@ -15,9 +17,6 @@
 #include "core/checkpoint.h"
 #include "core/fields.h"
 #include "core/report.h"
-#include "flow/gks_flow.h"
-#include "flow/grid.h"
-#include "flow/pddo_flow.h"
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -25,20 +24,26 @@
 
 typedef enum {
     FLOW_METHOD_NONE = 0, /* the case has no flow */
-    FLOW_METHOD_GKS,      /* gas-kinetic BGK-NS finite volumes (paper 000): flow/gks_flow.c */
-    FLOW_METHOD_PDDO,     /* incompressible PDDO on node clouds (paper 002): flow/pddo_flow.c */
+    FLOW_METHOD_GKS,      /* gas-kinetic BGK-NS finite volumes (paper 000): flow/gks/ */
+    FLOW_METHOD_PDDO,     /* incompressible PDDO on node clouds (paper 002): flow/pddo/ */
     FLOW_METHOD_COUNT,    /* the built-in solvers; flow_register adds more after these */
     FLOW_METHOD_MAX = FLOW_METHOD_COUNT + 4
 } FlowMethod;
 
-/* A flow's configuration: a tagged union over the solvers. */
+/* A flow's configuration: the method, what every flow shares, and the
+ * method's own configuration behind an opaque pointer (GksCaseConfig of
+ * flow/gks/model.h, PddoFlowConfig of flow/pddo/model.h, ...), which only
+ * the case reader and the solver know. */
 typedef struct {
     FlowMethod method;
-    union {
-        GksCaseConfig gks;    /* FLOW_METHOD_GKS */
-        PddoFlowConfig pddo;  /* FLOW_METHOD_PDDO */
-        const void *external; /* a registered solver's configuration (borrowed) */
-    };
+    /* s: time averages (a body's forces) are taken from this time on; the
+     * driver sets it from output.average_from, less a round-off margin of
+     * the end time */
+    double average_from;
+    /* owned (nspd_alloc) when the method's ops have config_free: the solver's
+     * create takes it (and sets this NULL), else flow_config_free frees it; otherwise
+     * borrowed (a registered solver's configuration, never freed) */
+    void *model;
 } FlowConfig;
 
 void flow_config_free(FlowConfig *cfg);
@@ -46,7 +51,6 @@ void flow_config_free(FlowConfig *cfg);
 /* Where the solver's unknowns live, for probes and output. */
 typedef struct {
     MeshKind kind;
-    const Grid *grid; /* MESH_GRID; NULL for MESH_POINTS (a node cloud) */
 } FlowMesh;
 
 /* The reference state of force and pressure coefficients: the free stream
@@ -90,6 +94,10 @@ typedef struct {
 
 typedef struct FlowOps {
     const char *name;
+    /* frees what a configuration of this solver owns, not the struct
+     * itself (one that no create took); NULL: configurations are borrowed,
+     * and create leaves them */
+    void (*config_free)(void *model);
     /* the estimate of a configuration of this solver (no allocation) */
     FlowEstimate (*estimate)(const FlowConfig *cfg);
     /* Builds the solver from *cfg, taking ownership of its contents. */
@@ -104,6 +112,15 @@ typedef struct FlowOps {
     FlowMesh (*mesh)(const void *impl);
     /* density, u, v, pressure, temperature at node/cell `cell` of the mesh */
     void (*cell_state)(const void *impl, int64_t cell, double out[5]);
+    /* a grid (MESH_GRID): the cell that holds (x, y) into *cell, or
+     * NSPD_ERR_INPUT naming the probe `name` for a point off the grid */
+    int (*cell_at)(const void *impl, const char *name, double x, double y, int64_t *cell);
+    /* a grid: the cells of the row (along 0) or column (along 1) through
+     * cell `through`, in order along the axis, into *cells (allocated by
+     * nspd_alloc, the caller's to free) and their number into *count */
+    int (*grid_line)(const void *impl, int64_t through, int along, int64_t **cells, int64_t *count);
+    /* a grid: the centre of cell `cell` */
+    void (*cell_centre)(const void *impl, int64_t cell, double xy[2]);
     FlowReference (*reference)(const void *impl);
     /* the state at n points (x[k], y[k]), interpolated (for couplings that
      * read the flow where a solid's points are); NULL: not supported (an
@@ -135,6 +152,11 @@ typedef struct FlowOps {
      * solver built from the same case continues bit for bit; NULL: the
      * solver cannot be checkpointed */
     int (*checkpoint)(void *impl, Checkpoint *ck);
+    /* `nspd bench <bench_name>`: the solver's hot loop on its standard
+     * problem of about `size` cells or nodes, `steps` timed steps, the
+     * results as named values in order (one JSON object); NULL: none */
+    const char *bench_name;
+    int (*bench)(long size, long steps, Report *out);
 } FlowOps;
 
 /* Adds a solver to the registry (before any flow is created; not thread
@@ -144,6 +166,10 @@ FlowMethod flow_register(const FlowOps *ops);
 
 /* The estimate of *cfg by its solver (zeros for an unknown method). */
 FlowEstimate flow_estimate(const FlowConfig *cfg);
+
+/* Runs the benchmark `name` of the registered solver that has it into
+ * *out; *found false (and NSPD_OK) when none has. */
+int flow_bench(const char *name, long size, long steps, Report *out, bool *found);
 
 /* NSPD_ERR_INPUT for an unknown method; otherwise what the solver's create
  * returns. Takes ownership of *cfg. */
@@ -158,6 +184,12 @@ double flow_time(const Flow *f);
 bool flow_finished(const Flow *f);
 FlowMesh flow_mesh(const Flow *f);
 void flow_cell_state(const Flow *f, int64_t cell, double out[5]);
+/* FlowOps.cell_at, grid_line, cell_centre: NSPD_ERR_INPUT naming the probe
+ * for a solver without a grid. */
+int flow_cell_at(const Flow *f, const char *name, double x, double y, int64_t *cell);
+int flow_grid_line(const Flow *f, const char *name, int64_t through, int along, int64_t **cells,
+                   int64_t *count);
+void flow_cell_centre(const Flow *f, int64_t cell, double xy[2]);
 FlowReference flow_reference(const Flow *f);
 int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out);
 int flow_set_sources(Flow *f, FlowSources *src);

@@ -52,27 +52,10 @@ static int setup_flow(ProbeState *p, Flow *flow) {
     /* a node cloud: the solver prepares the point's interpolation */
     if (mesh.kind != MESH_GRID && c->kind == PROBE_POINT)
         return flow_probe_add(flow, c->name, c->at[0], c->at[1], &p->point);
-    if (mesh.kind != MESH_GRID)
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "probe '%s': probes on the flow need a grid; the '%s' solver has none",
-                         c->name, flow_name(flow));
-    const Grid *g = mesh.grid;
-    for (int d = 0; d < 2; d++)
-        if (c->at[d] < g->ax[d].lo || c->at[d] > g->ax[d].hi)
-            return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "probe '%s': at[%d] = %g is outside the flow grid [%g, %g]", c->name,
-                             d, c->at[d], g->ax[d].lo, g->ax[d].hi);
-    int i = grid_axis_cell_of(&g->ax[0], c->at[0]), j = grid_axis_cell_of(&g->ax[1], c->at[1]);
-    if (c->kind == PROBE_POINT) {
-        p->point = grid_index(g, i, j);
-        return NSPD_OK;
-    }
-    int along = c->sort_axis, n = g->ax[along].n;
-    TRY(nspd_alloc(&p->members, (size_t)n, sizeof(int64_t)));
-    p->member_count = n;
-    for (int k = 0; k < n; k++)
-        p->members[k] = along == 0 ? grid_index(g, k, j) : grid_index(g, i, k);
-    return NSPD_OK;
+    /* a grid: the cell that holds the point, and a line's row or column through it */
+    TRY(flow_cell_at(flow, c->name, c->at[0], c->at[1], &p->point));
+    if (c->kind == PROBE_POINT) return NSPD_OK;
+    return flow_grid_line(flow, c->name, p->point, c->sort_axis, &p->members, &p->member_count);
 }
 
 static int setup_one(ProbeState *p, const PdPoints *body, Flow *flow, int max_samples) {
@@ -265,16 +248,15 @@ void probes_sample(ProbeState *probes, int count, const PdPoints *body, const do
 
 /* The cells of a flow line: coordinates and primitive values. */
 static void flow_line(ProbeState *p, const Flow *flow) {
-    const Grid *g = flow_mesh(flow).grid;
     const double gamma = flow_reference(flow).gamma;
     double *const *col = p->table_columns;
     for (int64_t m = 0; m < p->member_count; m++) {
         int64_t cell = p->members[m];
-        int j = (int)(cell / g->stride) - GRID_NG, i = (int)(cell % g->stride) - GRID_NG;
-        double q[5];
+        double q[5], centre[2];
         flow_cell_state(flow, cell, q);
-        col[0][m] = g->ax[0].center[i];
-        col[1][m] = g->ax[1].center[j];
+        flow_cell_centre(flow, cell, centre);
+        col[0][m] = centre[0];
+        col[1][m] = centre[1];
         for (int k = 0; k < 5; k++) col[2 + k][m] = q[k];
         col[7][m] = sqrt(q[1] * q[1] + q[2] * q[2]) / sqrt(gamma * q[3] / q[0]);
     }

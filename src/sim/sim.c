@@ -82,8 +82,8 @@ int sim_create(Sim *sim, SimConfig *cfg) {
     int status = check_memory(sim);
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
         status = solid_create(&sim->solid, &c->solid);
-    if (c->flow.method == FLOW_METHOD_PDDO) /* its body forces' means, as the coupling's */
-        c->flow.pddo.average_from = c->output.average_from - 1e-12 * c->end_time;
+    /* a flow's own means (its bodies' forces), as the coupling's below */
+    c->flow.average_from = c->output.average_from - 1e-12 * c->end_time;
     if (status == NSPD_OK && c->flow.method != FLOW_METHOD_NONE)
         status = flow_create(&sim->flow, &c->flow);
     if (status == NSPD_OK && c->coupling.kind != COUPLING_NONE) {

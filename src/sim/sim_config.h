@@ -1,7 +1,7 @@
 /* A whole case as read from its YAML file: what to simulate (a solid, a
- * flow, a coupling; each a tagged union over its models), for how long, and
- * what to write. Filled by case/case_read.c, consumed by sim_create().
- * Units SI. */
+ * flow, a coupling; each an interface's configuration: the model's kind
+ * and an opaque pointer to the model's own), for how long, and what to
+ * write. Filled by case/case_read.c, consumed by sim_create(). Units SI. */
 #ifndef NSPD_SIM_SIM_CONFIG_H
 #define NSPD_SIM_SIM_CONFIG_H
 

@@ -2,13 +2,17 @@
 
 #include "core/mem.h"
 #include "core/status.h"
-#include "solid/bond_solid.h"
-#include "solid/cpd_solid.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+/* The built-in models' ops tables, each defined in its own folder
+ * (solid/bond/model.c, solid/correspondence/model.c): the one place the
+ * interface names a model, by declaration only, so no model header is in
+ * its include tree. */
+extern const SolidOps BOND_SOLID_OPS, CPD_SOLID_OPS;
 
 /* The registry: one ops table per SolidKind; solid_register fills the
  * slots after the built-in ones. */
@@ -36,21 +40,23 @@ struct Solid {
     double *position[3]; /* scratch for solid_current_positions */
 };
 
+/* The ops table of a kind, or NULL for none or an unknown one. */
+static const SolidOps *kind_ops(SolidKind kind) {
+    return kind > SOLID_NONE && kind < SOLID_KIND_MAX ? SOLID_MODELS[kind] : NULL;
+}
+
 void solid_config_free(SolidConfig *cfg) {
-    if (cfg->kind == SOLID_BOND) pd_config_free(&cfg->bond);
-    if (cfg->kind == SOLID_CORRESPONDENCE) cpd_config_free(&cfg->correspondence);
+    const SolidOps *ops = kind_ops(cfg->kind);
+    if (cfg->model && ops && ops->config_free) {
+        ops->config_free(cfg->model);
+        nspd_free(&cfg->model);
+    }
     memset(cfg, 0, sizeof *cfg);
 }
 
 int solid_config_dim(const SolidConfig *cfg) {
-    switch (cfg->kind) {
-    case SOLID_BOND:
-        return cfg->bond.dim;
-    case SOLID_CORRESPONDENCE:
-        return cfg->correspondence.pd.dim;
-    default:
-        return 0;
-    }
+    const SolidOps *ops = kind_ops(cfg->kind);
+    return ops && ops->config_dim && cfg->model ? ops->config_dim(cfg->model) : 0;
 }
 
 SolidEstimate solid_estimate(const SolidConfig *cfg) {
@@ -62,6 +68,18 @@ SolidEstimate solid_estimate(const SolidConfig *cfg) {
     e.bytes +=
         e.points * (double)(sizeof(double) * 4); /* the handle's damage and position scratch */
     return e;
+}
+
+int solid_bench(const char *name, long size, long steps, Report *out, bool *found) {
+    *found = false;
+    for (int k = SOLID_NONE + 1; k < SOLID_KIND_MAX; k++) {
+        const SolidOps *ops = SOLID_MODELS[k];
+        if (ops && ops->bench && ops->bench_name && strcmp(ops->bench_name, name) == 0) {
+            *found = true;
+            return ops->bench(size, steps, out);
+        }
+    }
+    return NSPD_OK;
 }
 
 int solid_create(Solid **out, SolidConfig *cfg) {

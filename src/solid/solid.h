@@ -6,9 +6,11 @@
  * (the force, the material state, failure) sits behind the SolidOps table.
  * The driver (sim/) and the couplings call the solid_* functions, which
  * dispatch through the table once per step or output; hot loops stay inside
- * a model. A new model adds a SolidKind, its ops table (registered in
- * SOLID_MODELS, solid.c) and its configuration in the SolidConfig union;
- * nothing in sim/, case/ output or the couplings changes.
+ * a model. A new model is a folder solid/<name>/ (its own library,
+ * docs/ARCHITECTURE.md) with an ops table and its configuration struct, a
+ * SolidKind and a line in the registry (solid.c); nothing in sim/, case/
+ * output or the couplings changes. This header names no model's types: a
+ * configuration reaches its model as an opaque pointer.
  *
  * Time: solid_advance(dt, max_substep) takes n = ceil(dt / max_substep)
  * equal sub-steps (one when the solid sets the pace); solid_set_time pins
@@ -19,8 +21,6 @@
 #include "core/checkpoint.h"
 #include "core/fields.h"
 #include "core/report.h"
-#include "solid/cpd_config.h"
-#include "solid/pd_config.h"
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -28,20 +28,22 @@
 
 typedef enum {
     SOLID_NONE = 0,       /* the case has no solid */
-    SOLID_BOND,           /* bond-based PD (paper 000): solid/bond_solid.c */
-    SOLID_CORRESPONDENCE, /* correspondence PD (paper 003): solid/cpd_solid.c */
+    SOLID_BOND,           /* bond-based PD (paper 000): solid/bond/ */
+    SOLID_CORRESPONDENCE, /* correspondence PD (paper 003): solid/correspondence/ */
     SOLID_KIND_COUNT,     /* the built-in models; solid_register adds more after these */
     SOLID_KIND_MAX = SOLID_KIND_COUNT + 4
 } SolidKind;
 
-/* A solid's configuration: a tagged union over the models. */
+/* A solid's configuration: the kind and the model's own configuration
+ * behind an opaque pointer (PdConfig of solid/pd/config.h for the bonds,
+ * CpdConfig of solid/correspondence/config.h, ...), which only the case
+ * reader and the model know. */
 typedef struct {
     SolidKind kind;
-    union {
-        PdConfig bond;            /* SOLID_BOND */
-        CpdConfig correspondence; /* SOLID_CORRESPONDENCE */
-        const void *external;     /* a registered model's configuration (borrowed) */
-    };
+    /* owned (nspd_alloc) when the kind's ops have config_free: the model's
+     * create takes it (and sets this NULL), else solid_config_free frees it; otherwise
+     * borrowed (a registered model's configuration, never freed) */
+    void *model;
 } SolidConfig;
 
 void solid_config_free(SolidConfig *cfg);
@@ -57,7 +59,7 @@ typedef struct {
     double spacing;   /* lattice spacing dx, m */
     double thickness; /* 2D: out-of-plane thickness, m; 3D: 1 */
     double *x[3], *u[3], *v[3];
-    double *external[3]; /* force density from outside, N/m^3 (see bond_body.h) */
+    double *external[3]; /* force density from outside, N/m^3 (see solid/bond/body.h) */
     double *volume;
     int32_t *lattice[3];
     const int64_t *family_first; /* the family CSR: neighbours of i are */
@@ -75,10 +77,16 @@ typedef struct {
 
 typedef struct {
     const char *name;
+    /* frees what a configuration of this model owns, not the struct
+     * itself (one that no create took); NULL: configurations are borrowed,
+     * and create leaves them */
+    void (*config_free)(void *model);
+    /* the dimension (2 or 3) of the body a configuration describes */
+    int (*config_dim)(const void *model);
     /* the estimate of a configuration of this model (no allocation) */
     SolidEstimate (*estimate)(const SolidConfig *cfg);
-    /* Builds the model from *cfg (taking ownership, zeroing it) and points
-     * `pts` at its points. */
+    /* Builds the model from *cfg (taking its contents, zeroing them) and
+     * points `pts` at its points. */
     int (*create)(void **impl, PdPoints *pts, SolidConfig *cfg);
     void (*destroy)(void *impl);
     double (*stable_dt)(const void *impl); /* without a safety factor */
@@ -102,6 +110,11 @@ typedef struct {
      * model built from the same case continues bit for bit; NULL: the model
      * cannot be checkpointed */
     int (*checkpoint)(void *impl, Checkpoint *ck);
+    /* `nspd bench <bench_name>`: the model's hot loop on its standard
+     * problem of about `size` points, `steps` timed steps, the results as
+     * named values in order (one JSON object); NULL: none */
+    const char *bench_name;
+    int (*bench)(long size, long steps, Report *out);
 } SolidOps;
 
 /* Adds a model to the registry (before any solid is created; not thread
@@ -110,6 +123,10 @@ SolidKind solid_register(const SolidOps *ops);
 
 /* The estimate of *cfg by its model (zeros for an unknown kind). */
 SolidEstimate solid_estimate(const SolidConfig *cfg);
+
+/* Runs the benchmark `name` of the registered model that has it into *out;
+ * *found false (and NSPD_OK) when none has. */
+int solid_bench(const char *name, long size, long steps, Report *out, bool *found);
 
 /* NSPD_ERR_INPUT for an unknown kind; otherwise what the model's create
  * returns. Takes ownership of *cfg. */

@@ -1,6 +1,6 @@
 #include "cloud_fixtures.h"
 
-#include "solid/rk_gradient.h"
+#include "solid/correspondence/rk_gradient.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,7 +1,6 @@
-/* Test clouds for the correspondence solid's kernels (solid/rk_gradient.h,
- * solid/bac_force.h, solid/classic_force.h): a lattice moved at random,
- * with square (cube) families |xi|_inf <= delta = 2.5 h, found by brute
- * force. */
+/* Test clouds for the correspondence solid's kernels (solid/correspondence/rk_gradient.h,
+ * solid/correspondence/bac_force.h, solid/correspondence/classic_force.h): a lattice moved at
+ * random, with square (cube) families |xi|_inf <= delta = 2.5 h, found by brute force. */
 #ifndef NSPD_TEST_CLOUD_FIXTURES_H
 #define NSPD_TEST_CLOUD_FIXTURES_H
 
@@ -23,7 +22,7 @@ void cloud_make(Cloud *c, int dim, int side, double h, double jitter);
  * tiling: tiles x tiles copies (wide = side tiles points a row, point
  * i = I + wide J at lattice site (I, J)), each patch point p = I % side +
  * side (J % side) moved by the same `jitter` h in every copy. Far enough
- * inside (see tests/unit/solid/test_zero_energy.c) a point's force
+ * inside (see tests/unit/solid/correspondence/test_zero_energy.c) a point's force
  * depends only on images whose families are whole, so it is the periodic
  * patch's force: the kernels need no periodic bond vectors. */
 void cloud_make_tiled(Cloud *c, int side, int tiles, double h, double jitter);

@@ -1,9 +1,9 @@
-/* Correspondence bodies built in code for the tests (solid/cpd_body.h):
+/* Correspondence bodies built in code for the tests (solid/correspondence/body.h):
  * paper 003's steel block, homogeneous fields, plane-wave speeds, energy. */
 #ifndef NSPD_TEST_CPD_FIXTURES_H
 #define NSPD_TEST_CPD_FIXTURES_H
 
-#include "solid/cpd_body.h"
+#include "solid/correspondence/body.h"
 
 /* paper 003's steel: E, nu, rho, sigma_Y, H */
 #define CPD_STEEL_E         200e9

@@ -2,7 +2,7 @@
 #ifndef NSPD_TEST_PD_FIXTURES_H
 #define NSPD_TEST_PD_FIXTURES_H
 
-#include "solid/pd_config.h"
+#include "solid/pd/config.h"
 
 /* A plane-stress steel-like block [0, nx dx] x [0, ny dx] (3D: x nz dx),
  * delta = 3.015 dx, no failure, linear volume and energy surface corrections,

@@ -2,9 +2,10 @@
 #ifndef NSPD_TEST_SIM_FIXTURES_H
 #define NSPD_TEST_SIM_FIXTURES_H
 
-#include "flow/gks_flow.h"
+#include "couple/ghost/model.h"
+#include "flow/gks/model.h"
 #include "sim/sim.h"
-#include "solid/bond_solid.h"
+#include "solid/bond/model.h"
 
 /* Reads cases/<name> with the given --set overrides and builds the
  * simulation; fails the test on any error. */
@@ -15,7 +16,8 @@ void fixture_sim(const char *case_file, const char *const *overrides, int count,
 void fixture_sim_text(const char *yaml, Sim *sim);
 
 /* The concrete models of a simulation, for tests that look inside them
- * (fail the test if the case has no such model). */
+ * (fail the test if the case has no such model; the ghost-cell coupling's
+ * parts through couple/ghost/model.h's accessors). */
 BondBody *fixture_body(Sim *sim);
 GksSolver *fixture_flow(Sim *sim);
 

@@ -5,17 +5,17 @@
  * NSPD_KERNEL fails here. One thread per face, cell or point, as a CUDA back
  * end would launch them; the data layouts are only plausible, not the
  * solver's. A new kernel gets its caller here. */
-#include "flow/gks_kernel.h"
-#include "flow/gks_update_kernel.h"
-#include "flow/recon_kernel.h"
-#include "solid/bond_force_kernel.h"
-#include "solid/j2_kernel.h"
+#include "flow/gks/flux_kernel.h"
+#include "flow/gks/update_kernel.h"
+#include "flow/gks/recon_kernel.h"
+#include "solid/bond/force_kernel.h"
+#include "solid/correspondence/j2_kernel.h"
 
 static __device__ int64_t thread_index(void) {
     return (int64_t)blockIdx.x * blockDim.x + threadIdx.x;
 }
 
-/* gks_flux_kernel (and through it gks_math.h): face i reads 32 values. */
+/* gks_flux_kernel (and through it flow/gks/special_functions.h): face i reads 32 values. */
 __global__ void gks_flux_faces(int64_t n, const double *in, GksParams par, double dt, double *f) {
     const int64_t i = thread_index();
     if (i >= n) return;

@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 #include "core/status.h"
-#include "flow/bc.h"
+#include "flow/gks/bc.h"
 #include "flow/riemann_exact.h"
 
 #include <math.h>

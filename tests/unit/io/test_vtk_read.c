@@ -1,5 +1,5 @@
 /* Starting a flow from a stored field: io/vtk_read.c reads back what
- * io/vtk.c writes, and flow/field_sample.c interpolates it.
+ * io/vtk.c writes, and flow/gks/field_sample.c interpolates it.
  *  - round trip: every value and face coordinate comes back bit for bit;
  *  - bad files (missing, empty, truncated, foreign) fail with NSPD_ERR_IO /
  *    NSPD_ERR_INPUT and a message naming the file;
@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 #include "core/status.h"
-#include "flow/field_sample.h"
+#include "flow/gks/field_sample.h"
 #include "io/vtk.h"
 #include "io/vtk_read.h"
 

@@ -5,7 +5,7 @@
 
 #include "core/mem.h"
 #include "sim/probes.h"
-#include "solid/bond_solid.h"
+#include "solid/bond/model.h"
 
 #include <math.h>
 

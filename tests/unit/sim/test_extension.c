@@ -10,6 +10,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "couple/coupling.h"
+#include "couple/ghost/model.h"
 #include "flow/flow.h"
 #include "sim/sim.h"
 #include "solid/solid.h"
@@ -28,7 +29,7 @@ typedef struct {
 
 typedef struct {
     UniformConfig cfg;
-    Grid grid;
+    double *face; /* n + 1 face coordinates, both axes (its own grid: no other model's) */
     double time;
     double *density; /* n * n, for output */
 } UniformFlow;
@@ -36,15 +37,16 @@ typedef struct {
 static int uniform_create(void **impl, FlowConfig *cfg) {
     UniformFlow *f;
     TRY(nspd_alloc(&f, 1, sizeof *f));
-    f->cfg = *(const UniformConfig *)cfg->external;
+    f->cfg = *(const UniformConfig *)cfg->model;
     int n = f->cfg.n;
-    int status = grid_create_uniform(&f->grid, 0.0, 1.0, n, 0.0, 1.0, n, false, false);
+    int status = nspd_alloc(&f->face, (size_t)n + 1, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&f->density, (size_t)(n * n), sizeof(double));
     if (status != NSPD_OK) {
-        grid_destroy(&f->grid);
+        nspd_free(&f->face);
         nspd_free(&f);
         return status;
     }
+    for (int k = 0; k <= n; k++) f->face[k] = (double)k / n;
     for (int c = 0; c < n * n; c++) f->density[c] = f->cfg.rho;
     *impl = f;
     return NSPD_OK;
@@ -52,7 +54,7 @@ static int uniform_create(void **impl, FlowConfig *cfg) {
 
 static void uniform_destroy(void *impl) {
     UniformFlow *f = impl;
-    grid_destroy(&f->grid);
+    nspd_free(&f->face);
     nspd_free(&f->density);
     nspd_free(&f);
 }
@@ -72,7 +74,8 @@ static double uniform_time(const void *impl) {
 }
 
 static FlowMesh uniform_mesh(const void *impl) {
-    return (FlowMesh){MESH_GRID, &((const UniformFlow *)impl)->grid};
+    (void)impl;
+    return (FlowMesh){MESH_GRID};
 }
 
 static void uniform_cell_state(const void *impl, int64_t cell, double out[5]) {
@@ -117,8 +120,8 @@ static void uniform_fields(void *impl, FieldSet *out) {
     out->series = "flow";
     out->mesh = MESH_GRID;
     out->nx = out->ny = f->cfg.n;
-    out->face[0] = f->grid.ax[0].face;
-    out->face[1] = f->grid.ax[1].face;
+    out->face[0] = f->face;
+    out->face[1] = f->face;
     out->field[out->field_count++] = (FieldRef){"density", 1, {f->density, NULL, NULL}};
 }
 
@@ -168,7 +171,7 @@ static void rigid_destroy(void *impl) {
 static int rigid_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     RigidSolid *r;
     TRY(nspd_alloc(&r, 1, sizeof *r));
-    r->cfg = *(const RigidConfig *)cfg->external;
+    r->cfg = *(const RigidConfig *)cfg->model;
     const size_t n = (size_t)r->cfg.n;
     int status = nspd_alloc(&r->volume, n, sizeof(double));
     for (int d = 0; d < 3 && status == NSPD_OK; d++) {
@@ -367,8 +370,8 @@ static const CouplingOps NAN_LOADS_OPS = {
 
 /* ------------------------------------------------ the tests */
 
-static const UniformConfig UNIFORM = {4, 1.2, 3.0, 1e5};
-static const RigidConfig RIGID = {5, 2.0};
+static UniformConfig UNIFORM = {4, 1.2, 3.0, 1e5};
+static RigidConfig RIGID = {5, 2.0};
 
 static void config(SimConfig *c, FlowMethod flow, SolidKind solid, CouplingKind coupling) {
     memset(c, 0, sizeof *c);
@@ -376,10 +379,12 @@ static void config(SimConfig *c, FlowMethod flow, SolidKind solid, CouplingKind 
     c->end_time = 1.0;
     c->safety_factor = 0.8;
     c->flow.method = flow;
-    c->flow.external = &UNIFORM;
+    c->flow.model = &UNIFORM; /* borrowed: the ops have no config_free */
     c->solid.kind = solid;
-    c->solid.external = &RIGID;
+    c->solid.model = &RIGID;
     c->coupling.kind = coupling;
+    if (coupling == COUPLING_GHOST_CELL) /* a built-in coupling owns its (empty) configuration */
+        assert_ok(nspd_alloc(&c->coupling.model, 1, sizeof(GhostCouplingConfig)));
     c->output = (OutputConfig){.field_interval = 0.5, .history_interval = 0.1, .vtk = true};
 }
 

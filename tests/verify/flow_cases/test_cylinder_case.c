@@ -20,7 +20,7 @@
 #include "sim_fixtures.h"
 #include "test_support.h"
 
-#include "couple/ibm_surface.h"
+#include "couple/ghost/wall_loads.h"
 #include "io/vtk_read.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* A crack that reaches the surface stays closed to the flow (the chosen
- * behaviour, couple/fsi.h): the interface is the surface loop traced on the
+ * behaviour, couple/ghost/fsi.h): the interface is the surface loop traced on the
  * intact lattice, so it bridges the crack's mouth however far it opens, and
  * the grid stays consistent.
  *

@@ -15,7 +15,7 @@
 
 #include "core/status.h"
 #include "core/timer.h"
-#include "flow/gks_solver.h"
+#include "flow/gks/solver.h"
 
 #include <math.h>
 #include <stdio.h>

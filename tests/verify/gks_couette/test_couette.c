@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 #include "core/timer.h"
-#include "flow/gks_solver.h"
+#include "flow/gks/solver.h"
 
 #include <math.h>
 #include <stdio.h>

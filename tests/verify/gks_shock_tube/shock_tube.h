@@ -5,7 +5,7 @@
 #define NSPD_TEST_SHOCK_TUBE_H
 
 #include "core/status.h"
-#include "flow/gks_solver.h"
+#include "flow/gks/solver.h"
 #include "flow/riemann_exact.h"
 
 #include <math.h>

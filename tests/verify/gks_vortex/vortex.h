@@ -5,7 +5,7 @@
 #ifndef NSPD_TEST_VORTEX_H
 #define NSPD_TEST_VORTEX_H
 
-#include "flow/gks_solver.h"
+#include "flow/gks/solver.h"
 
 #include <math.h>
 

@@ -40,10 +40,10 @@
 
 #include "core/status.h"
 #include "core/timer.h"
-#include "couple/ibm.h"
-#include "couple/ibm_surface.h"
-#include "flow/gks_solver.h"
-#include "flow/gks_kernel.h"
+#include "couple/ghost/ibm.h"
+#include "couple/ghost/wall_loads.h"
+#include "flow/gks/solver.h"
+#include "flow/gks/flux_kernel.h"
 
 #include <math.h>
 #include <stdio.h>

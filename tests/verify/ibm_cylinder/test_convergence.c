@@ -20,7 +20,7 @@
 #include "test_support.h"
 
 #include "../ibm_common/ibm_cases.h"
-#include "flow/grid.h"
+#include "flow/gks/grid.h"
 
 typedef struct {
     int n;

@@ -14,7 +14,7 @@
 #include "test_support.h"
 
 #include "core/status.h"
-#include "couple/ibm.h"
+#include "couple/ghost/ibm.h"
 
 #include <math.h>
 #include <omp.h>

@@ -7,7 +7,7 @@
 #include "sim_fixtures.h"
 #include "test_support.h"
 
-#include "solid/pd_diagnostics.h"
+#include "solid/bond/diagnostics.h"
 
 #include <math.h>
 

@@ -11,9 +11,9 @@
 #include "pd_fixtures.h"
 #include "test_support.h"
 
-#include "solid/bond_body.h"
-#include "solid/pd_diagnostics.h"
-#include "solid/pd_integrate.h"
+#include "solid/bond/body.h"
+#include "solid/bond/diagnostics.h"
+#include "solid/bond/integrate.h"
 
 #include <math.h>
 

@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 #include "core/mem.h"
-#include "solid/pd_diagnostics.h"
+#include "solid/bond/diagnostics.h"
 
 #include <math.h>
 #include <omp.h>

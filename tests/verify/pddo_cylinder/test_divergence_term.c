@@ -1,4 +1,4 @@
-/* Where the PPE's (rho/dt) div u acts (flow.divergence_term; pddo_step.h
+/* Where the PPE's (rho/dt) div u acts (flow.divergence_term; flow/pddo/step.h
  * PddoDivergenceTerm), through the whole pipeline from
  * cases/cylinder_confined_re10.yaml, coarse (dx 0.2 m, patch to 1 m,
  * antisymmetric ghosts), each run to its steady state (max |du/dt| below

@@ -11,7 +11,7 @@
  * 220 Pa, side pressure -37 Pa, |u| 16.9 m/s at (5, 3 +- 1.2), 13.81 m/s at
  * the outlet on the axis; drag (the paper prints none at Re 10). Pressures
  * are relative to the outlet; front = the wall node at theta = pi, side =
- * (5, 3.5), both on the wall ring; the fluid-side traction (pddo_forces.h).
+ * (5, 3.5), both on the wall ring; the fluid-side traction (flow/pddo/forces.h).
  *
  * Measured (one core shared with other work; dx 0.1: 11,486 nodes, K_L
  * 348,150 nonzeros, setup 0.4 s, 9 ms per step; dx 0.05: 42,220 nodes,
@@ -68,12 +68,12 @@
 #include "test_support.h"
 
 #include "core/timer.h"
-#include "flow/pddo_cloud.h"
-#include "flow/pddo_forces.h"
-#include "flow/pddo_ops.h"
-#include "flow/pddo_polar.h"
-#include "flow/pddo_ppe.h"
-#include "flow/pddo_step.h"
+#include "flow/pddo/cloud.h"
+#include "flow/pddo/forces.h"
+#include "flow/pddo/operators.h"
+#include "flow/pddo/polar.h"
+#include "flow/pddo/ppe.h"
+#include "flow/pddo/step.h"
 
 #include <math.h>
 #include <stdbool.h>

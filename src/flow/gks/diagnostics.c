@@ -1,0 +1,66 @@
+/* Diagnostics of the flow operator: primitive fields and conserved totals. */
+#include "flow/gks/solver.h"
+
+#include "flow/gks/solver_internal.h"
+
+#include <math.h>
+
+void gks_solver_primitive(const GksSolver *s, FlowField field, double *out) {
+    const Grid *g = &s->grid;
+    const double gamma = s->gas.gamma, R = s->gas.R;
+    const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
+#pragma omp parallel for schedule(static) if (big)
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            const int64_t k = grid_index(g, i, j);
+            const double w[4] = {s->w[0][k], s->w[1][k], s->w[2][k], s->w[3][k]};
+            FlowPrim q;
+            flow_cons_to_prim(w, gamma, &q);
+            double v;
+            switch (field) {
+            case FLOW_DENSITY:
+                v = q.rho;
+                break;
+            case FLOW_VELOCITY_X:
+                v = q.u;
+                break;
+            case FLOW_VELOCITY_Y:
+                v = q.v;
+                break;
+            case FLOW_PRESSURE:
+                v = q.p;
+                break;
+            case FLOW_TEMPERATURE:
+                v = q.p / (R * q.rho);
+                break;
+            case FLOW_MACH:
+                v = sqrt((q.u * q.u + q.v * q.v) * q.rho / (gamma * q.p));
+                break;
+            default:
+                v = 0.0;
+            }
+            out[(int64_t)j * g->nx + i] = v;
+        }
+}
+
+/* Deterministic at any thread count: each row is summed in index order by one
+ * thread, then the row sums in row order. */
+void gks_solver_totals(const GksSolver *s, double totals[4]) {
+    const Grid *g = &s->grid;
+    double *rs = s->row_sums;
+    const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
+#pragma omp parallel for schedule(static) if (big)
+    for (int j = 0; j < g->ny; j++) {
+        double acc[4] = {0.0, 0.0, 0.0, 0.0};
+        for (int i = 0; i < g->nx; i++) {
+            const int64_t k = grid_index(g, i, j);
+            if (s->kind[k] != FLOW_CELL_FLUID) continue;
+            const double vol = g->ax[0].width[i] * g->ax[1].width[j];
+            for (int v = 0; v < 4; v++) acc[v] += s->w[v][k] * vol;
+        }
+        for (int v = 0; v < 4; v++) rs[4 * j + v] = acc[v];
+    }
+    for (int v = 0; v < 4; v++) totals[v] = 0.0;
+    for (int j = 0; j < g->ny; j++)
+        for (int v = 0; v < 4; v++) totals[v] += rs[4 * j + v];
+}

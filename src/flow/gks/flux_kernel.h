@@ -1,0 +1,345 @@
+/* The BGK-NS flux of one face, in the face's normal frame (inline kernel).
+ *
+ * Xu, JCP 171 (2001) 289; paper 000 Eqs. 1-8 and 21-27; shared/notes/gks_flux.md.
+ * Everything here is pure arithmetic on doubles, inlined into the row loop of
+ * flux.c so that the compiler vectorises it across faces.
+ *
+ * Notation (normal frame: u along the face normal, v tangential):
+ *   W = (rho, rho U, rho V, rho E), lambda = rho / (2 p) = 1 / (2 R T),
+ *   psi = (1, u, v, (u^2 + v^2 + xi^2)/2), K internal degrees of freedom,
+ *   K = (4 - 2 gamma) / (gamma - 1) in 2D (gamma = (K + 4) / (K + 2)),
+ *   <.> = (1/rho) \int (.) g dXi for the Maxwellian g of the state at hand.
+ *
+ * Micro slopes (Eq. 25). A slope of W along a direction is held as the
+ * polynomial a = a1 + a2 u + a3 v + a4 psi4 with rho <a psi> = dW; then a g is
+ * the derivative of the Maxwellian, so a = d(ln g):
+ *   a4 = -2 dlambda,  a2 = 2 (lambda dU + U dlambda),  a3 = 2 (lambda dV + V dlambda),
+ *   a1 = drho/rho + (K+2)/2 dlambda/lambda - dlambda (U^2+V^2) - 2 lambda (U dU + V dV).
+ * This is the notes' solve (R2, R3, R4 form) written in primitive variables;
+ * test_gks_moments checks rho <a psi> = dW by quadrature.
+ *
+ * Time slopes. The compatibility condition \int psi (a u + b v + A) g = 0 says
+ * rho <A psi> = -(dF/dW dW_x + dG/dW dW_y): the Euler time derivative. It is
+ * evaluated in primitive form (rho_t, U_t, V_t, p_t from the Euler equations,
+ * lambda_t = lambda (rho_t/rho - p_t/p)), which is exact and far cheaper than
+ * the moments; the unit test checks it against the moment form.
+ *
+ * Half-space moments (u > 0 for the left state, u < 0 for the right):
+ *   <u^0>_{>0} = erfc(-sqrt(lambda) U)/2,  <u^1>_{>0} = U <u^0>_{>0} + e^{-lambda U^2}/(2 sqrt(pi
+ * lambda)), <u^{n+2}> = U <u^{n+1}> + (n+1)/(2 lambda) <u^n>   (full or half space), the u < 0 half
+ * with erfc(+sqrt(lambda) U)/2 and a minus sign on the exponential. One exp and one erfc per side:
+ * erfc(|x|) = erfcx(|x|) exp(-x^2) shares the exponential with <u^1>, and erfc(-|x|) = 2 -
+ * erfc(|x|). Full-space: <v^0> = 1, <v^1> = V, same recursion; <xi^2> = K/(2 lambda), <xi^4> = K
+ * (K+2)/(4 lambda^2). Moments up to u^6 and v^5 are needed.
+ *
+ * Interface distribution (Eq. 26 with the notes' two collision times) and its
+ * time integral over [0, dt]:
+ *   dt F = t0 [rho_L <u psi>_{>0,L} + rho_R <u psi>_{<0,R}]
+ *        + t1 [rho_L <u (a_L u + b_L v) psi>_{>0,L} + (R)] + t2 [rho_L <u A_L psi>_{>0,L} + (R)]
+ *        + rho_0 (t3 <u psi>_0 + t4 <u (abar u + bbar v) psi>_0 + t5 <u Abar psi>_0)
+ * with eta = exp(-dt/tau_n),
+ *   t0 = tau_n (1 - eta);  t1 = tau_n (eta (dt + tau_n) - tau_n) + tau tau_n (eta - 1);
+ *   t2 = tau tau_n (eta - 1);  t3 = dt - tau_n (1 - eta);
+ *   t4 = tau_n (tau_n - eta (dt + tau_n) - tau (eta - 1)) - dt tau;
+ *   t5 = dt^2/2 - tau tau_n (eta - 1) - tau dt.
+ * Derived here from Eq. 21 with tau_n in the exponentials and the physical tau
+ * in the Chapman-Enskog terms; they satisfy t0 + t3 = dt, t1 + t4 = -tau dt and
+ * t2 + t5 = dt^2/2 - tau dt, so continuous data (L = R, equal slopes) give
+ * exactly the time integral of the Navier-Stokes distribution
+ * g0 (1 - tau (abar u + bbar v + Abar) + t Abar), whatever tau_n is.
+ *
+ * Interface equilibrium: W0 = rho_L <psi>_{>0,L} + rho_R <psi>_{<0,R}. Its
+ * slopes are inputs (the operator passes the central difference of the cell
+ * averages across the face for the normal one and the mean of the two cells'
+ * tangential slopes for the tangential one); Abar by compatibility.
+ *
+ * Collision times: tau = mu(T0) / p0 (physical, zero for inviscid gas) and
+ * tau_n = tau + (eps + C |p_L - p_R| / (p_L + p_R)) dt.
+ *
+ * Prandtl fix. The BGK model has Pr = 1. The Chapman-Enskog heat flux of the
+ * scheme over the step is q = -tau dt rho0 \int c_u |c|^2/2 (abar u + bbar v + Abar) g0,
+ * c the peculiar velocity; with Abar from compatibility it reduces exactly to
+ *   q = tau dt rho0 (K + 4) lambda_n / (8 lambda0^3) = -dt mu c_p dT/dn,
+ * lambda_n the normal derivative of lambda in abar. The energy flux gets
+ * (1/Pr - 1) q, so the conductivity becomes mu c_p / Pr. (The notes' "heat flux
+ * of the equilibrium part" taken literally as t4 ... + t5 <u Abar psi>-moments
+ * would also scale the enthalpy carried by the equilibrium's own time
+ * evolution, dt^2/2 rho0 h U_t, which is not conduction and stays non-zero at
+ * mu = 0: a first-order-in-time error in the energy flux.) */
+#ifndef NSPD_FLOW_GKS_FLUX_KERNEL_H
+#define NSPD_FLOW_GKS_FLUX_KERNEL_H
+
+#include "core/kernel.h"
+#include "flow/gks/special_functions.h"
+
+#include <math.h>
+
+/* Viscosity laws: mu(T) for the collision time tau = mu / p. */
+typedef enum {
+    VISCOSITY_NONE = 0,   /* inviscid: tau = 0 (Euler) */
+    VISCOSITY_CONSTANT,   /* mu = mu_ref */
+    VISCOSITY_POWER,      /* mu = mu_ref (T / T_ref)^omega */
+    VISCOSITY_SUTHERLAND, /* mu = mu_ref (T / T_ref)^1.5 (T_ref + S) / (T + S) */
+} ViscosityLaw;
+
+/* Everything the kernel needs besides the states: gas, viscosity, dissipation. */
+typedef struct {
+    double gamma;        /* ratio of specific heats */
+    double K;            /* internal degrees of freedom, (4 - 2 gamma)/(gamma - 1) */
+    double R;            /* specific gas constant, J/(kg K) */
+    ViscosityLaw law;    /* how mu depends on T */
+    double mu_ref;       /* Pa s */
+    double T_ref;        /* K (power law, Sutherland) */
+    double omega;        /* power-law exponent */
+    double sutherland_S; /* Sutherland constant, K */
+    double prandtl;      /* Pr; the energy flux is corrected to it */
+    double c_jump;       /* C in tau_n: pressure-jump dissipation (Xu: 1) */
+    double eps_dt;       /* eps in tau_n: a floor eps dt (0 by default) */
+} GksParams;
+
+/* mu(T), Pa s. `law` is a compile-time constant at every vectorised call
+ * site (the row loops are instantiated per law), so the switch folds away and
+ * no unused law is evaluated. */
+NSPD_KERNEL double gks_viscosity(const GksParams *p, double T, ViscosityLaw law) {
+    switch (law) {
+    case VISCOSITY_CONSTANT:
+        return p->mu_ref;
+    case VISCOSITY_POWER:
+        return p->mu_ref * gks_exp(p->omega * gks_log(T / p->T_ref));
+    case VISCOSITY_SUTHERLAND: {
+        const double r = T / p->T_ref;
+        return p->mu_ref * r * sqrt(r) * (p->T_ref + p->sutherland_S) / (T + p->sutherland_S);
+    }
+    default:
+        return 0.0;
+    }
+}
+
+/* Primitive description of a Maxwellian. */
+typedef struct {
+    double rho, U, V, lam;
+} GksPrim;
+
+NSPD_KERNEL GksPrim gks_prim_from_w(const double w[4], double K) {
+    GksPrim q;
+    q.rho = w[0];
+    const double ir = 1.0 / w[0];
+    q.U = w[1] * ir;
+    q.V = w[2] * ir;
+    /* rho e = rho E - rho |U|^2 / 2 = (K + 2) rho / (4 lambda) */
+    q.lam = 0.25 * (K + 2.0) * w[0] / (w[3] - 0.5 * (w[1] * q.U + w[2] * q.V));
+    return q;
+}
+
+/* A derivative of the primitive variables (rho, U, V, lambda). */
+typedef struct {
+    double rho, U, V, lam;
+} GksDPrim;
+
+/* d(prim) from d(W) at state q. */
+NSPD_KERNEL GksDPrim gks_dprim(const GksPrim *q, const double dw[4], double K) {
+    GksDPrim d;
+    const double ir = 1.0 / q->rho;
+    d.rho = dw[0];
+    d.U = (dw[1] - q->U * dw[0]) * ir;
+    d.V = (dw[2] - q->V * dw[0]) * ir;
+    /* internal energy density e = rho E - rho |U|^2/2, lambda = (K+2) rho / (4 e) */
+    const double de =
+        dw[3] - (q->U * dw[1] + q->V * dw[2]) + 0.5 * (q->U * q->U + q->V * q->V) * dw[0];
+    const double e = 0.25 * (K + 2.0) * q->rho / q->lam;
+    d.lam = q->lam * (dw[0] * ir - de / e);
+    return d;
+}
+
+/* Micro slope a (a[0..3] = a1..a4) of a primitive derivative: a = d ln g. */
+NSPD_KERNEL void gks_micro(const GksPrim *q, const GksDPrim *d, double K, double a[4]) {
+    a[3] = -2.0 * d->lam;
+    a[1] = 2.0 * (q->lam * d->U + q->U * d->lam);
+    a[2] = 2.0 * (q->lam * d->V + q->V * d->lam);
+    a[0] = d->rho / q->rho + 0.5 * (K + 2.0) * d->lam / q->lam -
+           d->lam * (q->U * q->U + q->V * q->V) - 2.0 * q->lam * (q->U * d->U + q->V * d->V);
+}
+
+/* Euler time derivative of the primitives from the normal (x) and tangential
+ * (y) derivatives: the compatibility condition in primitive form. */
+NSPD_KERNEL GksDPrim gks_dprim_dt(const GksPrim *q, const GksDPrim *dx, const GksDPrim *dy,
+                                  double gamma) {
+    const double p = 0.5 * q->rho / q->lam, ir = 1.0 / q->rho, il = 1.0 / q->lam;
+    /* p = rho / (2 lambda): dp = (drho - rho dlambda / lambda) / (2 lambda) */
+    const double px = 0.5 * il * (dx->rho - q->rho * dx->lam * il);
+    const double py = 0.5 * il * (dy->rho - q->rho * dy->lam * il);
+    GksDPrim t;
+    t.rho = -(q->U * dx->rho + q->rho * dx->U + q->V * dy->rho + q->rho * dy->V);
+    t.U = -(q->U * dx->U + q->V * dy->U + px * ir);
+    t.V = -(q->U * dx->V + q->V * dy->V + py * ir);
+    const double pt = -(q->U * px + q->V * py + gamma * p * (dx->U + dy->V));
+    t.lam = q->lam * (t.rho * ir - pt / p);
+    return t;
+}
+
+/* Moments of one Maxwellian: u[] full or half space, v[] full, xi even. */
+typedef struct {
+    double u[7], v[6], xi2, xi4;
+} GksMoments;
+
+/* Fills v[], xi and, from u[0] and u[1], the rest of u[] by the recursion. */
+NSPD_KERNEL void gks_moments_fill(GksMoments *m, const GksPrim *q, double K) {
+    const double h = 0.5 / q->lam;
+    m->v[0] = 1.0;
+    m->v[1] = q->V;
+    NSPD_UNROLL(8)
+    for (int n = 0; n < 4; n++) m->v[n + 2] = q->V * m->v[n + 1] + (n + 1) * h * m->v[n];
+    NSPD_UNROLL(8)
+    for (int n = 0; n < 5; n++) m->u[n + 2] = q->U * m->u[n + 1] + (n + 1) * h * m->u[n];
+    m->xi2 = K * h;
+    m->xi4 = K * (K + 2.0) * h * h;
+}
+
+/* side > 0: u > 0 half of q; side < 0: u < 0 half; side == 0: full space.
+ * erfcx_abs = erfcx(|sqrt(lambda) U|) and ex = exp(-lambda U^2) are passed in
+ * so that the caller computes them once per state. */
+NSPD_KERNEL void gks_moments_half(GksMoments *m, const GksPrim *q, double K, double side, double ex,
+                                  double erfcx_abs) {
+    const double sl = sqrt(q->lam);
+    const double e = erfcx_abs * ex; /* erfc(|x|), x = sqrt(lambda) U */
+    /* erfc(-side x)/2: the positive-side half holds more than half the mass
+     * when side*U > 0. */
+    const double su = side * q->U;
+    const double m0 = su >= 0.0 ? 1.0 - 0.5 * e : 0.5 * e;
+    m->u[0] = m0;
+    m->u[1] = q->U * m0 + side * ex / (3.5449077018110320546 * sl); /* 2 sqrt(pi) */
+    gks_moments_fill(m, q, K);
+}
+
+NSPD_KERNEL void gks_moments_full(GksMoments *m, const GksPrim *q, double K) {
+    m->u[0] = 1.0;
+    m->u[1] = q->U;
+    gks_moments_fill(m, q, K);
+}
+
+/* <u^a v^b> */
+#define GKS_M(m, a, b) ((m)->u[a] * (m)->v[b])
+/* <u^a v^b psi4>, psi4 = (u^2 + v^2 + xi^2)/2 */
+#define GKS_E(m, a, b)                                                                             \
+    (0.5 * (GKS_M(m, (a) + 2, b) + GKS_M(m, a, (b) + 2) + GKS_M(m, a, b) * (m)->xi2))
+
+/* <u^a v^b psi4^2> */
+NSPD_KERNEL double gks_e2(const GksMoments *m, int a, int b) {
+    return 0.25 * (GKS_M(m, a + 4, b) + GKS_M(m, a, b + 4) + GKS_M(m, a, b) * m->xi4 +
+                   2.0 * GKS_M(m, a + 2, b + 2) +
+                   2.0 * (GKS_M(m, a + 2, b) + GKS_M(m, a, b + 2)) * m->xi2);
+}
+
+/* out += s <u^a v^b c psi> for a micro polynomial c = c1 + c2 u + c3 v + c4 psi4. */
+NSPD_KERNEL void gks_moment_add(const GksMoments *m, int a, int b, const double c[4], double s,
+                                double out[4]) {
+    const double e00 = GKS_E(m, a, b), e10 = GKS_E(m, a + 1, b), e01 = GKS_E(m, a, b + 1);
+    out[0] += s * (c[0] * GKS_M(m, a, b) + c[1] * GKS_M(m, a + 1, b) + c[2] * GKS_M(m, a, b + 1) +
+                   c[3] * e00);
+    out[1] += s * (c[0] * GKS_M(m, a + 1, b) + c[1] * GKS_M(m, a + 2, b) +
+                   c[2] * GKS_M(m, a + 1, b + 1) + c[3] * e10);
+    out[2] += s * (c[0] * GKS_M(m, a, b + 1) + c[1] * GKS_M(m, a + 1, b + 1) +
+                   c[2] * GKS_M(m, a, b + 2) + c[3] * e01);
+    out[3] += s * (c[0] * e00 + c[1] * e10 + c[2] * e01 + c[3] * gks_e2(m, a, b));
+}
+
+/* One side of the face (left: side = +1, its u > 0 half; right: side = -1). */
+typedef struct {
+    GksPrim q;
+    GksMoments m;
+    double a[4], b[4], A[4]; /* normal, tangential and time micro slopes */
+    double p;                /* pressure */
+} GksSide;
+
+NSPD_KERNEL void gks_side_init(GksSide *s, const double w[4], const double dn[4],
+                               const double dt_[4], const GksParams *par, double side) {
+    s->q = gks_prim_from_w(w, par->K);
+    s->p = 0.5 * s->q.rho / s->q.lam;
+    const GksDPrim dx = gks_dprim(&s->q, dn, par->K), dy = gks_dprim(&s->q, dt_, par->K);
+    const GksDPrim dtp = gks_dprim_dt(&s->q, &dx, &dy, par->gamma);
+    gks_micro(&s->q, &dx, par->K, s->a);
+    gks_micro(&s->q, &dy, par->K, s->b);
+    gks_micro(&s->q, &dtp, par->K, s->A);
+    const double x = sqrt(s->q.lam) * s->q.U, ax = fabs(x);
+    gks_moments_half(&s->m, &s->q, par->K, side, gks_exp(-x * x), gks_erfcx(ax));
+}
+
+/* f += the side's share of the initial-data terms (t0, t1, t2). */
+NSPD_KERNEL void gks_side_flux(const GksSide *s, double c0, double c1, double c2, double f[4]) {
+    double c[4];
+    for (int n = 0; n < 4; n++) c[n] = c2 * s->A[n];
+    c[0] += c0;
+    gks_moment_add(&s->m, 1, 0, c, s->q.rho, f);
+    gks_moment_add(&s->m, 2, 0, s->a, c1 * s->q.rho, f);
+    gks_moment_add(&s->m, 1, 1, s->b, c1 * s->q.rho, f);
+}
+
+/* The flux of one face times dt, in the normal frame.
+ *   wl, wr     reconstructed states on the two sides (conservative)
+ *   nl, nr     their normal derivatives (d/dn of W, per metre)
+ *   tl, tr     their tangential derivatives
+ *   n0, t0     normal and tangential derivatives of the interface equilibrium
+ *   dt         time step, s
+ *   law        par->law, passed separately so that vectorised callers can make it a constant
+ *   f          out: \int_0^dt F dt per unit face length (rho, rho u_n, rho u_t, rho E)
+ * Pure: no allocation, no side effects besides f. */
+NSPD_KERNEL void gks_flux_kernel(const double wl[4], const double nl[4], const double tl[4],
+                                 const double wr[4], const double nr[4], const double tr[4],
+                                 const double n0[4], const double t0[4], double dt,
+                                 const GksParams *par, ViscosityLaw law, double f[4]) {
+    const double K = par->K;
+    GksSide L, R;
+    gks_side_init(&L, wl, nl, tl, par, 1.0);
+    gks_side_init(&R, wr, nr, tr, par, -1.0);
+
+    /* Interface equilibrium from the colliding half-space particles. */
+    double w0[4] = {0.0, 0.0, 0.0, 0.0};
+    const double unit[4] = {1.0, 0.0, 0.0, 0.0};
+    gks_moment_add(&L.m, 0, 0, unit, L.q.rho, w0);
+    gks_moment_add(&R.m, 0, 0, unit, R.q.rho, w0);
+    const GksPrim q0 = gks_prim_from_w(w0, K);
+    const double p0 = 0.5 * q0.rho / q0.lam;
+
+    const GksDPrim dx0 = gks_dprim(&q0, n0, K), dy0 = gks_dprim(&q0, t0, K);
+    const GksDPrim dt0 = gks_dprim_dt(&q0, &dx0, &dy0, par->gamma);
+    double a0[4], b0[4], A0[4];
+    gks_micro(&q0, &dx0, K, a0);
+    gks_micro(&q0, &dy0, K, b0);
+    gks_micro(&q0, &dt0, K, A0);
+
+    /* Collision times and the time-integrated weights. */
+    const double T0 = 0.5 / (par->R * q0.lam);
+    const double tau = gks_viscosity(par, T0, law) / p0;
+    const double tau_n = tau + (par->eps_dt + par->c_jump * fabs(L.p - R.p) / (L.p + R.p)) * dt;
+    const double eta = gks_exp(-dt / tau_n);
+    const double c0 = tau_n * (1.0 - eta);
+    const double c1 = tau_n * (eta * (dt + tau_n) - tau_n) + tau * tau_n * (eta - 1.0);
+    const double c2 = tau * tau_n * (eta - 1.0);
+    const double c3 = dt - c0;
+    const double c4 = tau_n * (tau_n - eta * (dt + tau_n) - tau * (eta - 1.0)) - dt * tau;
+    const double c5 = 0.5 * dt * dt - tau * tau_n * (eta - 1.0) - tau * dt;
+
+    f[0] = f[1] = f[2] = f[3] = 0.0;
+    /* Free transport of the initial, non-equilibrium data. */
+    gks_side_flux(&L, c0, c1, c2, f);
+    gks_side_flux(&R, c0, c1, c2, f);
+    /* The equilibrium part. */
+    GksMoments m0;
+    gks_moments_full(&m0, &q0, K);
+    double c[4];
+    for (int n = 0; n < 4; n++) c[n] = c5 * A0[n];
+    c[0] += c3;
+    gks_moment_add(&m0, 1, 0, c, q0.rho, f);
+    gks_moment_add(&m0, 2, 0, a0, c4 * q0.rho, f);
+    gks_moment_add(&m0, 1, 1, b0, c4 * q0.rho, f);
+
+    /* Prandtl fix: add (1/Pr - 1) times the Chapman-Enskog heat flux. */
+    const double il = 1.0 / q0.lam;
+    const double q = tau * dt * q0.rho * (K + 4.0) * dx0.lam * 0.125 * il * il * il;
+    f[3] += (1.0 / par->prandtl - 1.0) * q;
+}
+
+#undef GKS_M
+#undef GKS_E
+
+#endif

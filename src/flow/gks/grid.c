@@ -1,0 +1,178 @@
+/* Stretched Cartesian grid: segment layout and ghost geometry. */
+#include "flow/gks/grid.h"
+
+#include "core/search.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Sum of a geometric progression with first term h and ratio r, n terms. */
+static double progression_sum(double h, double r, int n) {
+    if (fabs(r - 1.0) < 1e-12) return h * n;
+    return h * (pow(r, n) - 1.0) / (r - 1.0);
+}
+
+/* Ratio r with progression_sum(h, r, n) = L (monotone in r: bisection in log r). */
+static double solve_ratio(double h, int n, double L) {
+    if (n <= 1) return 1.0;
+    double lo = -20.0 / n, hi = 20.0 / n; /* log r */
+    for (int it = 0; it < 200; it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (progression_sum(h, exp(mid), n) < L)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return exp(0.5 * (lo + hi));
+}
+
+static int segment_cells(const GridSegment *s, int *n, double *h0, double *ratio) {
+    const double L = s->length;
+    if (!(L > 0.0)) return NSPD_FAIL(NSPD_ERR_INPUT, "grid segment length must be > 0 (got %g)", L);
+    const bool uniform = !(s->h_end > 0.0) || s->h_end == s->h_start;
+    if (uniform) {
+        if (s->cells > 0)
+            *n = s->cells;
+        else if (s->h_start > 0.0)
+            *n = (int)fmax(1.0, round(L / s->h_start));
+        else
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "uniform grid segment needs a spacing > 0 or a cell count");
+        *h0 = L / *n;
+        *ratio = 1.0;
+        return NSPD_OK;
+    }
+    const double a = s->h_start, b = s->h_end;
+    if (!(a > 0.0) || a >= L || b >= L)
+        return NSPD_FAIL(
+            NSPD_ERR_INPUT,
+            "stretched grid segment: spacings (%g, %g) must be > 0 and < its length %g", a, b, L);
+    if (s->cells > 0) {
+        *n = s->cells;
+    } else {
+        const double r0 = (L - a) / (L - b);
+        *n = (int)fmax(1.0, round(1.0 + log(b / a) / log(r0)));
+    }
+    if (*n == 1) {
+        *h0 = L;
+        *ratio = 1.0;
+        return NSPD_OK;
+    }
+    *h0 = a;
+    *ratio = solve_ratio(a, *n, L);
+    return NSPD_OK;
+}
+
+int grid_segments_spacing(int count, const GridSegment *segments, double *h, int max) {
+    if (count < 1) return NSPD_FAIL(NSPD_ERR_INPUT, "a grid axis needs at least one segment");
+    int total = 0;
+    for (int s = 0; s < count; s++) {
+        int n = 0;
+        double h0 = 0.0, r = 1.0;
+        TRY(segment_cells(&segments[s], &n, &h0, &r));
+        /* Spacings from the progression, the last one adjusted by the
+         * rounding residue so the segment ends exactly at its length. */
+        double sum = 0.0, hk = h0;
+        for (int k = 0; k < n; k++) {
+            double v = k == n - 1 ? segments[s].length - sum : hk;
+            if (h && total + k < max) h[total + k] = v;
+            sum += hk;
+            hk *= r;
+        }
+        total += n;
+    }
+    return total;
+}
+
+int grid_axis_create(GridAxis *a, double lo, int count, const GridSegment *segments,
+                     bool periodic) {
+    memset(a, 0, sizeof *a);
+    const int n = grid_segments_spacing(count, segments, NULL, 0);
+    TRY(n);
+    const int nt = n + 2 * GRID_NG;
+    /* six arrays; face has one more entry */
+    TRY(nspd_alloc(&a->block_, (size_t)(6 * (nt + 1)), sizeof(double)));
+    double *p = a->block_;
+    a->face = p + GRID_NG;
+    p += nt + 1;
+    a->center = p + GRID_NG;
+    p += nt + 1;
+    a->width = p + GRID_NG;
+    p += nt + 1;
+    a->inv_width = p + GRID_NG;
+    p += nt + 1;
+    a->inv_dl = p + GRID_NG;
+    p += nt + 1;
+    a->inv_dr = p + GRID_NG;
+    a->n = n;
+    a->periodic = periodic;
+    grid_segments_spacing(count, segments, a->width, n);
+    for (int k = 0; k < GRID_NG; k++) {
+        a->width[-1 - k] = periodic ? a->width[n - 1 - k] : a->width[k];
+        a->width[n + k] = periodic ? a->width[k] : a->width[n - 1 - k];
+    }
+    a->face[0] = lo;
+    for (int i = 0; i < n; i++) a->face[i + 1] = a->face[i] + a->width[i];
+    for (int k = 1; k <= GRID_NG; k++) {
+        a->face[-k] = a->face[-k + 1] - a->width[-k];
+        a->face[n + k] = a->face[n + k - 1] + a->width[n + k - 1];
+    }
+    for (int i = -GRID_NG; i < n + GRID_NG; i++) {
+        a->center[i] = 0.5 * (a->face[i] + a->face[i + 1]);
+        a->inv_width[i] = 1.0 / a->width[i];
+    }
+    for (int i = -GRID_NG; i < n + GRID_NG; i++) {
+        /* centre distances from widths: exact for the ghost mirror images */
+        if (i > -GRID_NG) a->inv_dl[i] = 2.0 / (a->width[i] + a->width[i - 1]);
+        if (i < n + GRID_NG - 1) a->inv_dr[i] = 2.0 / (a->width[i] + a->width[i + 1]);
+    }
+    a->lo = lo;
+    a->hi = a->face[n];
+    return NSPD_OK;
+}
+
+void grid_axis_destroy(GridAxis *a) {
+    nspd_free(&a->block_);
+    memset(a, 0, sizeof *a);
+}
+
+int grid_create(Grid *g, double x0, int nsx, const GridSegment *sx, bool periodic_x, double y0,
+                int nsy, const GridSegment *sy, bool periodic_y) {
+    memset(g, 0, sizeof *g);
+    TRY(grid_axis_create(&g->ax[0], x0, nsx, sx, periodic_x));
+    int st = grid_axis_create(&g->ax[1], y0, nsy, sy, periodic_y);
+    if (st < 0) {
+        grid_axis_destroy(&g->ax[0]);
+        return st;
+    }
+    g->nx = g->ax[0].n;
+    g->ny = g->ax[1].n;
+    g->stride = (g->nx + 2 * GRID_NG + 7) / 8 * 8;
+    g->size = (int64_t)g->stride * (g->ny + 2 * GRID_NG);
+    return NSPD_OK;
+}
+
+int grid_create_uniform(Grid *g, double x0, double x1, int nx, double y0, double y1, int ny,
+                        bool periodic_x, bool periodic_y) {
+    const GridSegment sx = {.length = x1 - x0, .cells = nx};
+    const GridSegment sy = {.length = y1 - y0, .cells = ny};
+    if (nx < 1 || ny < 1) return NSPD_FAIL(NSPD_ERR_INPUT, "grid needs at least 1 x 1 cells");
+    return grid_create(g, x0, 1, &sx, periodic_x, y0, 1, &sy, periodic_y);
+}
+
+void grid_destroy(Grid *g) {
+    grid_axis_destroy(&g->ax[0]);
+    grid_axis_destroy(&g->ax[1]);
+    memset(g, 0, sizeof *g);
+}
+
+int grid_axis_cell_of(const GridAxis *a, double x) {
+    return search_bracket(a->face, 0, a->n, x);
+}
+
+int grid_axis_bracket(const GridAxis *a, double x) {
+    return search_bracket(a->center, -1, a->n, x);
+}

@@ -1,0 +1,488 @@
+#include "flow/gks/model.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "flow/flow.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <string.h>
+
+void gks_case_config_free(GksCaseConfig *c) {
+    for (int i = 0; i < c->region_count; i++) shapeset_free(&c->regions[i].shapes);
+    nspd_free(&c->regions);
+    c->region_count = 0;
+    flow_field_source_free(&c->field);
+    c->has_field = false;
+}
+
+enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
+
+/* The model: the solver, its case and the output scratch (allocated once). */
+typedef struct {
+    GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
+    GksSolver *solver;
+    double last_dt;    /* s, of the last step; 0 before the first */
+    double mach_scale; /* the top of the Mach pictures' colour bar, fixed at the first */
+    double *cells[GKS_SCRATCH];
+    double *kind;   /* cell kinds as a field */
+    uint8_t *blank; /* 1: not a fluid cell */
+    uint8_t *valid; /* 1: a fluid cell (sampling) */
+} GksFlow;
+
+/* The vortex on a periodic box takes its nearest image: its periods are the
+ * grid's lengths along the periodic axes. */
+static void vortex_periods(GksCaseConfig *fc) {
+    GksConfig *c = &fc->solver;
+    FlowVortex *vx = &fc->vortex;
+    if (c->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC) {
+        GridSegment *s = c->segments[0];
+        vx->lo_x = c->x0;
+        vx->period_x = 0;
+        for (int k = 0; k < c->segment_count[0]; k++) vx->period_x += s[k].length;
+    }
+    if (c->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC) {
+        GridSegment *s = c->segments[1];
+        vx->lo_y = c->y0;
+        vx->period_y = 0;
+        for (int k = 0; k < c->segment_count[1]; k++) vx->period_y += s[k].length;
+    }
+}
+
+/* Cells from the grid's segments (no axis built); bytes: the solver's
+ * padded state (two copies of four fields and the kinds: 65 per cell with
+ * its ghost layers), its row work space (28 rows per thread), and the
+ * model's output scratch (66 per interior cell: seven fields, the kinds as
+ * a field, two masks). */
+static FlowEstimate gks_estimate(const FlowConfig *mc) {
+    const GksConfig *c = &((const GksCaseConfig *)mc->model)->solver;
+    FlowEstimate e = {0, 0, 0};
+    const int nx = grid_segments_spacing(c->segment_count[0], c->segments[0], NULL, 0);
+    const int ny = grid_segments_spacing(c->segment_count[1], c->segments[1], NULL, 0);
+    if (nx <= 0 || ny <= 0) return e; /* the solver's create says what is wrong */
+    e.cells = (double)nx * (double)ny;
+    const double stride = (double)((nx + 2 * GRID_NG + 7) / 8 * 8);
+    const double padded = stride * (double)(ny + 2 * GRID_NG);
+    e.stored_cells = padded;
+    e.bytes = 65.0 * padded + 28.0 * 8.0 * stride * (double)omp_get_max_threads() + 66.0 * e.cells;
+    return e;
+}
+
+static void gks_destroy(void *impl) {
+    GksFlow *g = impl;
+    gks_solver_destroy(&g->solver);
+    gks_case_config_free(&g->cfg);
+    for (int k = 0; k < GKS_SCRATCH; k++) nspd_free(&g->cells[k]);
+    nspd_free(&g->kind);
+    nspd_free(&g->blank);
+    nspd_free(&g->valid);
+    nspd_free(&g);
+}
+
+static int gks_create(void **impl, FlowConfig *mc) {
+    GksFlow *g;
+    TRY(nspd_alloc(&g, 1, sizeof *g));
+    /* the initial condition needs the vortex at its final address */
+    g->cfg = *(GksCaseConfig *)mc->model;
+    nspd_free(&mc->model); /* taken */
+    GksCaseConfig *fc = &g->cfg;
+    GksConfig *c = &fc->solver;
+    if (fc->has_vortex) {
+        vortex_periods(fc);
+        c->init_fn = flow_isentropic_vortex;
+        c->init_ctx = &fc->vortex;
+    }
+    if (fc->has_field) {
+        c->init_fn = flow_field_sample;
+        c->init_ctx = &fc->field;
+    }
+    int status = gks_solver_create(&g->solver, c);
+    if (status == NSPD_OK) {
+        const Grid *grid = gks_solver_grid(g->solver);
+        const size_t n = (size_t)grid->nx * (size_t)grid->ny;
+        for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK; k++)
+            status = nspd_alloc(&g->cells[k], n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&g->kind, n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&g->blank, n, 1);
+        if (status == NSPD_OK) status = nspd_alloc(&g->valid, n, 1);
+    }
+    if (status != NSPD_OK) {
+        gks_destroy(g);
+        return status;
+    }
+    *impl = g;
+    return NSPD_OK;
+}
+
+static double gks_stable_dt(const void *impl) {
+    return gks_solver_stable_dt(((const GksFlow *)impl)->solver);
+}
+
+static int gks_step(void *impl, double dt) {
+    GksFlow *g = impl;
+    TRY(gks_solver_step(g->solver, dt));
+    g->last_dt = dt;
+    return NSPD_OK;
+}
+
+static double gks_time(const void *impl) {
+    return gks_solver_time(((const GksFlow *)impl)->solver);
+}
+
+static void gks_config_free(void *model) {
+    gks_case_config_free(model);
+}
+
+static FlowMesh gks_mesh(const void *impl) {
+    (void)impl;
+    return (FlowMesh){MESH_GRID};
+}
+
+/* The probes' view of the grid (FlowOps.cell_at, grid_line, cell_centre):
+ * cells are numbered as the solver's padded arrays (grid_index). */
+static int gks_cell_at(const void *impl, const char *name, double x, double y, int64_t *cell) {
+    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    const double at[2] = {x, y};
+    for (int d = 0; d < 2; d++)
+        if (at[d] < g->ax[d].lo || at[d] > g->ax[d].hi)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "probe '%s': at[%d] = %g is outside the flow grid [%g, %g]", name, d,
+                             at[d], g->ax[d].lo, g->ax[d].hi);
+    *cell = grid_index(g, grid_axis_cell_of(&g->ax[0], x), grid_axis_cell_of(&g->ax[1], y));
+    return NSPD_OK;
+}
+
+/* The interior indices (i, j) of cell `cell`. */
+static void cell_ij(const Grid *g, int64_t cell, int *i, int *j) {
+    *j = (int)(cell / g->stride) - GRID_NG;
+    *i = (int)(cell % g->stride) - GRID_NG;
+}
+
+static int gks_grid_line(const void *impl, int64_t through, int along, int64_t **cells,
+                         int64_t *count) {
+    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    int i, j;
+    cell_ij(g, through, &i, &j);
+    const int n = g->ax[along].n;
+    TRY(nspd_alloc(cells, (size_t)n, sizeof(int64_t)));
+    *count = n;
+    for (int k = 0; k < n; k++)
+        (*cells)[k] = along == 0 ? grid_index(g, k, j) : grid_index(g, i, k);
+    return NSPD_OK;
+}
+
+static void gks_cell_centre(const void *impl, int64_t cell, double xy[2]) {
+    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    int i, j;
+    cell_ij(g, cell, &i, &j);
+    xy[0] = g->ax[0].center[i];
+    xy[1] = g->ax[1].center[j];
+}
+
+static void gks_cell_state(const void *impl, int64_t cell, double out[5]) {
+    /* the fields are read only here; the accessor is not const-qualified */
+    GksSolver *solver = ((const GksFlow *)impl)->solver;
+    GksFields f = gks_solver_fields(solver);
+    const GksParams *gas = gks_solver_gas(solver);
+    double w[4] = {f.w[0][cell], f.w[1][cell], f.w[2][cell], f.w[3][cell]};
+    FlowPrim q;
+    flow_cons_to_prim(w, gas->gamma, &q);
+    out[0] = q.rho;
+    out[1] = q.u;
+    out[2] = q.v;
+    out[3] = q.p;
+    out[4] = q.p / (q.rho * gas->R);
+}
+
+static FlowReference gks_reference(const void *impl) {
+    const GksFlow *g = impl;
+    const GksCaseConfig *f = &g->cfg;
+    const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
+    const GksParams *gas = gks_solver_gas(g->solver);
+    return (FlowReference){.rho = q->rho,
+                           .u = q->u,
+                           .v = q->v,
+                           .p = q->p,
+                           .length = f->reference_length,
+                           .gamma = gas->gamma,
+                           .gas_constant = gas->R};
+}
+
+/* The primitive fields of the interior cells and their kinds, into the
+ * output scratch (cells[0..5], blank, kind). */
+static void primitives(GksFlow *gf) {
+    const Grid *g = gks_solver_grid(gf->solver);
+    static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
+                                       FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
+    for (int k = 0; k < 6; k++) gks_solver_primitive(gf->solver, order[k], gf->cells[k]);
+    GksFields f = gks_solver_fields(gf->solver);
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            uint8_t k = f.kind[grid_index(g, i, j)];
+            gf->blank[(int64_t)j * g->nx + i] = k != FLOW_CELL_FLUID;
+            gf->kind[(int64_t)j * g->nx + i] = k;
+        }
+}
+
+/* Bilinear between the cell centres around each point, body cells left out:
+ * the interpolation that starts a flow from a stored field
+ * (field_sample.h), over the current state. */
+static int gks_sample(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out) {
+    GksFlow *gf = impl;
+    const Grid *g = gks_solver_grid(gf->solver);
+    primitives(gf);
+    for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++) gf->valid[c] = !gf->blank[c];
+    /* a view of the scratch: the source's arrays are read only here */
+    FlowFieldSource view = {.nx = g->nx,
+                            .ny = g->ny,
+                            .xc = g->ax[0].center,
+                            .yc = g->ax[1].center,
+                            .rho = gf->cells[0],
+                            .u = gf->cells[1],
+                            .v = gf->cells[2],
+                            .p = gf->cells[3],
+                            .valid = gf->valid};
+    for (int64_t k = 0; k < n; k++) {
+        FlowPrim q;
+        flow_field_sample(&view, x[k], y[k], &q);
+        out->rho[k] = q.rho;
+        out->u[k] = q.u;
+        out->v[k] = q.v;
+        out->p[k] = q.p;
+    }
+    return NSPD_OK;
+}
+
+/* Each point's force and power, over the area of the cell that holds it,
+ * into the solver's source arrays. */
+static int gks_set_sources(void *impl, FlowSources *src) {
+    GksSolver *solver = ((GksFlow *)impl)->solver;
+    if (!src) {
+        gks_solver_clear_sources(solver);
+        return NSPD_OK;
+    }
+    double *cell[3];
+    TRY(gks_solver_source_cells(solver, cell));
+    const Grid *g = gks_solver_grid(solver);
+    const uint8_t *kind = gks_solver_fields(solver).kind;
+    src->outside = 0;
+    for (int64_t k = 0; k < src->n; k++) {
+        const double x = src->x[k], y = src->y[k];
+        if (!(x >= g->ax[0].lo && x <= g->ax[0].hi && y >= g->ax[1].lo && y <= g->ax[1].hi)) {
+            src->outside++;
+            continue;
+        }
+        const int i = grid_axis_cell_of(&g->ax[0], x), j = grid_axis_cell_of(&g->ax[1], y);
+        const int64_t c = grid_index(g, i, j);
+        if (kind[c] != FLOW_CELL_FLUID) {
+            src->outside++;
+            continue;
+        }
+        const double inv_area = g->ax[0].inv_width[i] * g->ax[1].inv_width[j];
+        cell[0][c] += src->force_x[k] * inv_area;
+        cell[1][c] += src->force_y[k] * inv_area;
+        if (src->power) cell[2][c] += src->power[k] * inv_area;
+    }
+    return NSPD_OK;
+}
+
+static void gks_totals(const void *impl, double totals[4]) {
+    gks_solver_totals(((const GksFlow *)impl)->solver, totals);
+}
+
+static int gks_checkpoint(void *impl, Checkpoint *ck) {
+    GksFlow *g = impl;
+    TRY(gks_solver_checkpoint(g->solver, ck));
+    TRY(checkpoint_io_double(ck, "gks.mach_scale", &g->mach_scale));
+    return checkpoint_io_double(ck, "gks.last_dt", &g->last_dt);
+}
+
+static void gks_history(const void *impl, Report *row) {
+    const GksFlow *g = impl;
+    double totals[4];
+    gks_solver_totals(g->solver, totals);
+    report_real(row, "dt_s", g->last_dt);
+    report_precise(row, "mass_kg_per_m", totals[0]);
+    report_precise(row, "momentum_x_kg_per_s", totals[1]);
+    report_precise(row, "momentum_y_kg_per_s", totals[2]);
+    report_precise(row, "energy_J_per_m", totals[3]);
+    report_int(row, "fallbacks", gks_solver_fallbacks_last(g->solver));
+}
+
+static void gks_summary(const void *impl, const RunStats *run, Report *out) {
+    const GksFlow *g = impl;
+    const Grid *grid = gks_solver_grid(g->solver);
+    double totals[4];
+    gks_solver_totals(g->solver, totals);
+    int64_t cells = (int64_t)grid->nx * grid->ny;
+    report_int(out, "cells", cells);
+    report_int(out, "cells_x", grid->nx);
+    report_int(out, "cells_y", grid->ny);
+    report_real(out, "cell_updates_per_s",
+                run->wall_s > 0 ? (double)cells * (double)run->steps / run->wall_s : 0.0);
+    report_int(out, "fallbacks", gks_solver_fallbacks_total(g->solver));
+    report_real(out, "mass_kg_per_m", totals[0]);
+    report_real(out, "momentum_x_kg_per_s", totals[1]);
+    report_real(out, "momentum_y_kg_per_s", totals[2]);
+    report_real(out, "energy_J_per_m", totals[3]);
+}
+
+static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
+    const GksFlow *gf = impl;
+    const Grid *g = gks_solver_grid(gf->solver);
+    const GksConfig *c = gks_solver_config(gf->solver);
+    int len = 0;
+#define APPEND(...)                                                                                \
+    len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
+    for (int a = 0; a < 2; a++) {
+        double hmin = INFINITY, hmax = 0;
+        for (int i = 0; i < g->ax[a].n; i++) {
+            hmin = fmin(hmin, g->ax[a].width[i]);
+            hmax = fmax(hmax, g->ax[a].width[i]);
+        }
+        APPEND("grid %c               %d cells on [%.6g, %.6g] m, spacing %.4g to %.4g m\n",
+               "xy"[a], g -> ax[a].n, g->ax[a].lo, g->ax[a].hi, hmin, hmax);
+    }
+    APPEND("cells                %lld\n", (long long)g->nx * g->ny);
+    APPEND("gas                  gamma %.4g, R %.6g J/(kg K), Pr %.3g, viscosity %s\n", c->gamma,
+           c->gas_constant, c->prandtl, c->viscosity == VISCOSITY_NONE ? "none (Euler)" : "on");
+    const GksCaseConfig *fc = &gf->cfg;
+    if (fc->has_free_stream) {
+        const FlowPrim *q = &fc->free_stream;
+        double speed = hypot(q->u, q->v), a = sqrt(c->gamma * q->p / q->rho);
+        APPEND("free stream          rho %.6g, |u| %.6g, p %.6g, Mach %.4g", q->rho, speed, q->p,
+               speed / a);
+        if (c->viscosity != VISCOSITY_NONE && fc->reference_length > 0)
+            APPEND(", Re %.6g over %.4g m", q->rho * speed * fc->reference_length / c->mu_ref,
+                   fc->reference_length);
+        APPEND("\n");
+    }
+    APPEND("CFL time step        %.6g s at the start (CFL %.3g)\n",
+           gks_solver_stable_dt(gf->solver), c->cfl);
+    APPEND("memory               %.1f MB in solver arrays (%.0f bytes per cell)\n",
+           (double)memory / 1e6, (double)memory / ((double)g->nx * g->ny));
+#undef APPEND
+}
+
+static void gks_brief(const void *impl, char *buf, size_t size) {
+    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    snprintf(buf, size, "%d x %d cells, ", g->nx, g->ny);
+}
+
+static int64_t gks_fallbacks_total(const void *impl) {
+    return gks_solver_fallbacks_total(((const GksFlow *)impl)->solver);
+}
+
+/* Numerical schlieren (Quirk 1994): S = exp(-k |grad rho| / max |grad rho|),
+ * k = 15, from central differences of the density on the stretched grid. */
+static void schlieren(const Grid *g, const double *rho, const uint8_t *solid, double *out) {
+    int nx = g->nx, ny = g->ny;
+    double gmax = 0.0;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            int il = i > 0 ? i - 1 : i, ir = i < nx - 1 ? i + 1 : i;
+            int jl = j > 0 ? j - 1 : j, jr = j < ny - 1 ? j + 1 : j;
+            double gx = ir > il ? (rho[(int64_t)j * nx + ir] - rho[(int64_t)j * nx + il]) /
+                                      (g->ax[0].center[ir] - g->ax[0].center[il])
+                                : 0.0;
+            double gy = jr > jl ? (rho[(int64_t)jr * nx + i] - rho[(int64_t)jl * nx + i]) /
+                                      (g->ax[1].center[jr] - g->ax[1].center[jl])
+                                : 0.0;
+            double m = solid[(int64_t)j * nx + i] ? 0.0 : sqrt(gx * gx + gy * gy);
+            out[(int64_t)j * nx + i] = m;
+            if (m > gmax) gmax = m;
+        }
+    for (int64_t c = 0; c < (int64_t)nx * ny; c++)
+        out[c] = gmax > 0.0 ? exp(-15.0 * out[c] / gmax) : 1.0;
+}
+
+/* The Mach pictures' scale, fixed for the whole series so the frames of a
+ * movie compare: 1.25 times the larger of the reference Mach number (the
+ * free stream) and the largest one of the first output, rounded up to two
+ * significant digits (1.7 -> 2.2); 1 for a gas at rest. Faster gas later
+ * shows in the top colour. */
+static double mach_scale(const GksFlow *gf, int64_t ncell) {
+    double top = 0.0;
+    for (int64_t c = 0; c < ncell; c++)
+        if (!gf->blank[c] && gf->cells[5][c] > top) top = gf->cells[5][c];
+    const FlowReference r = gks_reference(gf);
+    if (r.rho > 0 && r.p > 0) top = fmax(top, hypot(r.u, r.v) / sqrt(r.gamma * r.p / r.rho));
+    if (!(top > 0) || !isfinite(top)) return 1.0;
+    const double v = 1.25 * top, unit = pow(10.0, floor(log10(v)) - 1.0);
+    return ceil(v / unit * (1.0 - 1e-12)) * unit;
+}
+
+static void gks_fields(void *impl, FieldSet *out) {
+    GksFlow *gf = impl;
+    const Grid *g = gks_solver_grid(gf->solver);
+    const int64_t ncell = (int64_t)g->nx * g->ny;
+    primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
+    if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
+    schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
+    memset(out, 0, sizeof *out);
+    out->series = "flow";
+    out->mesh = MESH_GRID;
+    out->nx = g->nx;
+    out->ny = g->ny;
+    out->face[0] = g->ax[0].face;
+    out->face[1] = g->ax[1].face;
+    out->blank = gf->blank;
+    double *const *c = gf->cells;
+    const FieldRef fields[] = {
+        {"density", 1, {c[0], NULL, NULL}},  {"velocity", 3, {c[1], c[2], NULL}},
+        {"pressure", 1, {c[3], NULL, NULL}}, {"temperature", 1, {c[4], NULL, NULL}},
+        {"mach", 1, {c[5], NULL, NULL}},     {"cell_kind", 1, {gf->kind, NULL, NULL}},
+    };
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
+        out->field[out->field_count++] = fields[k];
+    out->picture[out->picture_count++] = (PictureRef){.file = "mach",
+                                                      .label = "Mach number",
+                                                      .units = "-",
+                                                      .values = c[5],
+                                                      .lo = 0.0,
+                                                      .hi = gf->mach_scale,
+                                                      .map = COLORMAP_VIRIDIS,
+                                                      .overlay_file = "mach_damage"};
+    out->picture[out->picture_count++] = (PictureRef){.file = "schlieren",
+                                                      .label = "schlieren exp(-15 |∇ρ| / max |∇ρ|)",
+                                                      .units = "-",
+                                                      .values = c[6],
+                                                      .lo = 0.0,
+                                                      .hi = 1.0,
+                                                      .map = COLORMAP_GRAY};
+}
+
+const FlowOps GKS_FLOW_OPS = {
+    .name = "gks",
+    .config_free = gks_config_free,
+    .estimate = gks_estimate,
+    .create = gks_create,
+    .destroy = gks_destroy,
+    .stable_dt = gks_stable_dt,
+    .step = gks_step,
+    .time = gks_time,
+    .mesh = gks_mesh,
+    .cell_state = gks_cell_state,
+    .cell_at = gks_cell_at,
+    .grid_line = gks_grid_line,
+    .cell_centre = gks_cell_centre,
+    .reference = gks_reference,
+    .sample = gks_sample,
+    .set_sources = gks_set_sources,
+    .totals = gks_totals,
+    .history = gks_history,
+    .summary = gks_summary,
+    .info = gks_info,
+    .brief = gks_brief,
+    .fallbacks_total = gks_fallbacks_total,
+    .fields = gks_fields,
+    .checkpoint = gks_checkpoint,
+    .bench_name = "gks",
+    .bench = gks_bench_report,
+};
+
+GksSolver *gks_flow_solver(Flow *f) {
+    GksFlow *g = flow_impl(f, FLOW_METHOD_GKS);
+    return g ? g->solver : NULL;
+}

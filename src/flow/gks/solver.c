@@ -1,0 +1,287 @@
+/* The flow operator: configuration defaults, create/destroy and accessors.
+ * The struct and its invariants are in solver_internal.h; the initial
+ * condition in initial.c, the step in step.c, diagnostics in
+ * diagnostics.c, the benchmark in bench.c. */
+#include "flow/gks/solver.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "flow/gks/solver_internal.h"
+#include "flow/gks/flux.h"
+
+#include <omp.h>
+#include <string.h>
+
+const char *const FLOW_LIMITER_NAMES[LIMITER_COUNT + 1] = {"van_leer", "van_albada", "none",
+                                                           "first_order", NULL};
+
+void gks_config_default(GksConfig *c) {
+    memset(c, 0, sizeof *c);
+    c->gamma = 1.4;
+    c->gas_constant = 287.0;
+    c->viscosity = VISCOSITY_NONE;
+    c->T_ref = 273.15;
+    c->prandtl = 0.72;
+    c->limiter = LIMITER_VAN_LEER;
+    c->cfl = 0.5;
+    c->tau_jump_c = 1.0;
+    c->tau_eps = 0.0;
+    for (int f = 0; f < 4; f++) {
+        c->bc[f].count = 1;
+        c->bc[f].seg[0].kind = BC_EXTRAPOLATION;
+    }
+    c->initial = (FlowPrim){1.0, 0.0, 0.0, 1.0};
+    c->init_quadrature = 1;
+}
+
+void gks_config_uniform_grid(GksConfig *c, double x0, double x1, int nx, double y0, double y1,
+                             int ny) {
+    c->x0 = x0;
+    c->y0 = y0;
+    c->segment_count[0] = c->segment_count[1] = 1;
+    c->segments[0][0] = (GridSegment){.length = x1 - x0, .cells = nx};
+    c->segments[1][0] = (GridSegment){.length = y1 - y0, .cells = ny};
+}
+
+void gks_config_set_bc(GksConfig *c, int face, const FlowBc *bc) {
+    c->bc[face].count = 1;
+    c->bc[face].seg[0] = *bc;
+    c->bc[face].seg[0].start = 0.0;
+}
+
+/* ------------------------------------------------------------ accessors */
+
+GksFields gks_solver_fields(GksSolver *s) {
+    GksFields f;
+    for (int v = 0; v < 4; v++) f.w[v] = s->w[v];
+    f.kind = s->kind;
+    return f;
+}
+const Grid *gks_solver_grid(const GksSolver *s) {
+    return &s->grid;
+}
+const GksParams *gks_solver_gas(const GksSolver *s) {
+    return &s->gas;
+}
+const GksConfig *gks_solver_config(const GksSolver *s) {
+    return &s->cfg;
+}
+void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx) {
+    s->hook = hook;
+    s->hook_ctx = ctx;
+}
+int gks_solver_source_cells(GksSolver *s, double *out[3]) {
+    for (int k = 0; k < 3; k++) {
+        if (!s->source[k]) TRY(nspd_alloc(&s->source[k], (size_t)s->grid.size, sizeof(double)));
+        memset(s->source[k], 0, (size_t)s->grid.size * sizeof(double));
+        out[k] = s->source[k];
+    }
+    s->has_sources = true;
+    return NSPD_OK;
+}
+
+void gks_solver_clear_sources(GksSolver *s) {
+    s->has_sources = false;
+}
+
+void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double *u,
+                                const double *v) {
+    s->wall_slot = slot;
+    s->wall_u = u;
+    s->wall_v = v;
+}
+double gks_solver_time(const GksSolver *s) {
+    return s->time;
+}
+int64_t gks_solver_step_count(const GksSolver *s) {
+    return s->steps;
+}
+int64_t gks_solver_fallbacks_last(const GksSolver *s) {
+    return s->fallbacks_last;
+}
+int64_t gks_solver_fallbacks_total(const GksSolver *s) {
+    return s->fallbacks_total;
+}
+
+/* The state a step changes: the conservative fields (ghost layers too),
+ * the cell kinds (an immersed boundary changes them), the sources a
+ * coupling holds over the steps, the clock and the counters. */
+int gks_solver_checkpoint(GksSolver *s, Checkpoint *ck) {
+    const size_t n = (size_t)s->grid.size;
+    static const char *const W[4] = {"gks.rho", "gks.rho_u", "gks.rho_v", "gks.rho_e"};
+    for (int v = 0; v < 4; v++) TRY(checkpoint_io(ck, W[v], s->w[v], n * sizeof(double)));
+    TRY(checkpoint_io(ck, "gks.kind", s->kind, n));
+    int has = s->has_sources;
+    TRY(checkpoint_io_int(ck, "gks.has_sources", &has));
+    if (has) {
+        double *src[3];
+        if (checkpoint_reading(ck)) TRY(gks_solver_source_cells(s, src));
+        static const char *const S[3] = {"gks.source_x", "gks.source_y", "gks.source_e"};
+        for (int k = 0; k < 3; k++) TRY(checkpoint_io(ck, S[k], s->source[k], n * sizeof(double)));
+    }
+    s->has_sources = has != 0;
+    TRY(checkpoint_io_double(ck, "gks.time", &s->time));
+    TRY(checkpoint_io_int64(ck, "gks.steps", &s->steps));
+    TRY(checkpoint_io_int64(ck, "gks.fallbacks_last", &s->fallbacks_last));
+    return checkpoint_io_int64(ck, "gks.fallbacks_total", &s->fallbacks_total);
+}
+
+/* ------------------------------------------------------ create/destroy */
+
+static int alloc_counted(GksSolver *s, void *out, size_t count, size_t size) {
+    TRY(nspd_alloc(out, count, size));
+    s->bytes += count * size;
+    return NSPD_OK;
+}
+
+/* The configuration's numbers, checked before anything is allocated. */
+static int check_config(const GksConfig *cfg) {
+    if (!(cfg->gamma > 1.0 && cfg->gamma < 3.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "flow: gamma must be in (1, 3) (got %g)", cfg->gamma);
+    if (!(cfg->gas_constant > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "flow: gas constant must be > 0");
+    if (!(cfg->cfl > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "flow: CFL number must be > 0 (got %g)", cfg->cfl);
+    if (!(cfg->prandtl > 0.0)) return NSPD_FAIL(NSPD_ERR_INPUT, "flow: Prandtl number must be > 0");
+    if ((int)cfg->limiter < 0 || cfg->limiter >= LIMITER_COUNT)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "flow: unknown limiter");
+    if (cfg->viscosity != VISCOSITY_NONE && !(cfg->mu_ref > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "flow: viscosity mu_ref must be > 0");
+    if ((cfg->viscosity == VISCOSITY_POWER || cfg->viscosity == VISCOSITY_SUTHERLAND) &&
+        !(cfg->T_ref > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "flow: viscosity T_ref must be > 0");
+    for (int a = 0; a < 2; a++)
+        if (cfg->segment_count[a] < 1 || cfg->segment_count[a] > FLOW_MAX_SEGMENTS)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "flow: the %s axis needs 1..%d grid segments",
+                             a == 0 ? "x" : "y", FLOW_MAX_SEGMENTS);
+    return NSPD_OK;
+}
+
+/* The kernel's gas parameters from the configuration. */
+static void set_gas(GksParams *gas, const GksConfig *cfg) {
+    gks_params_default(gas, cfg->gamma, cfg->gas_constant);
+    gas->law = cfg->viscosity;
+    gas->mu_ref = cfg->mu_ref;
+    gas->T_ref = cfg->T_ref > 0.0 ? cfg->T_ref : 1.0;
+    gas->omega = cfg->omega;
+    gas->sutherland_S = cfg->sutherland_S;
+    gas->prandtl = cfg->viscosity == VISCOSITY_NONE ? 1.0 : cfg->prandtl;
+    gas->c_jump = cfg->tau_jump_c;
+    gas->eps_dt = cfg->tau_eps;
+}
+
+/* State, kinds, half widths and row sums. */
+static int alloc_state(GksSolver *s) {
+    const Grid *g = &s->grid;
+    for (int v = 0; v < 4; v++) {
+        TRY(alloc_counted(s, &s->w[v], (size_t)g->size, sizeof(double)));
+        TRY(alloc_counted(s, &s->wn[v], (size_t)g->size, sizeof(double)));
+    }
+    TRY(alloc_counted(s, &s->kind, (size_t)g->size, 1));
+    for (int a = 0; a < 2; a++) {
+        const int n = g->ax[a].n + 2 * GRID_NG;
+        TRY(alloc_counted(s, &s->half_w[a], (size_t)n, sizeof(double)));
+        for (int i = 0; i < n; i++) s->half_w[a][i] = 0.5 * g->ax[a].width[i - GRID_NG];
+    }
+    TRY(alloc_counted(s, &s->row_sums, (size_t)4 * (size_t)g->ny, sizeof(double)));
+    return NSPD_OK;
+}
+
+/* The WALL_* flags of every cell along each box face, from the segment of
+ * the face's boundary condition that covers it. */
+static int build_walls(GksSolver *s, const GksConfig *cfg) {
+    const Grid *g = &s->grid;
+    for (int face = 0; face < 4; face++) {
+        const GridAxis *along = &g->ax[face < 2 ? 1 : 0];
+        TRY(alloc_counted(s, &s->wall[face], (size_t)along->n, 1));
+        for (int t = 0; t < along->n; t++) {
+            const FlowFaceBc *b = &cfg->bc[face];
+            int k = 0;
+            while (k + 1 < b->count && along->center[t] >= b->seg[k + 1].start) k++;
+            const FlowBc *bc = &b->seg[k];
+            uint8_t f = 0;
+            if (bc->kind == BC_SLIP_WALL || bc->kind == BC_SYMMETRY) f = WALL_MASS | WALL_ENERGY;
+            if (bc->kind == BC_NOSLIP_ADIABATIC)
+                f = bc->wall_velocity == 0.0 ? WALL_MASS | WALL_ENERGY : WALL_MASS;
+            if (bc->kind == BC_NOSLIP_ISOTHERMAL) f = WALL_MASS;
+            s->wall[face][t] = f;
+        }
+    }
+    return NSPD_OK;
+}
+
+/* The step's work space: one block of rows per thread (FlowWork). */
+static int alloc_work(GksSolver *s) {
+    s->nthreads = omp_get_max_threads();
+    TRY(nspd_alloc(&s->work, (size_t)s->nthreads, sizeof(FlowWork)));
+    const size_t row = (size_t)s->grid.stride;
+    for (int t = 0; t < s->nthreads; t++) {
+        FlowWork *wk = &s->work[t];
+        /* 16 slope rows + 4 x-flux rows + 8 y-flux rows */
+        TRY(alloc_counted(s, &wk->block, 28 * row, sizeof(double)));
+        double *p = wk->block;
+        for (int r = 0; r < 2; r++)
+            for (int v = 0; v < 4; v++) {
+                wk->sx[r][v] = p, p += row;
+                wk->sy[r][v] = p, p += row;
+                wk->gy[r][v] = p, p += row;
+            }
+        for (int v = 0; v < 4; v++) wk->fx[v] = p, p += row;
+    }
+    return NSPD_OK;
+}
+
+/* Everything after the grid; on failure the caller destroys the solver. */
+static int build(GksSolver *s, const GksConfig *cfg) {
+    TRY(bc_validate(&s->grid, cfg->bc));
+    set_gas(&s->gas, cfg);
+    TRY(alloc_state(s));
+    TRY(build_walls(s, cfg));
+    TRY(alloc_work(s));
+    gks_solver_apply_initial(s, cfg);
+    return NSPD_OK;
+}
+
+int gks_solver_create(GksSolver **out, const GksConfig *cfg) {
+    *out = NULL;
+    TRY(check_config(cfg));
+    GksSolver *s = NULL;
+    TRY(nspd_alloc(&s, 1, sizeof *s));
+    s->cfg = *cfg;
+    s->cfg.regions = NULL; /* borrowed only during create */
+    s->cfg.region_count = 0;
+    const bool per_x = cfg->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC;
+    const bool per_y = cfg->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC;
+    int st = grid_create(&s->grid, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
+                         cfg->segment_count[1], cfg->segments[1], per_y);
+    if (st < 0) {
+        nspd_free(&s);
+        return st;
+    }
+    if ((st = build(s, cfg)) < 0) {
+        gks_solver_destroy(&s);
+        return st;
+    }
+    *out = s;
+    return NSPD_OK;
+}
+
+void gks_solver_destroy(GksSolver **sp) {
+    GksSolver *s = *sp;
+    if (!s) return;
+    for (int v = 0; v < 4; v++) {
+        nspd_free(&s->w[v]);
+        nspd_free(&s->wn[v]);
+    }
+    nspd_free(&s->kind);
+    nspd_free(&s->half_w[0]);
+    nspd_free(&s->half_w[1]);
+    nspd_free(&s->row_sums);
+    for (int k = 0; k < 3; k++) nspd_free(&s->source[k]);
+    for (int face = 0; face < 4; face++) nspd_free(&s->wall[face]);
+    if (s->work)
+        for (int t = 0; t < s->nthreads; t++) nspd_free(&s->work[t].block);
+    nspd_free(&s->work);
+    grid_destroy(&s->grid);
+    nspd_free(sp);
+}

@@ -1,0 +1,72 @@
+/* What the files of the flow operator share (solver.c: configuration,
+ * create/destroy, accessors; initial.c; step.c; diagnostics.c;
+ * bench.c): the solver's struct and the constants of its loops.
+ *
+ * Data: W (current) and Wn (next) conservative fields, one array per
+ * variable, GRID_NG ghost layers, rows padded to 64 bytes; kind[] per cell.
+ * The step reads W and writes Wn, then swaps the two: no cell is read after
+ * it is overwritten, whatever the thread layout. All work arrays are
+ * allocated at creation for omp_get_max_threads() threads. */
+#ifndef NSPD_FLOW_GKS_SOLVER_INTERNAL_H
+#define NSPD_FLOW_GKS_SOLVER_INTERNAL_H
+
+#include "flow/gks/solver.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Below this many cells (128^2) a step runs on one thread: a parallel region
+ * costs microseconds, more than a small grid's step gains. Measured on the
+ * panel case (59,540 cells): 2 threads run 1.7x faster than 1. On an
+ * oversubscribed machine (`ctest -j2` with OMP_NUM_THREADS=2) a spinning
+ * thread waiting for a descheduled partner costs a scheduler time slice per
+ * region (5x-30x slow-downs were measured with the default wait policy), so
+ * the tests run with OMP_WAIT_POLICY=passive. Results do not depend on the
+ * thread count either way. */
+enum { PARALLEL_MIN_CELLS = 16384 };
+
+/* Wall faces of the box. The ghost state of a no-slip wall is the image
+ * with both velocity components reversed, which is not a mirror image: the
+ * tangential-slope terms of the 2D flux then leave a mass flux of order
+ * tau |V| dV/dt through the wall (measured 1e-6 of the mass in 20 steps of a
+ * viscous box). The flux through a wall face is therefore corrected: its
+ * mass flux is zero, and so is its energy flux where the wall is adiabatic and
+ * does no work (slip walls, symmetry, resting adiabatic no-slip walls). */
+enum { WALL_MASS = 1, WALL_ENERGY = 2 };
+
+/* Per-thread work space (rows of length stride, cell i at offset GRID_NG). */
+typedef struct {
+    double *sx[2][4], *sy[2][4]; /* slopes along x and y, two rows */
+    double *fx[4];               /* x-face fluxes of a row, face i at i */
+    double *gy[2][4];            /* y-face fluxes below and above a row */
+    double *block;
+    int64_t fallbacks;
+    int bad;
+} FlowWork;
+
+struct GksSolver {
+    GksConfig cfg;
+    Grid grid;
+    GksParams gas;
+    double *w[4], *wn[4];
+    uint8_t *kind;
+    double *half_w[2]; /* half widths per axis, index -NG .. n+NG-1 (offset) */
+    double *row_sums;  /* 4 * ny, for deterministic totals */
+    uint8_t *wall[4];  /* per box face, per cell along it: WALL_* flags */
+    int nthreads;
+    FlowWork *work;
+    FlowGhostHook hook;
+    void *hook_ctx;
+    double *source[3]; /* per cell: x, y momentum (N/m^3) and energy (W/m^3) sources;
+                          allocated by the first gks_solver_source_cells */
+    bool has_sources;
+    const int32_t *wall_slot; /* gks_solver_set_ghost_walls */
+    const double *wall_u, *wall_v;
+    double time;
+    int64_t steps;
+    int64_t fallbacks_last, fallbacks_total;
+    size_t bytes; /* allocated by create (state + work), for the benchmark */
+};
+
+#endif

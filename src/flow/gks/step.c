@@ -1,0 +1,359 @@
+/* The GKS step of the flow operator (paper 000 Eq. 20): box ghost layers,
+ * stable time step, and per row limited slopes, face fluxes and the update.
+ *
+ * Row pipeline (one block of rows per thread, rows j0 .. j1-1):
+ *   slopes(j0-1), slopes(j0); G_bottom = y-fluxes between j0-1 and j0
+ *   for j = j0 .. j1-1:
+ *       slopes(j+1)
+ *       F = x-fluxes of row j (nx+1 faces), G_top = y-fluxes between j, j+1
+ *       Wn(row j) = W - (F_{i+1/2} - F_{i-1/2})/dx_i - (G_top - G_bottom)/dy_j
+ *       G_bottom <- G_top; slopes(j) <- slopes(j+1)
+ * Slopes of a row are those along x and along y of the cells -1 .. nx (the
+ * ghost columns feed the boundary faces and their tangential slopes). Each
+ * face flux is computed once per block (twice on a block boundary, with
+ * identical inputs and hence identical bits). All work arrays are allocated
+ * at creation for omp_get_max_threads() threads. */
+#include "flow/gks/solver.h"
+
+#include "core/kernel.h"
+#include "core/status.h"
+#include "flow/gks/solver_internal.h"
+#include "flow/gks/flux.h"
+#include "flow/gks/update_kernel.h"
+#include "flow/gks/recon.h"
+
+#include <math.h>
+#include <omp.h>
+
+void gks_solver_fill_boundaries(GksSolver *s) {
+    bc_fill(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind);
+}
+
+/* Signal-speed rate of each cell of row j into rate[0..nx) (0 in non-fluid
+ * cells); the law is a constant in each instantiation so the loop vectorises. */
+static inline __attribute__((always_inline)) void
+dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double *rate) {
+    const Grid *g = &s->grid;
+    const GksParams gas = s->gas;
+    const double gamma = gas.gamma, gm1 = gamma - 1.0, iR = 1.0 / gas.R;
+    const double idy = g->ax[1].inv_width[j];
+    const int64_t base = grid_index(g, 0, j);
+    const double *restrict r = s->w[0] + base, *restrict mx = s->w[1] + base,
+                           *restrict my = s->w[2] + base, *restrict e = s->w[3] + base;
+    const uint8_t *restrict kd = s->kind + base;
+    const double *restrict idx = g->ax[0].inv_width;
+    double *restrict out = rate;
+    NSPD_IVDEP
+    for (int i = 0; i < g->nx; i++) {
+        const double ir = 1.0 / r[i], u = mx[i] * ir, v = my[i] * ir;
+        const double p = gm1 * (e[i] - 0.5 * (mx[i] * u + my[i] * v));
+        const double c = sqrt(gamma * p * ir);
+        const double nu = visc_factor * gks_viscosity(&gas, p * ir * iR, law) * ir;
+        const double rt =
+            (fabs(u) + c) * idx[i] + (fabs(v) + c) * idy + nu * (idx[i] * idx[i] + idy * idy);
+        out[i] = kd[i] == FLOW_CELL_FLUID ? rt : 0.0;
+    }
+}
+
+/* Threads for a team: OpenMP's current maximum, at most the work spaces
+ * allocated at creation. */
+static int team_size(const GksSolver *s) {
+    const int nt = omp_get_max_threads();
+    return nt > s->nthreads ? s->nthreads : nt;
+}
+
+double gks_solver_stable_dt(const GksSolver *s) {
+    const Grid *g = &s->grid;
+    const ViscosityLaw law = s->gas.law;
+    const double visc_factor =
+        law == VISCOSITY_NONE ? 0.0 : 2.0 * fmax(4.0 / 3.0, s->gas.gamma / s->cfg.prandtl);
+    double rmax = 0.0;
+    const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
+#pragma omp parallel num_threads(team_size(s)) if (big) reduction(max : rmax)
+    {
+        /* the x-flux row of this thread's work space is free between steps */
+        double *rate = s->work[omp_get_thread_num()].fx[0];
+        double m = 0.0;
+#pragma omp for schedule(static)
+        for (int j = 0; j < g->ny; j++) {
+            switch (law) {
+            case VISCOSITY_CONSTANT:
+                dt_rates(s, j, VISCOSITY_CONSTANT, visc_factor, rate);
+                break;
+            case VISCOSITY_POWER:
+                dt_rates(s, j, VISCOSITY_POWER, visc_factor, rate);
+                break;
+            case VISCOSITY_SUTHERLAND:
+                dt_rates(s, j, VISCOSITY_SUTHERLAND, visc_factor, rate);
+                break;
+            default:
+                dt_rates(s, j, VISCOSITY_NONE, visc_factor, rate);
+            }
+            for (int i = 0; i < g->nx; i++) m = rate[i] > m ? rate[i] : m;
+        }
+        rmax = m > rmax ? m : rmax;
+    }
+    return rmax > 0.0 ? s->cfg.cfl / rmax : (double)INFINITY;
+}
+
+/* Pointers to cell (i, j) of the four fields, in the given component order. */
+static void row_ptrs(const Grid *g, double *const w[4], const int perm[4], int i, int j,
+                     const double *out[4]) {
+    const int64_t k = grid_index(g, i, j);
+    for (int v = 0; v < 4; v++) out[v] = w[perm[v]] + k;
+}
+
+/* Slopes along x and y of the cells -1 .. nx of row j into sx[v], sy[v]
+ * (cell i at offset GRID_NG + i). */
+static int64_t row_slopes(const GksSolver *s, int j, double *const sx[4], double *const sy[4]) {
+    const Grid *g = &s->grid;
+    static const int id[4] = {0, 1, 2, 3};
+    const int n = g->nx + 2, i0 = -1;
+    const double *wc[4], *wm[4], *wp[4];
+    row_ptrs(g, s->w, id, i0, j, wc);
+    row_ptrs(g, s->w, id, i0, j - 1, wm);
+    row_ptrs(g, s->w, id, i0, j + 1, wp);
+    double *ox[4], *oy[4];
+    for (int v = 0; v < 4; v++) {
+        ox[v] = sx[v] + GRID_NG + i0;
+        oy[v] = sy[v] + GRID_NG + i0;
+    }
+    const uint8_t *kc = s->kind + grid_index(g, i0, j);
+    const uint8_t *km = s->kind + grid_index(g, i0, j - 1);
+    const uint8_t *kp = s->kind + grid_index(g, i0, j + 1);
+    const GridAxis *ax = &s->grid.ax[0], *ay = &s->grid.ax[1];
+    int64_t nb = recon_slopes_x(n, s->cfg.limiter, wc, kc, ax->inv_dl + i0, ax->inv_dr + i0,
+                                s->half_w[0] + GRID_NG + i0, ox);
+    nb += recon_slopes_y(n, s->cfg.limiter, wm, wc, wp, km, kc, kp, ay->inv_dl[j], ay->inv_dr[j],
+                         0.5 * ay->width[j], oy);
+    return nb;
+}
+
+/* The solver's arrays as the ghost-face kernel reads them. */
+static GksGhostFaces ghost_faces(const GksSolver *s) {
+    return (GksGhostFaces){.kind = s->kind,
+                           .wall_slot = s->wall_slot,
+                           .wall_u = s->wall_u,
+                           .wall_v = s->wall_v,
+                           .w = {s->w[0], s->w[1], s->w[2], s->w[3]},
+                           .gamma = s->gas.gamma};
+}
+
+/* y-face fluxes between rows j and j+1 (cells 0 .. nx-1) into g[v]. */
+static void row_yflux(const GksSolver *s, int j, double *const sxl[4], double *const syl[4],
+                      double *const sxr[4], double *const syr[4], double dt,
+                      double *const gout[4]) {
+    const Grid *g = &s->grid;
+    static const int sw[4] = {0, 2, 1, 3}; /* normal frame: (rho, rho v, rho u, rho E) */
+    GksRowSide L, R;
+    row_ptrs(g, s->w, sw, 0, j, L.w);
+    row_ptrs(g, s->w, sw, 0, j + 1, R.w);
+    for (int v = 0; v < 4; v++) {
+        L.sn[v] = syl[sw[v]] + GRID_NG;
+        L.st[v] = sxl[sw[v]] + GRID_NG;
+        R.sn[v] = syr[sw[v]] + GRID_NG;
+        R.st[v] = sxr[sw[v]] + GRID_NG;
+    }
+    L.kind = s->kind + grid_index(g, 0, j);
+    R.kind = s->kind + grid_index(g, 0, j + 1);
+    double *f[4] = {gout[0], gout[2], gout[1], gout[3]};
+    const GridAxis *ay = &g->ax[1];
+    gks_flux_row_y(g->nx, &L, &R, 0.5 * ay->width[j], 0.5 * ay->width[j + 1], dt, &s->gas, f);
+    const uint8_t *wall = j == -1          ? s->wall[FLOW_FACE_YLO]
+                          : j == g->ny - 1 ? s->wall[FLOW_FACE_YHI]
+                                           : NULL;
+    if (wall)
+        for (int i = 0; i < g->nx; i++) {
+            if (wall[i] & WALL_MASS) gout[0][i] = 0.0;
+            if (wall[i] & WALL_ENERGY) gout[3][i] = 0.0;
+        }
+    if (s->wall_slot) {
+        const GksGhostFaces gf = ghost_faces(s);
+        const int64_t bl = grid_index(g, 0, j), br = grid_index(g, 0, j + 1);
+        for (int i = 0; i < g->nx; i++) gks_ghost_face(&gf, bl + i, br + i, 1, dt, gout, i);
+    }
+}
+
+/* x-face fluxes of row j: face i (i = 0 .. nx) between cells i-1 and i. */
+static void row_xflux(const GksSolver *s, int j, double *const sx[4], double *const sy[4],
+                      double dt, double *const fout[4]) {
+    const Grid *g = &s->grid;
+    static const int id[4] = {0, 1, 2, 3};
+    GksRowSide L, R;
+    row_ptrs(g, s->w, id, -1, j, L.w);
+    row_ptrs(g, s->w, id, 0, j, R.w);
+    for (int v = 0; v < 4; v++) {
+        L.sn[v] = sx[v] + GRID_NG - 1;
+        L.st[v] = sy[v] + GRID_NG - 1;
+        R.sn[v] = sx[v] + GRID_NG;
+        R.st[v] = sy[v] + GRID_NG;
+    }
+    L.kind = s->kind + grid_index(g, -1, j);
+    R.kind = s->kind + grid_index(g, 0, j);
+    const double *hw = s->half_w[0] + GRID_NG;
+    gks_flux_row_x(g->nx + 1, &L, &R, hw - 1, hw, g->ax[0].inv_dl, dt, &s->gas, fout);
+    const uint8_t wlo = s->wall[FLOW_FACE_XLO][j], whi = s->wall[FLOW_FACE_XHI][j];
+    if (wlo & WALL_MASS) fout[0][0] = 0.0;
+    if (wlo & WALL_ENERGY) fout[3][0] = 0.0;
+    if (whi & WALL_MASS) fout[0][g->nx] = 0.0;
+    if (whi & WALL_ENERGY) fout[3][g->nx] = 0.0;
+    if (s->wall_slot) {
+        const GksGhostFaces gf = ghost_faces(s);
+        const int64_t b = grid_index(g, 0, j);
+        for (int i = 0; i <= g->nx; i++) gks_ghost_face(&gf, b + i - 1, b + i, 0, dt, fout, i);
+    }
+}
+
+/* Wn of row j (gks_update_cell per cell); returns non-zero if a fluid cell
+ * is not physical. */
+static int row_update(GksSolver *s, int j, double *const fx[4], double *const gb[4],
+                      double *const gt[4]) {
+    const Grid *g = &s->grid;
+    const int64_t base = grid_index(g, 0, j);
+    const double idy = g->ax[1].inv_width[j];
+    const double *restrict idx = g->ax[0].inv_width;
+    const uint8_t *restrict kd = s->kind + base;
+    double *restrict n0 = s->wn[0] + base, *restrict n1 = s->wn[1] + base,
+                     *restrict n2 = s->wn[2] + base, *restrict n3 = s->wn[3] + base;
+    const double *restrict o0 = s->w[0] + base, *restrict o1 = s->w[1] + base,
+                           *restrict o2 = s->w[2] + base, *restrict o3 = s->w[3] + base;
+    const double *restrict f0 = fx[0], *restrict f1 = fx[1], *restrict f2 = fx[2],
+                           *restrict f3 = fx[3];
+    const double *restrict b0 = gb[0], *restrict b1 = gb[1], *restrict b2 = gb[2],
+                           *restrict b3 = gb[3];
+    const double *restrict t0 = gt[0], *restrict t1 = gt[1], *restrict t2 = gt[2],
+                           *restrict t3 = gt[3];
+    int bad = 0;
+    NSPD_IVDEP
+    for (int i = 0; i < g->nx; i++) {
+        const double w[4] = {o0[i], o1[i], o2[i], o3[i]};
+        const double fx2[2][4] = {{f0[i], f1[i], f2[i], f3[i]},
+                                  {f0[i + 1], f1[i + 1], f2[i + 1], f3[i + 1]}};
+        const double gy2[2][4] = {{b0[i], b1[i], b2[i], b3[i]}, {t0[i], t1[i], t2[i], t3[i]}};
+        double wn[4];
+        bad |= gks_update_cell(kd[i], w, fx2, gy2, idx[i], idy, wn);
+        n0[i] = wn[0];
+        n1[i] = wn[1];
+        n2[i] = wn[2];
+        n3[i] = wn[3];
+    }
+    return bad;
+}
+
+static void step_block(GksSolver *s, FlowWork *wk, int j0, int j1, double dt) {
+    const int ny = s->grid.ny;
+    int cur = 0;
+    int64_t nb = 0;
+    /* slopes of rows j0-1 and j0; fallbacks counted for owned rows only */
+    int64_t c = row_slopes(s, j0 - 1, wk->sx[1], wk->sy[1]);
+    if (j0 == 0) nb += c;
+    nb += row_slopes(s, j0, wk->sx[0], wk->sy[0]);
+    row_yflux(s, j0 - 1, wk->sx[1], wk->sy[1], wk->sx[0], wk->sy[0], dt, wk->gy[0]);
+    int gbot = 0;
+    for (int j = j0; j < j1; j++) {
+        const int nxt = 1 - cur;
+        c = row_slopes(s, j + 1, wk->sx[nxt], wk->sy[nxt]);
+        if (j + 1 < j1 || j + 1 == ny) nb += c;
+        row_xflux(s, j, wk->sx[cur], wk->sy[cur], dt, wk->fx);
+        row_yflux(s, j, wk->sx[cur], wk->sy[cur], wk->sx[nxt], wk->sy[nxt], dt, wk->gy[1 - gbot]);
+        wk->bad |= row_update(s, j, wk->fx, wk->gy[gbot], wk->gy[1 - gbot]);
+        gbot = 1 - gbot;
+        cur = nxt;
+    }
+    wk->fallbacks = nb;
+}
+
+static int report_bad_cell(const GksSolver *s) {
+    const Grid *g = &s->grid;
+    const double gm1 = s->gas.gamma - 1.0;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            const int64_t k = grid_index(g, i, j);
+            if (s->kind[k] != FLOW_CELL_FLUID) continue;
+            const double r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k], e = s->w[3][k];
+            const double p = gm1 * (e - 0.5 * (mx * mx + my * my) / r);
+            if (!(r > 0.0) || !(p > 0.0) || !(2.0 * r * e - mx * mx - my * my > 0.0))
+                return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                                 "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, "
+                                 "%d) at (%.6g, %.6g) m: rho = %.6g kg/m^3, p = %.6g Pa",
+                                 (long long)s->steps, s->time, i, j, g->ax[0].center[i],
+                                 g->ax[1].center[j], r, p);
+        }
+    return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: non-physical state at step %lld",
+                     (long long)s->steps);
+}
+
+/* dt times the volume sources into the new state of the fluid cells: each
+ * cell on its own, so any thread count gives the same bits. */
+static void add_sources(GksSolver *s, double dt) {
+    const Grid *g = &s->grid;
+    const int64_t n = (int64_t)g->nx * g->ny;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_CELLS)
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            const int64_t c = grid_index(g, i, j);
+            if (s->kind[c] != FLOW_CELL_FLUID) continue;
+            for (int k = 0; k < 3; k++) s->wn[k + 1][c] += dt * s->source[k][c];
+        }
+}
+
+int gks_solver_step(GksSolver *s, double dt) {
+    if (!(dt > 0.0) || !isfinite(dt))
+        return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: time step %g at step %lld is not positive", dt,
+                         (long long)s->steps);
+    gks_solver_fill_boundaries(s);
+    if (s->hook) s->hook(s->hook_ctx, s);
+    int nt = team_size(s);
+    const int ny = s->grid.ny;
+    nt = nt > ny ? ny : nt;
+    if ((int64_t)s->grid.nx * ny < PARALLEL_MIN_CELLS) nt = 1;
+#pragma omp parallel num_threads(nt)
+    {
+        const int t = omp_get_thread_num(), n = omp_get_num_threads();
+        FlowWork *wk = &s->work[t];
+        wk->bad = 0;
+        wk->fallbacks = 0;
+        step_block(s, wk, (int)((int64_t)ny * t / n), (int)((int64_t)ny * (t + 1) / n), dt);
+    }
+    if (s->has_sources) add_sources(s, dt);
+    int bad = 0;
+    int64_t nb = 0;
+    for (int t = 0; t < nt; t++) {
+        bad |= s->work[t].bad;
+        nb += s->work[t].fallbacks;
+    }
+    for (int v = 0; v < 4; v++) {
+        double *tmp = s->w[v];
+        s->w[v] = s->wn[v];
+        s->wn[v] = tmp;
+    }
+    /* The step wrote the interior only: after the swap the box ghost layers
+     * would hold the state of two steps back until the next step refills
+     * them, and whatever reads the flow between steps (a coupling's surface
+     * loads near a box face, probes, a checkpoint) would see that. Refilled
+     * here, W is whole after every step; the fill at the start of the next
+     * step gives the same values, so the flow's own bits do not change. */
+    gks_solver_fill_boundaries(s);
+    s->steps++;
+    s->time += dt;
+    s->fallbacks_last = nb;
+    s->fallbacks_total += nb;
+    if (bad) return report_bad_cell(s);
+    return NSPD_OK;
+}
+
+int gks_solver_advance(GksSolver *s, double t_end, int64_t max_steps) {
+    int64_t n = 0;
+    while (s->time < t_end && (max_steps <= 0 || n < max_steps)) {
+        double dt = gks_solver_stable_dt(s);
+        /* land on t_end without a sliver of a last step */
+        if (s->time + dt >= t_end)
+            dt = t_end - s->time;
+        else if (s->time + 1.5 * dt > t_end)
+            dt = 0.5 * (t_end - s->time);
+        TRY(gks_solver_step(s, dt));
+        n++;
+        if (t_end - s->time < 1e-14 * fabs(t_end)) s->time = t_end;
+    }
+    return NSPD_OK;
+}

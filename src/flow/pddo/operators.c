@@ -1,0 +1,190 @@
+/* PDDO weights (paper 002, Eqs. 10-14): one 5 x 5 solve per node.
+ *
+ * With z = A_k^-1 P(xi_j) for each family member, Eq. 12's
+ * g^op(j) = w P^T A^-1 b e_op = b_op,op w z_op (A_k is symmetric and b
+ * diagonal), so one factorisation and one solve per member give all five
+ * operators at once. Everything is computed in the scaled coordinates
+ * s = xi / delta and areas A_j / delta^2; a first derivative then divides
+ * by delta, a second by delta^2. */
+#include "flow/pddo/operators.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/spd_small.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+
+enum { TERMS = 5 }; /* xi1, xi2, xi1^2, xi2^2, xi1 xi2 (the interpolation adds 1 before them) */
+
+/* The squared-pivot floor of the unit-diagonal Cholesky (below it the
+ * matrix is numerically singular whatever the condition estimate says). */
+#define PDDO_MIN_PIVOT 1e-12
+
+/* P(s) of Eq. 12, after a leading 1 when `constant` (the interpolation's
+ * basis); the number of terms. */
+static int basis(bool constant, double s1, double s2, double p[SPD_SMALL_MAX]) {
+    const int o = constant ? 1 : 0;
+    p[0] = 1.0;
+    p[o] = s1, p[o + 1] = s2, p[o + 2] = s1 * s1, p[o + 3] = s2 * s2, p[o + 4] = s1 * s2;
+    return o + TERMS;
+}
+
+/* Eq. 12j in scaled coordinates: exp(-(2 |xi| / delta)^2). */
+static double weight(double s1, double s2) {
+    return exp(-4.0 * (s1 * s1 + s2 * s2));
+}
+
+/* 1-norm condition number of the unit-diagonal matrix D M D (D = scale),
+ * from M (full, unfactored) and its factor: ||D M D||_1 ||(D M D)^-1||_1,
+ * the inverse column by column, (D M D)^-1 e_c = D^-1 M^-1 D^-1 e_c. */
+static double condition(double M[SPD_SMALL_MAX][SPD_SMALL_MAX],
+                        double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX], const double scale[SPD_SMALL_MAX],
+                        int terms) {
+    double norm = 0.0, inv_norm = 0.0;
+    for (int c = 0; c < terms; c++) {
+        double col = 0.0, inv_col = 0.0, e[SPD_SMALL_MAX] = {0}, z[SPD_SMALL_MAX] = {0};
+        for (int r = 0; r < terms; r++) col += fabs(M[r][c]) * scale[r] * scale[c];
+        e[c] = 1.0 / scale[c];
+        spd_small_solve((const double(*)[SPD_SMALL_MAX])Lf, terms, scale, e, z);
+        for (int r = 0; r < terms; r++) inv_col += fabs(z[r] / scale[r]);
+        norm = fmax(norm, col);
+        inv_norm = fmax(inv_norm, inv_col);
+    }
+    return norm * inv_norm;
+}
+
+/* The shape matrix (Eq. 14b) of the members nbr[0 .. count) of a family
+ * around the centre (xc, yc), in scaled coordinates, with or without the
+ * constant term, factored into Lf and scale (core/spd_small.h); its
+ * condition number (the rule of operators.h), or INFINITY when the
+ * factorisation fails. */
+static double shape_factor(const int32_t *nbr, int64_t count, const double *x, const double *y,
+                           const double *area, double xc, double yc, double inv_delta,
+                           bool constant, double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX],
+                           double scale[SPD_SMALL_MAX]) {
+    double M[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}}, p[SPD_SMALL_MAX] = {0};
+    const double inv_area = inv_delta * inv_delta;
+    int terms = TERMS + (constant ? 1 : 0);
+    for (int64_t m = 0; m < count; m++) {
+        const int32_t j = nbr[m];
+        const double s1 = (x[j] - xc) * inv_delta, s2 = (y[j] - yc) * inv_delta;
+        const double wa = weight(s1, s2) * area[j] * inv_area;
+        terms = basis(constant, s1, s2, p);
+        for (int r = 0; r < terms; r++)
+            for (int c = 0; c <= r; c++) M[r][c] += wa * p[r] * p[c];
+    }
+    for (int r = 0; r < terms; r++)
+        for (int c = r + 1; c < terms; c++) M[r][c] = M[c][r];
+    memcpy(Lf, M, sizeof M);
+    if (!spd_small_factor(Lf, terms, scale, PDDO_MIN_PIVOT)) return INFINITY;
+    return condition(M, Lf, scale, terms);
+}
+
+/* Node k's weights of every operator; its condition number in *cond, or
+ * INFINITY when the factorisation fails (then no weight is written). */
+static void node_weights(PddoOps *ops, int64_t k, const double *x, const double *y,
+                         const double *area, double delta, double *cond) {
+    double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}};
+    double p[SPD_SMALL_MAX] = {0}, scale[SPD_SMALL_MAX] = {0};
+    const double inv_delta = 1.0 / delta, inv_area = inv_delta * inv_delta;
+    const int64_t lo = ops->first[k], hi = ops->first[k + 1];
+    *cond =
+        shape_factor(ops->nbr + lo, hi - lo, x, y, area, x[k], y[k], inv_delta, false, Lf, scale);
+    if (!isfinite(*cond)) return;
+    /* b = diag(1, 1, 2, 2, 1) (Eq. 14c), then back to metres */
+    const double b[TERMS] = {inv_delta, inv_delta, 2.0 * inv_area, 2.0 * inv_area, inv_area};
+    for (int64_t m = lo; m < hi; m++) {
+        const int32_t j = ops->nbr[m];
+        const double s1 = (x[j] - x[k]) * inv_delta, s2 = (y[j] - y[k]) * inv_delta;
+        const double wa = weight(s1, s2) * area[j] * inv_area;
+        double z[SPD_SMALL_MAX] = {0};
+        basis(false, s1, s2, p);
+        spd_small_solve((const double(*)[SPD_SMALL_MAX])Lf, TERMS, scale, p, z);
+        ops->w[PDDO_D_X][m] = b[0] * wa * z[0];
+        ops->w[PDDO_D_Y][m] = b[1] * wa * z[1];
+        ops->w[PDDO_LAP][m] = b[2] * wa * z[2] + b[3] * wa * z[3];
+        ops->w[PDDO_D_XY][m] = b[4] * wa * z[4];
+    }
+}
+
+int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
+                   const int64_t *first, const int32_t *nbr, double delta) {
+    pddo_ops_free(ops);
+    if (!(delta > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO operators: horizon %g m; expected > 0", delta);
+    ops->n = n, ops->first = first, ops->nbr = nbr;
+    const int64_t members = first[n];
+    for (int op = 0; op < PDDO_OPS; op++) {
+        const int status = nspd_alloc(&ops->w[op], (size_t)members, sizeof(double));
+        if (status != NSPD_OK) {
+            pddo_ops_free(ops);
+            return status;
+        }
+    }
+    double *cond;
+    int status = nspd_alloc(&cond, (size_t)n, sizeof(double));
+    if (status != NSPD_OK) {
+        pddo_ops_free(ops);
+        return status;
+    }
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) node_weights(ops, k, x, y, area, delta, &cond[k]);
+    /* the first node that breaks the rule, in node order whatever the threads */
+    for (int64_t k = 0; k < n; k++) {
+        if (!(cond[k] <= PDDO_COND_MAX)) {
+            status = NSPD_FAIL(NSPD_ERR_INPUT,
+                               "PDDO operators: node %lld at (%g, %g) m with %lld neighbours "
+                               "has a shape matrix of condition %g (limit %g); expected a "
+                               "family that spans the quadratics",
+                               (long long)k, x[k], y[k], (long long)(first[k + 1] - first[k]),
+                               cond[k], PDDO_COND_MAX);
+            break;
+        }
+        if (cond[k] > ops->cond_max) ops->cond_max = cond[k], ops->cond_node = k;
+    }
+    nspd_free(&cond);
+    if (status != NSPD_OK) pddo_ops_free(ops);
+    return status;
+}
+
+double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k) {
+    const double *w = ops->w[op], fk = f[k];
+    double sum = 0.0;
+    for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) sum += w[m] * (f[ops->nbr[m]] - fk);
+    return sum;
+}
+
+void pddo_ops_apply(const PddoOps *ops, PddoOp op, const double *f, double *out) {
+    const int64_t n = ops->n;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) out[k] = pddo_ops_at(ops, op, f, k);
+}
+
+void pddo_ops_free(PddoOps *ops) {
+    for (int op = 0; op < PDDO_OPS; op++) nspd_free(&ops->w[op]);
+    memset(ops, 0, sizeof *ops);
+}
+
+double pddo_ops_interpolation(double xc, double yc, int64_t count, const int32_t *nbr,
+                              const double *x, const double *y, const double *area, double delta,
+                              double *w) {
+    double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}};
+    double p[SPD_SMALL_MAX] = {0}, scale[SPD_SMALL_MAX] = {0};
+    const double inv_delta = 1.0 / delta, inv_area = inv_delta * inv_delta;
+    const double cond = shape_factor(nbr, count, x, y, area, xc, yc, inv_delta, true, Lf, scale);
+    if (!isfinite(cond)) return cond;
+    /* f(c) = a_0 of the weighted least-squares quadratic: w_j = wa P_j^T M^-1 e_0 */
+    for (int64_t m = 0; m < count; m++) {
+        const int32_t j = nbr[m];
+        const double s1 = (x[j] - xc) * inv_delta, s2 = (y[j] - yc) * inv_delta;
+        const double wa = weight(s1, s2) * area[j] * inv_area;
+        double z[SPD_SMALL_MAX] = {0};
+        const int terms = basis(true, s1, s2, p);
+        spd_small_solve((const double(*)[SPD_SMALL_MAX])Lf, terms, scale, p, z);
+        w[m] = wa * z[0];
+    }
+    return cond;
+}

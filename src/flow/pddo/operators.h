@@ -1,0 +1,88 @@
+/* Peridynamic differential operators in 2D, second order (paper 002,
+ * Sec. 3.1, Eqs. 10-19; notes/pddo.md 1.2).
+ *
+ * For node k with family H_k (xi = x_j - x_k, area A_j):
+ *     w(xi)   = exp(-(2 |xi| / delta)^2)                         (Eq. 12j)
+ *     P(xi)   = (xi1, xi2, xi1^2, xi2^2, xi1 xi2)^T
+ *     A_k     = sum_j w P P^T A_j                               (Eq. 14b; its printed entry
+ *                                                                (4,3) xi1 xi2^2 is a misprint
+ *                                                                for xi1^2 xi2^2)
+ *     a       = A_k^-1 b,  b = diag(1, 1, 2, 2, 1)              (Eqs. 13, 14a, 14c)
+ *     g^pq(j) = w P^T a(:, pq)                                  (Eqs. 12a-e)
+ *     f_,pq(k) = sum_j (f_j - f_k) g^pq(j) A_j                  (Eqs. 10a-e)
+ * so the row weight c_kj = g^pq(j) A_j of each operator makes it exact for
+ * every polynomial of degree <= 2 wherever A_k is well conditioned, on full
+ * and truncated (one-sided) families alike. The Laplacian (Eqs. 17, 19,
+ * 30) is the row g^20 + g^02; gradient and divergence (Eqs. 15, 16, 18) are
+ * the rows g^10, g^01; the mixed derivative g^11 is built though the flow
+ * scheme never uses it.
+ *
+ * Conditioning rule: A_k is built in coordinates scaled by delta (entries
+ * from dx^2 to dx^4 otherwise) with areas over delta^2, scaled to a unit
+ * diagonal and factorised by Cholesky (core/spd_small.h). A node is refused
+ * (NSPD_ERR_INPUT, naming it) when a squared pivot falls to 1e-12 or the
+ * 1-norm condition number of that equilibrated matrix exceeds
+ * PDDO_COND_MAX: its family cannot carry a quadratic fit (fewer than five
+ * neighbours, all on a line or a conic) and its weights would lose more
+ * than half the digits of float64. Measured largest: 71.7 on a lattice
+ * cloud with three fictitious layers (the outermost corner's quarter-disc
+ * family of 10), 106 on a lattice jittered by 0.3 dx
+ * (tests/unit/flow/pddo/test_operators.c).
+ *
+ * Plain arrays in, weights out: the operators know nothing of node kinds or
+ * boundaries. Each node's row is computed from its own family only, so the
+ * weights are the same bits at any thread count. */
+#ifndef NSPD_FLOW_PDDO_OPERATORS_H
+#define NSPD_FLOW_PDDO_OPERATORS_H
+
+#include <stdint.h>
+
+typedef enum {
+    PDDO_D_X = 0, /* d/dx   (g^10) */
+    PDDO_D_Y,     /* d/dy   (g^01) */
+    PDDO_LAP,     /* d2/dx2 + d2/dy2 (g^20 + g^02) */
+    PDDO_D_XY,    /* d2/dxdy (g^11) */
+    PDDO_OPS
+} PddoOp;
+
+#define PDDO_COND_MAX 1e8
+
+typedef struct {
+    int64_t n;
+    const int64_t *first; /* borrowed: the families the weights belong to (must outlive) */
+    const int32_t *nbr;
+    double *w[PDDO_OPS]; /* per family member k: c_kj in 1/m (D_X, D_Y) or 1/m^2 */
+    double cond_max;     /* largest condition number met (the rule above) */
+    int64_t cond_node;   /* where */
+} PddoOps;
+
+/* Builds the weights of the n nodes at (x, y) with areas `area` (only their
+ * ratios matter) and families first/nbr (each node's neighbours, itself
+ * excluded), horizon delta (m). ops is zeroed or freed before. Fails with
+ * NSPD_ERR_INPUT for a node breaking the conditioning rule, NSPD_ERR_NOMEM. */
+int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
+                   const int64_t *first, const int32_t *nbr, double delta);
+
+/* out[k] = sum_j c_kj (f_j - f_k) for operator op at every node (Eq. 10);
+ * parallel, the same bits at any thread count. out must not alias f. */
+void pddo_ops_apply(const PddoOps *ops, PddoOp op, const double *f, double *out);
+
+/* The same at one node. */
+double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k);
+
+void pddo_ops_free(PddoOps *ops);
+
+/* Interpolation at a point (xc, yc) that need not be a node (the flow's
+ * probes): moving least squares with the operators' weight w(xi) and
+ * moments, the basis (1, P(xi)) with xi = x_j - (xc, yc), so f(c) =
+ * sum_j w_j f_j is the weighted least-squares quadratic's value at c and
+ * exact for every polynomial of degree <= 2 (but not interpolating at the
+ * nodes). Writes the `count` weights of the nodes nbr[] into w and
+ * returns the condition number of the 6 x 6 shape matrix (the rule
+ * above), INFINITY when it is singular (then w is not written). Pure:
+ * thread safe, allocates nothing. */
+double pddo_ops_interpolation(double xc, double yc, int64_t count, const int32_t *nbr,
+                              const double *x, const double *y, const double *area, double delta,
+                              double *w);
+
+#endif

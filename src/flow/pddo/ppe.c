@@ -1,0 +1,230 @@
+/* K_L of paper 002 (Eqs. 31-34): assembly, UMFPACK factorisation, solve.
+ *
+ * The matrix is assembled in compressed rows, each row's columns ascending
+ * (the families are sorted; the diagonal is slotted in). Compressed rows of
+ * K_L are compressed columns of K_L^T, so UMFPACK factorises K_L^T and the
+ * solve asks for the transposed system (UMFPACK_At), which is K_L p = R;
+ * the singular case's left null vector is the plain system with the same
+ * factor (UMFPACK_A). No copy, no transposition.
+ *
+ * Left null vector. With K' = K_L with the pinned row k0 replaced by
+ * e_k0^T, and y the left null vector scaled to y_k0 = 1,
+ *     K'^T y = sum_(i != k0) y_i K_i^T + e_k0 = -K_k0^T + e_k0,
+ * since sum_i y_i K_i = 0. K' is regular, so one solve with that
+ * right-hand side gives y exactly (to the factor's round-off). */
+#include "flow/pddo/ppe.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+#include <umfpack.h>
+
+static int row_kind(const PddoCloud *c, int64_t k) {
+    if (c->kind[k] == PDDO_NODE_GHOST || c->kind[k] == PDDO_NODE_BODY) return PDDO_ROW_IMAGE;
+    if (c->kind[k] == PDDO_NODE_SIDE) {
+        for (int s = 0; s < PDDO_SIDES; s++)
+            if (((unsigned)c->sides[k] >> s & 1u) && c->side[s] == PDDO_SIDE_OUTLET)
+                return PDDO_ROW_DIRICHLET;
+    }
+    return PDDO_ROW_PPE;
+}
+
+/* The fluid node nearest the middle of the rectangle: the pinned level of
+ * the singular case (any PPE row would do once R is consistent; the middle
+ * keeps it away from the corners' singular pressures). */
+static int64_t middle_node(const PddoCloud *c) {
+    const int64_t o = pddo_cloud_node(c, 0, 0), t = pddo_cloud_node(c, c->nx, c->ny);
+    const double mx = 0.5 * (c->x[o] + c->x[t]), my = 0.5 * (c->y[o] + c->y[t]);
+    int64_t best = -1;
+    double best_d = INFINITY;
+    for (int64_t k = 0; k < c->n; k++) {
+        if (c->kind[k] != PDDO_NODE_FLUID) continue;
+        const double d = hypot(c->x[k] - mx, c->y[k] - my);
+        if (d < best_d) best_d = d, best = k;
+    }
+    return best;
+}
+
+/* Row k of K_L into (col, val), columns ascending; returns its length. */
+static int32_t assemble_row(const PddoCloud *c, const PddoOps *ops, int row, int64_t k,
+                            int32_t *col, double *val) {
+    int32_t len = 0;
+    if (row == PDDO_ROW_DIRICHLET) {
+        col[0] = (int32_t)k, val[0] = 1.0;
+        return 1;
+    }
+    if (row == PDDO_ROW_IMAGE) {
+        const int32_t g = (int32_t)k, im = c->image[k];
+        const double s = -(double)c->image_sign[k];
+        if (g < im)
+            col[0] = g, val[0] = 1.0, col[1] = im, val[1] = s;
+        else
+            col[0] = im, val[0] = s, col[1] = g, val[1] = 1.0;
+        return 2;
+    }
+    const double *w = ops->w[PDDO_LAP];
+    double diag = 0.0;
+    for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) diag -= w[m];
+    bool placed = false;
+    for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) {
+        if (!placed && ops->nbr[m] > k) col[len] = (int32_t)k, val[len++] = diag, placed = true;
+        col[len] = ops->nbr[m], val[len++] = w[m];
+    }
+    if (!placed) col[len] = (int32_t)k, val[len++] = diag;
+    return len;
+}
+
+static int umf_fail(int status, const char *what) {
+    return NSPD_FAIL(status == UMFPACK_ERROR_out_of_memory ? NSPD_ERR_NOMEM : NSPD_ERR_NUMERIC,
+                     "PDDO pressure matrix: UMFPACK %s returned %d", what, status);
+}
+
+static int factorise(PddoPpe *p) {
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_di_defaults(control);
+    /* AMD on K_L + K_L^T, then METIS, the sparser kept: at the paper's
+     * cylinder (122,833 nodes) the factors hold 66.7e6 entries (541 MB)
+     * against AMD's 82.8e6 (671 MB), and each back-substitution reads
+     * them all (docs/PERFORMANCE.md) */
+    control[UMFPACK_ORDERING] = UMFPACK_ORDERING_CHOLMOD;
+    void *symbolic = NULL;
+    const int n = (int)p->n;
+    int s = umfpack_di_symbolic(n, n, p->ap, p->ai, p->ax, &symbolic, control, info);
+    if (s != UMFPACK_OK) return umf_fail(s, "symbolic analysis");
+    s = umfpack_di_numeric(p->ap, p->ai, p->ax, symbolic, &p->numeric, control, info);
+    umfpack_di_free_symbolic(&symbolic);
+    if (s == UMFPACK_WARNING_singular_matrix)
+        return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                         "PDDO pressure matrix: singular (%s); expected a regular matrix with "
+                         "the level %s",
+                         "a zero pivot", p->pinned >= 0 ? "pinned" : "fixed by an outlet");
+    if (s != UMFPACK_OK) return umf_fail(s, "numeric factorisation");
+    p->factor_nnz = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
+    p->factor_bytes = info[UMFPACK_NUMERIC_SIZE] * info[UMFPACK_SIZE_OF_UNIT];
+    p->rcond = info[UMFPACK_RCOND];
+    return NSPD_OK;
+}
+
+/* x = M^-1 b (sys UMFPACK_At: K_L, as assembled by rows) or M^-T b. */
+static int umf_solve(const PddoPpe *p, int sys, double *x, const double *b) {
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_di_defaults(control);
+    /* no iterative refinement: it costs a solve each, and the direct
+     * solution's residual is 9e-15 to 5e-13 of max |R| for 529 to 5,041
+     * nodes already (test_pddo_ppe.c); it grows with the condition number,
+     * so the largest clouds should measure it again */
+    control[UMFPACK_IRSTEP] = 0;
+    const int s = umfpack_di_solve(sys, p->ap, p->ai, p->ax, x, b, p->numeric, control, info);
+    return s == UMFPACK_OK ? NSPD_OK : umf_fail(s, "solve");
+}
+
+static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
+    const int64_t n = c->n;
+    p->n = n;
+    p->pinned = -1;
+    TRY(nspd_alloc(&p->row, (size_t)n, 1));
+    TRY(nspd_alloc(&p->work, (size_t)n, sizeof(double)));
+    TRY(nspd_alloc(&p->ap, (size_t)n + 1, sizeof(int32_t)));
+    bool outlet = false;
+    int64_t nnz = 0;
+    for (int64_t k = 0; k < n; k++) {
+        p->row[k] = (uint8_t)row_kind(c, k);
+        outlet = outlet || p->row[k] == PDDO_ROW_DIRICHLET;
+        nnz += p->row[k] == PDDO_ROW_PPE ? ops->first[k + 1] - ops->first[k] + 1
+                                         : (p->row[k] == PDDO_ROW_IMAGE ? 2 : 1);
+    }
+    if (nnz > INT32_MAX || n > INT32_MAX)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "PDDO pressure matrix: %lld nonzeros exceed 32-bit indices; expected "
+                         "fewer nodes",
+                         (long long)nnz);
+    p->nnz = nnz;
+    TRY(nspd_alloc(&p->ai, (size_t)nnz, sizeof(int32_t)));
+    TRY(nspd_alloc(&p->ax, (size_t)nnz, sizeof(double)));
+    for (int64_t k = 0; k < n; k++) {
+        const int32_t at = p->ap[k];
+        p->ap[k + 1] = at + assemble_row(c, ops, p->row[k], k, p->ai + at, p->ax + at);
+    }
+    if (!outlet) {
+        p->pinned = middle_node(c);
+        if (p->pinned < 0)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO pressure matrix: no fluid node to pin");
+        const int64_t k0 = p->pinned;
+        const int32_t lo = p->ap[k0], len = p->ap[k0 + 1] - lo;
+        TRY(nspd_alloc(&p->pin_col, (size_t)len, sizeof(int32_t)));
+        TRY(nspd_alloc(&p->pin_val, (size_t)len, sizeof(double)));
+        p->pin_len = len;
+        memcpy(p->pin_col, p->ai + lo, (size_t)len * sizeof(int32_t));
+        memcpy(p->pin_val, p->ax + lo, (size_t)len * sizeof(double));
+        for (int32_t m = lo; m < lo + len; m++) p->ax[m] = p->ai[m] == k0 ? 1.0 : 0.0;
+    }
+    TRY(factorise(p));
+    if (p->pinned >= 0) {
+        const int64_t k0 = p->pinned;
+        double *b = p->work;
+        memset(b, 0, (size_t)n * sizeof(double));
+        for (int32_t m = 0; m < p->pin_len; m++) b[p->pin_col[m]] = -p->pin_val[m];
+        b[k0] += 1.0;
+        TRY(nspd_alloc(&p->null_left, (size_t)n, sizeof(double)));
+        TRY(umf_solve(p, UMFPACK_A, p->null_left, b));
+        p->null_ppe = 0.0;
+        for (int64_t k = 0; k < n; k++)
+            if (p->row[k] == PDDO_ROW_PPE) p->null_ppe += p->null_left[k];
+    }
+    return NSPD_OK;
+}
+
+int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops) {
+    pddo_ppe_free(ppe);
+    const int status = build(ppe, cloud, ops);
+    if (status != NSPD_OK) pddo_ppe_free(ppe);
+    return status;
+}
+
+int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p) {
+    const int64_t n = ppe->n;
+    double *b = ppe->work;
+    memcpy(b, rhs, (size_t)n * sizeof(double));
+    ppe->shift = 0.0;
+    if (ppe->pinned >= 0) {
+        /* serial sums: the same order, hence bits, at any thread count */
+        double yr = 0.0;
+        for (int64_t k = 0; k < n; k++) yr += ppe->null_left[k] * b[k];
+        ppe->shift = yr / ppe->null_ppe;
+        for (int64_t k = 0; k < n; k++)
+            if (ppe->row[k] == PDDO_ROW_PPE) b[k] -= ppe->shift;
+        b[ppe->pinned] = 0.0;
+    }
+    return umf_solve(ppe, UMFPACK_At, p, b);
+}
+
+void pddo_ppe_apply(const PddoPpe *ppe, const double *p, double *out) {
+    const int64_t n = ppe->n;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < n; k++) {
+        const bool pin = k == ppe->pinned;
+        const int32_t *col = pin ? ppe->pin_col : ppe->ai + ppe->ap[k];
+        const double *val = pin ? ppe->pin_val : ppe->ax + ppe->ap[k];
+        const int32_t len = pin ? ppe->pin_len : ppe->ap[k + 1] - ppe->ap[k];
+        double sum = 0.0;
+        for (int32_t m = 0; m < len; m++) sum += val[m] * p[col[m]];
+        out[k] = sum;
+    }
+}
+
+void pddo_ppe_free(PddoPpe *ppe) {
+    if (ppe->numeric) umfpack_di_free_numeric(&ppe->numeric);
+    nspd_free(&ppe->row);
+    nspd_free(&ppe->ap);
+    nspd_free(&ppe->ai);
+    nspd_free(&ppe->ax);
+    nspd_free(&ppe->pin_col);
+    nspd_free(&ppe->pin_val);
+    nspd_free(&ppe->null_left);
+    nspd_free(&ppe->work);
+    memset(ppe, 0, sizeof *ppe);
+}

@@ -1,0 +1,82 @@
+/* A bond-based peridynamic body: material points and their bonds.
+ *
+ * Points (struct of arrays, one array per component, 64-byte aligned):
+ *   x  reference position; u displacement; v velocity (all m, m/s)
+ *   force     PD internal force density sum_j f_ij V_j (N/m^3), Eq. 28
+ *   external  force density from outside (body force, region loads, the
+ *             fluid's surface traction), N/m^3; sum of the two drives Eq. 30
+ *   volume    point volume (m^3; 2D: dx^2 * thickness)
+ *   region    index of the boundary region holding the point, or -1
+ * Points are ordered along a Morton (Z-order) curve of their lattice indices
+ * so that a point's neighbours sit close to it in memory.
+ *
+ * Bonds are compressed rows: the bonds of point i are
+ * bond_nbr[bond_first[i] .. bond_first[i+1]). Each point owns the full list
+ * of its bonds, so bond i-j is stored (and evaluated) once from each end:
+ * the force loop writes only to point i and needs no atomics, and results do
+ * not depend on the thread count. Per bond, 8 bytes:
+ *   bond_nbr   int32 neighbour index
+ *   bond_coef  float32 dimensionless stiffness k_ij / coef_scale, where
+ *              k_ij = c beta_ij nu_ij V_j / |xi_ij| (micromodulus, surface and
+ *              volume corrections, neighbour volume, reference length), so the
+ *              pair force density is k_ij (|y| - |xi|) y/|y| (Eq. 29).
+ *              The sign carries the failure state: > 0 intact and breakable,
+ *              < 0 intact and unbreakable (outside the failure region, or
+ *              failure off), 0 broken. Both ends of a bond break together
+ *              because both evaluate bitwise the same stretch.
+ * The reference bond vector is recomputed from x (cheaper than storing it:
+ * the gather is in cache after Morton ordering). */
+#ifndef NSPD_SOLID_BOND_BODY_H
+#define NSPD_SOLID_BOND_BODY_H
+
+#include "solid/pd/config.h"
+#include "solid/pd/regions.h"
+
+#include <stdint.h>
+
+typedef struct {
+    PdConfig cfg; /* owned copy of the configuration (shapes included) */
+    int dim;
+    int64_t n;
+    double *x[3], *u[3], *v[3];
+    double *force[3]; /* PD internal force density, N/m^3 */
+    /* External force density, N/m^3: the entry point for loads from outside
+     * the solid (the fluid's surface traction: traction x segment length x
+     * thickness / point volume on surface points). Whoever sets it owns it;
+     * it stays until changed, and pd_step adds the case's body force and
+     * region force densities on top. */
+    double *external[3];
+    double *volume;
+    int16_t *region;          /* boundary region index or -1 */
+    PdBoundaryTable boundary; /* cfg.boundaries for the integrator */
+    int32_t *lattice[3];      /* integer lattice coordinates (for images and symmetry checks) */
+
+    int64_t bond_count;
+    int64_t *bond_first; /* n + 1 */
+    int32_t *bond_nbr;
+    float *bond_coef;
+    double coef_scale;           /* k_ij = coef_scale * |bond_coef| */
+    double stretch_limit2;       /* (1 + s_c)^2: a bond breaks when |y|^2 > this |xi|^2 */
+    double micromodulus;         /* c of Eq. 15 */
+    double horizon;              /* delta, m */
+    double spacing;              /* dx, m */
+    double *initial_bond_volume; /* sum_j nu_ij V_j over all initial bonds (damage denominator) */
+
+    int64_t step;
+    double time;
+    bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
+} BondBody;
+
+/* Builds the body: lattice points inside the geometry, Morton ordering,
+ * bonds within the horizon, volume and surface corrections, pre-cracks,
+ * boundary regions and initial velocities. Takes ownership of *cfg (its
+ * shapes and arrays) and zeroes it. NSPD_ERR_INPUT if the geometry holds
+ * no point; NSPD_ERR_NOMEM. */
+int bond_body_create(BondBody *body, PdConfig *cfg);
+void bond_body_destroy(BondBody *body);
+
+/* Bytes of bond storage per bond (neighbour index + coefficient), and of
+ * row offsets per point. */
+enum { PD_BYTES_PER_BOND = (int)(sizeof(int32_t) + sizeof(float)) };
+
+#endif

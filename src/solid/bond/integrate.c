@@ -1,0 +1,76 @@
+#include "solid/bond/integrate.h"
+#include "core/parallel.h"
+
+#include "core/status.h"
+#include "solid/bond/force.h"
+
+#include <math.h>
+#include <stdbool.h>
+
+/* The body's arrays as the shared kick and drift read them. */
+static PdMotion motion_of(BondBody *body) {
+    PdMotion m = {.dim = body->dim,
+                  .n = body->n,
+                  .density = body->cfg.density,
+                  .body_force = body->cfg.body_force,
+                  .region = body->region,
+                  .boundary = &body->boundary};
+    for (int d = 0; d < 3; d++) {
+        m.u[d] = body->u[d];
+        m.v[d] = body->v[d];
+        m.force[d] = body->force[d];
+        m.external[d] = body->external[d];
+    }
+    return m;
+}
+
+static int report_non_finite(const BondBody *body) {
+    for (int64_t i = 0; i < body->n; i++)
+        for (int d = 0; d < body->dim; d++)
+            if (!isfinite(body->u[d][i]) || !isfinite(body->v[d][i]))
+                return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                                 "solid point %lld at (%g, %g, %g) m has a non-finite "
+                                 "displacement or velocity at step %lld (t = %g s); the time "
+                                 "step is probably above the stable limit",
+                                 (long long)i, body->x[0][i], body->x[1][i], body->x[2][i],
+                                 (long long)body->step + 1, body->time);
+    return NSPD_FAIL(NSPD_ERR_INTERNAL, "non-finite value reported but not found");
+}
+
+int pd_step(BondBody *body, double dt) {
+    bool bad;
+    const PdMotion m = motion_of(body);
+    if (body->cfg.integrator == PD_VELOCITY_VERLET) {
+        if (!body->force_valid) pd_force_compute(body);
+        pd_kick(&m, 0.5 * dt);
+        bad = pd_drift(&m, dt);
+        pd_force_compute(body);
+        pd_kick(&m, 0.5 * dt);
+        body->force_valid = true;
+    } else {
+        pd_force_compute(body);
+        pd_kick(&m, dt);
+        bad = pd_drift(&m, dt);
+        body->force_valid = false;
+    }
+    if (bad) return report_non_finite(body);
+    body->step++;
+    body->time += dt;
+    return NSPD_OK;
+}
+
+double pd_stable_time_step(const BondBody *body) {
+    double min_dt2 = INFINITY;
+#pragma omp parallel for schedule(static) reduction(min                                            \
+                                                    : min_dt2) if (body->n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < body->n; i++) {
+        double sum = 0.0;
+        for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++)
+            sum += fabs((double)body->bond_coef[b]);
+        if (sum > 0.0) {
+            double dt2 = 2.0 * body->cfg.density / (body->coef_scale * sum);
+            if (dt2 < min_dt2) min_dt2 = dt2;
+        }
+    }
+    return sqrt(min_dt2);
+}

@@ -1,0 +1,244 @@
+#include "solid/bond/model.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "solid/bond/body.h"
+#include "solid/pd/lattice.h"
+#include "solid/bond/diagnostics.h"
+#include "solid/bond/integrate.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The model: the body and what `nspd info` reports of its start. */
+typedef struct {
+    BondBody body;
+    double initial_stable_dt; /* s, at creation */
+} BondSolid;
+
+static int bond_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
+    BondSolid *bs;
+    TRY(nspd_alloc(&bs, 1, sizeof *bs));
+    BondBody *b = &bs->body;
+    /* the body takes its own copy of the configuration */
+    PdConfig pd = *(PdConfig *)cfg->model;
+    nspd_free(&cfg->model); /* taken */
+    int status = bond_body_create(b, &pd);
+    if (status != NSPD_OK) {
+        pd_config_free(&pd);
+        nspd_free(&bs);
+        return status;
+    }
+    bs->initial_stable_dt = pd_stable_time_step(b);
+    bond_solid_points_of(b, pts);
+    *impl = bs;
+    return NSPD_OK;
+}
+
+void bond_solid_points_of(BondBody *b, PdPoints *pts) {
+    *pts = (PdPoints){.dim = b->dim,
+                      .n = b->n,
+                      .spacing = b->spacing,
+                      .thickness = b->dim == 2 ? b->cfg.thickness : 1.0,
+                      .volume = b->volume,
+                      .family_first = b->bond_first,
+                      .family_nbr = b->bond_nbr};
+    for (int d = 0; d < 3; d++) {
+        pts->x[d] = b->x[d];
+        pts->u[d] = b->u[d];
+        pts->v[d] = b->v[d];
+        pts->external[d] = b->external[d];
+        pts->lattice[d] = b->lattice[d];
+    }
+}
+
+/* Points: the lattice sites inside the geometry (sampled); bonds: the
+ * family of an interior point, |xi| <= delta on the lattice, for every
+ * point (an upper bound: surface points have fewer). Bytes: what
+ * body.c allocates per point (158: positions, displacements,
+ * velocities, forces, external forces, lattice indices, volume, region,
+ * damage denominator, row offsets) and per bond (8), plus the building's
+ * peak (a byte per lattice site and 16 per point while ordering them, or
+ * 24 per point of surface factors). */
+static SolidEstimate bond_estimate(const SolidConfig *sc) {
+    const PdConfig *cfg = sc->model;
+    SolidEstimate e = {0, 0, 0};
+    double sites, fraction;
+    if (!lattice_estimate(&cfg->geometry, cfg->dim, cfg->spacing, &sites, &fraction)) return e;
+    e.points = ceil(sites * fraction);
+    const double m = cfg->horizon_factor;
+    const int reach = (int)floor(m);
+    double family = 0;
+    for (int k = cfg->dim == 3 ? -reach : 0; k <= (cfg->dim == 3 ? reach : 0); k++)
+        for (int j = -reach; j <= reach; j++)
+            for (int i = -reach; i <= reach; i++)
+                if ((i || j || k) && (double)(i * i + j * j + k * k) <= m * m) family += 1;
+    e.bonds = e.points * family;
+    const double per_point = 158.0, build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
+    e.bytes = per_point * e.points + (double)PD_BYTES_PER_BOND * e.bonds + build;
+    return e;
+}
+
+static void bond_destroy(void *impl) {
+    BondSolid *bs = impl;
+    bond_body_destroy(&bs->body);
+    nspd_free(&bs);
+}
+
+static double bond_stable_dt(const void *impl) {
+    return pd_stable_time_step(&((const BondSolid *)impl)->body);
+}
+
+static int bond_step(void *impl, double dt) {
+    return pd_step(&((BondSolid *)impl)->body, dt);
+}
+
+static double bond_time(const void *impl) {
+    return ((const BondSolid *)impl)->body.time;
+}
+
+static void bond_set_time(void *impl, double t) {
+    ((BondSolid *)impl)->body.time = t;
+}
+
+static void bond_damage(const void *impl, double *out) {
+    pd_damage(&((const BondSolid *)impl)->body, out);
+}
+
+static double bond_modulus(const void *impl, int64_t i) {
+    (void)i; /* one material per body */
+    return ((const BondSolid *)impl)->body.cfg.youngs_modulus;
+}
+
+static bool bond_attached(const void *impl, int64_t i) {
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++)
+        if (b->bond_coef[k] != 0.0f) return true; /* 0: broken (body.h) */
+    return false;
+}
+
+/* The state a step changes: displacements, velocities, forces (velocity
+ * Verlet reuses the last one), the external loads a coupling holds over
+ * the sub-steps, the bonds (0: broken), the clock and step count. */
+static int bond_checkpoint(void *impl, Checkpoint *ck) {
+    BondBody *b = &((BondSolid *)impl)->body;
+    const size_t n = (size_t)b->n * sizeof(double);
+    static const char *const NAMES[4][3] = {{"bond.u0", "bond.u1", "bond.u2"},
+                                            {"bond.v0", "bond.v1", "bond.v2"},
+                                            {"bond.force0", "bond.force1", "bond.force2"},
+                                            {"bond.external0", "bond.external1", "bond.external2"}};
+    for (int d = 0; d < b->dim && d < 3; d++) { /* dim is 2 or 3 */
+        TRY(checkpoint_io(ck, NAMES[0][d], b->u[d], n));
+        TRY(checkpoint_io(ck, NAMES[1][d], b->v[d], n));
+        TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
+        TRY(checkpoint_io(ck, NAMES[3][d], b->external[d], n));
+    }
+    TRY(checkpoint_io(ck, "bond.coef", b->bond_coef, (size_t)b->bond_count * sizeof(float)));
+    TRY(checkpoint_io_int64(ck, "bond.step", &b->step));
+    TRY(checkpoint_io_double(ck, "bond.time", &b->time));
+    int valid = b->force_valid;
+    TRY(checkpoint_io_int(ck, "bond.force_valid", &valid));
+    b->force_valid = valid != 0;
+    return NSPD_OK;
+}
+
+static void bond_history(const void *impl, Report *row) {
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
+    report_real(row, "kinetic_energy_J", ke);
+    report_real(row, "elastic_energy_J", we);
+    report_real(row, "total_energy_J", ke + we);
+    report_int(row, "broken_bonds", pd_broken_bonds(b));
+}
+
+static void bond_summary(const void *impl, const RunStats *run, Report *out) {
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    report_int(out, "points", b->n);
+    report_int(out, "bonds", b->bond_count / 2);
+    const int64_t broken = pd_broken_bonds(b);
+    report_int(out, "broken_bonds", broken);
+    report_real(out, "broken_bond_fraction",
+                b->bond_count ? 2.0 * (double)broken / (double)b->bond_count : 0.0);
+    double max_damage = 0.0, *damage;
+    if (nspd_alloc(&damage, (size_t)b->n, sizeof(double)) == NSPD_OK) { /* once, at the end */
+        pd_damage(b, damage);
+        for (int64_t i = 0; i < b->n; i++) max_damage = fmax(max_damage, damage[i]);
+        nspd_free(&damage);
+    } else {
+        max_damage = (double)NAN;
+    }
+    report_real(out, "max_damage", max_damage);
+    report_real(out, "kinetic_energy_J", pd_kinetic_energy(b));
+    report_real(out, "elastic_energy_J", pd_elastic_energy(b));
+    report_real(out, "bond_updates_per_s",
+                run->wall_s > 0 ? (double)b->bond_count * (double)run->steps / run->wall_s : 0.0);
+}
+
+static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    int len = 0;
+#define APPEND(...)                                                                                \
+    len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
+    APPEND("model                %s, %dD\n", PD_MODEL_NAMES[b->cfg.model], b->dim);
+    APPEND("points               %lld\n", (long long)b->n);
+    APPEND("bonds                %lld (%.1f per point; %lld broken at start)\n",
+           (long long)b->bond_count / 2, (double)b->bond_count / (double)b->n,
+           (long long)pd_broken_bonds(b));
+    APPEND("spacing              %.6g m\n", b->spacing);
+    APPEND("horizon              %.6g m (%.4g x spacing)\n", b->horizon, b->cfg.horizon_factor);
+    APPEND("micromodulus         %.6g\n", b->micromodulus);
+    if (b->cfg.failure)
+        APPEND("critical stretch     %.6g\n", b->cfg.critical_stretch);
+    else
+        APPEND("critical stretch     (failure off)\n");
+    APPEND("bar wave speed       %.6g m/s (Rayleigh %.6g m/s)\n", pd_bar_wave_speed(&b->cfg),
+           pd_rayleigh_wave_speed(&b->cfg));
+    APPEND("stable time step     %.6g s\n", ((const BondSolid *)impl)->initial_stable_dt);
+    APPEND("memory               %.1f MB in solver arrays (%d bytes per bond + %.0f per point)\n",
+           (double)memory / 1e6, PD_BYTES_PER_BOND,
+           ((double)memory - (double)b->bond_count * PD_BYTES_PER_BOND) / (double)b->n);
+#undef APPEND
+}
+
+static void bond_brief(const void *impl, char *buf, size_t size) {
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n, (long long)b->bond_count / 2);
+}
+
+static void bond_config_free(void *model) {
+    pd_config_free(model);
+}
+
+static int bond_config_dim(const void *model) {
+    return ((const PdConfig *)model)->dim;
+}
+
+const SolidOps BOND_SOLID_OPS = {
+    .name = "bond",
+    .config_free = bond_config_free,
+    .config_dim = bond_config_dim,
+    .estimate = bond_estimate,
+    .create = bond_create,
+    .destroy = bond_destroy,
+    .stable_dt = bond_stable_dt,
+    .step = bond_step,
+    .time = bond_time,
+    .set_time = bond_set_time,
+    .damage = bond_damage,
+    .modulus = bond_modulus,
+    .attached = bond_attached,
+    .history = bond_history,
+    .summary = bond_summary,
+    .info = bond_info,
+    .brief = bond_brief,
+    .fields = NULL,
+    .checkpoint = bond_checkpoint,
+    .bench_name = "pd",
+    .bench = bond_bench,
+};
+
+BondBody *bond_solid_body(Solid *s) {
+    BondSolid *bs = solid_impl(s, SOLID_BOND);
+    return bs ? &bs->body : NULL;
+}

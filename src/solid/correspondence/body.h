@@ -1,0 +1,140 @@
+/* A correspondence-PD body (paper 003 Sec. 2; notes 1c): the material
+ * points of a bond-based body (same lattice, regions and integrator), the
+ * bond-associated force of solid/correspondence/bac_force.h with RK gradient weights of
+ * quadratic consistency (solid/correspondence/rk_gradient.h), a hypoelastic J2 material
+ * per bond (solid/correspondence/j2_kernel.h), and bond damage (ductile or brittle).
+ *
+ * Points (struct of arrays): x, u, v, force (internal + pressure loads),
+ * external (couplings), u_prev (u at the start of the step, for the
+ * stress increment), volume, region, the pressure load's face normals.
+ * Bonds (compressed rows, each pair stored from both ends, bitwise the same
+ * state at both ends, so no atomics and no cross-writes): neighbour,
+ * reverse bond, kernel omega, RK weights phi (dim), unrotated stress sigma
+ * (4), equivalent plastic strain, damage, 1 - damage, the last maximum
+ * principal stress and an inversion flag: 117 bytes per bond in 2D.
+ *
+ * Damage (notes 1c.8) never decreases; a bond whose damage grew rescales
+ * its kernel (omega (1 - d)) and its points' RK weights are recomputed. A
+ * bond whose F_b inverts (det <= 0) breaks. A point whose moment matrix
+ * becomes singular (too few or collinear intact neighbours for a quadratic
+ * fit) is debris: its bonds break (from both ends, each end deciding from
+ * the flags of both), it moves on with its momentum and no stress, and
+ * counts in the mass loss. Nothing divides by a vanished family (w0 = 0:
+ * no force), so damage never makes a NaN.
+ *
+ * cfg.force = CPD_FORCE_CLASSIC swaps the force for the classic one of
+ * solid/correspondence/classic_force.h (shape tensor K_i, the Silling 2017 penalty of
+ * weight cfg.stabilisation) with the same J2 material per POINT: sigma,
+ * eqps, principal and inverted are then arrays of n, phi is not allocated,
+ * ok[i] says K_i is invertible (with the damaged kernel), and a bond's
+ * damage follows the larger of its two points' plastic strains (ductile)
+ * or principal stresses (brittle), or is 1 if either point inverted: the
+ * same bits from both ends. Everything else (lattice, families, kernel,
+ * damage bookkeeping, debris, integrator, stable step) is shared. */
+#ifndef NSPD_SOLID_CORRESPONDENCE_BODY_H
+#define NSPD_SOLID_CORRESPONDENCE_BODY_H
+
+#include "solid/correspondence/config.h"
+#include "solid/correspondence/j2_kernel.h"
+#include "solid/pd/regions.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+
+/* Per bond in 2D; the classic force (notes 1c.3, solid/correspondence/classic_force.h)
+ * keeps no RK weights and its material state per point instead (sigma,
+ * eqps, principal and inverted are then arrays of n, not of bond_count):
+ * 52 bytes per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16)
+ * and CPD_CLASSIC_BYTES_PER_POINT more per point (sigma 32, eqps and
+ * principal 8 each, inverted 1). */
+enum { CPD_BYTES_PER_BOND = 117, CPD_CLASSIC_BYTES_PER_BOND = 52 };
+enum { CPD_CLASSIC_BYTES_PER_POINT = 49 };
+
+typedef struct {
+    CpdConfig cfg; /* owned copy */
+    int dim;
+    int64_t n;
+    double spacing, delta;
+    double *x[3], *u[3], *v[3], *force[3], *external[3], *u_prev[3];
+    double *volume;
+    int16_t *region;
+    PdBoundaryTable boundary;
+    int32_t *lattice[3];
+    int16_t *load;       /* pressure load index of the point, or -1 */
+    double *load_dir[3]; /* the sum of its cell faces' inward normals on the pressurised side */
+
+    int64_t bond_count;
+    int64_t *first;
+    int32_t *nbr;
+    int64_t *reverse;
+    double *omega, *phi; /* phi: NULL for the classic force */
+    uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
+    uint8_t *redo;       /* per point: damage grew in its family this step */
+    double *sigma, *eqps, *damage, *scale, *principal; /* classic: sigma, eqps, principal */
+    uint8_t *inverted;
+    double *strain_zz; /* plane stress: the thickness's log strain, per bond (per point
+                          for classic); NULL in plane strain */                                 /* and inverted per point */
+    double *work_point, *work_bond;
+
+    J2Material material;
+    double lambda, mu; /* Lame constants, Pa */
+    int64_t step;
+    double time;
+    bool force_valid;
+    double stable_dt;     /* s, by power iteration at creation (step.c) */
+    double stable_now;    /* s, the same at the current damage (re-estimated as it grows) */
+    double *mode[3];      /* the highest mode's last iterate (warm start) */
+    int64_t estimated_at; /* step of the last estimate */
+    bool damage_grew;     /* since the last estimate */
+    int64_t substeps_max; /* the most sub-steps one step took (cpd_step) */
+} CpdBody;
+
+/* Builds the body (taking ownership of *cfg, zeroing it): lattice points,
+ * regions, families (square |xi|_inf <= delta or disc |xi| <= delta),
+ * kernel, RK weights, pressure directions, the stable step. NSPD_ERR_INPUT
+ * if the geometry holds no point or a point has no RK weights at the
+ * start (a body thinner than the family needs: say which); NSPD_ERR_NOMEM. */
+int cpd_body_create(CpdBody *b, CpdConfig *cfg);
+void cpd_body_destroy(CpdBody *b);
+
+/* One step of dt: velocity Verlet sub-steps (pressure loads at each new
+ * time). Damage stiffens what is left of a family (its stress integral and
+ * RK weights rest on fewer bonds), so the stable step falls as cracks
+ * grow (measured: 2.76e-7 s to 1.5e-7 s in 40 us of the hollow cylinder):
+ * when damage grew, the step is re-estimated at most every
+ * CPD_REESTIMATE_STEPS steps, and once it has fallen below the undamaged
+ * body's, a step longer than CPD_DAMAGED_SAFETY of it (time.safety_factor's
+ * default) is taken in as many equal sub-steps as that needs. */
+/* 30 cold iterations: the estimate is within 0.2 % of the converged one
+ * after 20 and 0.02 % after 40 on 16^2 to 64^2 blocks (measured), inside
+ * the 2 % margin of cpd_stable_dt; 80 made the set-up cost 95 steps */
+enum { CPD_REESTIMATE_STEPS = 20, CPD_COLD_ITERATIONS = 30 };
+#define CPD_DAMAGED_SAFETY 0.8
+int cpd_step(CpdBody *b, double dt);
+/* The force density at the current u into b->force, advancing the bond
+ * stresses from u_prev and the damage (what cpd_step calls). */
+void cpd_force(CpdBody *b, double t);
+/* The weights of the points flagged in b->redo recomputed with the damaged
+ * kernel; a point left without weights is debris and its bonds break from
+ * both ends (each end reads both points' flags), which may leave its
+ * neighbours without weights in turn: repeated until no point changes.
+ * Returns the number of bonds broken this way. */
+int64_t cpd_settle_weights(CpdBody *b);
+
+/* dt = 2 / sqrt(lambda_max) of the linearised operator (K / rho) at the
+ * current damage, by power iteration (notes 1c.10 C6): `iterations` from
+ * the lattice checkerboard (cold) or from b->mode (warm, with a part of the
+ * checkerboard mixed in so a new stiff spot is not missed). */
+double cpd_stable_dt(CpdBody *b, int iterations, bool warm);
+
+/* ok[i] for the points with redo[i] != 0 (redo NULL: all, and the RK
+ * weights of every point): the bond-associated force's RK weights (ok: the
+ * moment matrix was invertible) or the classic force's K_i. Returns the
+ * number of those points not ok. */
+int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo);
+
+/* Point damage: the mean damage of its initial bonds (PdShell's, the
+ * default) and the volume-weighted fraction of them broken. */
+void cpd_point_damage(const CpdBody *b, double *mean, double *broken);
+
+#endif

@@ -1,0 +1,456 @@
+#include "solid/correspondence/model.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+#include "solid/pd/lattice.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The model: the body, and the per-point fields it reports (scratch). */
+typedef struct {
+    CpdBody body;
+    double *stress[3]; /* xx, yy, xy of the point's Cauchy stress, Pa */
+    double *stress_zz; /* Pa */
+    double *mises;     /* von Mises stress, Pa */
+    double *plastic;   /* mean equivalent plastic strain of its intact bonds (classic: its own) */
+    double *jacobian;  /* det F_i */
+    double *broken;    /* volume-weighted fraction of the point's bonds broken */
+} CpdSolid;
+
+static int cpd_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
+    CpdSolid *cs;
+    TRY(nspd_alloc(&cs, 1, sizeof *cs));
+    CpdBody *b = &cs->body;
+    CpdConfig cc = *(CpdConfig *)cfg->model;
+    nspd_free(&cfg->model); /* taken */
+    int status = cpd_body_create(b, &cc);
+    const size_t n = (size_t)b->n;
+    for (int d = 0; d < 3 && status == NSPD_OK; d++) status = nspd_alloc(&cs->stress[d], n, 8);
+    if (status == NSPD_OK) status = nspd_alloc(&cs->stress_zz, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&cs->mises, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&cs->plastic, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&cs->jacobian, n, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&cs->broken, n, sizeof(double));
+    if (status != NSPD_OK) {
+        cpd_config_free(&cc);
+        CpdSolid *p = cs;
+        cpd_body_destroy(&p->body);
+        for (int d = 0; d < 3; d++) nspd_free(&p->stress[d]);
+        nspd_free(&p->stress_zz);
+        nspd_free(&p->mises);
+        nspd_free(&p->plastic);
+        nspd_free(&p->jacobian);
+        nspd_free(&p->broken);
+        nspd_free(&cs);
+        return status;
+    }
+    *pts = (PdPoints){.dim = b->dim,
+                      .n = b->n,
+                      .spacing = b->spacing,
+                      .thickness = b->dim == 2 ? b->cfg.pd.thickness : 1.0,
+                      .volume = b->volume,
+                      .family_first = b->first,
+                      .family_nbr = b->nbr};
+    for (int d = 0; d < 3; d++) {
+        pts->x[d] = b->x[d];
+        pts->u[d] = b->u[d];
+        pts->v[d] = b->v[d];
+        pts->external[d] = b->external[d];
+        pts->lattice[d] = b->lattice[d];
+    }
+    *impl = cs;
+    return NSPD_OK;
+}
+
+static void cpd_destroy(void *impl) {
+    CpdSolid *cs = impl;
+    cpd_body_destroy(&cs->body);
+    for (int d = 0; d < 3; d++) nspd_free(&cs->stress[d]);
+    nspd_free(&cs->stress_zz);
+    nspd_free(&cs->mises);
+    nspd_free(&cs->plastic);
+    nspd_free(&cs->jacobian);
+    nspd_free(&cs->broken);
+    nspd_free(&cs);
+}
+
+/* Points as the bond-based model counts them; bonds: the square (or disc)
+ * family of an interior point; bytes: per point 19 work doubles, 6 motion
+ * arrays, volume, region, load, flags, lattice and 8 field arrays (about
+ * 450 B), per bond CPD_BYTES_PER_BOND (classic: CPD_CLASSIC_BYTES_PER_BOND,
+ * and CPD_CLASSIC_BYTES_PER_POINT more per point for the point state); the
+ * search's disc of sqrt(2) delta before the square filter. */
+static SolidEstimate cpd_estimate(const SolidConfig *sc) {
+    const CpdConfig *cfg = sc->model;
+    const PdConfig *pd = &cfg->pd;
+    SolidEstimate e = {0, 0, 0};
+    double sites, fraction;
+    if (!lattice_estimate(&pd->geometry, pd->dim, pd->spacing, &sites, &fraction)) return e;
+    e.points = ceil(sites * fraction);
+    const double m = pd->horizon_factor;
+    const int reach = (int)floor(m * sqrt((double)pd->dim));
+    double family = 0, searched = 0;
+    for (int k = pd->dim == 3 ? -reach : 0; k <= (pd->dim == 3 ? reach : 0); k++)
+        for (int j = -reach; j <= reach; j++)
+            for (int i = -reach; i <= reach; i++) {
+                if (!(i || j || k)) continue;
+                const double r2 = (double)(i * i + j * j + k * k);
+                if (r2 <= m * m * (double)pd->dim) searched += 1;
+                const bool in = cfg->family == CPD_FAMILY_SQUARE
+                                    ? (abs(i) <= m && abs(j) <= m && abs(k) <= m)
+                                    : r2 <= m * m;
+                if (in) family += 1;
+            }
+    e.bonds = e.points * family;
+    const bool classic = cfg->force == CPD_FORCE_CLASSIC;
+    /* plane stress adds the thickness strain: 8 B per state (bond or point) */
+    const double zz = pd->model == PD_PLANE_STRESS ? 8.0 : 0.0;
+    const double per_point = 450.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT + zz : 0);
+    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + zz;
+    e.bytes = per_point * e.points + per_bond * e.bonds + 4.0 * searched * e.points;
+    return e;
+}
+
+static double cpd_stable(const void *impl) {
+    return ((const CpdSolid *)impl)->body.stable_dt;
+}
+
+static int cpd_step_op(void *impl, double dt) {
+    return cpd_step(&((CpdSolid *)impl)->body, dt);
+}
+
+static double cpd_time(const void *impl) {
+    return ((const CpdSolid *)impl)->body.time;
+}
+
+static void cpd_set_time(void *impl, double t) {
+    ((CpdSolid *)impl)->body.time = t;
+}
+
+static void cpd_damage(const void *impl, double *out) {
+    cpd_point_damage(&((const CpdSolid *)impl)->body, out, NULL);
+}
+
+static double cpd_modulus(const void *impl, int64_t i) {
+    (void)i; /* one material per body */
+    return ((const CpdSolid *)impl)->body.cfg.pd.youngs_modulus;
+}
+
+static bool cpd_attached(const void *impl, int64_t i) {
+    const CpdBody *b = &((const CpdSolid *)impl)->body;
+    for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+        if (b->damage[k] < 1.0) return true;
+    return false;
+}
+
+static double kinetic_energy(const CpdBody *b) {
+    double e = 0.0; /* output only: sequential, so the same at any thread count */
+    for (int64_t i = 0; i < b->n; i++) {
+        double v2 = 0.0;
+        for (int d = 0; d < b->dim; d++) v2 += b->v[d][i] * b->v[d][i];
+        e += 0.5 * b->cfg.pd.density * b->volume[i] * v2;
+    }
+    return e;
+}
+
+static int64_t broken_pairs(const CpdBody *b) {
+    int64_t k = 0;
+    for (int64_t q = 0; q < b->bond_count; q++) k += b->damage[q] >= 1.0 ? 1 : 0;
+    return k / 2;
+}
+
+static double max_of(const double *a, int64_t n) {
+    double m = 0.0;
+    for (int64_t i = 0; i < n; i++) m = fmax(m, a[i]);
+    return m;
+}
+
+double cpd_mass_loss(const CpdBody *b, const double *damage) {
+    double lost = 0.0, all = 0.0;
+    for (int64_t i = 0; i < b->n; i++) {
+        all += b->volume[i];
+        lost += damage[i] >= 0.99 ? b->volume[i] : 0.0;
+    }
+    return all > 0.0 ? lost / all : 0.0;
+}
+
+static int64_t root_of(int64_t *parent, int64_t i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris) {
+    int64_t *parent;
+    if (nspd_alloc(&parent, (size_t)b->n, sizeof(int64_t)) != NSPD_OK) return -1;
+    for (int64_t i = 0; i < b->n; i++) parent[i] = i;
+    int64_t loose = 0;
+    for (int64_t i = 0; i < b->n; i++) {
+        bool any = false;
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
+            if (b->damage[k] >= 1.0) continue;
+            any = true;
+            const int64_t ri = root_of(parent, i), rj = root_of(parent, b->nbr[k]);
+            if (ri != rj) parent[ri < rj ? rj : ri] = ri < rj ? ri : rj;
+        }
+        loose += any ? 0 : 1;
+    }
+    int64_t roots = 0;
+    for (int64_t i = 0; i < b->n; i++) roots += root_of(parent, i) == i ? 1 : 0;
+    nspd_free(&parent);
+    if (debris) *debris = loose;
+    return roots - loose; /* a loose point is its own root */
+}
+
+/* max plastic strain over bonds, and mass loss from the mean damage */
+static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_loss,
+                          double *max_damage) {
+    const CpdBody *b = &cs->body;
+    double m = 0.0; /* over intact bonds: a broken bond's state stops at its break */
+    if (b->cfg.force == CPD_FORCE_CLASSIC) /* per point: over the points not debris */
+        for (int64_t i = 0; i < b->n; i++) m = b->ok[i] ? fmax(m, b->eqps[i]) : m;
+    else
+        for (int64_t k = 0; k < b->bond_count; k++)
+            if (b->damage[k] < 1.0) m = fmax(m, b->eqps[k]);
+    *max_eqps = m;
+    cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
+    *mass_loss = cpd_mass_loss(b, cs->broken);
+    *max_damage = max_of(cs->broken, b->n);
+}
+
+static void cpd_history(const void *impl, Report *row) {
+    const CpdSolid *cs = impl;
+    const CpdBody *b = &cs->body;
+    double eqps, loss, dmax;
+    state_numbers(cs, &eqps, &loss, &dmax);
+    report_real(row, "kinetic_energy_J", kinetic_energy(b));
+    report_int(row, "broken_bonds", broken_pairs(b));
+    report_real(row, "max_plastic_strain", eqps);
+    report_real(row, "max_damage", dmax);
+    report_real(row, "mass_loss", loss);
+}
+
+static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
+    const CpdSolid *cs = impl;
+    const CpdBody *b = &cs->body;
+    double eqps, loss, dmax;
+    state_numbers(cs, &eqps, &loss, &dmax);
+    report_int(out, "points", b->n);
+    report_int(out, "bonds", b->bond_count / 2);
+    const int64_t broken = broken_pairs(b);
+    report_int(out, "broken_bonds", broken);
+    report_real(out, "broken_bond_fraction",
+                b->bond_count ? 2.0 * (double)broken / (double)b->bond_count : 0.0);
+    report_real(out, "max_damage", dmax);
+    report_real(out, "max_plastic_strain", eqps);
+    report_real(out, "mass_loss", loss);
+    int64_t debris = 0;
+    report_int(out, "fragment_count", cpd_fragment_count(b, &debris));
+    report_int(out, "debris_points", debris);
+    report_real(out, "kinetic_energy_J", kinetic_energy(b));
+    report_real(out, "stable_dt_damaged_s", b->stable_now);
+    report_int(out, "substeps_max", b->substeps_max);
+    report_real(out, "bond_updates_per_s",
+                run->wall_s > 0 ? (double)b->bond_count * (double)run->steps / run->wall_s : 0.0);
+}
+
+static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
+    const CpdBody *b = &((const CpdSolid *)impl)->body;
+    const CpdConfig *c = &b->cfg;
+    int len = 0;
+#define APPEND(...)                                                                                \
+    len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
+    APPEND("model                correspondence (%s), %s\n", CPD_FORCE_NAMES[c->force],
+           PD_MODEL_NAMES[c->pd.model]);
+    if (c->force == CPD_FORCE_CLASSIC)
+        APPEND("stabilisation        C_s %.4g (Silling 2017 zero-energy penalty)\n",
+               c->stabilisation);
+    APPEND("points               %lld\n", (long long)b->n);
+    APPEND("bonds                %lld (%.1f per point, %s family)\n", (long long)b->bond_count / 2,
+           (double)b->bond_count / (double)b->n, CPD_FAMILY_NAMES[c->family]);
+    APPEND("spacing              %.6g m\n", b->spacing);
+    APPEND("horizon              %.6g m (%.4g x spacing)\n", b->delta, c->pd.horizon_factor);
+    APPEND("material             E %.6g Pa, nu %.4g, yield %.6g Pa, hardening %.6g Pa\n",
+           c->pd.youngs_modulus, c->poisson_ratio, c->yield_stress, c->hardening);
+    APPEND("damage               %s\n", CPD_DAMAGE_NAMES[c->damage]);
+    APPEND("P-wave speed         %.6g m/s\n", sqrt((b->lambda + 2.0 * b->mu) / c->pd.density));
+    APPEND("stable time step     %.6g s (power iteration; re-estimated as damage grows, "
+           "with sub-steps)\n",
+           b->stable_dt);
+    APPEND("memory               %.1f MB in solver arrays (%d bytes per bond)\n",
+           (double)memory / 1e6,
+           c->force == CPD_FORCE_CLASSIC ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND);
+#undef APPEND
+}
+
+static void cpd_brief(const void *impl, char *buf, size_t size) {
+    const CpdBody *b = &((const CpdSolid *)impl)->body;
+    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n, (long long)b->bond_count / 2);
+}
+
+/* Per point: the omega-weighted mean of its intact bonds' unrotated stress
+ * and plastic strain (classic: the point's own), the stress rotated by the
+ * point's own F_i (closed form), its von Mises value and J = det F_i (from
+ * the last force pass). */
+static void cpd_fields(const void *impl, FieldSet *out) {
+    const CpdSolid *cs = impl;
+    const CpdBody *b = &cs->body;
+    const double *F = b->work_point;
+#pragma omp parallel for schedule(static) if (b->n >= 4096)
+    for (int64_t i = 0; i < b->n; i++) {
+        double w = 0.0, s[4] = {0, 0, 0, 0}, ep = 0.0;
+        if (b->cfg.force == CPD_FORCE_CLASSIC) {
+            w = 1.0, ep = b->eqps[i];
+            memcpy(s, b->sigma + 4 * i, sizeof s);
+        }
+        for (int64_t k = b->first[i]; k < b->first[i + 1] && b->cfg.force != CPD_FORCE_CLASSIC;
+             k++) {
+            const double wk = b->omega[k] * b->scale[k];
+            w += wk;
+            for (int q = 0; q < 4; q++) s[q] += wk * b->sigma[4 * k + q];
+            ep += wk * b->eqps[k];
+        }
+        const double inv = w > 0.0 ? 1.0 / w : 0.0;
+        for (int q = 0; q < 4; q++) s[q] *= inv;
+        const double *Fi = F + 9 * i;
+        double R[4] = {1, 0, 0, 1};
+        const double Fi2[4] = {Fi[0], Fi[1], Fi[3], Fi[4]};
+        if (b->force_valid) j2_polar_rotation_2d(Fi2, R);
+        /* sigma = R s R^T for the in-plane part [xx xy; xy yy] */
+        const double a = s[0], d = s[1], c = s[3];
+        const double r00 = R[0], r01 = R[1], r10 = R[2], r11 = R[3];
+        const double t00 = r00 * a + r01 * c, t01 = r00 * c + r01 * d;
+        const double t10 = r10 * a + r11 * c, t11 = r10 * c + r11 * d;
+        const double sxx = t00 * r00 + t01 * r01, sxy = t00 * r10 + t01 * r11;
+        const double syy = t10 * r10 + t11 * r11;
+        cs->stress[0][i] = sxx;
+        cs->stress[1][i] = syy;
+        cs->stress[2][i] = sxy;
+        cs->stress_zz[i] = s[2];
+        const double p = (sxx + syy + s[2]) / 3.0;
+        const double dx = sxx - p, dy = syy - p, dz = s[2] - p;
+        cs->mises[i] = sqrt(1.5 * (dx * dx + dy * dy + dz * dz + 2.0 * sxy * sxy));
+        cs->plastic[i] = ep * inv;
+        cs->jacobian[i] = b->force_valid ? Fi[0] * Fi[4] - Fi[1] * Fi[3] : 1.0;
+    }
+    cpd_point_damage(b, NULL, cs->broken);
+    out->field[out->field_count++] =
+        (FieldRef){"stress", 3, {cs->stress[0], cs->stress[1], cs->stress[2]}};
+    out->field[out->field_count++] = (FieldRef){"stress_zz", 1, {cs->stress_zz, NULL, NULL}};
+    out->field[out->field_count++] = (FieldRef){"mises_stress", 1, {cs->mises, NULL, NULL}};
+    out->field[out->field_count++] = (FieldRef){"plastic_strain", 1, {cs->plastic, NULL, NULL}};
+    out->field[out->field_count++] = (FieldRef){"J", 1, {cs->jacobian, NULL, NULL}};
+    out->field[out->field_count++] = (FieldRef){"broken_fraction", 1, {cs->broken, NULL, NULL}};
+    /* fixed scales per series: the plastic strain to the ductile law's
+     * critical value (0.2 if none), von Mises to twice the yield stress (a
+     * brittle body: its critical stress; else 1e-3 E) */
+    const CpdConfig *c = &b->cfg;
+    const double ep_hi = c->damage == CPD_DAMAGE_DUCTILE ? c->plastic_strain_critical : 0.2;
+    const double s_hi = c->yield_stress > 0.0             ? 2.0 * c->yield_stress
+                        : c->damage == CPD_DAMAGE_BRITTLE ? c->critical_stress
+                                                          : 1e-3 * c->pd.youngs_modulus;
+    out->picture[out->picture_count++] = (PictureRef){.file = "plastic_strain",
+                                                      .label = "equivalent plastic strain",
+                                                      .units = "-",
+                                                      .values = cs->plastic,
+                                                      .lo = 0.0,
+                                                      .hi = ep_hi,
+                                                      .map = COLORMAP_INFERNO,
+                                                      .overlay_map = COLORMAP_INFERNO};
+    out->picture[out->picture_count++] = (PictureRef){.file = "mises_stress",
+                                                      .label = "von Mises stress",
+                                                      .units = "Pa",
+                                                      .values = cs->mises,
+                                                      .lo = 0.0,
+                                                      .hi = s_hi,
+                                                      .map = COLORMAP_VIRIDIS,
+                                                      .overlay_map = COLORMAP_INFERNO};
+}
+
+/* Everything a step changes: motion, forces (velocity Verlet reuses the
+ * last), the held external loads, the material state (per bond, or per
+ * point for the classic force), the RK weights (damage rescales them; the
+ * classic force has none) and the F_i of the last force pass (fields read it). */
+static int cpd_checkpoint(void *impl, Checkpoint *ck) {
+    CpdBody *b = &((CpdSolid *)impl)->body;
+    const size_t n = (size_t)b->n * sizeof(double), nb = (size_t)b->bond_count;
+    const size_t ns = b->cfg.force == CPD_FORCE_CLASSIC ? (size_t)b->n : nb; /* state count */
+    static const char *const NAMES[4][3] = {{"cpd.u0", "cpd.u1", "cpd.u2"},
+                                            {"cpd.v0", "cpd.v1", "cpd.v2"},
+                                            {"cpd.force0", "cpd.force1", "cpd.force2"},
+                                            {"cpd.external0", "cpd.external1", "cpd.external2"}};
+    for (int d = 0; d < b->dim && d < 3; d++) {
+        TRY(checkpoint_io(ck, NAMES[0][d], b->u[d], n));
+        TRY(checkpoint_io(ck, NAMES[1][d], b->v[d], n));
+        TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
+        TRY(checkpoint_io(ck, NAMES[3][d], b->external[d], n));
+    }
+    TRY(checkpoint_io(ck, "cpd.sigma", b->sigma, 4 * ns * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.eqps", b->eqps, ns * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.damage", b->damage, nb * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.scale", b->scale, nb * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.principal", b->principal, ns * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, ns));
+    if (b->strain_zz) TRY(checkpoint_io(ck, "cpd.strain_zz", b->strain_zz, ns * sizeof(double)));
+    if (b->phi) TRY(checkpoint_io(ck, "cpd.phi", b->phi, (size_t)b->dim * nb * sizeof(double)));
+    TRY(checkpoint_io(ck, "cpd.ok", b->ok, (size_t)b->n));
+    TRY(checkpoint_io(ck, "cpd.F", b->work_point, 9 * n));
+    for (int d = 0; d < b->dim && d < 3; d++) {
+        static const char *const MODE[3] = {"cpd.mode0", "cpd.mode1", "cpd.mode2"};
+        TRY(checkpoint_io(ck, MODE[d], b->mode[d], n));
+    }
+    TRY(checkpoint_io_double(ck, "cpd.stable_now", &b->stable_now));
+    TRY(checkpoint_io_int64(ck, "cpd.estimated_at", &b->estimated_at));
+    TRY(checkpoint_io_int64(ck, "cpd.substeps_max", &b->substeps_max));
+    int grew = b->damage_grew;
+    TRY(checkpoint_io_int(ck, "cpd.damage_grew", &grew));
+    b->damage_grew = grew != 0;
+    TRY(checkpoint_io_int64(ck, "cpd.step", &b->step));
+    TRY(checkpoint_io_double(ck, "cpd.time", &b->time));
+    int valid = b->force_valid;
+    TRY(checkpoint_io_int(ck, "cpd.force_valid", &valid));
+    b->force_valid = valid != 0;
+    return NSPD_OK;
+}
+
+static void cpd_config_free_model(void *model) {
+    cpd_config_free(model);
+}
+
+static int cpd_config_dim(const void *model) {
+    return ((const CpdConfig *)model)->pd.dim;
+}
+
+const SolidOps CPD_SOLID_OPS = {
+    .name = "correspondence",
+    .config_free = cpd_config_free_model,
+    .config_dim = cpd_config_dim,
+    .estimate = cpd_estimate,
+    .create = cpd_create,
+    .destroy = cpd_destroy,
+    .stable_dt = cpd_stable,
+    .step = cpd_step_op,
+    .time = cpd_time,
+    .set_time = cpd_set_time,
+    .damage = cpd_damage,
+    .modulus = cpd_modulus,
+    .attached = cpd_attached,
+    .history = cpd_history,
+    .summary = cpd_summary,
+    .info = cpd_info,
+    .brief = cpd_brief,
+    .fields = cpd_fields,
+    .checkpoint = cpd_checkpoint,
+    .bench_name = "cpd",
+    .bench = cpd_bench,
+};
+
+CpdBody *cpd_solid_body(Solid *s) {
+    CpdSolid *cs = solid_impl(s, SOLID_CORRESPONDENCE);
+    return cs ? &cs->body : NULL;
+}

@@ -1,0 +1,27 @@
+/* Correspondence PD (paper 003, CpdBody) as a solid model: the SolidOps
+ * table over body.h. */
+#ifndef NSPD_SOLID_CORRESPONDENCE_MODEL_H
+#define NSPD_SOLID_CORRESPONDENCE_MODEL_H
+
+#include "solid/correspondence/body.h"
+#include "solid/solid.h"
+
+extern const SolidOps CPD_SOLID_OPS;
+
+/* The checked accessor: the CpdBody of a correspondence solid, NULL for any
+ * other model. */
+CpdBody *cpd_solid_body(Solid *s);
+
+/* Connected components of the graph of intact bonds (damage < 1) among the
+ * points that keep one (fragments), and the points that keep none (debris).
+ * Sequential union-find; allocates. -1 on NOMEM. */
+/* `nspd bench cpd` (SolidOps.bench, bench.c): a J2 steel block with about
+ * `points` points, `steps` timed velocity Verlet steps, into *out. */
+int cpd_bench(long points, long steps, Report *out);
+
+int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris);
+/* Eq. 24 of paper 003: the mass fraction of points whose (mean) damage is
+ * at least 0.99; `damage` per point. */
+double cpd_mass_loss(const CpdBody *b, const double *damage);
+
+#endif

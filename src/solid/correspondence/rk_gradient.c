@@ -1,0 +1,144 @@
+#include "solid/correspondence/rk_gradient.h"
+
+#include "core/parallel.h"
+#include "core/spd_small.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+
+enum { RK_MAX_TERMS = SPD_SMALL_MAX }; /* 3D cubic: 3 + 6 + 10 monomials */
+
+/* The cubic B-spline of the kernel, b(r) for r = |xi_a| / delta. */
+static double bspline(double r) {
+    if (r <= 0.5) return 1.0 - 6.0 * r * r + 6.0 * r * r * r;
+    if (r <= 1.0) return 2.0 * (1.0 - r) * (1.0 - r) * (1.0 - r);
+    return 0.0;
+}
+
+const char *const RK_KERNEL_NAMES[RK_KERNEL_COUNT + 1] = {"cubic_bspline", "cubic_bspline_radial",
+                                                          NULL};
+
+double rk_kernel(int dim, const double xi[3], double delta) {
+    double w = 1.0;
+    for (int a = 0; a < dim; a++) w *= bspline(fabs(xi[a]) / delta);
+    return w;
+}
+
+double rk_kernel_of(RkKernel kind, int dim, const double xi[3], double delta) {
+    if (kind == RK_KERNEL_CUBIC_TENSOR) return rk_kernel(dim, xi, delta);
+    double r2 = 0.0;
+    for (int a = 0; a < dim; a++) r2 += xi[a] * xi[a];
+    return bspline(sqrt(r2) / delta);
+}
+
+/* Q(xi): the monomials of degree 1 to `order` (1 to 3), each over delta
+ * (so that the moment matrix is of order one whatever the units); returns
+ * their count. */
+static int monomials(int order, int dim, const double xi[3], double delta, double q[RK_MAX_TERMS]) {
+    const double s[3] = {xi[0] / delta, xi[1] / delta, dim == 3 ? xi[2] / delta : 0.0};
+    int m = 0;
+    for (int a = 0; a < dim; a++) q[m++] = s[a];
+    if (order >= 2)
+        for (int a = 0; a < dim; a++)
+            for (int b = a; b < dim; b++) q[m++] = s[a] * s[b];
+    if (order >= 3)
+        for (int a = 0; a < dim; a++)
+            for (int b = a; b < dim; b++)
+                for (int c = b; c < dim; c++) q[m++] = s[a] * s[b] * s[c];
+    return m;
+}
+
+static void bond_vector(int dim, const double *const x[3], int64_t i, int64_t j, double xi[3]) {
+    xi[0] = xi[1] = xi[2] = 0.0;
+    for (int a = 0; a < dim && a < 3; a++) xi[a] = x[a][j] - x[a][i];
+}
+
+/* Point i's weights; false (weights 0) when its M_i is singular. */
+static bool point_weights(int order, RkKernel kernel, int dim, int64_t i, const double *const x[3],
+                          const double *volume, const int64_t *first, const int32_t *nbr,
+                          double delta, const double *bond_scale, double *phi) {
+    double M[RK_MAX_TERMS][RK_MAX_TERMS] = {{0}}, q[RK_MAX_TERMS] = {0}, xi[3] = {0};
+    int m = 0;
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        bond_vector(dim, x, i, nbr[k], xi);
+        const double w = rk_kernel_of(kernel, dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0) *
+                         volume[nbr[k]];
+        m = monomials(order, dim, xi, delta, q);
+        for (int r = 0; r < m; r++)
+            for (int c = 0; c <= r; c++) M[r][c] += w * q[r] * q[c];
+    }
+    if (m == 0) m = dim; /* no neighbour: singular whatever the order */
+    for (int r = 0; r < m; r++)
+        for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
+    double scale[RK_MAX_TERMS];
+    const bool ok = spd_small_factor(M, m, scale, order == 3 ? RK_MIN_PIVOT_CUBIC : RK_MIN_PIVOT);
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        double *out = phi + (int64_t)dim * k;
+        if (!ok) {
+            for (int a = 0; a < dim; a++) out[a] = 0.0;
+            continue;
+        }
+        bond_vector(dim, x, i, nbr[k], xi);
+        const double w = rk_kernel_of(kernel, dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
+        double z[RK_MAX_TERMS] = {0};
+        monomials(order, dim, xi, delta, q);
+        spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, q, z);
+        for (int a = 0; a < dim; a++) out[a] = w * z[a] / delta;
+    }
+    return ok;
+}
+
+int64_t rk_gradient_weights(int dim, int64_t n, const double *const x[3], const double *volume,
+                            const int64_t *first, const int32_t *nbr, double delta,
+                            const double *bond_scale, double *phi, uint8_t *ok) {
+    return rk_gradient_weights_of(2, RK_KERNEL_CUBIC_TENSOR, dim, n, x, volume, first, nbr, delta,
+                                  bond_scale, NULL, phi, ok);
+}
+
+int64_t rk_gradient_weights_of(int order, RkKernel kernel, int dim, int64_t n,
+                               const double *const x[3], const double *volume, const int64_t *first,
+                               const int32_t *nbr, double delta, const double *bond_scale,
+                               const uint8_t *redo, double *phi, uint8_t *ok) {
+    if ((dim != 2 && dim != 3) || (order < 1 || order > 3)) return n;
+    int64_t missing = 0;
+    /* dynamic: a redo list is sparse and uneven; each point's weights are
+     * its own, so the bits do not depend on the schedule */
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        if (redo && !redo[i]) continue;
+        /* order 3 falls back to 2 where the family cannot fit a cubic
+         * (on a face with delta = 2.5 h: two distinct offsets inward) */
+        const bool fit =
+            point_weights(order, kernel, dim, i, x, volume, first, nbr, delta, bond_scale, phi) ||
+            (order == 3 &&
+             point_weights(2, kernel, dim, i, x, volume, first, nbr, delta, bond_scale, phi));
+        ok[i] = fit ? 1 : 0;
+        missing += ok[i] ? 0 : 1;
+    }
+    return missing;
+}
+
+void rk_gradient_at(int dim, int64_t i, const double *f, const double *volume, const int64_t *first,
+                    const int32_t *nbr, const double *phi, double g[3]) {
+    g[0] = g[1] = g[2] = 0.0;
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        const double df = (f[nbr[k]] - f[i]) * volume[nbr[k]];
+        for (int a = 0; a < dim; a++) g[a] += df * phi[(int64_t)dim * k + a];
+    }
+}
+
+void rk_deformation_gradient(int dim, int64_t n, const double *const u[3], const double *volume,
+                             const int64_t *first, const int32_t *nbr, const double *phi,
+                             double *F) {
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        double *Fi = F + 9 * i;
+        memset(Fi, 0, 9 * sizeof(double));
+        for (int r = 0; r < dim; r++) {
+            double g[3];
+            rk_gradient_at(dim, i, u[r], volume, first, nbr, phi, g);
+            for (int c = 0; c < dim; c++) Fi[3 * r + c] = (r == c ? 1.0 : 0.0) + g[c];
+        }
+    }
+}

@@ -1,0 +1,337 @@
+/* Time stepping of a correspondence-PD body (body.h): the force with
+ * its stress update and damage, velocity Verlet, and the stable step. */
+#include "solid/correspondence/body.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/reduce.h"
+#include "core/status.h"
+#include "solid/correspondence/bac_force.h"
+#include "solid/correspondence/classic_force.h"
+#include "solid/correspondence/rk_gradient.h"
+
+#include <math.h>
+#include <string.h>
+
+static BacSystem system_of(const CpdBody *b) {
+    BacSystem s = {.dim = b->dim,
+                   .n = b->n,
+                   .volume = b->volume,
+                   .first = b->first,
+                   .nbr = b->nbr,
+                   .reverse = b->reverse,
+                   .phi = b->phi,
+                   .omega = b->omega,
+                   .lambda = b->lambda,
+                   .mu = b->mu,
+                   .bond_scale = b->scale};
+    for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
+    return s;
+}
+
+static ClassicSystem classic_of(const CpdBody *b) {
+    ClassicSystem s = {.dim = b->dim,
+                       .n = b->n,
+                       .volume = b->volume,
+                       .first = b->first,
+                       .nbr = b->nbr,
+                       .reverse = b->reverse,
+                       .omega = b->omega,
+                       .lambda = b->lambda,
+                       .mu = b->mu,
+                       .delta = b->delta,
+                       .thickness = b->dim == 2 ? b->cfg.pd.thickness : 0.0,
+                       .stabilisation = b->cfg.stabilisation,
+                       .bond_scale = b->scale};
+    for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
+    return s;
+}
+
+int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo) {
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        const ClassicSystem s = classic_of(b);
+        return classic_shape_check(&s, redo, b->ok);
+    }
+    return rk_gradient_weights_of(b->cfg.rk_order, b->cfg.kernel, b->dim, b->n,
+                                  (const double *const *)b->x, b->volume, b->first, b->nbr,
+                                  b->delta, b->scale, redo, b->phi, b->ok);
+}
+
+/* The damage law of the configuration for the state of bond k = (i -> j)
+ * (notes 1c.8). The bond-associated force keeps it per bond; the classic
+ * one per point, and the bond then takes the larger of its two points'
+ * values (plastic strain, principal stress; inverted if either is): fmax
+ * is exact and commutative, so both ends of a pair get the same damage
+ * bits, and a bond fails as soon as either end's material does. */
+static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
+    const CpdConfig *c = &b->cfg;
+    int64_t p = k, q = k;
+    if (c->force == CPD_FORCE_CLASSIC) p = i, q = b->nbr[k];
+    if (b->inverted[p] || b->inverted[q]) return 1.0;
+    switch (c->damage) {
+    case CPD_DAMAGE_DUCTILE:
+        return j2_damage_ductile(fmax(b->eqps[p], b->eqps[q]), c->plastic_strain_threshold,
+                                 c->plastic_strain_critical);
+    case CPD_DAMAGE_BRITTLE:
+        return j2_damage_brittle(fmax(b->principal[p], b->principal[q]), c->critical_stress,
+                                 c->damage_ramp);
+    case CPD_DAMAGE_STRETCH: {
+        /* |xi + (u_j - u_i)|^2 against (1 + s_c)^2 |xi|^2: the same bits
+         * from both ends (negated operands, squares) */
+        const int64_t j = b->nbr[k];
+        double y2 = 0.0, x2 = 0.0;
+        for (int a = 0; a < b->dim; a++) {
+            const double xi = b->x[a][j] - b->x[a][i];
+            const double y = xi + (b->u[a][j] - b->u[a][i]);
+            y2 += y * y;
+            x2 += xi * xi;
+        }
+        const double limit = 1.0 + c->critical_stretch;
+        return y2 > limit * limit * x2 ? 1.0 : 0.0;
+    }
+    default:
+        return 0.0;
+    }
+}
+
+/* Damage grows (never falls) by the law, then the weights settle
+ * (cpd_settle_weights). Returns the number of bonds whose damage grew. */
+static int64_t update_damage(CpdBody *b) {
+    int64_t grown = 0;
+#pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < b->n; i++) {
+        uint8_t redo = 0;
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
+            const double d = damage_law(b, i, k);
+            if (d > b->damage[k]) {
+                b->damage[k] = d;
+                b->scale[k] = 1.0 - d;
+                redo = 1;
+                grown++;
+            }
+        }
+        b->redo[i] = redo;
+    }
+    return grown > 0 ? grown + cpd_settle_weights(b) : 0;
+}
+
+int64_t cpd_settle_weights(CpdBody *b) {
+    int64_t grown = 0;
+    for (int pass = 0; pass < 1000; pass++) {
+        if (cpd_shape_check(b, b->redo) == 0) break;
+        int64_t broke = 0;
+#pragma omp parallel for schedule(static) reduction(+ : broke) if (b->n >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < b->n; i++) {
+            uint8_t redo = 0;
+            for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+                if ((!b->ok[i] || !b->ok[b->nbr[k]]) && b->damage[k] < 1.0) {
+                    b->damage[k] = 1.0;
+                    b->scale[k] = 0.0;
+                    redo = 1;
+                    broke++;
+                }
+            b->redo[i] = redo && b->ok[i];
+        }
+        if (broke == 0) break;
+        grown += broke;
+    }
+    return grown;
+}
+
+/* The force density at displacements u into L: with the body's material
+ * state advanced from u_prev (state true), or stateless (SVK). */
+static void body_force(CpdBody *b, bool state, const double *const u[3], double *const L[3]) {
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        const ClassicSystem s = classic_of(b);
+        ClassicState st = {.material = &b->material,
+                           .sigma = b->sigma,
+                           .eqps = b->eqps,
+                           .principal = b->principal,
+                           .inverted = b->inverted,
+                           .strain_zz = b->strain_zz};
+        for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
+        classic_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
+        return;
+    }
+    const BacSystem s = system_of(b);
+    BacState st = {.material = &b->material,
+                   .sigma = b->sigma,
+                   .eqps = b->eqps,
+                   .principal = b->principal,
+                   .inverted = b->inverted,
+                   .strain_zz = b->strain_zz};
+    for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
+    bac_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
+}
+
+void cpd_force(CpdBody *b, double t) {
+    body_force(b, true, (const double *const *)b->u, b->force);
+    const CpdConfig *c = &b->cfg;
+    if (c->pressure_count > 0) {
+        double p[64];
+        const int count = c->pressure_count < 64 ? c->pressure_count : 64;
+        for (int r = 0; r < count; r++) p[r] = cpd_pressure_at(&c->pressures[r], t) / b->spacing;
+#pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < b->n; i++)
+            if (b->load[i] >= 0 && b->load[i] < count)
+                for (int a = 0; a < b->dim; a++)
+                    b->force[a][i] += p[b->load[i]] * b->load_dir[a][i];
+    }
+    if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) b->damage_grew = true;
+}
+
+static PdMotion motion_of(CpdBody *b) {
+    PdMotion m = {.dim = b->dim,
+                  .n = b->n,
+                  .density = b->cfg.pd.density,
+                  .body_force = b->cfg.pd.body_force,
+                  .region = b->region,
+                  .boundary = &b->boundary};
+    for (int d = 0; d < 3; d++) {
+        m.u[d] = b->u[d];
+        m.v[d] = b->v[d];
+        m.force[d] = b->force[d];
+        m.external[d] = b->external[d];
+    }
+    return m;
+}
+
+static void remember_u(CpdBody *b) {
+    for (int d = 0; d < b->dim; d++) memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
+}
+
+static int substep(CpdBody *b, double dt) {
+    const PdMotion m = motion_of(b);
+    if (!b->force_valid) {
+        remember_u(b); /* no increment: the stresses stay */
+        cpd_force(b, b->time);
+    }
+    pd_kick(&m, 0.5 * dt);
+    remember_u(b);
+    const bool bad = pd_drift(&m, dt);
+    cpd_force(b, b->time + dt);
+    pd_kick(&m, 0.5 * dt);
+    b->force_valid = true;
+    if (bad)
+        return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                         "a correspondence solid point has a non-finite displacement at step "
+                         "%lld (t = %g s); the time step is probably above the stable limit",
+                         (long long)b->step + 1, b->time);
+    b->time += dt;
+    return NSPD_OK;
+}
+
+/* Warm re-estimates: cheaper than the first (the mode moves little between
+ * them), still enough for the Rayleigh quotient to settle within the
+ * margin (tests/unit/solid/correspondence/test_solid.c). */
+enum { CPD_WARM_ITERATIONS = 16 };
+
+int cpd_step(CpdBody *b, double dt) {
+    if (b->damage_grew && b->step - b->estimated_at >= CPD_REESTIMATE_STEPS) {
+        b->stable_now = cpd_stable_dt(b, CPD_WARM_ITERATIONS, true);
+        b->estimated_at = b->step;
+        b->damage_grew = false;
+    }
+    int64_t n = 1;
+    const double allowed = CPD_DAMAGED_SAFETY * b->stable_now;
+    if (b->stable_now < b->stable_dt && dt > allowed) n = (int64_t)ceil(dt / allowed);
+    if (n > b->substeps_max) b->substeps_max = n;
+    const double h = dt / (double)n;
+    for (int64_t k = 0; k < n; k++) TRY(substep(b, h));
+    b->step++;
+    return NSPD_OK;
+}
+
+/* sum_i a_i b_i over both components, in the fixed order of core/reduce.h */
+static double dot(const CpdBody *b, double *const a[3], double *const c[3]) {
+    double partial[REDUCE_CHUNKS];
+#pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
+    for (int ch = 0; ch < REDUCE_CHUNKS; ch++) {
+        int64_t lo, hi;
+        reduce_chunk(b->n, ch, &lo, &hi);
+        double s = 0.0;
+        for (int64_t i = lo; i < hi; i++)
+            for (int d = 0; d < b->dim; d++) s += a[d][i] * c[d][i];
+        partial[ch] = s;
+    }
+    return reduce_combine(partial);
+}
+
+/* Power iteration on K / rho, K the Saint Venant-Kirchhoff stiffness at
+ * u = 0 with the current damage (the elastic tangent bounds the plastic
+ * one from above, so the step holds while the body yields), applied as the
+ * central difference (L(e v) - L(-e v)) / (2 e) of the stateless force, e
+ * such that the typical point moves 1e-7 spacings: exact but for the SVK's
+ * cubic term. Started from the lattice checkerboard (the highest mode's
+ * shape) with a fixed pseudo-random part so no mode is missed. The
+ * Rayleigh quotient converges from below: the margin is in
+ * CPD_POWER_MARGIN. Allocates its scratch (3 dim n doubles, once per
+ * estimate); on failure returns the previous estimate. The body's state
+ * (u, force, stresses) is untouched: the probes go through the stateless
+ * force (the configured one: classic with its zero-energy penalty, which
+ * stiffens the highest modes). */
+static const double CPD_POWER_MARGIN = 1.02;
+
+double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
+    const int dim = b->dim;
+    const int64_t n = b->n;
+    double *mem = NULL;
+    if (nspd_alloc(&mem, (size_t)(3 * dim) * (size_t)n, sizeof(double)) != NSPD_OK)
+        return b->stable_now;
+    double *v[3] = {NULL}, *probe[3] = {NULL}, *Lp[3] = {NULL}, *Lm[3] = {NULL};
+    for (int d = 0; d < dim; d++) {
+        v[d] = b->mode[d];
+        probe[d] = mem + (int64_t)d * n;
+        Lp[d] = mem + (int64_t)(dim + d) * n;
+        Lm[d] = mem + (int64_t)(2 * dim + d) * n;
+    }
+    double vnorm = 0.0;
+    if (warm) vnorm = sqrt(dot(b, v, v) / (double)n);
+    uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (int64_t i = 0; i < n; i++)
+        for (int d = 0; d < dim; d++) {
+            h ^= h << 13, h ^= h >> 7, h ^= h << 17;
+            const double r = (double)(h >> 11) * 0x1.0p-53 - 0.5;
+            const int parity =
+                (b->lattice[0][i] + b->lattice[1][i] + (dim == 3 ? b->lattice[2][i] : 0) + d) & 1;
+            const double fresh = (parity ? 1.0 : -1.0) + 0.5 * r;
+            v[d][i] = warm && vnorm > 0.0 ? v[d][i] / vnorm + 0.05 * fresh : fresh;
+        }
+    double lambda = 0.0;
+    for (int it = 0; it < iterations; it++) {
+        const double norm = sqrt(dot(b, v, v));
+        if (!(norm > 0.0)) break;
+        const double e = 1e-7 * b->spacing * sqrt((double)n);
+        for (int d = 0; d < dim; d++)
+            for (int64_t i = 0; i < n; i++) v[d][i] /= norm;
+        for (int d = 0; d < dim; d++)
+            for (int64_t i = 0; i < n; i++) probe[d][i] = e * v[d][i];
+        body_force(b, false, (const double *const *)probe, Lp);
+        for (int d = 0; d < dim; d++)
+            for (int64_t i = 0; i < n; i++) probe[d][i] = -e * v[d][i];
+        body_force(b, false, (const double *const *)probe, Lm);
+        for (int d = 0; d < dim; d++)
+            for (int64_t i = 0; i < n; i++)
+                Lp[d][i] = -(Lp[d][i] - Lm[d][i]) / (2.0 * e * b->cfg.pd.density);
+        lambda = dot(b, v, Lp);
+        for (int d = 0; d < dim; d++) memcpy(v[d], Lp[d], (size_t)n * sizeof(double));
+    }
+    nspd_free(&mem);
+    return lambda > 0.0 ? 2.0 / sqrt(lambda * CPD_POWER_MARGIN) : b->stable_now;
+}
+
+void cpd_point_damage(const CpdBody *b, double *mean, double *broken) {
+#pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < b->n; i++) {
+        const int64_t lo = b->first[i], hi = b->first[i + 1];
+        double sum = 0.0, gone = 0.0, all = 0.0;
+        for (int64_t k = lo; k < hi; k++) {
+            const double V = b->volume[b->nbr[k]];
+            sum += b->damage[k];
+            all += V;
+            gone += b->damage[k] >= 1.0 ? V : 0.0;
+        }
+        if (mean) mean[i] = hi > lo ? sum / (double)(hi - lo) : 1.0;
+        if (broken) broken[i] = all > 0.0 ? gone / all : 1.0;
+    }
+}

@@ -1,0 +1,173 @@
+/* solid/bond/force, pd_integrate, pd_diagnostics: properties of the discrete
+ * PD force that must hold exactly or to round-off. */
+#include "pd_fixtures.h"
+#include "test_support.h"
+
+#include "solid/bond/body.h"
+#include "solid/bond/diagnostics.h"
+#include "solid/bond/force.h"
+#include "solid/bond/integrate.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* Largest |force| component, the scale for round-off comparisons. */
+static double force_scale(const BondBody *b) {
+    double m = 0;
+    for (int d = 0; d < b->dim; d++)
+        for (int64_t i = 0; i < b->n; i++) m = fmax(m, fabs(b->force[d][i]));
+    return m;
+}
+
+/* A smooth, non-trivial displacement field of amplitude 1e-3 dx. */
+static void deform(BondBody *b) {
+    for (int64_t i = 0; i < b->n; i++)
+        for (int d = 0; d < b->dim; d++)
+            b->u[d][i] = 1e-3 * b->spacing * sin(3.1 * b->x[0][i] / b->spacing + d) *
+                         cos(1.7 * b->x[1][i] / b->spacing - d);
+}
+
+/* Bond-based PD forces depend only on bond lengths: a rigid rotation plus
+ * translation gives zero force (to round-off of the large coordinates). */
+static void test_rigid_motion_gives_no_force(void **state) {
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        PdConfig cfg = fixture_block(dim, 10, 10, 10, 1e-3);
+        BondBody b;
+        assert_ok(bond_body_create(&b, &cfg));
+        deform(&b);
+        pd_force_compute(&b);
+        double reference = force_scale(&b); /* what a real deformation of 1e-3 dx gives */
+        double angle = 0.3, c = cos(angle), s = sin(angle);
+        for (int64_t i = 0; i < b.n; i++) {
+            double x = b.x[0][i], y = b.x[1][i];
+            b.u[0][i] = c * x - s * y - x + 0.01;
+            b.u[1][i] = s * x + c * y - y - 0.02;
+            if (dim == 3) b.u[2][i] = 0.005;
+        }
+        pd_force_compute(&b);
+        /* round-off of |y| - |xi| at |xi| ~ 3e-3 relative 1e-16, against
+         * stretches of 1e-3 in the reference: ratio ~1e-12 */
+        assert_true(force_scale(&b) < 1e-9 * reference);
+        bond_body_destroy(&b);
+    }
+}
+
+/* Pair forces are equal and opposite, so sum_i V_i f_i = 0 to round-off. */
+static void test_newtons_third_law(void **state) {
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        PdConfig cfg = fixture_block(dim, 12, 9, 7, 1e-3);
+        BondBody b;
+        assert_ok(bond_body_create(&b, &cfg));
+        deform(&b);
+        pd_force_compute(&b);
+        for (int d = 0; d < dim; d++) {
+            double sum = 0, mag = 0;
+            for (int64_t i = 0; i < b.n; i++) {
+                sum += b.volume[i] * b.force[d][i];
+                mag += b.volume[i] * fabs(b.force[d][i]);
+            }
+            assert_true(fabs(sum) < 1e-13 * mag);
+        }
+        bond_body_destroy(&b);
+    }
+}
+
+/* The force is minus the gradient of the elastic energy per unit volume:
+ * V_i f_i = -dE/du_i, checked by central differences at a few points. The
+ * energy is quadratic-plus in u, so the central difference error is
+ * O(h^2) with h = 1e-7 dx: relative 1e-6 is far above it. */
+static void test_force_is_energy_gradient(void **state) {
+    (void)state;
+    PdConfig cfg = fixture_block(2, 10, 10, 0, 1e-3);
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
+    deform(&b);
+    pd_force_compute(&b);
+    int64_t probes[3] = {0, b.n / 2, b.n - 7};
+    for (int p = 0; p < 3; p++) {
+        int64_t i = probes[p];
+        for (int d = 0; d < 2; d++) {
+            double h = 1e-7 * b.spacing, u0 = b.u[d][i];
+            b.u[d][i] = u0 + h;
+            double ep = pd_elastic_energy(&b);
+            b.u[d][i] = u0 - h;
+            double em = pd_elastic_energy(&b);
+            b.u[d][i] = u0;
+            double grad = (ep - em) / (2 * h);
+            double vf = b.volume[i] * b.force[d][i];
+            assert_close(vf, -grad, 1e-6 * fabs(vf) + 1e-9 * fabs(grad));
+        }
+    }
+    bond_body_destroy(&b);
+}
+
+/* A breakable bond stretched past s_c breaks after the step that sees it
+ * (Eq. 17's state is history); an unbreakable one never does. */
+static void test_failure_is_history(void **state) {
+    (void)state;
+    PdConfig cfg = fixture_block(2, 8, 8, 0, 1e-3);
+    cfg.failure = true;
+    cfg.critical_stretch = 0.01;
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
+    /* 2 % uniform strain along x: every bond with a large x component breaks */
+    for (int64_t i = 0; i < b.n; i++) b.u[0][i] = 0.02 * b.x[0][i];
+    pd_force_compute(&b);
+    double f_first = force_scale(&b);
+    assert_true(f_first > 0); /* the force of that step still had the bonds */
+    int64_t broken = pd_broken_bonds(&b);
+    assert_true(broken > 0);
+    int64_t expect = 0; /* bonds whose stretch exceeds 0.01 */
+    for (int64_t i = 0; i < b.n; i++)
+        for (int64_t k = b.bond_first[i]; k < b.bond_first[i + 1]; k++) {
+            int32_t j = b.bond_nbr[k];
+            double ex = b.x[0][j] - b.x[0][i], ey = b.x[1][j] - b.x[1][i];
+            double s = sqrt(pow(1.02 * ex, 2) + ey * ey) / sqrt(ex * ex + ey * ey) - 1;
+            expect += s > 0.01;
+        }
+    assert_int_equal(broken, expect / 2);
+    bond_body_destroy(&b);
+
+    cfg = fixture_block(2, 8, 8, 0, 1e-3);
+    cfg.failure = false;
+    cfg.critical_stretch = 0.01;
+    assert_ok(bond_body_create(&b, &cfg));
+    for (int64_t i = 0; i < b.n; i++) b.u[0][i] = 0.02 * b.x[0][i];
+    pd_force_compute(&b);
+    assert_int_equal(pd_broken_bonds(&b), 0);
+    bond_body_destroy(&b);
+}
+
+/* dt = min_i sqrt(2 rho / sum_j k_ij) (Silling and Askari 2005), against a
+ * direct evaluation at one interior point of a body without corrections,
+ * where k_ij = c nu_ij V / |xi|. */
+static void test_stable_time_step(void **state) {
+    (void)state;
+    PdConfig cfg = fixture_block(2, 12, 12, 0, 1e-3);
+    cfg.surface_correction = PD_SURFACE_NONE;
+    BondBody b;
+    assert_ok(bond_body_create(&b, &cfg));
+    double sum = 0, V = 1e-9, dx = 1e-3, delta = 3.015e-3;
+    for (int i = -3; i <= 3; i++)
+        for (int j = -3; j <= 3; j++) {
+            double r = hypot(i, j) * dx;
+            if ((i || j) && r <= delta)
+                sum += b.micromodulus * pd_volume_factor(r, delta, dx, PD_VOLUME_LINEAR) * V / r;
+        }
+    /* interior points have the largest sum, hence the smallest step */
+    assert_close(pd_stable_time_step(&b), sqrt(2 * 8000 / sum), 1e-7 * sqrt(2 * 8000 / sum));
+    bond_body_destroy(&b);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rigid_motion_gives_no_force),
+        cmocka_unit_test(test_newtons_third_law),
+        cmocka_unit_test(test_force_is_energy_gradient),
+        cmocka_unit_test(test_failure_is_history),
+        cmocka_unit_test(test_stable_time_step),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
