@@ -364,7 +364,7 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
      * model (tests/unit/solid/correspondence/test_zero_energy.c: the smallest nonzero
      * eigenvalue from 1.1e-3 to 0.17 of the largest) while it moves the
      * speeds of a 20 h wave by +0.1 % (P) and +0.4 % (S) only
-     * (test_cpd_classic.c) */
+     * (tests/unit/solid/correspondence/test_classic.c) */
     double stabilisation = 0.5;
     if (c) {
         TRY(cfg_opt_enum(c, "force", CPD_FORCE_NAMES, CPD_FORCE_BOND_ASSOCIATED, &force));

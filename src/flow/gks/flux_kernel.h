@@ -16,7 +16,7 @@
  *   a4 = -2 dlambda,  a2 = 2 (lambda dU + U dlambda),  a3 = 2 (lambda dV + V dlambda),
  *   a1 = drho/rho + (K+2)/2 dlambda/lambda - dlambda (U^2+V^2) - 2 lambda (U dU + V dV).
  * This is the notes' solve (R2, R3, R4 form) written in primitive variables;
- * test_gks_moments checks rho <a psi> = dW by quadrature.
+ * tests/unit/flow/gks/test_moments checks rho <a psi> = dW by quadrature.
  *
  * Time slopes. The compatibility condition \int psi (a u + b v + A) g = 0 says
  * rho <A psi> = -(dF/dW dW_x + dG/dW dW_y): the Euler time derivative. It is

@@ -115,7 +115,7 @@ static int umf_solve(const PddoPpe *p, int sys, double *x, const double *b) {
     umfpack_di_defaults(control);
     /* no iterative refinement: it costs a solve each, and the direct
      * solution's residual is 9e-15 to 5e-13 of max |R| for 529 to 5,041
-     * nodes already (test_pddo_ppe.c); it grows with the condition number,
+     * nodes already (tests/unit/flow/pddo/test_ppe.c); it grows with the condition number,
      * so the largest clouds should measure it again */
     control[UMFPACK_IRSTEP] = 0;
     const int s = umfpack_di_solve(sys, p->ap, p->ai, p->ax, x, b, p->numeric, control, info);

@@ -12,8 +12,9 @@
  *     w(xi) = prod_a b(|xi_a| / delta),  b(r) = 1 - 6 r^2 + 6 r^3 (r <= 1/2), 2 (1 - r)^3 (r <= 1),
  * whose support is the square (cube) |xi|_inf <= delta. Because M_i M_i^-1 = I
  * the gradient is exact for every linear and quadratic field at every point
- * whose M_i is invertible, at the boundary too (tests/unit/solid/
- * test_rk_gradient.c). A bond's damage d scales its kernel, w <- (1 - d) w.
+ * whose M_i is invertible, at the boundary too
+ * (tests/unit/solid/correspondence/test_rk_gradient.c). A bond's damage d
+ * scales its kernel, w <- (1 - d) w.
  *
  * Kernels: plain arrays in, weights out, no allocation; each point's rows
  * are computed from its own family alone (any thread count, the same bits). */

@@ -102,7 +102,7 @@ static const char *const OP_NAME[PDDO_OPS] = {"d/dx", "d/dy", "lap", "d2/dxdy"};
  *
  * V1/V12: quadratics at every node, measured <= 1.7e-14 (first
  * derivatives), 7.6e-12 (Laplacian) relative, junction 3.8e-12; asserted
- * 1e-10 as in test_pddo_ops.c. Cubics on the junction err by 3.2e-5 (d/dy)
+ * 1e-10 as in test_operators.c. Cubics on the junction err by 3.2e-5 (d/dy)
  * to 1.7e-3 relative, asserted > 1e-5 so the check can fail. */
 static void test_paper_patch(void **state) {
     (void)state;
@@ -281,7 +281,7 @@ static void patch_errors(double h, int rings_inside, double err[SETS][PDDO_OPS])
  * with a small constant, visible at h = 0.025), at the irregular junction
  * and on the wall ring with three rings (its family truncated at 2.07 dx
  * inside the body) the Laplacian tends to first order, as on the lattice's
- * one-sided families (test_pddo_ops.c). At h = 0.025 the junction's
+ * one-sided families (test_operators.c). At h = 0.025 the junction's
  * Laplacian error is 2.2 times the rings'. Asserted: first derivatives
  * >= 1.8 everywhere; Laplacian >= 0.85 everywhere (first order at worst,
  * notes V2's band for one-sided families) and >= 1.8 on the wall ring with

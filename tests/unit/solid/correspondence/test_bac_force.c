@@ -191,7 +191,7 @@ static void test_quadratic_divergence(void **state) {
  * density against the continuum's div sigma = -(lambda + 2 mu) k^2 u,
  * relative to its largest value: second order (measured 4.8e-2, 1.2e-2,
  * 3.1e-3: orders 1.96, 1.99; the square of the plane-wave speed error of
- * test_cpd_solid.c, 3.1 % at 20 h); required within [1.8, 2.2] for the
+ * test_solid.c, 3.1 % at 20 h); required within [1.8, 2.2] for the
  * finer pair. */
 static void test_force_convergence(void **state) {
     (void)state;

@@ -5,7 +5,7 @@
  * boundary points included: C7), wave speeds with the zero-energy penalty
  * (C4), the stable step with the penalty in the operator (C6), momentum
  * with damage and thread independence (C9). Fixtures as in
- * test_cpd_solid.c. */
+ * test_solid.c. */
 #include "cpd_fixtures.h"
 #include "test_support.h"
 
@@ -158,7 +158,7 @@ static void test_wave_speeds(void **state) {
 /* C6: the power-iteration step of the classic operator (the penalty
  * included) is the stability limit. Measured: the kinetic energy never
  * exceeds its start at 0.98, and grows 2.9e6-fold (where the run stops)
- * at 1.05; bounds 10 and 1e3 as in test_cpd_solid.c. */
+ * at 1.05; bounds 10 and 1e3 as in test_solid.c. */
 static void test_stable_step(void **state) {
     (void)state;
     const double under = cpd_fixture_energy_growth(CPD_FORCE_CLASSIC, 0.98),

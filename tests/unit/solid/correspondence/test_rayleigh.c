@@ -199,7 +199,7 @@ static void rayleigh_speed(int order, double bound) {
 }
 
 /* The paper's RK order 2. Measured: -2.58 % at 20 h per wavelength, -1.20 %
- * at 30 h: the bulk waves' dispersion (-1.55 % at 20 h, test_cpd_solid.c)
+ * at 30 h: the bulk waves' dispersion (-1.55 % at 20 h, test_solid.c)
  * plus the softer layer of truncated families at the free surface, which a
  * surface wave feels within a wavelength. The issue's 2 % from 20 h on is
  * missed at 20 h with order 2 (met from about 25 h); the bound 3 % guards
