@@ -2,7 +2,8 @@
 # Installs the Debian packages a make target needs, and nothing else.
 #   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cairo and a font for the
 #                              pictures' text, cmocka, VTK for Python (the tests open our
-#                              .vtu/.vtr files with VTK's own readers), ffmpeg (movies),
+#                              .vtu/.vtr files with VTK's own readers), PyYAML (the mutation
+#                              test walks the case files' keys), ffmpeg (movies),
 #                              Chromium (tests/cli/test_report.sh opens report.html in it),
 #                              SuiteSparse (UMFPACK: the PDDO flow's sparse LU of its
 #                              pressure matrix, which is not symmetric)
@@ -16,7 +17,7 @@
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 ffmpeg chromium libsuitesparse-dev"
+want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev"
 for group in "$@"; do
     case "$group" in
     build) ;;

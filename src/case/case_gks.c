@@ -196,6 +196,7 @@ static int read_axis(CfgNode *grid, const char *key, double *start, int *count,
     if (seq->count < 1 || seq->count > FLOW_MAX_SEGMENTS)
         return cfg_fail(seq, "%d segments; expected 1 to %d", seq->count, FLOW_MAX_SEGMENTS);
     *count = seq->count;
+    double total = 0.0; /* the axis's cells so far */
     for (int i = 0; i < seq->count; i++) {
         CfgNode *s = seq->child[i];
         GridSegment *g = &segments[i];
@@ -225,7 +226,11 @@ static int read_axis(CfgNode *grid, const char *key, double *start, int *count,
             return cfg_fail(s, "spacing given with spacing_start/end; expected one form");
         if (has_h) {
             TRY(cfg_check_positive(s, "spacing", h, "the cell size in m"));
-            if (h > g->length) return cfg_fail_at(s, "spacing", "larger than the segment");
+            if (h > g->length)
+                return cfg_fail_at(
+                    s, "spacing",
+                    "%g m, larger than the segment's %g m; expected at most its length", h,
+                    g->length);
             g->h_start = h;
             g->h_end = 0;
         } else if (has_h0) {
@@ -242,6 +247,12 @@ static int read_axis(CfgNode *grid, const char *key, double *start, int *count,
         } else {
             g->h_start = g->length / (double)cells;
         }
+        total += grid_segment_cells(g); /* as the grid will count them, before it is built */
+        if (!(total <= GRID_MAX_AXIS_CELLS))
+            return cfg_fail_at(s, "length",
+                               "%.3g cells on the %s axis up to this segment (%g m in cells of %g "
+                               "m); expected at most %d: larger cells or a shorter segment",
+                               total, key, g->length, g->h_start, GRID_MAX_AXIS_CELLS);
         TRY(cfg_end_map(s));
     }
     return cfg_end_map(a);

@@ -41,6 +41,11 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
     int kind;
     TRY(cfg_req_enum(item, "type", PROBE_KIND_NAMES, &kind));
     p->kind = (ProbeKind)kind;
+    const CfgNode *at = cfg_map_find(item, "at") ? cfg_map_find(item, "at") : item;
+    char place[320], path[64];
+    cfg_node_where(at, place, sizeof place);
+    cfg_node_path(at, path, sizeof path);
+    snprintf(p->where, sizeof p->where, "%s: %s", place, path);
     const char *name;
     char fallback[32];
     snprintf(fallback, sizeof fallback, kind == PROBE_CRACK_TIP ? "crack" : "probe%d", index);
@@ -248,6 +253,12 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     int method = 0; /* gks; method is read only when given (gks cases stay as they were) */
     if (flow && cfg_map_find(flow, "method"))
         TRY(cfg_req_enum(flow, "method", FLOW_METHODS, &method));
+    if (flow) {
+        char place[320], path[64];
+        cfg_node_where(flow, place, sizeof place);
+        cfg_node_path(flow, path, sizeof path);
+        snprintf(cfg->flow.where, sizeof cfg->flow.where, "%s: %s", place, path);
+    }
     if (flow && method == 1) {
         if (solid)
             return cfg_fail_at(flow, "method",

@@ -406,19 +406,25 @@ static const char *const FORMULATION_NAMES[] = {"bond", "correspondence", NULL};
 
 int case_read_solid(CfgNode *s, SolidConfig *out) {
     memset(out, 0, sizeof *out);
+    char place[320], path[64];
+    cfg_node_where(s, place, sizeof place);
+    cfg_node_path(s, path, sizeof path);
     int formulation;
     TRY(cfg_opt_enum(s, "formulation", FORMULATION_NAMES, 0, &formulation));
+    snprintf(out->where, sizeof out->where, "%s: %s", place, path);
     /* the kind is set with the model's configuration, so that
      * solid_config_free frees what a failed read left */
     if (formulation == 1) {
         CpdConfig *cpd;
         TRY(nspd_alloc(&cpd, 1, sizeof *cpd));
-        *out = (SolidConfig){SOLID_CORRESPONDENCE, cpd};
+        out->kind = SOLID_CORRESPONDENCE;
+        out->model = cpd;
         TRY(read_correspondence(s, cpd));
     } else {
         PdConfig *pd;
         TRY(nspd_alloc(&pd, 1, sizeof *pd));
-        *out = (SolidConfig){SOLID_BOND, pd};
+        out->kind = SOLID_BOND;
+        out->model = pd;
         TRY(read_bond(s, pd));
     }
     return cfg_end_map(s);

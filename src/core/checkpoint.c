@@ -81,7 +81,9 @@ static int hash_prefix(FILE *f, uint64_t bytes, uint64_t *out) {
     hash64_init(&h);
     while (bytes > 0) {
         const size_t n = bytes < CHUNK ? (size_t)bytes : CHUNK;
-        if (fread(buf, 1, n, f) != n) return NSPD_ERR_IO;
+        if (fread(buf, 1, n, f) != n)
+            return NSPD_FAIL(NSPD_ERR_IO, "the checkpoint ends %llu bytes early",
+                             (unsigned long long)bytes);
         hash64_add(&h, buf, n);
         bytes -= n;
     }

@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+static _Thread_local int error_status; /* of the recorded failure; NSPD_OK: none */
 static _Thread_local char error_message[2048];
 static _Thread_local char error_origin[256];
 
@@ -25,13 +26,33 @@ int nspd_error(int status, const char *src_file, int src_line, const char *fmt, 
     vsnprintf(error_message, sizeof error_message, fmt, args);
     va_end(args);
     snprintf(error_origin, sizeof error_origin, "%s:%d", src_file, src_line);
+    error_status = status;
     trace_depth = 0;
     return status;
 }
 
-void nspd_error_trace(const char *func, int line) {
+/* A status NSPD_FAIL can record: one of NspdStatus's failures. */
+static int is_failure(int status) {
+    return status <= NSPD_ERR_INPUT && status >= NSPD_ERR_INTERRUPTED;
+}
+
+int nspd_error_trace(const char *func, int line, int status) {
+    if (status != error_status || !is_failure(status) || !error_message[0]) {
+        /* returned without NSPD_FAIL (a bare code, or a count that
+         * overflowed into a negative number): a bug, said where found */
+        nspd_error(NSPD_ERR_INTERNAL, func, line,
+                   "internal error: a failure without a message (status %d) reached %s:%d; "
+                   "please report it with the input that gave it",
+                   status, func, line);
+        status = NSPD_ERR_INTERNAL;
+    }
     if (trace_depth < NSPD_TRACE_FRAMES) trace[trace_depth] = (TraceFrame){func, line};
     if (trace_depth < INT_MAX) trace_depth++;
+    return status;
+}
+
+int nspd_error_status(void) {
+    return error_status;
 }
 
 int nspd_error_trace_depth(void) {
@@ -62,6 +83,7 @@ const char *nspd_error_origin(void) {
 }
 
 void nspd_error_clear(void) {
+    error_status = NSPD_OK;
     error_message[0] = '\0';
     error_origin[0] = '\0';
     trace_depth = 0;

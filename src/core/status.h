@@ -8,9 +8,19 @@
  * log can say how the failure was reached, not only where it was raised.
  * Only main() turns a status into an exit code.
  *
+ * The contract: no failure leaves a function without its text. NSPD_FAIL
+ * is the one way to make a failure, and it takes a message (a non-empty
+ * format: gcc's -Wformat-zero-length); TRY checks that the failure it
+ * propagates is the one recorded (same status, a message) and otherwise
+ * turns it into NSPD_ERR_INTERNAL with a message that says where it was
+ * found, so the user always reads a reason, and the tests and fuzzers,
+ * which treat an internal error as a bug, find the path
+ * (tests/cli/test_status_contract.sh also refuses a bare
+ * `return NSPD_ERR_...` in src/).
+ *
  * Invariants of the thread-local record: NSPD_FAIL (nspd_error) sets the
- * message and the origin and empties the chain; each TRY that returns a
- * failure appends one frame; the chain holds at most NSPD_TRACE_FRAMES
+ * status, the message and the origin and empties the chain; each TRY that
+ * returns a failure appends one frame; the chain holds at most NSPD_TRACE_FRAMES
  * frames, the innermost ones, and counts those it had to drop. A frame
  * keeps __func__ by pointer (a string with static storage): nothing is
  * allocated, so a failed allocation can be traced too. */
@@ -45,23 +55,29 @@ int nspd_error(int status, const char *src_file, int src_line, const char *fmt, 
 #define NSPD_FAIL(status, ...) nspd_error((status), __FILE__, __LINE__, __VA_ARGS__)
 #endif
 
-/* Appends the frame `func:line` to this thread's traceback (TRY calls it;
- * `func` must outlive the record, as __func__ does). */
-void nspd_error_trace(const char *func, int line);
+/* Appends the frame `func:line` to this thread's traceback and returns the
+ * status to propagate (TRY calls it with the failure it received; `func`
+ * must outlive the record, as __func__ does): `status` itself when it is
+ * the failure NSPD_FAIL recorded, else NSPD_ERR_INTERNAL with the message
+ * "a failure without a message (status S) reached func:line". */
+int nspd_error_trace(const char *func, int line, int status);
 
 /* Propagates a failure: returns the status of `expr` from the enclosing
  * function if it is negative, after adding this function and line to the
- * traceback. */
+ * traceback; NSPD_ERR_INTERNAL, with a message, if that status is not the
+ * failure NSPD_FAIL recorded (nspd_error_trace). */
 #define TRY(expr)                                                                                  \
     do {                                                                                           \
         int try_status_ = (expr);                                                                  \
         if (try_status_ < 0) {                                                                     \
-            nspd_error_trace(__func__, __LINE__);                                                  \
-            return try_status_;                                                                    \
+            try_status_ = nspd_error_trace(__func__, __LINE__, try_status_);                       \
+            /* negative as written, so the compiler sees the early return is a failure */          \
+            return try_status_ < 0 ? try_status_ : NSPD_ERR_INTERNAL;                              \
         }                                                                                          \
     } while (0)
 
 const char *nspd_error_message(void); /* "" when no error was recorded */
+int nspd_error_status(void);          /* the recorded failure's status; NSPD_OK when none */
 const char *nspd_error_origin(void);  /* "file.c:123" of the NSPD_FAIL call */
 /* The callers a failure passed through, innermost first:
  * "read_mesh:42 <- load:88 <- cmd_run:130", with " <- (N more)" when frames

@@ -124,7 +124,8 @@ void flow_cell_state(const Flow *f, int64_t cell, double out[5]) {
 int flow_cell_at(const Flow *f, const char *name, double x, double y, int64_t *cell) {
     if (!f->ops->cell_at)
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "probe '%s': probes on the flow need a grid; the '%s' solver has none",
+                         "probe '%s': probes on the flow need a grid; the '%s' solver has none "
+                         "(expected a point probe)",
                          name, f->ops->name);
     return f->ops->cell_at(f->impl, name, x, y, cell);
 }
@@ -133,7 +134,8 @@ int flow_grid_line(const Flow *f, const char *name, int64_t through, int along, 
                    int64_t *count) {
     if (!f->ops->grid_line)
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "probe '%s': probes on the flow need a grid; the '%s' solver has none",
+                         "probe '%s': probes on the flow need a grid; the '%s' solver has none "
+                         "(expected a point probe)",
                          name, f->ops->name);
     return f->ops->grid_line(f->impl, through, along, cells, count);
 }

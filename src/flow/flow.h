@@ -36,6 +36,9 @@ typedef enum {
  * the case reader and the solver know. */
 typedef struct {
     FlowMethod method;
+    /* "FILE:LINE:COL: flow" (or the --set) of the section, for what the
+     * solver refuses when it is built (no location of its own) */
+    char where[400];
     /* s: time averages (a body's forces) are taken from this time on; the
      * driver sets it from output.average_from, less a round-off margin of
      * the end time */

@@ -46,7 +46,7 @@ int xy_read_file(const char *path, double **xy, int *count, XyReadError *err) {
     FILE *fp = in_file_open(path, &open_error);
     if (!fp) {
         err->os_error = open_error;
-        return NSPD_ERR_IO;
+        return NSPD_FAIL(NSPD_ERR_IO, "%s: cannot open it", path); /* err: for the caller's */
     }
     char line[512];
     int lineno = 0, n = 0, cap = 0, st = NSPD_OK, data_lines = 0;
@@ -64,7 +64,7 @@ int xy_read_file(const char *path, double **xy, int *count, XyReadError *err) {
             copy[strcspn(copy, "\r\n")] = '\0';
             err->line = lineno;
             snprintf(err->text, sizeof err->text, "%s", copy);
-            st = NSPD_ERR_INPUT;
+            st = NSPD_FAIL(NSPD_ERR_INPUT, "%s:%d: '%s' is not two numbers", path, lineno, copy);
             break;
         }
         data_lines = data_lines < 0 ? 1 : data_lines + 1;

@@ -64,12 +64,14 @@ static int setup_one(ProbeState *p, const PdPoints *body, Flow *flow, int max_sa
         if (!flow)
             return NSPD_FAIL(NSPD_ERR_INPUT,
                              "probe '%s' is on the flow, but the case has "
-                             "none",
+                             "none; expected a flow section or a probe on the solid",
                              c->name);
         return setup_flow(p, flow);
     }
     if (!body)
-        return NSPD_FAIL(NSPD_ERR_INPUT, "probe '%s' needs the solid, but the case has none",
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "probe '%s' needs the solid, but the case has none; expected a solid "
+                         "section or a probe on the flow",
                          c->name);
     if (c->kind == PROBE_POINT) {
         double best = INFINITY;
@@ -93,7 +95,8 @@ static int setup_one(ProbeState *p, const PdPoints *body, Flow *flow, int max_sa
             if (pass == 0) {
                 if (m == 0)
                     return NSPD_FAIL(NSPD_ERR_INPUT,
-                                     "line probe '%s': its region holds no material point",
+                                     "line probe '%s': its region holds no material point; "
+                                     "expected a region that overlaps the body",
                                      c->name);
                 TRY(nspd_alloc(&p->members, (size_t)m, sizeof(int64_t)));
                 p->member_count = m;
@@ -154,6 +157,12 @@ int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *
     for (int i = 0; i < cfg->probe_count; i++) {
         (*probes)[i].cfg = &cfg->probes[i];
         int status = setup_one(&(*probes)[i], body, flow, max_samples);
+        if (status == NSPD_ERR_INPUT && cfg->probes[i].where[0]) {
+            /* found on the built model: said at the probe's key */
+            char what[1024];
+            snprintf(what, sizeof what, "%s", nspd_error_message());
+            status = NSPD_FAIL(NSPD_ERR_INPUT, "%s: %s", cfg->probes[i].where, what);
+        }
         if (status == NSPD_OK) status = setup_table(&(*probes)[i], body);
         if (status != NSPD_OK) {
             probes_destroy(probes, cfg->probe_count);

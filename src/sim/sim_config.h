@@ -29,6 +29,10 @@ typedef struct {
     ProbeKind kind;
     ProbeTarget target; /* point and line probes: the solid's points or the flow's cells */
     char name[SIM_MAX_NAME];
+    /* "FILE:LINE:COL: output.probes[i].at" (or the --set) of the probe's
+     * point (its entry when it has none), for messages about it found when
+     * the model is built */
+    char where[400];
     /* crack_tip: the damaged point (damage > threshold) furthest along
      * `direction`, optionally only inside `region`; branches: the damaged
      * points ahead of `at` along `direction` (sim/probes.c) */

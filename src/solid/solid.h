@@ -40,6 +40,9 @@ typedef enum {
  * reader and the model know. */
 typedef struct {
     SolidKind kind;
+    /* "FILE:LINE:COL: solid" (or the --set) of the section, for what the
+     * model refuses when it is built (no location of its own) */
+    char where[400];
     /* owned (nspd_alloc) when the kind's ops have config_free: the model's
      * create takes it (and sets this NULL), else solid_config_free frees it; otherwise
      * borrowed (a registered model's configuration, never freed) */

@@ -29,32 +29,40 @@ static double solve_ratio(double h, int n, double L) {
     return exp(0.5 * (lo + hi));
 }
 
+static bool segment_uniform(const GridSegment *s) {
+    return !(s->h_end > 0.0) || s->h_end == s->h_start;
+}
+
+double grid_segment_cells(const GridSegment *s) {
+    if (s->cells > 0) return s->cells;
+    const double L = s->length, a = s->h_start, b = s->h_end;
+    if (segment_uniform(s)) return fmax(1.0, round(L / a));
+    return fmax(1.0, round(1.0 + log(b / a) / log((L - a) / (L - b))));
+}
+
 static int segment_cells(const GridSegment *s, int *n, double *h0, double *ratio) {
     const double L = s->length;
     if (!(L > 0.0)) return NSPD_FAIL(NSPD_ERR_INPUT, "grid segment length must be > 0 (got %g)", L);
-    const bool uniform = !(s->h_end > 0.0) || s->h_end == s->h_start;
-    if (uniform) {
-        if (s->cells > 0)
-            *n = s->cells;
-        else if (s->h_start > 0.0)
-            *n = (int)fmax(1.0, round(L / s->h_start));
-        else
-            return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "uniform grid segment needs a spacing > 0 or a cell count");
-        *h0 = L / *n;
-        *ratio = 1.0;
-        return NSPD_OK;
-    }
+    const bool uniform = segment_uniform(s);
     const double a = s->h_start, b = s->h_end;
-    if (!(a > 0.0) || a >= L || b >= L)
+    if (uniform && !(s->cells > 0) && !(a > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "uniform grid segment needs a spacing > 0 or a cell count");
+    if (!uniform && (!(a > 0.0) || a >= L || b >= L))
         return NSPD_FAIL(
             NSPD_ERR_INPUT,
             "stretched grid segment: spacings (%g, %g) must be > 0 and < its length %g", a, b, L);
-    if (s->cells > 0) {
-        *n = s->cells;
-    } else {
-        const double r0 = (L - a) / (L - b);
-        *n = (int)fmax(1.0, round(1.0 + log(b / a) / log(r0)));
+    const double cells = grid_segment_cells(s);
+    if (!(cells <= GRID_MAX_AXIS_CELLS)) /* NaN too */
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "a grid segment of %g m with spacing %g has %.3g cells; expected at most "
+                         "%d",
+                         L, a, cells, GRID_MAX_AXIS_CELLS);
+    *n = (int)cells;
+    if (uniform) {
+        *h0 = L / *n;
+        *ratio = 1.0;
+        return NSPD_OK;
     }
     if (*n == 1) {
         *h0 = L;
@@ -73,6 +81,10 @@ int grid_segments_spacing(int count, const GridSegment *segments, double *h, int
         int n = 0;
         double h0 = 0.0, r = 1.0;
         TRY(segment_cells(&segments[s], &n, &h0, &r));
+        if (n > GRID_MAX_AXIS_CELLS - total)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "a grid axis of more than %d cells; expected at most %d",
+                             GRID_MAX_AXIS_CELLS, GRID_MAX_AXIS_CELLS);
         /* Spacings from the progression, the last one adjusted by the
          * rounding residue so the segment ends exactly at its length. */
         double sum = 0.0, hk = h0;

@@ -64,6 +64,16 @@ int grid_axis_create(GridAxis *axis, double lo, int count, const GridSegment *se
                      bool periodic);
 void grid_axis_destroy(GridAxis *axis);
 
+/* The most cells an axis may have (segments and their sum): counts stay
+ * far inside int, and a grid of 1e8 x 1e8 is refused by the memory check
+ * long before. */
+enum { GRID_MAX_AXIS_CELLS = 100000000 };
+
+/* The cells a valid segment will have, as a double (so a huge length over a
+ * tiny spacing cannot overflow): what the grid will build, for checks
+ * before anything is built. */
+double grid_segment_cells(const GridSegment *segment);
+
 /* Spacing of each interior cell of a segment list without building an axis:
  * writes up to max cells into h (if h != NULL) and returns the cell count, or
  * a negative status. */

@@ -147,8 +147,9 @@ static int gks_cell_at(const void *impl, const char *name, double x, double y, i
     for (int d = 0; d < 2; d++)
         if (at[d] < g->ax[d].lo || at[d] > g->ax[d].hi)
             return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "probe '%s': at[%d] = %g is outside the flow grid [%g, %g]", name, d,
-                             at[d], g->ax[d].lo, g->ax[d].hi);
+                             "probe '%s': at[%d] = %g is outside the flow grid [%g, %g]; expected "
+                             "a point on the grid",
+                             name, d, at[d], g->ax[d].lo, g->ax[d].hi);
     *cell = grid_index(g, grid_axis_cell_of(&g->ax[0], x), grid_axis_cell_of(&g->ax[1], y));
     return NSPD_OK;
 }

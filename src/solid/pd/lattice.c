@@ -97,7 +97,9 @@ int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, con
     if (n == 0) {
         nspd_free(&inside);
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "no lattice point of spacing %g m falls inside the solid geometry", dx);
+                         "no lattice point of spacing %g m falls inside the solid geometry; "
+                         "expected a spacing smaller than the body",
+                         dx);
     }
     if (n > INT32_MAX) {
         nspd_free(&inside);

@@ -93,6 +93,46 @@ static void test_try_records_traceback(void **state) {
     assert_string_equal(nspd_error_message(), "bottom");
 }
 
+/* What the status contract catches: a code returned without NSPD_FAIL, a
+ * count that overflowed into a negative number, and a stale message of an
+ * earlier, handled failure with another status. */
+static int bare_code(void) {
+    return -1; /* NSPD_ERR_INPUT's value, written as a bare number */
+}
+
+static int overflowed_count(void) {
+    return -123456;
+}
+
+static int propagate(int (*f)(void), int *line) {
+    *line = __LINE__ + 1;
+    TRY(f());
+    return NSPD_OK;
+}
+
+static void test_try_refuses_a_failure_without_its_message(void **state) {
+    (void)state;
+    int line;
+    nspd_error_clear();
+    assert_int_equal(propagate(bare_code, &line), NSPD_ERR_INTERNAL);
+    char expected[128];
+    snprintf(expected, sizeof expected, "without a message (status -1) reached propagate:%d", line);
+    assert_non_null(strstr(nspd_error_message(), expected));
+    assert_int_equal(nspd_error_status(), NSPD_ERR_INTERNAL);
+
+    assert_int_equal(propagate(overflowed_count, &line), NSPD_ERR_INTERNAL);
+    assert_non_null(strstr(nspd_error_message(), "(status -123456)"));
+
+    /* an earlier failure's message does not vouch for a later bare code */
+    assert_int_equal(inner(1), NSPD_ERR_IO);
+    assert_int_equal(propagate(bare_code, &line), NSPD_ERR_INTERNAL);
+    /* the recorded failure passes unchanged, however far */
+    assert_int_equal(top(1), NSPD_ERR_IO);
+    assert_string_equal(nspd_error_message(), "disk full");
+    nspd_error_clear();
+    assert_int_equal(nspd_error_status(), NSPD_OK);
+}
+
 static void test_alloc_aligned_zeroed_counted(void **state) {
     (void)state;
     size_t before = nspd_mem_live_bytes();
@@ -199,6 +239,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_try_propagates),
         cmocka_unit_test(test_try_records_traceback),
+        cmocka_unit_test(test_try_refuses_a_failure_without_its_message),
         cmocka_unit_test(test_alloc_aligned_zeroed_counted),
         cmocka_unit_test(test_alloc_failure_injection_and_overflow),
         cmocka_unit_test(test_reduce_same_at_any_thread_count),
