@@ -26,6 +26,10 @@ check() { # name, expected regex, command...
         echo "FAIL $name: message does not match /$expect/:"
         cat "$work/err"
         failures=$((failures + 1))
+    elif [ "$placed" = yes ] && ! head -n 1 "$work/err" | grep -Eq '^([^ ]+:[0-9]+:[0-9]+|--set [^ ]+): '; then
+        echo "FAIL $name: the message does not start with FILE:LINE:COL or the --set:"
+        cat "$work/err"
+        failures=$((failures + 1))
     elif [ -e "$work/result" ]; then
         echo "FAIL $name: created the output directory"
         failures=$((failures + 1))
@@ -33,6 +37,9 @@ check() { # name, expected regex, command...
     rm -rf "$work/result"
 }
 
+# every case file of bad/ is refused at a place in it (FILE:LINE:COL, or the
+# --set of its "# args:"); the command-line checks below name their option
+placed=yes
 cd "$src/tests/cli/bad" || exit 1
 for file in *.yaml; do
     expect=$(sed -n 's/^# expect: //p' "$file")
@@ -41,6 +48,7 @@ for file in *.yaml; do
     check "run $file" "$expect" "$nspd" run "$file" -o "$work/result" $args
     check "check $file" "$expect" "$nspd" check "$file" $args
 done
+placed=no
 
 check "missing file" "nonexistent.yaml: cannot open the case file" \
     "$nspd" run nonexistent.yaml -o "$work/result"

@@ -12,7 +12,13 @@
  * case file: field.vtr (a 4 x 3 flow field, for flow.initial.from) and
  * body.csv (a triangle, for a polygon body); the seed corpus refers to
  * them. sim_create is left out: it allocates the lattice and grid the case
- * asks for, and its refusals are tested in tests/cli/test_bad_input.sh. */
+ * asks for, and its refusals are tested in tests/cli/test_bad_input.sh and
+ * tests/cli/test_mutations.sh.
+ *
+ * The contract (issue 23), asserted on every input: accepted, or refused
+ * with NSPD_ERR_INPUT and a message that starts with the place (the case
+ * file's FILE:LINE:COL or the --set), or NSPD_ERR_IO naming what could not
+ * be read; anything else aborts, which libFuzzer reports as a finding. */
 #include "fuzz_target.h"
 
 #include "case/case_read.h"
@@ -20,6 +26,7 @@
 #include "io/cfg_tree.h"
 #include "io/vtk.h"
 
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,6 +115,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     }
     if (verbose)
         fprintf(stderr, "fuzz_case: %s\n", status == NSPD_OK ? "accepted" : nspd_error_message());
+    if (status != NSPD_OK) {
+        const char *message = nspd_error_message();
+        const bool placed = strncmp(message, case_path, strlen(case_path)) == 0 ||
+                            strncmp(message, "--set ", 6) == 0;
+        if (!message[0] || (status != NSPD_ERR_INPUT && status != NSPD_ERR_IO) ||
+            (status == NSPD_ERR_INPUT && !placed)) {
+            fprintf(stderr, "fuzz_case: the refusal breaks the contract: status %d, '%s'\n", status,
+                    message);
+            abort();
+        }
+    }
     nspd_error_clear();
     free(text);
     return 0;
