@@ -7,7 +7,12 @@
  * AddressSanitizer report. Then the same file goes through the case
  * reader's path (a small flow case with `initial: {from: input.vtr}`),
  * which checks the arrays and builds the flow's field source from them.
- * Everything is freed, so a leak is a finding. */
+ * Everything is freed, so a leak is a finding.
+ *
+ * The refusal contract (issue 23), asserted on every input: the reader
+ * refuses with NSPD_ERR_INPUT or NSPD_ERR_IO and a message that names the
+ * file; the case reader refuses at the case's FILE:LINE:COL (the `from`
+ * key). Anything else aborts: a finding. */
 #include "fuzz_target.h"
 
 #include "case/case_read.h"
@@ -68,6 +73,14 @@ static void read_arrays(const VtkRectilinear *g) {
     (void)sink;
 }
 
+/* A refusal that breaks the contract: said, then abort (libFuzzer saves
+ * the input). */
+static void broken(const char *who, int status) {
+    fprintf(stderr, "fuzz_vtk: %s's refusal breaks the contract: status %d, '%s'\n", who, status,
+            nspd_error_message());
+    abort();
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (ready == 0) ready = set_up() == 0 ? 1 : -1;
     if (ready < 0 || fuzz_write_file(vtr_path, data, size) != 0) abort();
@@ -75,6 +88,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     VtkRectilinear grid;
     int status = vtk_read_rectilinear(vtr_path, &grid);
     if (status == NSPD_OK) read_arrays(&grid);
+    if (status != NSPD_OK && ((status != NSPD_ERR_INPUT && status != NSPD_ERR_IO) ||
+                              !strstr(nspd_error_message(), vtr_path)))
+        broken("the .vtr reader", status);
     if (verbose)
         fprintf(stderr, "fuzz_vtk: %s\n", status == NSPD_OK ? "read" : nspd_error_message());
     vtk_rectilinear_free(&grid);
@@ -85,6 +101,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (status == NSPD_OK) {
         sim_config_free(&cfg);
         cfg_doc_free(&doc);
+    } else if ((status != NSPD_ERR_INPUT && status != NSPD_ERR_IO) ||
+               strncmp(nspd_error_message(), case_path, strlen(case_path)) != 0) {
+        broken("the case reader", status);
     }
     if (verbose)
         fprintf(stderr, "fuzz_vtk: case %s\n",
