@@ -5,6 +5,7 @@
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 static _Thread_local int error_status; /* of the recorded failure; NSPD_OK: none */
 static _Thread_local char error_message[2048];
@@ -48,6 +49,18 @@ int nspd_error_trace(const char *func, int line, int status) {
     }
     if (trace_depth < NSPD_TRACE_FRAMES) trace[trace_depth] = (TraceFrame){func, line};
     if (trace_depth < INT_MAX) trace_depth++;
+    return status;
+}
+
+int nspd_error_at(int status, const char *where) {
+    if (status != NSPD_ERR_INPUT || !where || !where[0]) return status;
+    char what[sizeof error_message];
+    memcpy(what, error_message, sizeof what);
+    snprintf(error_message, sizeof error_message, "%s: ", where);
+    const size_t len = strlen(error_message), room = sizeof error_message - 1 - len;
+    const size_t n = strnlen(what, room); /* the message, cut to what fits */
+    memcpy(error_message + len, what, n);
+    error_message[len + n] = '\0';
     return status;
 }
 

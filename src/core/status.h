@@ -76,6 +76,12 @@ int nspd_error_trace(const char *func, int line, int status);
         }                                                                                          \
     } while (0)
 
+/* Says an input failure at a place: when `status` is NSPD_ERR_INPUT and
+ * `where` is not empty, the recorded message becomes "WHERE: message" (a
+ * model's refusal found while it is built, which knows no place in the case
+ * file, said at its section or key); returns `status` either way. */
+int nspd_error_at(int status, const char *where);
+
 const char *nspd_error_message(void); /* "" when no error was recorded */
 int nspd_error_status(void);          /* the recorded failure's status; NSPD_OK when none */
 const char *nspd_error_origin(void);  /* "file.c:123" of the NSPD_FAIL call */

@@ -156,13 +156,9 @@ int probes_create(ProbeState **probes, const OutputConfig *cfg, const PdPoints *
     TRY(nspd_alloc(probes, (size_t)cfg->probe_count, sizeof(ProbeState)));
     for (int i = 0; i < cfg->probe_count; i++) {
         (*probes)[i].cfg = &cfg->probes[i];
-        int status = setup_one(&(*probes)[i], body, flow, max_samples);
-        if (status == NSPD_ERR_INPUT && cfg->probes[i].where[0]) {
-            /* found on the built model: said at the probe's key */
-            char what[1024];
-            snprintf(what, sizeof what, "%s", nspd_error_message());
-            status = NSPD_FAIL(NSPD_ERR_INPUT, "%s: %s", cfg->probes[i].where, what);
-        }
+        /* found on the built model: said at the probe's key */
+        int status =
+            nspd_error_at(setup_one(&(*probes)[i], body, flow, max_samples), cfg->probes[i].where);
         if (status == NSPD_OK) status = setup_table(&(*probes)[i], body);
         if (status != NSPD_OK) {
             probes_destroy(probes, cfg->probe_count);

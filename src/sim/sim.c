@@ -74,16 +74,6 @@ static int check_memory(Sim *sim) {
                      given ? " or a larger --max-memory" : "");
 }
 
-/* A model's refusal of its own configuration (found while it is built, so
- * without a place in the case file), said at its section: "FILE:LINE:COL:
- * solid: what; expected". */
-static int at_section(int status, const char *where) {
-    if (status != NSPD_ERR_INPUT || !where[0]) return status;
-    char what[1024];
-    snprintf(what, sizeof what, "%s", nspd_error_message());
-    return NSPD_FAIL(NSPD_ERR_INPUT, "%s: %s", where, what);
-}
-
 int sim_create(Sim *sim, SimConfig *cfg) {
     memset(sim, 0, sizeof *sim);
     sim->cfg = *cfg;
@@ -91,11 +81,12 @@ int sim_create(Sim *sim, SimConfig *cfg) {
     SimConfig *c = &sim->cfg;
     int status = check_memory(sim);
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
-        status = at_section(solid_create(&sim->solid, &c->solid), c->solid.where);
+        /* a refusal found while the model is built, said at its section */
+        status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);
     /* a flow's own means (its bodies' forces), as the coupling's below */
     c->flow.average_from = c->output.average_from - 1e-12 * c->end_time;
     if (status == NSPD_OK && c->flow.method != FLOW_METHOD_NONE)
-        status = at_section(flow_create(&sim->flow, &c->flow), c->flow.where);
+        status = nspd_error_at(flow_create(&sim->flow, &c->flow), c->flow.where);
     if (status == NSPD_OK && c->coupling.kind != COUPLING_NONE) {
         /* averages from output.average_from, to a round-off of the end time */
         c->coupling.average_from = c->output.average_from - 1e-12 * c->end_time;

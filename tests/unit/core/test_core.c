@@ -133,6 +133,30 @@ static void test_try_refuses_a_failure_without_its_message(void **state) {
     assert_int_equal(nspd_error_status(), NSPD_OK);
 }
 
+/* A refusal found where no place is known, said at one; other failures
+ * and an empty place leave the message alone. */
+static void test_error_at_says_the_place(void **state) {
+    (void)state;
+    int status = NSPD_FAIL(NSPD_ERR_INPUT, "no lattice point; expected a smaller spacing");
+    assert_int_equal(nspd_error_at(status, "case.yaml:3:1: solid"), NSPD_ERR_INPUT);
+    assert_string_equal(nspd_error_message(),
+                        "case.yaml:3:1: solid: no lattice point; expected a smaller spacing");
+    assert_int_equal(nspd_error_at(status, ""), NSPD_ERR_INPUT);
+    assert_string_equal(nspd_error_message(),
+                        "case.yaml:3:1: solid: no lattice point; expected a smaller spacing");
+    status = NSPD_FAIL(NSPD_ERR_IO, "disk full");
+    assert_int_equal(nspd_error_at(status, "case.yaml:3:1: solid"), NSPD_ERR_IO);
+    assert_string_equal(nspd_error_message(), "disk full");
+    /* a message that fills the record is cut, never overrun */
+    char long_text[4000];
+    memset(long_text, 'a', sizeof long_text - 1);
+    long_text[sizeof long_text - 1] = '\0';
+    status = NSPD_FAIL(NSPD_ERR_INPUT, "%s", long_text);
+    assert_int_equal(nspd_error_at(status, "here"), NSPD_ERR_INPUT);
+    assert_int_equal(strncmp(nspd_error_message(), "here: aaa", 9), 0);
+    nspd_error_clear();
+}
+
 static void test_alloc_aligned_zeroed_counted(void **state) {
     (void)state;
     size_t before = nspd_mem_live_bytes();
@@ -240,6 +264,7 @@ int main(void) {
         cmocka_unit_test(test_try_propagates),
         cmocka_unit_test(test_try_records_traceback),
         cmocka_unit_test(test_try_refuses_a_failure_without_its_message),
+        cmocka_unit_test(test_error_at_says_the_place),
         cmocka_unit_test(test_alloc_aligned_zeroed_counted),
         cmocka_unit_test(test_alloc_failure_injection_and_overflow),
         cmocka_unit_test(test_reduce_same_at_any_thread_count),
