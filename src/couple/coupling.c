@@ -32,10 +32,13 @@ struct Coupling {
     void *impl;
 };
 
+/* The ops table of a kind, or NULL for none or an unknown one. */
+static const CouplingOps *kind_ops(CouplingKind kind) {
+    return kind > COUPLING_NONE && kind < COUPLING_KIND_MAX ? COUPLING_MODELS[kind] : NULL;
+}
+
 void coupling_config_free(CouplingConfig *cfg) {
-    const CouplingOps *ops = cfg->kind > COUPLING_NONE && cfg->kind < COUPLING_KIND_MAX
-                                 ? COUPLING_MODELS[cfg->kind]
-                                 : NULL;
+    const CouplingOps *ops = kind_ops(cfg->kind);
     if (cfg->model && ops && ops->config_free) {
         ops->config_free(cfg->model);
         nspd_free(&cfg->model);
@@ -45,23 +48,20 @@ void coupling_config_free(CouplingConfig *cfg) {
 
 CouplingEstimate coupling_estimate(const CouplingConfig *cfg, const FlowEstimate *flow) {
     const CouplingEstimate none = {0};
-    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX ||
-        !COUPLING_MODELS[cfg->kind] || !COUPLING_MODELS[cfg->kind]->estimate)
-        return none;
-    return COUPLING_MODELS[cfg->kind]->estimate(cfg, flow);
+    const CouplingOps *ops = kind_ops(cfg->kind);
+    if (!ops || !ops->estimate) return none;
+    return ops->estimate(cfg, flow);
 }
 
 int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flow) {
     *out = NULL;
-    if (cfg->kind <= COUPLING_NONE || cfg->kind >= COUPLING_KIND_MAX || !COUPLING_MODELS[cfg->kind])
-        return NSPD_FAIL(NSPD_ERR_INPUT, "unknown coupling %d", (int)cfg->kind);
-    if (!flow)
-        return NSPD_FAIL(NSPD_ERR_INPUT, "the %s coupling needs a flow",
-                         COUPLING_MODELS[cfg->kind]->name);
+    const CouplingOps *ops = kind_ops(cfg->kind);
+    if (!ops) return NSPD_FAIL(NSPD_ERR_INPUT, "unknown coupling %d", (int)cfg->kind);
+    if (!flow) return NSPD_FAIL(NSPD_ERR_INPUT, "the %s coupling needs a flow", ops->name);
     Coupling *c;
     TRY(nspd_alloc(&c, 1, sizeof *c));
     c->kind = cfg->kind;
-    c->ops = COUPLING_MODELS[cfg->kind];
+    c->ops = ops;
     int status = c->ops->create(&c->impl, cfg, solid, flow);
     if (status != NSPD_OK) {
         nspd_free(&c);

@@ -72,7 +72,7 @@ int flow_create(Flow **out, FlowConfig *cfg) {
     Flow *f;
     TRY(nspd_alloc(&f, 1, sizeof *f));
     f->method = cfg->method;
-    f->ops = FLOW_METHODS[cfg->method];
+    f->ops = method_ops(cfg->method);
     int status = f->ops->create(&f->impl, cfg);
     if (status != NSPD_OK) {
         nspd_free(&f);

@@ -61,10 +61,9 @@ int solid_config_dim(const SolidConfig *cfg) {
 
 SolidEstimate solid_estimate(const SolidConfig *cfg) {
     const SolidEstimate none = {0, 0, 0};
-    if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_MAX || !SOLID_MODELS[cfg->kind] ||
-        !SOLID_MODELS[cfg->kind]->estimate)
-        return none;
-    SolidEstimate e = SOLID_MODELS[cfg->kind]->estimate(cfg);
+    const SolidOps *ops = kind_ops(cfg->kind);
+    if (!ops || !ops->estimate) return none;
+    SolidEstimate e = ops->estimate(cfg);
     e.bytes +=
         e.points * (double)(sizeof(double) * 4); /* the handle's damage and position scratch */
     return e;
@@ -84,12 +83,12 @@ int solid_bench(const char *name, long size, long steps, Report *out, bool *foun
 
 int solid_create(Solid **out, SolidConfig *cfg) {
     *out = NULL;
-    if (cfg->kind <= SOLID_NONE || cfg->kind >= SOLID_KIND_MAX || !SOLID_MODELS[cfg->kind])
+    if (!kind_ops(cfg->kind))
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown solid model %d", (int)cfg->kind);
     Solid *s;
     TRY(nspd_alloc(&s, 1, sizeof *s));
     s->kind = cfg->kind;
-    s->ops = SOLID_MODELS[cfg->kind];
+    s->ops = kind_ops(cfg->kind);
     int status = s->ops->create(&s->impl, &s->points, cfg);
     if (status == NSPD_OK) status = nspd_alloc(&s->damage, (size_t)s->points.n, sizeof(double));
     for (int d = 0; d < s->points.dim && status == NSPD_OK; d++)
