@@ -51,12 +51,13 @@ static int report(int status) {
 
 /* Reads the case and builds the simulation. Any failure here is the user's
  * input (an unreadable file included): exit status 2, nothing written. */
-static int load(const CaseOptions *opt, CfgDoc *doc, Sim *sim) {
+static int load(const CaseOptions *opt, bool check_only, CfgDoc *doc, Sim *sim) {
     SimConfig cfg;
     int status = case_read(opt->case_path, opt->overrides, opt->override_count, doc, &cfg);
     if (status == NSPD_ERR_IO) status = NSPD_ERR_INPUT;
     if (status != NSPD_OK) return status;
     cfg.max_memory_bytes = opt->max_memory_mb * 1e6;
+    cfg.check_only = check_only;
     status = sim_create(sim, &cfg);
     if (status != NSPD_OK) {
         sim_config_free(&cfg);
@@ -86,7 +87,7 @@ int cmd_check(int argc, char **argv) {
     if (!options_parse(argc, argv, false, "check", &opt)) return EXIT_BAD_INPUT;
     CfgDoc doc;
     Sim sim;
-    int status = load(&opt, &doc, &sim);
+    int status = load(&opt, true, &doc, &sim);
     if (status != NSPD_OK) return report(status);
     char what[256];
     describe(&sim, what, sizeof what);
@@ -102,7 +103,7 @@ int cmd_info(int argc, char **argv) {
     CfgDoc doc;
     Sim sim;
     double t0 = nspd_wall_time();
-    int status = load(&opt, &doc, &sim);
+    int status = load(&opt, false, &doc, &sim);
     if (status != NSPD_OK) return report(status);
     double setup_s = nspd_wall_time() - t0;
     size_t memory = nspd_mem_live_bytes();
@@ -271,7 +272,7 @@ int cmd_run(int argc, char **argv) {
     if (!options_parse(argc, argv, true, "run", &opt)) return EXIT_BAD_INPUT;
     CfgDoc doc;
     Sim sim;
-    int status = load(&opt, &doc, &sim);
+    int status = load(&opt, false, &doc, &sim);
     if (status != NSPD_OK) return report(status);
     char dir[4096];
     if (opt.out_dir)

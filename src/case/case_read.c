@@ -7,6 +7,7 @@
 #include "case/case_pddo.h"
 #include "case/case_shapes.h"
 #include "case/case_solid.h"
+#include "couple/penalty/model.h"
 #include "io/cfg_read.h"
 
 #include <math.h>
@@ -228,6 +229,33 @@ static int read_coupling(CfgNode *m, SimConfig *cfg) {
     return cfg_end_map(m);
 }
 
+static const char *const COUPLING_KINDS[] = {"ghost_cell", "penalty", NULL};
+
+/* `coupling: {kind: penalty, ...}`: the volumetric penalty of paper 003
+ * (couple/penalty/model.h). */
+static int read_penalty(CfgNode *m, SimConfig *cfg) {
+    PenaltyConfig *c = cfg->coupling.model;
+    TRY(cfg_opt_double(m, "beta", 1.0, &c->beta));
+    TRY(cfg_check_range(m, "beta", c->beta, 1e-12, 1e30,
+                        "a penalty factor > 0 (the paper's 1/3 to 9)"));
+    TRY(cfg_opt_bool(m, "strong", false, &c->strong));
+    TRY(cfg_opt_bool(m, "damaged", false, &c->damaged));
+    TRY(cfg_opt_double(m, "h", 0.0, &c->h));
+    TRY(cfg_check_range(m, "h", c->h, 0.0, 1e30,
+                        "a length in m (0: the solid's lattice spacing)"));
+    TRY(cfg_opt_double(m, "dt", 0.0, &c->dt));
+    TRY(cfg_check_range(m, "dt", c->dt, 0.0, 1e30, "a time in s (0: the solid's stable step)"));
+    int transfer, thickness, energy;
+    TRY(cfg_opt_enum(m, "transfer", FLOW_TRANSFER_NAMES, FLOW_TRANSFER_QUADRATIC, &transfer));
+    TRY(cfg_opt_enum(m, "thickness", PENALTY_THICKNESS_NAMES, PENALTY_DEPTH_CONSISTENT,
+                     &thickness));
+    TRY(cfg_opt_enum(m, "energy", PENALTY_ENERGY_NAMES, PENALTY_ENERGY_TOTAL, &energy));
+    c->transfer = (FlowTransferKind)transfer;
+    c->thickness = (PenaltyThickness)thickness;
+    c->energy = (PenaltyEnergy)energy;
+    return cfg_end_map(m);
+}
+
 static int read_all(CfgDoc *doc, SimConfig *cfg) {
     CfgNode *root = doc->root;
     const char *name;
@@ -319,9 +347,21 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
             if (!coupling) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
             coupling->used = true;
         }
-        cfg->coupling.kind = COUPLING_GHOST_CELL;
-        TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(GhostCouplingConfig)));
-        TRY(read_coupling(coupling, cfg));
+        char place[320], path[64];
+        cfg_node_where(coupling, place, sizeof place);
+        cfg_node_path(coupling, path, sizeof path);
+        int kind = 0;
+        TRY(cfg_opt_enum(coupling, "kind", COUPLING_KINDS, 0, &kind));
+        snprintf(cfg->coupling.where, sizeof cfg->coupling.where, "%s: %s", place, path);
+        if (kind == 1) {
+            cfg->coupling.kind = COUPLING_PENALTY;
+            TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(PenaltyConfig)));
+            TRY(read_penalty(coupling, cfg));
+        } else {
+            cfg->coupling.kind = COUPLING_GHOST_CELL;
+            TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(GhostCouplingConfig)));
+            TRY(read_coupling(coupling, cfg));
+        }
     } else if (coupling) {
         return cfg_fail(coupling, "a coupling needs both a solid and a flow section");
     }

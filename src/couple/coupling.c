@@ -10,11 +10,13 @@
  * (couple/ghost/model.c): the one place the interface names a coupling,
  * by declaration only, so no coupling header is in its include tree. */
 extern const CouplingOps GHOST_COUPLING_OPS;
+extern const CouplingOps PENALTY_COUPLING_OPS;
 
 /* The registry: one ops table per CouplingKind; coupling_register fills
  * the slots after the built-in ones. */
 static const CouplingOps *COUPLING_MODELS[COUPLING_KIND_MAX] = {
     [COUPLING_GHOST_CELL] = &GHOST_COUPLING_OPS,
+    [COUPLING_PENALTY] = &PENALTY_COUPLING_OPS,
 };
 
 CouplingKind coupling_register(const CouplingOps *ops) {
@@ -122,6 +124,11 @@ int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out) {
 }
 
 int coupling_fields(Coupling *c, Solid *solid, Flow *flow, FieldSet *out) {
+    if (!c->ops->fields) { /* a coupling with no fields of its own */
+        memset(out, 0, sizeof *out);
+        out->mesh = MESH_NONE;
+        return NSPD_OK;
+    }
     return c->ops->fields(c->impl, solid, flow, out);
 }
 

@@ -19,9 +19,12 @@
 #include "flow/flow.h"
 #include "solid/solid.h"
 
+#include <stdbool.h>
+
 typedef enum {
     COUPLING_NONE = 0,
     COUPLING_GHOST_CELL, /* sharp ghost-cell immersed boundary: couple/ghost/ */
+    COUPLING_PENALTY,    /* volumetric penalty (paper 003): couple/penalty/ */
     COUPLING_KIND_COUNT, /* the built-in couplings; coupling_register adds more after these */
     COUPLING_KIND_MAX = COUPLING_KIND_COUNT + 4
 } CouplingKind;
@@ -32,9 +35,15 @@ typedef enum {
  * reader and the coupling know. */
 typedef struct {
     CouplingKind kind;
+    /* "FILE:LINE:COL: coupling" (or the --set) of the section, for what the
+     * coupling refuses when it is built */
+    char where[400];
     /* s: the loads are time-averaged from this time on (the driver sets it
      * from output.average_from, less a round-off margin of the end time) */
     double average_from;
+    /* `nspd check`: as FlowConfig.validate_only (no soft start of the gas
+     * around fixed bodies: it changes the initial field, never refuses) */
+    bool validate_only;
     /* owned (nspd_alloc) when the kind's ops have config_free: the coupling's
      * create takes it (and sets this NULL), else coupling_config_free frees it; otherwise
      * borrowed (a registered coupling's configuration, never freed) */
@@ -77,7 +86,8 @@ typedef struct CouplingOps {
      * time averages, from average_from on) */
     int (*history)(void *impl, Solid *solid, Flow *flow, double time, Report *row);
     int (*summary)(void *impl, Solid *solid, Flow *flow, Report *out);
-    /* tables of the current state (surface pressure and friction) */
+    /* tables of the current state (surface pressure and friction); NULL:
+     * none */
     int (*fields)(void *impl, Solid *solid, Flow *flow, FieldSet *out);
     /* writes or reads (checkpoint_reading) what the coupling carries from
      * step to step (called after the solid's and the flow's, which it may

@@ -161,6 +161,32 @@ int flow_set_sources(Flow *f, FlowSources *src) {
     return f->ops->set_sources(f->impl, src);
 }
 
+const char *const FLOW_TRANSFER_NAMES[] = {"nearest", "bilinear", "quadratic", NULL};
+
+int flow_transfer_width(FlowTransferKind kind) {
+    static const int WIDTH[FLOW_TRANSFER_KINDS] = {1, 4, 9};
+    return kind >= 0 && kind < FLOW_TRANSFER_KINDS ? WIDTH[kind] : 0;
+}
+
+bool flow_has_transfer(const Flow *f) {
+    return f->ops->transfer && f->ops->lumped && f->ops->add_lumped;
+}
+
+void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double *x,
+                   const double *y, int64_t *cell, double *w) {
+    f->ops->transfer(f->impl, kind, n, x, y, cell, w);
+}
+
+void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, double *momentum_x,
+                 double *momentum_y) {
+    f->ops->lumped(f->impl, n, cells, mass, momentum_x, momentum_y);
+}
+
+void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx,
+                     const double *dmy, const double *de) {
+    f->ops->add_lumped(f->impl, n, cells, dmx, dmy, de);
+}
+
 int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id) {
     if (!f->ops->probe_add)
         return NSPD_FAIL(NSPD_ERR_INPUT,

@@ -43,6 +43,10 @@ typedef struct {
      * driver sets it from output.average_from, less a round-off margin of
      * the end time */
     double average_from;
+    /* `nspd check`: build what validates the case and skip what cannot fail
+     * on a valid one and costs time (a factorisation); the flow is then
+     * described, never stepped */
+    bool validate_only;
     /* owned (nspd_alloc) when the method's ops have config_free: the solver's
      * create takes it (and sets this NULL), else flow_config_free frees it; otherwise
      * borrowed (a registered solver's configuration, never freed) */
@@ -83,6 +87,23 @@ typedef struct {
     const double *force_x, *force_y, *power;
     int64_t outside; /* out: points with no gas there (off the mesh, in a body): dropped */
 } FlowSources;
+
+/* How a volumetric coupling moves velocity and momentum between points
+ * and the flow's unknowns (cells, or control points): the unknown that
+ * holds the point; bilinear between the four nearest; quadratic B-spline
+ * weights on the 3 x 3 nearest. The weights are >= 0 and sum to 1 (a
+ * partition of unity), so what is spread with them is conserved. */
+typedef enum {
+    FLOW_TRANSFER_NEAREST = 0,
+    FLOW_TRANSFER_BILINEAR,
+    FLOW_TRANSFER_QUADRATIC,
+    FLOW_TRANSFER_KINDS
+} FlowTransferKind;
+
+extern const char *const FLOW_TRANSFER_NAMES[]; /* "nearest", "bilinear", "quadratic" */
+
+/* Entries per point of a transfer of `kind`: 1, 4 or 9. */
+int flow_transfer_width(FlowTransferKind kind);
 
 typedef struct Flow Flow;
 
@@ -132,6 +153,20 @@ typedef struct FlowOps {
     /* replaces the sources of the next steps (NULL src: none); NULL op:
      * the solver takes none (an input error when asked) */
     int (*set_sources)(void *impl, FlowSources *src);
+    /* The transfer weights of n points (x[k], y[k]): point k's entries are
+     * cell[k * width + j], w[k * width + j] for j < flow_transfer_width
+     * (cell -1 and w 0 where a point has fewer; every cell -1 for a point
+     * off the mesh). Allocation free. NULL: no volumetric coupling. */
+    void (*transfer)(const void *impl, FlowTransferKind kind, int64_t n, const double *x,
+                     const double *y, int64_t *cell, double *w);
+    /* The lumped mass (kg per metre of depth) and momentum (kg m/s per
+     * metre) of the n unknowns cells[k]. */
+    void (*lumped)(const void *impl, int64_t n, const int64_t *cells, double *mass,
+                   double *momentum_x, double *momentum_y);
+    /* Adds momentum and total energy (per metre of depth; a NULL array:
+     * none of that) to the n unknowns cells[k] (distinct), between steps. */
+    void (*add_lumped)(void *impl, int64_t n, const int64_t *cells, const double *dmx,
+                       const double *dmy, const double *de);
     /* point probes on a mesh without cells (MESH_POINTS): prepares the
      * state at (x, y) once, before the run (it may allocate), and returns
      * its handle for probe_state in *id; NSPD_ERR_INPUT naming the probe
@@ -196,6 +231,15 @@ void flow_cell_centre(const Flow *f, int64_t cell, double xy[2]);
 FlowReference flow_reference(const Flow *f);
 int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out);
 int flow_set_sources(Flow *f, FlowSources *src);
+/* FlowOps.transfer, lumped, add_lumped: only where flow_has_transfer (a
+ * coupling that needs them refuses other flows when it is built). */
+bool flow_has_transfer(const Flow *f);
+void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double *x,
+                   const double *y, int64_t *cell, double *w);
+void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, double *momentum_x,
+                 double *momentum_y);
+void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx,
+                     const double *dmy, const double *de);
 /* FlowOps.probe_add; NSPD_ERR_INPUT for a solver without point probes. */
 int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id);
 void flow_probe_state(const Flow *f, int64_t id, double out[5]);

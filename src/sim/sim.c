@@ -85,12 +85,14 @@ int sim_create(Sim *sim, SimConfig *cfg) {
         status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);
     /* a flow's own means (its bodies' forces), as the coupling's below */
     c->flow.average_from = c->output.average_from - 1e-12 * c->end_time;
+    c->flow.validate_only = c->coupling.validate_only = c->check_only;
     if (status == NSPD_OK && c->flow.method != FLOW_METHOD_NONE)
         status = nspd_error_at(flow_create(&sim->flow, &c->flow), c->flow.where);
     if (status == NSPD_OK && c->coupling.kind != COUPLING_NONE) {
         /* averages from output.average_from, to a round-off of the end time */
         c->coupling.average_from = c->output.average_from - 1e-12 * c->end_time;
-        status = coupling_create(&sim->coupling, &c->coupling, sim->solid, sim->flow);
+        status = nspd_error_at(coupling_create(&sim->coupling, &c->coupling, sim->solid, sim->flow),
+                               c->coupling.where);
     }
     if (status == NSPD_OK) status = nspd_alloc(&sim->report, 1, sizeof *sim->report);
     if (status == NSPD_OK) status = choose_pace(sim);

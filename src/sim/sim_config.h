@@ -81,6 +81,7 @@ typedef struct {
                                 bodies are a coupling with rigid walls) */
     OutputConfig output;
     double max_memory_bytes; /* the estimate's limit (--max-memory); 0: this machine's memory */
+    bool check_only;         /* `nspd check`: models validate, skip costly setup; never stepped */
 } SimConfig;
 
 void sim_config_free(SimConfig *cfg);

@@ -205,6 +205,10 @@ double solid_modulus(const Solid *s, int64_t i) {
     return s->ops->modulus(s->impl, i);
 }
 
+double solid_density(const Solid *s, int64_t i) {
+    return s->ops->density ? s->ops->density(s->impl, i) : (double)NAN;
+}
+
 bool solid_attached(const Solid *s, int64_t i) {
     return s->ops->attached ? s->ops->attached(s->impl, i) : true;
 }

@@ -98,6 +98,7 @@ typedef struct {
     void (*set_time)(void *impl, double t);
     void (*damage)(const void *impl, double *out);  /* per point, 0..1 */
     double (*modulus)(const void *impl, int64_t i); /* Young's modulus at point i, Pa */
+    double (*density)(const void *impl, int64_t i); /* mass density at point i, kg/m^3 */
     /* true while point i belongs to the body (bond PD: it keeps an intact
      * bond); a detached point is debris, which no wall follows. NULL: a
      * model whose points never detach */
@@ -162,6 +163,9 @@ void solid_current_positions(Solid *s, const double *out[3]);
 
 /* Young's modulus at point i, Pa (a penalty coupling's stiffness scale). */
 double solid_modulus(const Solid *s, int64_t i);
+/* Mass density at point i, kg/m^3 (a penalty coupling's point masses);
+ * NaN for a model that has none. */
+double solid_density(const Solid *s, int64_t i);
 /* True while point i belongs to the body (not debris). */
 bool solid_attached(const Solid *s, int64_t i);
 

@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "flow/flow.h"
+#include "flow/gks/transfer.h"
 
 #include <math.h>
 #include <omp.h>
@@ -288,6 +289,26 @@ static int gks_set_sources(void *impl, FlowSources *src) {
     return NSPD_OK;
 }
 
+static void gks_flow_transfer(const void *impl, FlowTransferKind kind, int64_t n, const double *x,
+                              const double *y, int64_t *cell, double *w) {
+    GksSolver *s = ((const GksFlow *)impl)->solver;
+    gks_transfer(gks_solver_grid(s), gks_solver_fields(s).kind, kind, n, x, y, cell, w);
+}
+
+static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
+                            double *momentum_x, double *momentum_y) {
+    GksSolver *s = ((const GksFlow *)impl)->solver;
+    const GksFields f = gks_solver_fields(s);
+    gks_lumped(gks_solver_grid(s), &f, n, cells, mass, momentum_x, momentum_y);
+}
+
+static void gks_flow_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
+                                const double *dmy, const double *de) {
+    GksSolver *s = ((GksFlow *)impl)->solver;
+    GksFields f = gks_solver_fields(s);
+    gks_add_lumped(gks_solver_grid(s), &f, n, cells, dmx, dmy, de);
+}
+
 static void gks_totals(const void *impl, double totals[4]) {
     gks_solver_totals(((const GksFlow *)impl)->solver, totals);
 }
@@ -471,6 +492,9 @@ const FlowOps GKS_FLOW_OPS = {
     .reference = gks_reference,
     .sample = gks_sample,
     .set_sources = gks_set_sources,
+    .transfer = gks_flow_transfer,
+    .lumped = gks_flow_lumped,
+    .add_lumped = gks_flow_add_lumped,
     .totals = gks_totals,
     .history = gks_history,
     .summary = gks_summary,

@@ -40,6 +40,7 @@ typedef struct {
     PddoOps ops;
     PddoPpe ppe;
     PddoStep step;
+    bool validate_only; /* `nspd check`: conditioning only, no weights or pressure matrix */
     double setup_s;   /* wall time of the cloud, operators and factorisation (log and info) */
     int64_t physical; /* fluid and side nodes */
     int64_t *phys;    /* their node numbers */
@@ -197,8 +198,15 @@ static int build(PddoFlow *f) {
     }
     TRY(pddo_cloud_build(&f->cloud, &f->cfg.cloud));
     const PddoCloud *c = &f->cloud;
-    TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
-    TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
+    if (f->validate_only) {
+        /* `nspd check`: the operators' conditioning without their weights,
+         * no pressure matrix (its assembly and factors cannot fail on a
+         * cloud that passes; the run checks them) */
+        TRY(pddo_ops_check(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+    } else {
+        TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+        TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
+    }
     TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
     for (int b = 0; b < c->npatches; b++) TRY(pddo_forces_build(&f->forces[b], c, b));
     f->setup_s = nspd_wall_time() - t0;
@@ -233,6 +241,7 @@ static int pddo_create(void **impl, FlowConfig *fc) {
     f->cfg = *(PddoFlowConfig *)fc->model;
     nspd_free(&fc->model);                  /* taken */
     f->cfg.average_from = fc->average_from; /* the driver's, as a coupling's */
+    f->validate_only = fc->validate_only;
     f->steady_step = -1;
     const int status = build(f);
     if (status != NSPD_OK) {

@@ -86,14 +86,14 @@ static double shape_factor(const int32_t *nbr, int64_t count, const double *x, c
 /* Node k's weights of every operator; its condition number in *cond, or
  * INFINITY when the factorisation fails (then no weight is written). */
 static void node_weights(PddoOps *ops, int64_t k, const double *x, const double *y,
-                         const double *area, double delta, double *cond) {
+                         const double *area, double delta, bool weights, double *cond) {
     double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}};
     double p[SPD_SMALL_MAX] = {0}, scale[SPD_SMALL_MAX] = {0};
     const double inv_delta = 1.0 / delta, inv_area = inv_delta * inv_delta;
     const int64_t lo = ops->first[k], hi = ops->first[k + 1];
     *cond =
         shape_factor(ops->nbr + lo, hi - lo, x, y, area, x[k], y[k], inv_delta, false, Lf, scale);
-    if (!isfinite(*cond)) return;
+    if (!isfinite(*cond) || !weights) return;
     /* b = diag(1, 1, 2, 2, 1) (Eq. 14c), then back to metres */
     const double b[TERMS] = {inv_delta, inv_delta, 2.0 * inv_area, 2.0 * inv_area, inv_area};
     for (int64_t m = lo; m < hi; m++) {
@@ -110,14 +110,14 @@ static void node_weights(PddoOps *ops, int64_t k, const double *x, const double 
     }
 }
 
-int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta) {
+static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
+                 const int64_t *first, const int32_t *nbr, double delta, bool weights) {
     pddo_ops_free(ops);
     if (!(delta > 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO operators: horizon %g m; expected > 0", delta);
     ops->n = n, ops->first = first, ops->nbr = nbr;
     const int64_t members = first[n];
-    for (int op = 0; op < PDDO_OPS; op++) {
+    for (int op = 0; op < PDDO_OPS && weights; op++) {
         const int status = nspd_alloc(&ops->w[op], (size_t)members, sizeof(double));
         if (status != NSPD_OK) {
             pddo_ops_free(ops);
@@ -131,7 +131,7 @@ int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, co
         return status;
     }
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < n; k++) node_weights(ops, k, x, y, area, delta, &cond[k]);
+    for (int64_t k = 0; k < n; k++) node_weights(ops, k, x, y, area, delta, weights, &cond[k]);
     /* the first node that breaks the rule, in node order whatever the threads */
     for (int64_t k = 0; k < n; k++) {
         if (!(cond[k] <= PDDO_COND_MAX)) {
@@ -148,6 +148,16 @@ int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, co
     nspd_free(&cond);
     if (status != NSPD_OK) pddo_ops_free(ops);
     return status;
+}
+
+int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
+                   const int64_t *first, const int32_t *nbr, double delta) {
+    return build(ops, n, x, y, area, first, nbr, delta, true);
+}
+
+int pddo_ops_check(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
+                   const int64_t *first, const int32_t *nbr, double delta) {
+    return build(ops, n, x, y, area, first, nbr, delta, false);
 }
 
 double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k) {

@@ -35,6 +35,7 @@
 #ifndef NSPD_FLOW_PDDO_OPERATORS_H
 #define NSPD_FLOW_PDDO_OPERATORS_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 typedef enum {
@@ -61,6 +62,12 @@ typedef struct {
  * excluded), horizon delta (m). ops is zeroed or freed before. Fails with
  * NSPD_ERR_INPUT for a node breaking the conditioning rule, NSPD_ERR_NOMEM. */
 int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
+                   const int64_t *first, const int32_t *nbr, double delta);
+
+/* The conditioning rule of pddo_ops_build alone, with its refusal, and
+ * ops->cond_max; no weights (`nspd check`: the per-member solves are most
+ * of the build's time and cannot fail once the rule holds). */
+int pddo_ops_check(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
                    const int64_t *first, const int32_t *nbr, double delta);
 
 /* out[k] = sum_j c_kj (f_j - f_k) for operator op at every node (Eq. 10);

@@ -111,6 +111,11 @@ static double bond_modulus(const void *impl, int64_t i) {
     return ((const BondSolid *)impl)->body.cfg.youngs_modulus;
 }
 
+static double bond_density(const void *impl, int64_t i) {
+    (void)i;
+    return ((const BondSolid *)impl)->body.cfg.density;
+}
+
 static bool bond_attached(const void *impl, int64_t i) {
     const BondBody *b = &((const BondSolid *)impl)->body;
     for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++)
@@ -227,6 +232,7 @@ const SolidOps BOND_SOLID_OPS = {
     .set_time = bond_set_time,
     .damage = bond_damage,
     .modulus = bond_modulus,
+    .density = bond_density,
     .attached = bond_attached,
     .history = bond_history,
     .summary = bond_summary,

@@ -139,6 +139,11 @@ static double cpd_modulus(const void *impl, int64_t i) {
     return ((const CpdSolid *)impl)->body.cfg.pd.youngs_modulus;
 }
 
+static double cpd_density(const void *impl, int64_t i) {
+    (void)i;
+    return ((const CpdSolid *)impl)->body.cfg.pd.density;
+}
+
 static bool cpd_attached(const void *impl, int64_t i) {
     const CpdBody *b = &((const CpdSolid *)impl)->body;
     for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
@@ -439,6 +444,7 @@ const SolidOps CPD_SOLID_OPS = {
     .set_time = cpd_set_time,
     .damage = cpd_damage,
     .modulus = cpd_modulus,
+    .density = cpd_density,
     .attached = cpd_attached,
     .history = cpd_history,
     .summary = cpd_summary,

@@ -1,0 +1,369 @@
+/* The volumetric penalty coupling (model.h). */
+#include "couple/penalty/model.h"
+
+#include "core/checkpoint.h"
+#include "core/log.h"
+#include "core/mem.h"
+#include "core/status.h"
+#include "couple/coupling.h"
+#include "couple/penalty/relax.h"
+
+#include <math.h>
+#include <string.h>
+
+const char *const PENALTY_THICKNESS_NAMES[] = {"depth_consistent", "plate_in_unit_depth", NULL};
+const char *const PENALTY_ENERGY_NAMES[] = {"total", "momentum_only", NULL};
+
+typedef struct {
+    PenaltyConfig cfg;
+    double average_from;
+    int64_t n;
+    int width;
+    double depth;  /* m of the solid per metre of gas depth's share: t or 1 */
+    double dt_pen; /* s */
+    double h;      /* m */
+    /* per point */
+    double *x[2];      /* the points' positions at the relaxation */
+    double *m, *b, *v[2], *J[2];
+    double *work_rate; /* J per metre: minus the impulse's work on the point */
+    /* per entry (n * width) */
+    int64_t *cell;
+    double *w;
+    int32_t *col;
+    int64_t *entry;
+    /* per touched cell (at most n * width) */
+    int64_t cells;
+    int64_t *cell_id;
+    double *mass, *u[2], *dm[2], *de;
+    int64_t *first;
+    /* the flow's cell -> touched cell, -1 (grown to the largest cell seen) */
+    int64_t *local;
+    int64_t local_size;
+    PenaltyWork work;
+    double last_dt; /* s, of the last relaxation */
+    PenaltyStepInfo step;
+    double force_x_max; /* N per metre of depth, on the solid, over the run */
+} PenaltyCoupling;
+
+static void penalty_destroy(void *impl) {
+    PenaltyCoupling *p = impl;
+    if (!p) return;
+    double **arrays[] = {&p->x[0], &p->x[1], &p->m,    &p->b,       &p->v[0],    &p->v[1],
+                         &p->J[0], &p->J[1], &p->w,    &p->mass,    &p->u[0],    &p->u[1],
+                         &p->dm[0], &p->dm[1], &p->de, &p->work_rate, &p->work.sample,
+                         &p->work.x, &p->work.r, &p->work.z, &p->work.p, &p->work.ap,
+                         &p->work.diag};
+    for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++) nspd_free(arrays[k]);
+    nspd_free(&p->cell);
+    nspd_free(&p->col);
+    nspd_free(&p->entry);
+    nspd_free(&p->cell_id);
+    nspd_free(&p->first);
+    nspd_free(&p->local);
+    nspd_free(&p);
+}
+
+static int allocate(PenaltyCoupling *p) {
+    const size_t n = (size_t)p->n, e = n * (size_t)p->width;
+    double **per_point[] = {&p->x[0], &p->x[1], &p->m,    &p->b,         &p->v[0],
+                            &p->v[1], &p->J[0], &p->J[1], &p->work_rate, &p->work.sample};
+    for (size_t k = 0; k < sizeof per_point / sizeof *per_point; k++)
+        TRY(nspd_alloc(per_point[k], n ? n : 1, sizeof(double)));
+    double **per_cell[] = {&p->mass,   &p->u[0],   &p->u[1],   &p->dm[0], &p->dm[1],
+                           &p->de,     &p->work.x, &p->work.r, &p->work.z, &p->work.p,
+                           &p->work.ap, &p->work.diag, &p->w};
+    for (size_t k = 0; k < sizeof per_cell / sizeof *per_cell; k++)
+        TRY(nspd_alloc(per_cell[k], e ? e : 1, sizeof(double)));
+    TRY(nspd_alloc(&p->cell, e ? e : 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->col, e ? e : 1, sizeof(int32_t)));
+    TRY(nspd_alloc(&p->entry, e ? e : 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->cell_id, e ? e : 1, sizeof(int64_t)));
+    return nspd_alloc(&p->first, e + 1, sizeof(int64_t));
+}
+
+static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow) {
+    if (!solid)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the penalty coupling needs a solid; expected a "
+                                         "'solid' section");
+    if (!flow_has_transfer(flow))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the penalty coupling needs a flow with transfer weights; the '%s' "
+                         "flow solver has none",
+                         flow_name(flow));
+    const PdPoints *pts = solid_points(solid);
+    if (pts->dim != 2)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the penalty coupling needs a 2D solid, not %dD",
+                         pts->dim);
+    PenaltyCoupling *p;
+    TRY(nspd_alloc(&p, 1, sizeof *p));
+    p->cfg = *(const PenaltyConfig *)cfg->model;
+    nspd_free(&cfg->model); /* taken */
+    p->average_from = cfg->average_from;
+    p->n = pts->n;
+    p->width = flow_transfer_width(p->cfg.transfer);
+    p->depth = p->cfg.thickness == PENALTY_PLATE_IN_UNIT_DEPTH ? 1.0 : pts->thickness;
+    p->h = p->cfg.h > 0 ? p->cfg.h : pts->spacing;
+    p->dt_pen = p->cfg.dt > 0 ? p->cfg.dt : solid_stable_dt(solid);
+    int status = allocate(p);
+    if (status != NSPD_OK) {
+        penalty_destroy(p);
+        return status;
+    }
+    /* every point in the gas: a point off the grid would feel nothing */
+    for (int64_t i = 0; i < p->n; i++) {
+        p->x[0][i] = pts->x[0][i] + pts->u[0][i];
+        p->x[1][i] = pts->x[1][i] + pts->u[1][i];
+    }
+    flow_transfer(flow, p->cfg.transfer, p->n, p->x[0], p->x[1], p->cell, p->w);
+    for (int64_t i = 0; i < p->n; i++)
+        if (p->cell[i * p->width] < 0) {
+            status = NSPD_FAIL(NSPD_ERR_INPUT,
+                               "the penalty coupling: solid point %lld at (%g, %g) m is outside "
+                               "the flow's grid; expected the whole solid inside it",
+                               (long long)i, p->x[0][i], p->x[1][i]);
+            penalty_destroy(p);
+            return status;
+        }
+    const double E = pts->n > 0 ? solid_modulus(solid, 0) : 0.0;
+    nspd_log(LOG_INFO,
+             "penalty coupling: C_pen = beta E dt/h^2 = %g x %g Pa x %g s / (%g m)^2 = %g "
+             "kg/(m^3 s)%s, %s weights, %s",
+             p->cfg.beta, E, p->dt_pen, p->h, p->cfg.beta * E * p->dt_pen / (p->h * p->h),
+             p->cfg.strong ? " (strong: the limit beta -> infinity)" : "",
+             FLOW_TRANSFER_NAMES[p->cfg.transfer], PENALTY_THICKNESS_NAMES[p->cfg.thickness]);
+    *impl = p;
+    return NSPD_OK;
+}
+
+/* The touched cells of the entries in p->cell (point order), their local
+ * numbers in p->col and the cell -> entries index (a counting sort: each
+ * cell's entries in point order). */
+static int index_cells(PenaltyCoupling *p) {
+    const int64_t entries = p->n * p->width;
+    int64_t top = -1;
+    for (int64_t e = 0; e < entries; e++)
+        if (p->cell[e] > top) top = p->cell[e];
+    if (top >= p->local_size) {
+        const int64_t size = top + 1;
+        TRY(nspd_realloc(&p->local, (size_t)p->local_size, (size_t)size, sizeof(int64_t)));
+        for (int64_t c = p->local_size; c < size; c++) p->local[c] = -1;
+        p->local_size = size;
+    }
+    p->cells = 0;
+    for (int64_t e = 0; e < entries; e++) {
+        const int64_t c = p->cell[e];
+        if (c < 0) {
+            p->col[e] = -1;
+            continue;
+        }
+        if (p->local[c] < 0) {
+            p->local[c] = p->cells;
+            p->cell_id[p->cells++] = c;
+        }
+        p->col[e] = (int32_t)p->local[c];
+    }
+    for (int64_t k = 0; k < p->cells; k++) p->local[p->cell_id[k]] = -1;
+    memset(p->first, 0, ((size_t)p->cells + 1) * sizeof(int64_t));
+    for (int64_t e = 0; e < entries; e++)
+        if (p->col[e] >= 0) p->first[p->col[e] + 1]++;
+    for (int64_t k = 0; k < p->cells; k++) p->first[k + 1] += p->first[k];
+    for (int64_t e = 0; e < entries; e++)
+        if (p->col[e] >= 0) p->entry[p->first[p->col[e]]++] = e;
+    for (int64_t k = p->cells; k > 0; k--) p->first[k] = p->first[k - 1];
+    p->first[0] = 0;
+    return NSPD_OK;
+}
+
+/* The transfer weights at the points' positions p->x and their index. */
+static int stencil(PenaltyCoupling *p, const Flow *flow) {
+    flow_transfer(flow, p->cfg.transfer, p->n, p->x[0], p->x[1], p->cell, p->w);
+    return index_cells(p);
+}
+
+/* sum over cell c's entries of w * f[point]: what the points give the
+ * cell through the weights (a gather, the same bits on any thread count). */
+static double gather(const PenaltyCoupling *p, int64_t c, const double *f) {
+    double sum = 0.0;
+    for (int64_t k = p->first[c]; k < p->first[c + 1]; k++) {
+        const int64_t e = p->entry[k];
+        sum += p->w[e] * f[e / p->width];
+    }
+    return sum;
+}
+
+static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
+    (void)impl;
+    (void)solid;
+    (void)flow;
+    return NSPD_OK;
+}
+
+/* The relaxation after the flow's step and before the solid's: the points'
+ * velocities and the cells' momentum change by the impulses at once (a
+ * split step: relaxation, then the solid's own dynamics from the relaxed
+ * velocities; a force held over the solid's sub-steps instead lags them and
+ * pumps its fastest modes), and the gas's total energy gets minus the
+ * impulses' work on the points, J . (v + v') / 2, exactly what the solid's
+ * kinetic energy gains. */
+static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
+    PenaltyCoupling *p = impl;
+    PdPoints *pts = solid_points(solid);
+    const int64_t n = p->n;
+    for (int64_t i = 0; i < n; i++) {
+        p->x[0][i] = pts->x[0][i] + pts->u[0][i];
+        p->x[1][i] = pts->x[1][i] + pts->u[1][i];
+        p->v[0][i] = pts->v[0][i];
+        p->v[1][i] = pts->v[1][i];
+    }
+    TRY(stencil(p, flow));
+    flow_lumped(flow, p->cells, p->cell_id, p->mass, p->dm[0], p->dm[1]);
+    for (int64_t c = 0; c < p->cells; c++) {
+        p->u[0][c] = p->dm[0][c] / p->mass[c];
+        p->u[1][c] = p->dm[1][c] / p->mass[c];
+    }
+    const double *damage = p->cfg.damaged ? solid_damage(solid) : NULL;
+    p->step.c_pen_max = 0.0;
+    p->step.outside = 0;
+    const double scale = p->cfg.beta * p->dt_pen / (p->h * p->h);
+    for (int64_t i = 0; i < n; i++) {
+        const double V = pts->volume[i] / p->depth; /* m^2: per metre of gas depth */
+        p->m[i] = solid_density(solid, i) * V;
+        const double C = scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
+        if (C > p->step.c_pen_max) p->step.c_pen_max = C;
+        const double a = dt * C * V;
+        if (p->cell[i * p->width] < 0) {
+            p->b[i] = 0.0; /* no gas around it */
+            p->step.outside++;
+        } else if (p->cfg.strong) {
+            p->b[i] = damage && damage[i] >= 1.0 ? 0.0 : p->m[i];
+        } else {
+            p->b[i] = a > 0.0 ? a * p->m[i] / (p->m[i] + a) : 0.0;
+        }
+    }
+    const PenaltySystem sys = {.points = n,
+                               .width = p->width,
+                               .col = p->col,
+                               .w = p->w,
+                               .m = p->m,
+                               .b = p->b,
+                               .v = {p->v[0], p->v[1]},
+                               .cells = p->cells,
+                               .mass = p->mass,
+                               .u = {p->u[0], p->u[1]},
+                               .first = p->first,
+                               .entry = p->entry};
+    PenaltyStats stats;
+    penalty_relax(&sys, &p->work, p->J, &stats);
+    p->step.iterations = stats.iterations;
+    p->step.slip_max = stats.slip_max;
+    /* the solid: v' = v + J/m; the work of the impulse on each point */
+    for (int d = 0; d < 2; d++) {
+        double sum = 0.0;
+        for (int64_t i = 0; i < n; i++) {
+            if (p->b[i] == 0.0) continue;
+            pts->v[d][i] = p->v[d][i] + p->J[d][i] / p->m[i];
+            sum += p->J[d][i];
+        }
+        p->step.impulse[d] = sum;
+    }
+    for (int64_t i = 0; i < n; i++)
+        p->work_rate[i] = -(p->J[0][i] * 0.5 * (p->v[0][i] + pts->v[0][i]) +
+                            p->J[1][i] * 0.5 * (p->v[1][i] + pts->v[1][i]));
+    /* the gas: minus each impulse (and its work) through the weights */
+    for (int d = 0; d < 2; d++) {
+        double gas = 0.0;
+        for (int64_t c = 0; c < p->cells; c++) {
+            p->dm[d][c] = -gather(p, c, p->J[d]);
+            gas += p->dm[d][c];
+        }
+        p->step.gas[d] = gas;
+    }
+    const bool energy = p->cfg.energy == PENALTY_ENERGY_TOTAL;
+    if (energy) {
+        double total = 0.0;
+        for (int64_t c = 0; c < p->cells; c++) {
+            p->de[c] = gather(p, c, p->work_rate);
+            total += p->de[c];
+        }
+        p->step.energy_to_gas += total;
+    }
+    flow_add_lumped(flow, p->cells, p->cell_id, p->dm[0], p->dm[1], energy ? p->de : NULL);
+    p->last_dt = dt;
+    const double fx = p->step.impulse[0] / dt;
+    if (fabs(fx) > fabs(p->force_x_max)) p->force_x_max = fx;
+    return NSPD_OK;
+}
+
+static void penalty_loads(const void *impl, CouplingLoads *out) {
+    const PenaltyCoupling *p = impl;
+    const double dt = p->last_dt > 0 ? p->last_dt : 1.0;
+    out->force_on_solid[0] = p->step.impulse[0] / dt;
+    out->force_on_solid[1] = p->step.impulse[1] / dt;
+}
+
+static int penalty_history(void *impl, Solid *solid, Flow *flow, double time, Report *row) {
+    (void)flow;
+    (void)time;
+    PenaltyCoupling *p = impl;
+    CouplingLoads l;
+    penalty_loads(p, &l);
+    report_real(row, "penalty_force_x_N_per_m", l.force_on_solid[0]);
+    report_real(row, "penalty_force_y_N_per_m", l.force_on_solid[1]);
+    report_real(row, "slip_max_m_s", p->step.slip_max);
+    report_real(row, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
+    report_int(row, "substeps", solid_last_substeps(solid));
+    return NSPD_OK;
+}
+
+static int penalty_summary(void *impl, Solid *solid, Flow *flow, Report *out) {
+    (void)solid;
+    (void)flow;
+    PenaltyCoupling *p = impl;
+    report_real(out, "penalty_force_x_max_n", p->force_x_max);
+    report_real(out, "c_pen_kg_m3_s", p->step.c_pen_max);
+    report_real(out, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
+    return NSPD_OK;
+}
+
+/* The coupling carries no state from step to step but its diagnostics:
+ * the last step's (history) and the run's (summary). */
+static int penalty_checkpoint(void *impl, Checkpoint *ck) {
+    PenaltyCoupling *p = impl;
+    TRY(checkpoint_io(ck, "penalty.step", &p->step, sizeof p->step));
+    TRY(checkpoint_io_double(ck, "penalty.last_dt", &p->last_dt));
+    return checkpoint_io_double(ck, "penalty.force_x_max", &p->force_x_max);
+}
+
+/* Beyond the solid and the flow: the map from the flow's cells to the
+ * touched ones (8 bytes per stored cell); the per-point arrays (about 60
+ * doubles a point with quadratic weights) are within the solid's own
+ * estimate's margin. */
+static CouplingEstimate penalty_estimate(const CouplingConfig *cfg, const FlowEstimate *flow) {
+    (void)cfg;
+    return (CouplingEstimate){.bytes = 8.0 * flow->stored_cells};
+}
+
+static void penalty_config_free(void *model) {
+    (void)model; /* no owned parts */
+}
+
+const CouplingOps PENALTY_COUPLING_OPS = {
+    .name = "penalty",
+    .config_free = penalty_config_free,
+    .estimate = penalty_estimate,
+    .create = penalty_create,
+    .destroy = penalty_destroy,
+    .before_flow = penalty_before_flow,
+    .after_flow = penalty_after_flow,
+    .solid_dt_limit = NULL,
+    .loads = penalty_loads,
+    .history = penalty_history,
+    .summary = penalty_summary,
+    .fields = NULL,
+    .checkpoint = penalty_checkpoint,
+};
+
+const PenaltyStepInfo *penalty_coupling_step(Coupling *c) {
+    const PenaltyCoupling *p = coupling_impl(c, COUPLING_PENALTY);
+    return p ? &p->step : NULL;
+}

@@ -1,0 +1,76 @@
+/* The volumetric penalty coupling of paper 003 (Eqs. 21-23): the gas fills
+ * the whole box, and at every PD point a penalty C_P (v_gas - v_P), with
+ *     C_P = beta E dt_pen / h^2                    (Eq. 22)
+ *     C_P = beta (1 - d_P) E dt_pen / h^2          (Eq. 23, `damaged`)
+ * pulls the two velocities together. Nothing needs a closed surface:
+ * fragments fly apart and gas streams through broken material.
+ *
+ * Per flow step (../shared/notes/correspondence_and_penalty.md Sec. 1a.8):
+ * the flow steps as if alone; the gas velocity is sampled at the points
+ * with the flow's transfer weights and the penalty relaxed implicitly
+ * (couple/penalty/relax.h: unconditionally stable for any beta, momentum
+ * exact); the gas gets minus each point's impulse through the same
+ * weights; the solid takes the impulse as a force held over its
+ * sub-steps; at the next step the gas's total energy gets the work of that
+ * force at the solid's motion (-J . dx / dt), so gas total + solid
+ * mechanical energy is conserved and the penalty's dissipation heats the
+ * gas (`energy: momentum_only` is the paper's variant: momentum rows only).
+ * `strong` is the beta -> infinity limit: the points move with the
+ * sampled gas velocity (Eq. 18) and their internal force returns to the
+ * gas through the same weights (Eq. 19).
+ *
+ * Through the interfaces only: the flow's transfer, lumped and add_lumped
+ * operations (flow.h), the solid's PdPoints, damage, modulus and density. */
+#ifndef NSPD_COUPLE_PENALTY_MODEL_H
+#define NSPD_COUPLE_PENALTY_MODEL_H
+
+#include "flow/flow.h"
+
+#include <stdbool.h>
+
+/* How a 2D solid's thickness t meets the gas's unit depth: `depth_
+ * consistent` (the thickness cancels: the solid is as deep as the gas, the
+ * ghost-cell coupling's reading), or `plate_in_unit_depth` (a plate of
+ * thickness t in one metre of gas: the solid's mass, stiffness and
+ * strength per metre of depth carry t / 1 m). */
+typedef enum {
+    PENALTY_DEPTH_CONSISTENT = 0,
+    PENALTY_PLATE_IN_UNIT_DEPTH,
+} PenaltyThickness;
+extern const char *const PENALTY_THICKNESS_NAMES[];
+
+typedef enum {
+    PENALTY_ENERGY_TOTAL = 0,     /* the force's work at the solid's motion enters the gas */
+    PENALTY_ENERGY_MOMENTUM_ONLY, /* the paper's: the gas's total energy is left alone */
+} PenaltyEnergy;
+extern const char *const PENALTY_ENERGY_NAMES[];
+
+typedef struct {
+    double beta;   /* > 0 */
+    bool strong;   /* the beta -> infinity limit */
+    bool damaged;  /* Eq. 23: C_P scaled by 1 - d_P */
+    double h;      /* m, the length in C_pen; 0: the solid's lattice spacing */
+    double dt;     /* s, the step in C_pen; 0: the solid's stable step */
+    FlowTransferKind transfer;
+    PenaltyThickness thickness;
+    PenaltyEnergy energy;
+} PenaltyConfig;
+
+struct CouplingOps;
+extern const struct CouplingOps PENALTY_COUPLING_OPS;
+
+/* The last step's relaxation, for tests (NULL when the coupling is not a
+ * penalty one). */
+typedef struct Coupling Coupling;
+typedef struct {
+    double impulse[2];  /* sum of the impulses on the points, N s per metre of depth */
+    double gas[2];      /* what the gas received, the same */
+    double c_pen_max;   /* kg/(m^3 s), the largest C_P of the step */
+    double slip_max;    /* m/s */
+    int iterations;     /* of the solve */
+    int64_t outside;    /* points with no gas around them */
+    double energy_to_gas; /* J per metre of depth, added so far */
+} PenaltyStepInfo;
+const PenaltyStepInfo *penalty_coupling_step(Coupling *c);
+
+#endif
