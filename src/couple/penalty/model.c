@@ -30,7 +30,9 @@ typedef struct {
     int64_t *cell;
     double *w;
     int32_t *col;
-    int64_t *entry;
+    int64_t *entry;  /* by cell: the entry p * width + j */
+    int32_t *point;  /* by cell: its point */
+    double *weight;  /* by cell: its weight */
     /* per touched cell (at most n * width) */
     int64_t cells;
     int64_t *cell_id;
@@ -57,6 +59,8 @@ static void penalty_destroy(void *impl) {
     nspd_free(&p->cell);
     nspd_free(&p->col);
     nspd_free(&p->entry);
+    nspd_free(&p->point);
+    nspd_free(&p->weight);
     nspd_free(&p->cell_id);
     nspd_free(&p->first);
     nspd_free(&p->local);
@@ -77,6 +81,8 @@ static int allocate(PenaltyCoupling *p) {
     TRY(nspd_alloc(&p->cell, e ? e : 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->col, e ? e : 1, sizeof(int32_t)));
     TRY(nspd_alloc(&p->entry, e ? e : 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->point, e ? e : 1, sizeof(int32_t)));
+    TRY(nspd_alloc(&p->weight, e ? e : 1, sizeof(double)));
     TRY(nspd_alloc(&p->cell_id, e ? e : 1, sizeof(int64_t)));
     return nspd_alloc(&p->first, e + 1, sizeof(int64_t));
 }
@@ -171,6 +177,10 @@ static int index_cells(PenaltyCoupling *p) {
         if (p->col[e] >= 0) p->entry[p->first[p->col[e]]++] = e;
     for (int64_t k = p->cells; k > 0; k--) p->first[k] = p->first[k - 1];
     p->first[0] = 0;
+    for (int64_t k = 0; k < p->first[p->cells]; k++) {
+        p->point[k] = (int32_t)(p->entry[k] / p->width);
+        p->weight[k] = p->w[p->entry[k]];
+    }
     return NSPD_OK;
 }
 
@@ -184,10 +194,7 @@ static int stencil(PenaltyCoupling *p, const Flow *flow) {
  * cell through the weights (a gather, the same bits on any thread count). */
 static double gather(const PenaltyCoupling *p, int64_t c, const double *f) {
     double sum = 0.0;
-    for (int64_t k = p->first[c]; k < p->first[c + 1]; k++) {
-        const int64_t e = p->entry[k];
-        sum += p->w[e] * f[e / p->width];
-    }
+    for (int64_t k = p->first[c]; k < p->first[c + 1]; k++) sum += p->weight[k] * f[p->point[k]];
     return sum;
 }
 
@@ -251,7 +258,8 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
                                .mass = p->mass,
                                .u = {p->u[0], p->u[1]},
                                .first = p->first,
-                               .entry = p->entry};
+                               .point = p->point,
+                               .weight = p->weight};
     PenaltyStats stats;
     penalty_relax(&sys, &p->work, p->J, &stats);
     p->step.iterations = stats.iterations;
@@ -310,6 +318,7 @@ static int penalty_history(void *impl, Solid *solid, Flow *flow, double time, Re
     report_real(row, "penalty_force_x_N_per_m", l.force_on_solid[0]);
     report_real(row, "penalty_force_y_N_per_m", l.force_on_solid[1]);
     report_real(row, "slip_max_m_s", p->step.slip_max);
+    report_int(row, "penalty_iterations", p->step.iterations);
     report_real(row, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
     report_int(row, "substeps", solid_last_substeps(solid));
     return NSPD_OK;

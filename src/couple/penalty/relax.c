@@ -21,9 +21,9 @@ static void apply(const PenaltySystem *s, PenaltyWork *wk, const double *x, doub
     sample(s, x, wk->sample);
     for (int64_t c = 0; c < s->cells; c++) {
         double sum = s->mass[c] * x[c];
-        for (int64_t e = s->first[c]; e < s->first[c + 1]; e++) {
-            const int64_t q = s->entry[e], p = q / s->width;
-            sum += s->b[p] * s->w[q] * wk->sample[p];
+        for (int64_t k = s->first[c]; k < s->first[c + 1]; k++) {
+            const int32_t p = s->point[k];
+            sum += s->b[p] * s->weight[k] * wk->sample[p];
         }
         y[c] = sum;
     }
@@ -46,9 +46,9 @@ static void solve(const PenaltySystem *s, PenaltyWork *wk, int d, int *iteration
     double rhs_norm2 = 0.0;
     for (int64_t c = 0; c < nc; c++) {
         double rhs = s->mass[c] * s->u[d][c];
-        for (int64_t e = s->first[c]; e < s->first[c + 1]; e++) {
-            const int64_t q = s->entry[e], pt = q / s->width;
-            rhs += s->b[pt] * s->w[q] * s->v[d][pt];
+        for (int64_t k = s->first[c]; k < s->first[c + 1]; k++) {
+            const int32_t pt = s->point[k];
+            rhs += s->b[pt] * s->weight[k] * s->v[d][pt];
         }
         rhs_norm2 += rhs * rhs;
         r[c] = rhs - ap[c];
@@ -84,10 +84,8 @@ void penalty_relax(const PenaltySystem *s, PenaltyWork *wk, double *J[2], Penalt
     /* the preconditioner: A's diagonal, m_c + sum_P b_P W_Pc^2 */
     for (int64_t c = 0; c < s->cells; c++) {
         double diag = s->mass[c];
-        for (int64_t e = s->first[c]; e < s->first[c + 1]; e++) {
-            const int64_t q = s->entry[e];
-            diag += s->b[q / s->width] * s->w[q] * s->w[q];
-        }
+        for (int64_t k = s->first[c]; k < s->first[c + 1]; k++)
+            diag += s->b[s->point[k]] * s->weight[k] * s->weight[k];
         wk->diag[c] = diag;
     }
     for (int d = 0; d < 2; d++) {

@@ -35,8 +35,11 @@ typedef struct {
     int64_t cells;
     const double *mass;     /* cells: kg per metre of depth, > 0 */
     const double *u[2];     /* cells: velocity at the start */
-    const int64_t *first;   /* cells + 1: cell c's entries are entry[first[c] .. first[c+1]) */
-    const int64_t *entry;   /* p * width + j, in point order within a cell */
+    /* the same entries by cell, in point order within a cell: cell c's are
+     * k = first[c] .. first[c+1]-1, of point point[k] with weight weight[k] */
+    const int64_t *first; /* cells + 1 */
+    const int32_t *point;
+    const double *weight;
 } PenaltySystem;
 
 /* Scratch of the solve: one array per point, six per cell. */

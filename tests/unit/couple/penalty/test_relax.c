@@ -21,7 +21,9 @@ typedef struct {
     double w[MAX_POINTS * MAX_WIDTH];
     double m[MAX_POINTS], b[MAX_POINTS], v[2][MAX_POINTS];
     double mass[MAX_CELLS], u[2][MAX_CELLS];
-    int64_t first[MAX_CELLS + 1], entry[MAX_POINTS * MAX_WIDTH];
+    int64_t first[MAX_CELLS + 1];
+    int32_t point[MAX_POINTS * MAX_WIDTH];
+    double weight[MAX_POINTS * MAX_WIDTH];
     double sample[MAX_POINTS], x[MAX_CELLS], r[MAX_CELLS], z[MAX_CELLS], p[MAX_CELLS],
         ap[MAX_CELLS], diag[MAX_CELLS];
     PenaltyWork work;
@@ -68,7 +70,11 @@ static void build(Fixture *f, int points, int width, int cells, double a_scale, 
     for (int c = 0; c < cells; c++) f->first[c + 1] += f->first[c];
     int64_t fill[MAX_CELLS];
     for (int c = 0; c < cells; c++) fill[c] = f->first[c];
-    for (int e = 0; e < points * width; e++) f->entry[fill[f->col[e]]++] = e;
+    for (int e = 0; e < points * width; e++) {
+        const int64_t k = fill[f->col[e]]++;
+        f->point[k] = e / width;
+        f->weight[k] = f->w[e];
+    }
     f->work = (PenaltyWork){f->sample, f->x, f->r, f->z, f->p, f->ap, f->diag};
     f->s = (PenaltySystem){.points = points,
                            .width = width,
@@ -81,7 +87,8 @@ static void build(Fixture *f, int points, int width, int cells, double a_scale, 
                            .mass = f->mass,
                            .u = {f->u[0], f->u[1]},
                            .first = f->first,
-                           .entry = f->entry};
+                           .point = f->point,
+                           .weight = f->weight};
 }
 
 /* The cells' momentum change: minus each impulse through the weights. */

@@ -1,0 +1,228 @@
+/* couple/penalty: the volumetric penalty coupling run by the driver on the
+ * GKS flow and a PD disc (paper 003's V1, V3, V8, V10 of
+ * ../shared/notes/correspondence_and_penalty.md Sec. 3): momentum
+ * exchanged exactly per step and conserved over 1000 steps, no force at
+ * rest or moving with the stream, stable far beyond any explicit bound,
+ * the strong limit's zero slip, and the refusals of bad input. */
+#include "test_support.h"
+
+#include "case/case_read.h"
+#include "core/status.h"
+#include "couple/penalty/model.h"
+#include "flow/flow.h"
+#include "sim/sim.h"
+#include "sim_fixtures.h"
+#include "solid/solid.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* A steel disc (r = 1 cm, 2 mm lattice) at `disc_u` m/s in a periodic box
+ * of air at `gas_u` m/s (10 cm, 2.5 mm cells); `extra` lines go into the
+ * coupling section. */
+static const char *box_walls = "periodic"; /* the box's four sides */
+
+static void disc_case(char *buf, size_t size, double disc_u, double gas_u, const char *extra) {
+    snprintf(buf, size,
+             "name: penalty_disc\n"
+             "time: {end: 1.0}\n"
+             "solid:\n"
+             "  model: plane_strain\n"
+             "  spacing: 2.0e-3\n"
+             "  thickness: 1.0\n"
+             "  material: {density: 7850, youngs_modulus: 200.0e9}\n"
+             "  geometry: [{shape: disc, center: [0.05, 0.05], radius: 0.01}]\n"
+             "  initial_velocity:\n"
+             "    - {region: [{shape: disc, center: [0.05, 0.05], radius: 0.02}], "
+             "velocity: [%.17g, 0.0]}\n"
+             "  integrator: velocity_verlet\n"
+             "flow:\n"
+             "  gas: {gamma: 1.4, gas_constant: 287.0, prandtl: 0.72, viscosity: {law: none}}\n"
+             "  grid:\n"
+             "    x: {segments: [{length: 0.1, spacing: 2.5e-3}]}\n"
+             "    y: {segments: [{length: 0.1, spacing: 2.5e-3}]}\n"
+             "  boundaries:\n"
+             "    x_min: {type: %s}\n"
+             "    x_max: {type: %s}\n"
+             "    y_min: {type: %s}\n"
+             "    y_max: {type: %s}\n"
+             "  initial:\n"
+             "    state: {density: 1.2, velocity: [%.17g, 0.0], pressure: 100000.0}\n"
+             "coupling:\n"
+             "  kind: penalty\n"
+             "%s"
+             "output: {field_interval: 1.0, history_interval: 1.0}\n",
+             disc_u, box_walls, box_walls, box_walls, box_walls, gas_u, extra);
+}
+
+/* The solid's momentum per metre of depth (depth-consistent: V / t). */
+static void solid_momentum(Sim *sim, double out[2]) {
+    const PdPoints *p = solid_points(sim->solid);
+    out[0] = out[1] = 0.0;
+    for (int64_t i = 0; i < p->n; i++) {
+        const double m = solid_density(sim->solid, i) * p->volume[i] / p->thickness;
+        out[0] += m * p->v[0][i];
+        out[1] += m * p->v[1][i];
+    }
+}
+
+/* V1: per step the gas gains what the points lose (1e-12 relative, the
+ * ghost-cell exchange's bound); over 1000 steps gas + solid momentum
+ * drifts by round-off only. */
+static void test_momentum_exact(void **state) {
+    (void)state;
+    char text[4096];
+    disc_case(text, sizeof text, 100.0, 0.0, "  beta: 1.0\n");
+    Sim sim;
+    fixture_sim_text(text, &sim);
+    double s0[2], g0[4];
+    solid_momentum(&sim, s0);
+    flow_totals(sim.flow, g0);
+    double worst_step = 0.0, worst_drift = 0.0;
+    for (int k = 0; k < 1000; k++) {
+        assert_ok(sim_advance(&sim, 1));
+        const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
+        assert_non_null(st);
+        const double rel = fabs(st->gas[0] + st->impulse[0]) / fabs(st->impulse[0]);
+        if (rel > worst_step) worst_step = rel;
+        double s[2], g[4];
+        solid_momentum(&sim, s);
+        flow_totals(sim.flow, g);
+        const double drift = fabs((s[0] + g[1]) - (s0[0] + g0[1])) / fabs(s0[0]);
+        if (drift > worst_drift) worst_drift = drift;
+    }
+    printf("penalty momentum: worst step %.3g, drift over 1000 steps %.3g (relative)\n",
+           worst_step, worst_drift);
+    assert_true(worst_step <= 1e-12);
+    assert_true(worst_drift <= 1e-13);
+    /* not vacuous: the gas took momentum from the disc */
+    double g[4];
+    flow_totals(sim.flow, g);
+    assert_true(g[1] > 1e-4 * s0[0]);
+    sim_destroy(&sim);
+}
+
+/* V3: at rest in gas at rest, no force at all; moving with a uniform
+ * stream, round-off only: the impulse of a step at most 1e-12 of the
+ * disc's momentum (measured 3e-14). Not of rho U^2 A dt: a cell holds
+ * 1/4000 of the mass of the steel in it, so the points' round-off slip
+ * (1e-16 of U) moves the gas by some 4000 ulp, and the force is that slip
+ * times the steel's mass over the step. */
+static void check_no_force(double u) {
+    char text[4096];
+    disc_case(text, sizeof text, u, u, "  beta: 3.0\n");
+    Sim sim;
+    fixture_sim_text(text, &sim);
+    double s[2];
+    solid_momentum(&sim, s);
+    const double momentum = hypot(s[0], s[1]);
+    double worst = 0.0;
+    for (int k = 0; k < 50; k++) {
+        assert_ok(sim_advance(&sim, 1));
+        const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
+        worst = fmax(worst, hypot(st->impulse[0], st->impulse[1]));
+    }
+    printf("penalty impulse at %g m/s with the stream: %.3g N s/m (disc momentum %.3g)\n", u,
+           worst, momentum);
+    if (u == 0.0)
+        assert_true(worst == 0.0);
+    else
+        assert_true(worst <= 1e-12 * momentum);
+    sim_destroy(&sim);
+}
+
+static void test_no_force_at_rest(void **state) {
+    (void)state;
+    check_no_force(0.0);
+}
+
+static void test_no_force_with_the_stream(void **state) {
+    (void)state;
+    check_no_force(50.0);
+}
+
+/* V8: beta = 1e4 (C dt / rho_gas ~ 1e9: far past the explicit bound 2) at
+ * the flow's own CFL step: the run stays finite and the slip small. */
+static void test_stiff_stable(void **state) {
+    (void)state;
+    char text[4096];
+    disc_case(text, sizeof text, 100.0, 0.0, "  beta: 1.0e4\n");
+    Sim sim;
+    fixture_sim_text(text, &sim);
+    assert_ok(sim_advance(&sim, 300));
+    const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
+    printf("beta 1e4: C_pen %.3g kg/(m^3 s), slip %.3g m/s, %d CG iterations\n", st->c_pen_max,
+           st->slip_max, st->iterations);
+    assert_true(st->c_pen_max > 1e13);
+    assert_true(st->slip_max < 1e-3);
+    double s[2];
+    solid_momentum(&sim, s);
+    assert_true(isfinite(s[0]) && s[0] > 0.0);
+    sim_destroy(&sim);
+}
+
+/* V10: the strong coupling leaves each point at its sampled velocity. */
+static void test_strong_zero_slip(void **state) {
+    (void)state;
+    char text[4096];
+    disc_case(text, sizeof text, 100.0, 0.0, "  strong: true\n");
+    Sim sim;
+    fixture_sim_text(text, &sim);
+    assert_ok(sim_advance(&sim, 100));
+    const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
+    assert_true(st->slip_max <= 1e-6 * 100.0);
+    sim_destroy(&sim);
+}
+
+/* What the reader and the build refuse: status 2 naming the place. */
+static void check_refused(const char *extra, double disc_x, const char *expect) {
+    char text[4096];
+    box_walls = disc_x != 0.05 ? "slip_wall" : "periodic"; /* a periodic box wraps */
+    disc_case(text, sizeof text, 0.0, 0.0, extra);
+    box_walls = "periodic";
+    if (disc_x != 0.05) { /* move the disc */
+        char *at = strstr(text, "center: [0.05, 0.05], radius: 0.01");
+        char moved[64];
+        snprintf(moved, sizeof moved, "center: [%.2f, 0.05], radius: 0.01", disc_x);
+        memcpy(at, moved, strlen(moved));
+    }
+    const char *dir = test_scratch_dir("penalty_refused");
+    char path[1200];
+    snprintf(path, sizeof path, "%s/case.yaml", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+    CfgDoc doc;
+    SimConfig cfg;
+    int status = case_read(path, NULL, 0, &doc, &cfg);
+    if (status == NSPD_OK) {
+        Sim sim;
+        status = sim_create(&sim, &cfg);
+        if (status == NSPD_OK) sim_destroy(&sim);
+        cfg_doc_free(&doc);
+    }
+    printf("refused: %s\n", nspd_error_message());
+    assert_int_equal(status, NSPD_ERR_INPUT);
+    assert_non_null(strstr(nspd_error_message(), "case.yaml:"));
+    assert_non_null(strstr(nspd_error_message(), expect));
+}
+
+static void test_bad_input(void **state) {
+    (void)state;
+    check_refused("  beta: 0\n", 0.05, "beta");
+    check_refused("  beta: -3\n", 0.05, "beta");
+    check_refused("  thickness: plate\n", 0.05, "thickness");
+    check_refused("  transfer: cubic\n", 0.05, "transfer");
+    check_refused("", 0.095, "outside the flow's grid");
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_momentum_exact),   cmocka_unit_test(test_no_force_at_rest),
+        cmocka_unit_test(test_no_force_with_the_stream), cmocka_unit_test(test_stiff_stable),
+        cmocka_unit_test(test_strong_zero_slip), cmocka_unit_test(test_bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
