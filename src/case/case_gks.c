@@ -427,6 +427,32 @@ static int read_initial(CfgNode *flow, GksCaseConfig *fc, const StateContext *sc
     TRY(cfg_check_range(ini, "quadrature", (double)quadrature, 1, 4,
                         "Gauss points per cell and axis, 1 to 4"));
     c->init_quadrature = (int)quadrature;
+    TRY(cfg_opt_bool(ini, "area_fractions", false, &c->init_area_fractions));
+    if (c->init_area_fractions) {
+        if (!seq || v)
+            return cfg_fail_at(ini, "area_fractions",
+                               "true without regions (or with a vortex); expected regions");
+        for (int i = 0; i < fc->region_count; i++) {
+            const ShapeSet *s = &fc->regions[i].shapes;
+            if (s->count != 1 ||
+                (s->shapes[0].kind != SHAPE_DISC && s->shapes[0].kind != SHAPE_RECTANGLE))
+                return cfg_fail(seq->child[i],
+                                "a region of %d shapes (or not a disc or rectangle) with "
+                                "area_fractions; expected one disc or rectangle per region",
+                                s->count);
+            double lo[3], hi[3];
+            shapeset_bounds(s, 2, lo, hi);
+            for (int k = 0; k < i; k++) {
+                double lo2[3], hi2[3];
+                shapeset_bounds(&fc->regions[k].shapes, 2, lo2, hi2);
+                if (lo[0] < hi2[0] && lo2[0] < hi[0] && lo[1] < hi2[1] && lo2[1] < hi[1])
+                    return cfg_fail(seq->child[i],
+                                    "this region's box overlaps region %d's with "
+                                    "area_fractions; expected regions apart",
+                                    k);
+            }
+        }
+    }
     return cfg_end_map(ini);
 }
 

@@ -124,3 +124,47 @@ void shapeset_free(ShapeSet *set) {
     nspd_free(&set->shapes);
     set->count = 0;
 }
+
+/* The integral of sqrt(r^2 - t^2) dt from 0 to t (|t| <= r). */
+static double chord_integral(double t, double r) {
+    const double c = t / r;
+    return 0.5 * (t * sqrt(fmax(r * r - t * t, 0.0)) + r * r * asin(c > 1 ? 1 : c < -1 ? -1 : c));
+}
+
+/* The area of the disc of radius r at the origin with x' <= x and y' <= y. */
+static double disc_corner_area(double x, double y, double r) {
+    if (x <= -r || y <= -r) return 0.0;
+    const double X = fmin(x, r);
+    if (y >= r) return 2.0 * (chord_integral(X, r) - chord_integral(-r, r));
+    /* |y| < r: the column height at t is 2 s(t) where s(t) <= y (y >= 0), 0
+     * where s(t) <= -y (y < 0), and y + s(t) for |t| < a */
+    const double a = sqrt(r * r - y * y);
+    double area = 0.0;
+    const double cuts[4] = {-r, -a, a, r};
+    for (int k = 0; k < 3; k++) {
+        const double p = cuts[k], q = fmin(cuts[k + 1], X);
+        if (p >= X) break;
+        if (q <= p) continue; /* an empty piece (y = 0 leaves a = r) */
+        const double g = chord_integral(q, r) - chord_integral(p, r);
+        if (k == 1)
+            area += y * (q - p) + g;
+        else if (y >= 0.0)
+            area += 2.0 * g;
+    }
+    return area;
+}
+
+double shape_area_in_rect(const Shape *s, double x0, double x1, double y0, double y1) {
+    if (s->kind == SHAPE_RECTANGLE) {
+        const double w = fmin(x1, s->hi[0]) - fmax(x0, s->lo[0]);
+        const double h = fmin(y1, s->hi[1]) - fmax(y0, s->lo[1]);
+        return w > 0.0 && h > 0.0 ? w * h : 0.0;
+    }
+    if (s->kind != SHAPE_DISC) return -1.0;
+    const double cx = s->center[0], cy = s->center[1], r = s->radius;
+    /* not clamped at 0: a cell the circle only touches may come out at
+     * -1e-11 of r^2, and a clamp would break the telescoping that makes a
+     * tiling's cells sum to the disc's area */
+    return disc_corner_area(x1 - cx, y1 - cy, r) - disc_corner_area(x0 - cx, y1 - cy, r) -
+           disc_corner_area(x1 - cx, y0 - cy, r) + disc_corner_area(x0 - cx, y0 - cy, r);
+}

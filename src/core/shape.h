@@ -44,6 +44,11 @@ bool shapeset_contains(const ShapeSet *set, const double x[3]);
 /* Bounding box of the added shapes (subtractions cannot grow it). Returns
  * false if the set adds nothing. */
 bool shapeset_bounds(const ShapeSet *set, int dim, double lo[3], double hi[3]);
+/* The area of a 2D shape inside the rectangle [x0, x1] x [y0, y1], exact (a
+ * disc's by the closed-form integral of its chord; a rectangle's by its
+ * overlap); -1 for the other kinds. */
+double shape_area_in_rect(const Shape *s, double x0, double x1, double y0, double y1);
+
 /* Area (2D) of a polygon with the sign of its orientation (+ counter-clockwise). */
 double polygon_signed_area(const double *xy, int n);
 void shapeset_free(ShapeSet *set);

@@ -64,7 +64,8 @@ rule nspd_sim sim/sim.h case/case_read.h
 # an interface sees none of its models
 rule nspd_flow flow/riemann_exact.h flow/gks/solver.h flow/gks/model.h flow/pddo/model.h
 rule nspd_solid solid/solid.h solid/pd/config.h solid/bond/model.h solid/correspondence/model.h
-rule nspd_couple flow/flow.h couple/ghost/model.h flow/gks/model.h solid/pd/surface.h
+rule nspd_couple flow/flow.h couple/ghost/model.h couple/penalty/model.h flow/gks/model.h \
+    solid/pd/surface.h
 # the models see their interface and shared part, not each other
 rule nspd_flow_gks flow/gks/solver.h flow/pddo/cloud.h flow/pddo/model.h solid/solid.h
 rule nspd_flow_pddo flow/pddo/model.h flow/gks/grid.h flow/gks/model.h solid/solid.h
@@ -72,12 +73,17 @@ rule nspd_solid_pd solid/pd/lattice.h solid/bond/body.h solid/correspondence/bod
 rule nspd_solid_bond solid/pd/regions.h solid/correspondence/body.h solid/correspondence/j2_kernel.h
 rule nspd_solid_correspondence solid/pd/regions.h solid/bond/body.h solid/bond/force_kernel.h
 rule nspd_couple_ghost flow/gks/model.h flow/pddo/model.h solid/bond/model.h \
-    solid/correspondence/model.h sim/sim.h
+    solid/correspondence/model.h sim/sim.h couple/penalty/model.h
+# the penalty coupling works through the interfaces only: no flow's or
+# solid's own header, not even the PD lattice's
+rule nspd_couple_penalty couple/penalty/relax.h flow/gks/model.h flow/gks/grid.h \
+    flow/pddo/model.h solid/pd/config.h solid/bond/model.h solid/correspondence/model.h \
+    couple/ghost/model.h sim/sim.h
 # the driver, its output and the command name no model
 rule nspd_sim solid/solid.h flow/gks/model.h flow/gks/grid.h flow/pddo/model.h solid/pd/config.h \
-    solid/bond/model.h solid/correspondence/model.h couple/ghost/model.h
+    solid/bond/model.h solid/correspondence/model.h couple/ghost/model.h couple/penalty/model.h
 rule nspd app/commands.h flow/gks/solver.h flow/pddo/model.h solid/pd/config.h \
-    solid/bond/body.h solid/correspondence/body.h couple/ghost/model.h
+    solid/bond/body.h solid/correspondence/body.h couple/ghost/model.h couple/penalty/relax.h
 
 echo "$count forbidden includes refused"
 [ "$failures" -eq 0 ]

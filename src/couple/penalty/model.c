@@ -309,6 +309,18 @@ static void penalty_loads(const void *impl, CouplingLoads *out) {
     out->force_on_solid[1] = p->step.impulse[1] / dt;
 }
 
+/* The solid's centre-of-mass displacement along x, m. */
+static double com_dx(const Solid *solid) {
+    const PdPoints *pts = solid_points_const(solid);
+    double mu = 0.0, mass = 0.0;
+    for (int64_t i = 0; i < pts->n; i++) {
+        const double m = solid_density(solid, i) * pts->volume[i];
+        mu += m * pts->u[0][i];
+        mass += m;
+    }
+    return mass > 0 ? mu / mass : 0.0;
+}
+
 static int penalty_history(void *impl, Solid *solid, Flow *flow, double time, Report *row) {
     (void)flow;
     (void)time;
@@ -321,14 +333,15 @@ static int penalty_history(void *impl, Solid *solid, Flow *flow, double time, Re
     report_int(row, "penalty_iterations", p->step.iterations);
     report_real(row, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
     report_int(row, "substeps", solid_last_substeps(solid));
+    report_real(row, "com_dx_m", com_dx(solid));
     return NSPD_OK;
 }
 
 static int penalty_summary(void *impl, Solid *solid, Flow *flow, Report *out) {
-    (void)solid;
     (void)flow;
     PenaltyCoupling *p = impl;
     report_real(out, "penalty_force_x_max_n", p->force_x_max);
+    report_real(out, "com_dx_m", com_dx(solid));
     report_real(out, "c_pen_kg_m3_s", p->step.c_pen_max);
     report_real(out, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
     return NSPD_OK;

@@ -348,6 +348,21 @@ static void gks_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "momentum_x_kg_per_s", totals[1]);
     report_real(out, "momentum_y_kg_per_s", totals[2]);
     report_real(out, "energy_J_per_m", totals[3]);
+    /* the area-weighted mean pressure of the fluid cells (a closed box's
+     * late pressure is its energy balance's) */
+    GksFields f = gks_solver_fields(g->solver);
+    const double gm1 = gks_solver_gas(g->solver)->gamma - 1.0;
+    double sum = 0.0, area = 0.0;
+    for (int j = 0; j < grid->ny; j++)
+        for (int i = 0; i < grid->nx; i++) {
+            const int64_t k = grid_index(grid, i, j);
+            if (f.kind[k] != FLOW_CELL_FLUID) continue;
+            const double a = grid->ax[0].width[i] * grid->ax[1].width[j];
+            const double ke = 0.5 * (f.w[1][k] * f.w[1][k] + f.w[2][k] * f.w[2][k]) / f.w[0][k];
+            sum += gm1 * (f.w[3][k] - ke) * a;
+            area += a;
+        }
+    report_real(out, "mean_pressure_pa", area > 0 ? sum / area : (double)NAN);
 }
 
 static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {

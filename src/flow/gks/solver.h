@@ -84,6 +84,10 @@ typedef struct {
     FlowInitFn init_fn;
     void *init_ctx;
     int init_quadrature;
+    /* regions of one disc or rectangle each, not overlapping: cell averages
+     * of the conserved variables by exact area fractions (a charge holds
+     * the same energy on every mesh) instead of the quadrature */
+    bool init_area_fractions;
 } GksConfig;
 
 /* Defaults: air (gamma 1.4, R 287, Pr 0.72), inviscid, van Leer, CFL 0.5,
