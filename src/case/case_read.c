@@ -241,8 +241,7 @@ static int read_penalty(CfgNode *m, SimConfig *cfg) {
     TRY(cfg_opt_bool(m, "strong", false, &c->strong));
     TRY(cfg_opt_bool(m, "damaged", false, &c->damaged));
     TRY(cfg_opt_double(m, "h", 0.0, &c->h));
-    TRY(cfg_check_range(m, "h", c->h, 0.0, 1e30,
-                        "a length in m (0: the solid's lattice spacing)"));
+    TRY(cfg_check_range(m, "h", c->h, 0.0, 1e30, "a length in m (0: the solid's lattice spacing)"));
     TRY(cfg_opt_double(m, "dt", 0.0, &c->dt));
     TRY(cfg_check_range(m, "dt", c->dt, 0.0, 1e30, "a time in s (0: the solid's stable step)"));
     int transfer, thickness, energy;

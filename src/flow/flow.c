@@ -182,8 +182,8 @@ void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, d
     f->ops->lumped(f->impl, n, cells, mass, momentum_x, momentum_y);
 }
 
-void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx,
-                     const double *dmy, const double *de) {
+void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx, const double *dmy,
+                     const double *de) {
     f->ops->add_lumped(f->impl, n, cells, dmx, dmy, de);
 }
 

@@ -238,8 +238,8 @@ void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double
                    const double *y, int64_t *cell, double *w);
 void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, double *momentum_x,
                  double *momentum_y);
-void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx,
-                     const double *dmy, const double *de);
+void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx, const double *dmy,
+                     const double *de);
 /* FlowOps.probe_add; NSPD_ERR_INPUT for a solver without point probes. */
 int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id);
 void flow_probe_state(const Flow *f, int64_t id, double out[5]);

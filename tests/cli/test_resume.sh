@@ -5,10 +5,11 @@
 # was never stopped: history.csv, every field file, picture, table and
 # .pvd series, and summary.json but for the keys that measure the machine.
 # The stopped runs use 2 threads and the resumed ones 1 (or the other way
-# round): a checkpoint does not depend on the thread count. Five kinds of
+# round): a checkpoint does not depend on the thread count. Six kinds of
 # run: solid only (plate), flow only (cylinder, a fixed body), coupled
-# (panel), the correspondence solid while it breaks (hollow cylinder), and
-# the PDDO flow to its steady state (cavity).
+# (panel), the correspondence solid while it breaks (hollow cylinder), the
+# penalty coupling while a blast breaks a ring, and the PDDO flow to its
+# steady state (cavity).
 # Then the refusals: another case, another binary, no checkpoint, and a
 # damaged newest checkpoint (the one before is used).
 # Release build only: the runs are ~10 s in all here, minutes under ASan
@@ -131,6 +132,8 @@ check_kind cylinder_ma2_re300 USR1 time.end=3.0 output.checkpoint_interval=0.2
 check_kind panel_shock TERM time.end=3.0e-4 output.checkpoint_interval=2.0e-5
 # the correspondence solid while it fractures (bond state, weights, the re-estimated step)
 check_kind hollow_cylinder_pulse USR1 time.end=8e-5 output.checkpoint_interval=4e-6
+# the penalty coupling (paper 003) on a ring the blast fragments
+check_kind blast_hollow_cylinder TERM time.end=1.2e-4 output.checkpoint_interval=1e-5
 # the PDDO flow (u, v, p, its clock), ending at its steady state (max du/dt
 # below 12 m/s^2 at step 636 of 1,000) after the checkpoints
 check_kind cavity_re200 USR1 time.end=1e-2 output.checkpoint_interval=1e-3 \

@@ -71,7 +71,8 @@ static int create_rigid(GhostCoupling *g, GksSolver *solver) {
     TRY(ibm_create(&g->ibm, gks_solver_grid(solver), g->bodies, g->body_count));
     ibm_set_ghost_faces(g->ibm, (IbmGhostFaces)g->cfg.fsi.ghost_faces);
     TRY(ibm_attach(g->ibm, solver));
-    if (g->cfg.fsi.soft_start > 0 && !g->validate_only) ibm_soft_start(g->ibm, solver, g->cfg.fsi.soft_start);
+    if (g->cfg.fsi.soft_start > 0 && !g->validate_only)
+        ibm_soft_start(g->ibm, solver, g->cfg.fsi.soft_start);
     return ibm_surface_reserve(g->ibm, &g->surface);
 }
 
@@ -111,7 +112,7 @@ static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *fl
     g->average_from = cfg->average_from;
     g->validate_only = cfg->validate_only;
     if (g->validate_only) g->cfg.fsi.soft_start = 0.0; /* the coupled one's (fsi.c) too */
-    nspd_free(&cfg->model); /* taken */
+    nspd_free(&cfg->model);                            /* taken */
     g->rigid = solid == NULL;
     int status;
     if (g->rigid) {

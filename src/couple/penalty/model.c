@@ -23,16 +23,16 @@ typedef struct {
     double dt_pen; /* s */
     double h;      /* m */
     /* per point */
-    double *x[2];      /* the points' positions at the relaxation */
+    double *x[2]; /* the points' positions at the relaxation */
     double *m, *b, *v[2], *J[2];
     double *work_rate; /* J per metre: minus the impulse's work on the point */
     /* per entry (n * width) */
     int64_t *cell;
     double *w;
     int32_t *col;
-    int64_t *entry;  /* by cell: the entry p * width + j */
-    int32_t *point;  /* by cell: its point */
-    double *weight;  /* by cell: its weight */
+    int64_t *entry; /* by cell: the entry p * width + j */
+    int32_t *point; /* by cell: its point */
+    double *weight; /* by cell: its weight */
     /* per touched cell (at most n * width) */
     int64_t cells;
     int64_t *cell_id;
@@ -50,11 +50,11 @@ typedef struct {
 static void penalty_destroy(void *impl) {
     PenaltyCoupling *p = impl;
     if (!p) return;
-    double **arrays[] = {&p->x[0], &p->x[1], &p->m,    &p->b,       &p->v[0],    &p->v[1],
-                         &p->J[0], &p->J[1], &p->w,    &p->mass,    &p->u[0],    &p->u[1],
-                         &p->dm[0], &p->dm[1], &p->de, &p->work_rate, &p->work.sample,
-                         &p->work.x, &p->work.r, &p->work.z, &p->work.p, &p->work.ap,
-                         &p->work.diag};
+    double **arrays[] = {&p->x[0],      &p->x[1],        &p->m,        &p->b,      &p->v[0],
+                         &p->v[1],      &p->J[0],        &p->J[1],     &p->w,      &p->mass,
+                         &p->u[0],      &p->u[1],        &p->dm[0],    &p->dm[1],  &p->de,
+                         &p->work_rate, &p->work.sample, &p->work.x,   &p->work.r, &p->work.z,
+                         &p->work.p,    &p->work.ap,     &p->work.diag};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++) nspd_free(arrays[k]);
     nspd_free(&p->cell);
     nspd_free(&p->col);
@@ -73,8 +73,8 @@ static int allocate(PenaltyCoupling *p) {
                             &p->v[1], &p->J[0], &p->J[1], &p->work_rate, &p->work.sample};
     for (size_t k = 0; k < sizeof per_point / sizeof *per_point; k++)
         TRY(nspd_alloc(per_point[k], n ? n : 1, sizeof(double)));
-    double **per_cell[] = {&p->mass,   &p->u[0],   &p->u[1],   &p->dm[0], &p->dm[1],
-                           &p->de,     &p->work.x, &p->work.r, &p->work.z, &p->work.p,
+    double **per_cell[] = {&p->mass,    &p->u[0],      &p->u[1],   &p->dm[0],  &p->dm[1],
+                           &p->de,      &p->work.x,    &p->work.r, &p->work.z, &p->work.p,
                            &p->work.ap, &p->work.diag, &p->w};
     for (size_t k = 0; k < sizeof per_cell / sizeof *per_cell; k++)
         TRY(nspd_alloc(per_cell[k], e ? e : 1, sizeof(double)));

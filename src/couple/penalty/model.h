@@ -46,11 +46,11 @@ typedef enum {
 extern const char *const PENALTY_ENERGY_NAMES[];
 
 typedef struct {
-    double beta;   /* > 0 */
-    bool strong;   /* the beta -> infinity limit */
-    bool damaged;  /* Eq. 23: C_P scaled by 1 - d_P */
-    double h;      /* m, the length in C_pen; 0: the solid's lattice spacing */
-    double dt;     /* s, the step in C_pen; 0: the solid's stable step */
+    double beta;  /* > 0 */
+    bool strong;  /* the beta -> infinity limit */
+    bool damaged; /* Eq. 23: C_P scaled by 1 - d_P */
+    double h;     /* m, the length in C_pen; 0: the solid's lattice spacing */
+    double dt;    /* s, the step in C_pen; 0: the solid's stable step */
     FlowTransferKind transfer;
     PenaltyThickness thickness;
     PenaltyEnergy energy;
@@ -63,12 +63,12 @@ extern const struct CouplingOps PENALTY_COUPLING_OPS;
  * penalty one). */
 typedef struct Coupling Coupling;
 typedef struct {
-    double impulse[2];  /* sum of the impulses on the points, N s per metre of depth */
-    double gas[2];      /* what the gas received, the same */
-    double c_pen_max;   /* kg/(m^3 s), the largest C_P of the step */
-    double slip_max;    /* m/s */
-    int iterations;     /* of the solve */
-    int64_t outside;    /* points with no gas around them */
+    double impulse[2];    /* sum of the impulses on the points, N s per metre of depth */
+    double gas[2];        /* what the gas received, the same */
+    double c_pen_max;     /* kg/(m^3 s), the largest C_P of the step */
+    double slip_max;      /* m/s */
+    int iterations;       /* of the solve */
+    int64_t outside;      /* points with no gas around them */
     double energy_to_gas; /* J per metre of depth, added so far */
 } PenaltyStepInfo;
 const PenaltyStepInfo *penalty_coupling_step(Coupling *c);

@@ -33,8 +33,8 @@ typedef struct {
     const double *b;    /* points: b_P (kg per metre of depth); 0 decouples */
     const double *v[2]; /* points: velocity at the start of the relaxation */
     int64_t cells;
-    const double *mass;     /* cells: kg per metre of depth, > 0 */
-    const double *u[2];     /* cells: velocity at the start */
+    const double *mass; /* cells: kg per metre of depth, > 0 */
+    const double *u[2]; /* cells: velocity at the start */
     /* the same entries by cell, in point order within a cell: cell c's are
      * k = first[c] .. first[c+1]-1, of point point[k] with weight weight[k] */
     const int64_t *first; /* cells + 1 */
@@ -49,11 +49,11 @@ typedef struct {
 } PenaltyWork;
 
 typedef struct {
-    int iterations; /* the most of the two components' */
-    double residual; /* the largest relative residual reached */
-    double slip_max; /* max over points of |s_P' - v_P'| after the step, m/s */
-    double slip_work;   /* sum_P J_P . (s_P' - v_P) = sum_P b_P |s_P' - v_P|^2,
-                           J per metre, >= 0 (a scale of the step's dissipation) */
+    int iterations;   /* the most of the two components' */
+    double residual;  /* the largest relative residual reached */
+    double slip_max;  /* max over points of |s_P' - v_P'| after the step, m/s */
+    double slip_work; /* sum_P J_P . (s_P' - v_P) = sum_P b_P |s_P' - v_P|^2,
+                         J per metre, >= 0 (a scale of the step's dissipation) */
 } PenaltyStats;
 
 /* Relative residual at which the solve stops, and its most iterations. */

@@ -58,7 +58,8 @@ static void area_fraction_average(const GksConfig *cfg, const Grid *g, int i, in
     const double area = (x1 - x0) * (y1 - y0);
     double c[4], rest = 1.0;
     for (int r = 0; r < cfg->region_count; r++) {
-        const double f = shape_area_in_rect(&cfg->regions[r].shapes.shapes[0], x0, x1, y0, y1) / area;
+        const double f =
+            shape_area_in_rect(&cfg->regions[r].shapes.shapes[0], x0, x1, y0, y1) / area;
         if (f == 0.0) continue; /* (a touching cell may give -1e-11: kept, for exact sums) */
         flow_prim_to_cons(&cfg->regions[r].state, gamma, c);
         for (int v = 0; v < 4; v++) acc[v] += f * c[v];

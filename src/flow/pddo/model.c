@@ -41,10 +41,10 @@ typedef struct {
     PddoPpe ppe;
     PddoStep step;
     bool validate_only; /* `nspd check`: conditioning only, no weights or pressure matrix */
-    double setup_s;   /* wall time of the cloud, operators and factorisation (log and info) */
-    int64_t physical; /* fluid and side nodes */
-    int64_t *phys;    /* their node numbers */
-    double *weight;   /* their areas in the trapezoidal rule: halved on each side a node is on */
+    double setup_s;     /* wall time of the cloud, operators and factorisation (log and info) */
+    int64_t physical;   /* fluid and side nodes */
+    int64_t *phys;      /* their node numbers */
+    double *weight;     /* their areas in the trapezoidal rule: halved on each side a node is on */
     double *out[OUT_ARRAYS];
     double *node[NODE_ARRAYS];
     double *sorted;      /* picture ranges */

@@ -92,8 +92,8 @@ static void test_momentum_exact(void **state) {
         const double drift = fabs((s[0] + g[1]) - (s0[0] + g0[1])) / fabs(s0[0]);
         if (drift > worst_drift) worst_drift = drift;
     }
-    printf("penalty momentum: worst step %.3g, drift over 1000 steps %.3g (relative)\n",
-           worst_step, worst_drift);
+    printf("penalty momentum: worst step %.3g, drift over 1000 steps %.3g (relative)\n", worst_step,
+           worst_drift);
     assert_true(worst_step <= 1e-12);
     assert_true(worst_drift <= 1e-13);
     /* not vacuous: the gas took momentum from the disc */
@@ -123,8 +123,8 @@ static void check_no_force(double u) {
         const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
         worst = fmax(worst, hypot(st->impulse[0], st->impulse[1]));
     }
-    printf("penalty impulse at %g m/s with the stream: %.3g N s/m (disc momentum %.3g)\n", u,
-           worst, momentum);
+    printf("penalty impulse at %g m/s with the stream: %.3g N s/m (disc momentum %.3g)\n", u, worst,
+           momentum);
     if (u == 0.0)
         assert_true(worst == 0.0);
     else
@@ -220,9 +220,9 @@ static void test_bad_input(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_momentum_exact),   cmocka_unit_test(test_no_force_at_rest),
+        cmocka_unit_test(test_momentum_exact),           cmocka_unit_test(test_no_force_at_rest),
         cmocka_unit_test(test_no_force_with_the_stream), cmocka_unit_test(test_stiff_stable),
-        cmocka_unit_test(test_strong_zero_slip), cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_strong_zero_slip),         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
