@@ -68,7 +68,7 @@ $(BUILD_FUZZ)/CMakeCache.txt:
 	    -DNSPD_FUZZ=ON -DNSPD_TESTS=OFF -DNSPD_WERROR=OFF $(CMAKE_ARGS)
 
 fuzz: $(BUILD_FUZZ)/CMakeCache.txt
-	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_case fuzz_vtk
+	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_case fuzz_vtk fuzz_sim
 	tests/fuzz/fuzz.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
 
 format: $(BUILD)/CMakeCache.txt

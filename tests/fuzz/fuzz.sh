@@ -1,6 +1,6 @@
 #!/bin/sh
 # Runs the libFuzzer harnesses one after the other (make fuzz; docs/RELIABILITY.md).
-#   usage: tests/fuzz/fuzz.sh BUILD_FUZZ SECONDS [HARNESS...]   (harnesses: case vtk)
+#   usage: tests/fuzz/fuzz.sh BUILD_FUZZ SECONDS [HARNESS...]   (harnesses: case vtk sim)
 # Each harness runs for SECONDS in fork mode with one worker (-fork=1: one
 # core, and a crash, leak, timeout or out-of-memory is saved and the run goes
 # on, so a long run finds everything it can instead of stopping at the
@@ -15,7 +15,7 @@ set -u
 build=$1
 seconds=$2
 shift 2
-[ $# -gt 0 ] || set -- case vtk
+[ $# -gt 0 ] || set -- case vtk sim
 src=$(cd "$(dirname "$0")/../.." && pwd)
 fuzz=$src/tests/fuzz
 found=0
@@ -25,9 +25,11 @@ for h in "$@"; do
     exe=$build/tests/fuzz/fuzz_$h
     [ -x "$exe" ] || { echo "fuzz.sh: no $exe; build it first (make fuzz)" >&2; exit 2; }
     case $h in
-    case) max_len=16384 ;;
+    case | sim) max_len=16384 ;;
     *) max_len=65536 ;;
     esac
+    seeds=$h # fuzz_sim reads case files: the case seeds and dictionary
+    [ "$h" = sim ] && seeds=case
     work=$build/corpus/$h
     artifacts=$build/artifacts/$h
     log=$build/fuzz_$h.log
@@ -39,8 +41,8 @@ for h in "$@"; do
     echo "fuzz_$h: $seconds s, log $log"
     TMPDIR=$tmp "$exe" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
         -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=$max_len \
-        -dict="$fuzz/$h.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 \
-        "$work" "$fuzz/corpus/$h" "$fuzz/regressions/$h" >"$log" 2>&1
+        -dict="$fuzz/$seeds.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 \
+        "$work" "$fuzz/corpus/$seeds" "$fuzz/regressions/$h" >"$log" 2>&1
     status=$?
     rm -rf "$tmp"
     new=0

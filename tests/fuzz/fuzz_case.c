@@ -11,9 +11,14 @@
  * The scratch directory also holds what a case may name, relative to the
  * case file: field.vtr (a 4 x 3 flow field, for flow.initial.from) and
  * body.csv (a triangle, for a polygon body); the seed corpus refers to
- * them. sim_create is left out: it allocates the lattice and grid the case
- * asks for, and its refusals are tested in tests/cli/test_bad_input.sh and
- * tests/cli/test_mutations.sh.
+ * them.
+ *
+ * Built with NSPD_FUZZ_SIM (the harness fuzz_sim, from this same file), an
+ * accepted case is then built as `nspd check` builds it (SimConfig.
+ * check_only) with the memory estimate capped at FUZZ_SIM_MEMORY, so that
+ * no input allocates more than that: the models' own refusals, found while
+ * they are built, and the estimate's, are fuzzed too. Its contract adds
+ * the memory refusal ("the case needs about ... GB"), which names no key.
  *
  * The contract (issue 23), asserted on every input: accepted, or refused
  * with NSPD_ERR_INPUT and a message that starts with the place (the case
@@ -23,6 +28,7 @@
 
 #include "case/case_read.h"
 #include "core/status.h"
+#include "sim/sim.h"
 #include "io/cfg_tree.h"
 #include "io/vtk.h"
 
@@ -32,6 +38,9 @@
 #include <string.h>
 
 enum { MAX_OVERRIDES = 8 };
+
+/* fuzz_sim: the most an input may make the models allocate (bytes) */
+#define FUZZ_SIM_MEMORY 64e6
 
 static char case_path[4200];
 static FILE *devnull;
@@ -107,10 +116,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
 
     CfgDoc doc;
     SimConfig cfg;
-    const int status = case_read(case_path, overrides, count, &doc, &cfg);
+    int status = case_read(case_path, overrides, count, &doc, &cfg);
+    bool memory = false; /* refused by the memory estimate */
     if (status == NSPD_OK) {
         cfg_doc_write(&doc, devnull);
+#ifdef NSPD_FUZZ_SIM
+        cfg.max_memory_bytes = FUZZ_SIM_MEMORY;
+        cfg.check_only = true;
+        Sim sim;
+        status = sim_create(&sim, &cfg); /* takes cfg, whatever it returns */
+        if (status == NSPD_OK) sim_destroy(&sim);
+        memory = status == NSPD_ERR_INPUT &&
+                 strncmp(nspd_error_message(), "the case needs about ", 21) == 0;
+#else
         sim_config_free(&cfg);
+#endif
         cfg_doc_free(&doc);
     }
     if (verbose)
@@ -118,7 +138,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (status != NSPD_OK) {
         const char *message = nspd_error_message();
         const bool placed = strncmp(message, case_path, strlen(case_path)) == 0 ||
-                            strncmp(message, "--set ", 6) == 0;
+                            strncmp(message, "--set ", 6) == 0 || memory;
         if (!message[0] || (status != NSPD_ERR_INPUT && status != NSPD_ERR_IO) ||
             (status == NSPD_ERR_INPUT && !placed)) {
             fprintf(stderr, "fuzz_case: the refusal breaks the contract: status %d, '%s'\n", status,
