@@ -43,6 +43,7 @@ typedef struct {
     int64_t local_size;
     PenaltyWork work;
     double last_dt; /* s, of the last relaxation */
+    bool said;      /* C_pen logged (at the first step: the run's log is open then) */
     PenaltyStepInfo step;
     double force_x_max; /* N per metre of depth, on the solid, over the run */
 } PenaltyCoupling;
@@ -130,13 +131,6 @@ static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *
             penalty_destroy(p);
             return status;
         }
-    const double E = pts->n > 0 ? solid_modulus(solid, 0) : 0.0;
-    nspd_log(LOG_INFO,
-             "penalty coupling: C_pen = beta E dt/h^2 = %g x %g Pa x %g s / (%g m)^2 = %g "
-             "kg/(m^3 s)%s, %s weights, %s",
-             p->cfg.beta, E, p->dt_pen, p->h, p->cfg.beta * E * p->dt_pen / (p->h * p->h),
-             p->cfg.strong ? " (strong: the limit beta -> infinity)" : "",
-             FLOW_TRANSFER_NAMES[p->cfg.transfer], PENALTY_THICKNESS_NAMES[p->cfg.thickness]);
     *impl = p;
     return NSPD_OK;
 }
@@ -215,6 +209,16 @@ static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
 static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     PenaltyCoupling *p = impl;
     PdPoints *pts = solid_points(solid);
+    if (!p->said && pts->n > 0) {
+        p->said = true;
+        const double E = solid_modulus(solid, 0);
+        nspd_log(LOG_INFO,
+                 "penalty coupling: C_pen = beta E dt/h^2 = %g x %g Pa x %g s / (%g m)^2 = %g "
+                 "kg/(m^3 s)%s, %s weights, %s",
+                 p->cfg.beta, E, p->dt_pen, p->h, p->cfg.beta * E * p->dt_pen / (p->h * p->h),
+                 p->cfg.strong ? " (strong: the limit beta -> infinity)" : "",
+                 FLOW_TRANSFER_NAMES[p->cfg.transfer], PENALTY_THICKNESS_NAMES[p->cfg.thickness]);
+    }
     const int64_t n = p->n;
     for (int64_t i = 0; i < n; i++) {
         p->x[0][i] = pts->x[0][i] + pts->u[0][i];
