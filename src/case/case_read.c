@@ -43,10 +43,7 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
     TRY(cfg_req_enum(item, "type", PROBE_KIND_NAMES, &kind));
     p->kind = (ProbeKind)kind;
     const CfgNode *at = cfg_map_find(item, "at") ? cfg_map_find(item, "at") : item;
-    char place[320], path[64];
-    cfg_node_where(at, place, sizeof place);
-    cfg_node_path(at, path, sizeof path);
-    snprintf(p->where, sizeof p->where, "%s: %s", place, path);
+    cfg_node_place(at, p->where, sizeof p->where);
     const char *name;
     char fallback[32];
     snprintf(fallback, sizeof fallback, kind == PROBE_CRACK_TIP ? "crack" : "probe%d", index);
@@ -280,12 +277,7 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     int method = 0; /* gks; method is read only when given (gks cases stay as they were) */
     if (flow && cfg_map_find(flow, "method"))
         TRY(cfg_req_enum(flow, "method", FLOW_METHODS, &method));
-    if (flow) {
-        char place[320], path[64];
-        cfg_node_where(flow, place, sizeof place);
-        cfg_node_path(flow, path, sizeof path);
-        snprintf(cfg->flow.where, sizeof cfg->flow.where, "%s: %s", place, path);
-    }
+    if (flow) cfg_node_place(flow, cfg->flow.where, sizeof cfg->flow.where);
     if (flow && method == 1) {
         if (solid)
             return cfg_fail_at(flow, "method",
@@ -346,12 +338,9 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
             if (!coupling) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
             coupling->used = true;
         }
-        char place[320], path[64];
-        cfg_node_where(coupling, place, sizeof place);
-        cfg_node_path(coupling, path, sizeof path);
+        cfg_node_place(coupling, cfg->coupling.where, sizeof cfg->coupling.where);
         int kind = 0;
         TRY(cfg_opt_enum(coupling, "kind", COUPLING_KINDS, 0, &kind));
-        snprintf(cfg->coupling.where, sizeof cfg->coupling.where, "%s: %s", place, path);
         if (kind == 1) {
             cfg->coupling.kind = COUPLING_PENALTY;
             TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(PenaltyConfig)));

@@ -406,12 +406,9 @@ static const char *const FORMULATION_NAMES[] = {"bond", "correspondence", NULL};
 
 int case_read_solid(CfgNode *s, SolidConfig *out) {
     memset(out, 0, sizeof *out);
-    char place[320], path[64];
-    cfg_node_where(s, place, sizeof place);
-    cfg_node_path(s, path, sizeof path);
+    cfg_node_place(s, out->where, sizeof out->where);
     int formulation;
     TRY(cfg_opt_enum(s, "formulation", FORMULATION_NAMES, 0, &formulation));
-    snprintf(out->where, sizeof out->where, "%s: %s", place, path);
     /* the kind is set with the model's configuration, so that
      * solid_config_free frees what a failed read left */
     if (formulation == 1) {

@@ -89,7 +89,7 @@ const char *coupling_name(const Coupling *c) {
 }
 
 int coupling_before_flow(Coupling *c, Solid *solid, Flow *flow) {
-    return c->ops->before_flow(c->impl, solid, flow);
+    return c->ops->before_flow ? c->ops->before_flow(c->impl, solid, flow) : NSPD_OK;
 }
 
 /* A load that is not finite would wreck the solid silently: whatever the

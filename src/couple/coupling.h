@@ -77,7 +77,7 @@ typedef struct CouplingOps {
     /* solid may be NULL (rigid walls); takes ownership of *cfg's contents */
     int (*create)(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow);
     void (*destroy)(void *impl);
-    int (*before_flow)(void *impl, Solid *solid, Flow *flow);
+    int (*before_flow)(void *impl, Solid *solid, Flow *flow); /* NULL: nothing to do */
     int (*after_flow)(void *impl, Solid *solid, Flow *flow, double dt);
     /* the longest solid sub-step the coupling allows (INFINITY: no limit) */
     double (*solid_dt_limit)(const void *impl, const Solid *solid);

@@ -140,6 +140,13 @@ void cfg_node_where(const CfgNode *node, char *buf, int size) {
     }
 }
 
+void cfg_node_place(const CfgNode *node, char *buf, int size) {
+    char where[320], path[64];
+    cfg_node_where(node, where, sizeof where);
+    cfg_node_path(node, path, sizeof path);
+    snprintf(buf, (size_t)size, "%s: %s", where, path);
+}
+
 /* ------------------------------------------------------------ parsing */
 
 /* Maps and sequences nest at most this deep. A case file needs 6 levels;

@@ -75,5 +75,8 @@ void cfg_node_path(const CfgNode *node, char *buf, int size);
 /* "case.yaml:12:5", or "--set a.b=1" for overrides, or the parent's place for
  * defaults. */
 void cfg_node_where(const CfgNode *node, char *buf, int size);
+/* "case.yaml:12:5: solid.boundaries[1]": where and what, the prefix of a
+ * refusal that a model finds when it is built (SolidConfig.where, ...). */
+void cfg_node_place(const CfgNode *node, char *buf, int size);
 
 #endif

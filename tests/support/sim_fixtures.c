@@ -16,14 +16,18 @@ void fixture_sim(const char *case_file, const char *const *overrides, int count,
     cfg_doc_free(&doc);
 }
 
-void fixture_sim_text(const char *yaml, Sim *sim) {
-    const char *dir = test_scratch_dir("fixture_case");
-    char path[1200];
-    snprintf(path, sizeof path, "%s/case.yaml", dir);
+const char *fixture_case_file(const char *tag, const char *yaml) {
+    static char path[1200];
+    snprintf(path, sizeof path, "%s/case.yaml", test_scratch_dir(tag));
     FILE *f = fopen(path, "w");
     assert_non_null(f);
     fputs(yaml, f);
     fclose(f);
+    return path;
+}
+
+void fixture_sim_text(const char *yaml, Sim *sim) {
+    const char *path = fixture_case_file("fixture_case", yaml);
     CfgDoc doc;
     SimConfig cfg;
     assert_ok(case_read(path, NULL, 0, &doc, &cfg));

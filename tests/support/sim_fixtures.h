@@ -11,6 +11,10 @@
  * simulation; fails the test on any error. */
 void fixture_sim(const char *case_file, const char *const *overrides, int count, Sim *sim);
 
+/* Writes a case given as YAML text to a scratch file named after `tag`;
+ * returns its path (static storage, valid until the next call). */
+const char *fixture_case_file(const char *tag, const char *yaml);
+
 /* Builds a simulation from a case written in the test (YAML text); fails the
  * test on any error. */
 void fixture_sim_text(const char *yaml, Sim *sim);

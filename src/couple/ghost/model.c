@@ -20,7 +20,6 @@ typedef struct {
     GhostCouplingConfig cfg;
     double average_from; /* s */
     bool rigid;          /* fixed bodies, no solid */
-    bool validate_only;  /* `nspd check`: built without the soft start */
     Fsi fsi;             /* two-way: the solid's surface as the walls */
     /* rigid walls */
     Ibm *ibm;
@@ -71,8 +70,7 @@ static int create_rigid(GhostCoupling *g, GksSolver *solver) {
     TRY(ibm_create(&g->ibm, gks_solver_grid(solver), g->bodies, g->body_count));
     ibm_set_ghost_faces(g->ibm, (IbmGhostFaces)g->cfg.fsi.ghost_faces);
     TRY(ibm_attach(g->ibm, solver));
-    if (g->cfg.fsi.soft_start > 0 && !g->validate_only)
-        ibm_soft_start(g->ibm, solver, g->cfg.fsi.soft_start);
+    if (g->cfg.fsi.soft_start > 0) ibm_soft_start(g->ibm, solver, g->cfg.fsi.soft_start);
     return ibm_surface_reserve(g->ibm, &g->surface);
 }
 
@@ -110,9 +108,9 @@ static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *fl
     TRY(nspd_alloc(&g, 1, sizeof *g));
     g->cfg = *(GhostCouplingConfig *)cfg->model;
     g->average_from = cfg->average_from;
-    g->validate_only = cfg->validate_only;
-    if (g->validate_only) g->cfg.fsi.soft_start = 0.0; /* the coupled one's (fsi.c) too */
-    nspd_free(&cfg->model);                            /* taken */
+    /* `nspd check`: no soft start, rigid walls' or a solid's (fsi.c) */
+    if (cfg->validate_only) g->cfg.fsi.soft_start = 0.0;
+    nspd_free(&cfg->model); /* taken */
     g->rigid = solid == NULL;
     int status;
     if (g->rigid) {

@@ -74,11 +74,12 @@ static int allocate(PenaltyCoupling *p) {
                             &p->v[1], &p->J[0], &p->J[1], &p->work_rate, &p->work.sample};
     for (size_t k = 0; k < sizeof per_point / sizeof *per_point; k++)
         TRY(nspd_alloc(per_point[k], n ? n : 1, sizeof(double)));
-    double **per_cell[] = {&p->mass,    &p->u[0],      &p->u[1],   &p->dm[0],  &p->dm[1],
-                           &p->de,      &p->work.x,    &p->work.r, &p->work.z, &p->work.p,
-                           &p->work.ap, &p->work.diag, &p->w};
+    double **per_cell[] = {&p->mass,   &p->u[0],   &p->u[1],    &p->dm[0],
+                           &p->dm[1],  &p->de,     &p->work.x,  &p->work.r,
+                           &p->work.z, &p->work.p, &p->work.ap, &p->work.diag};
     for (size_t k = 0; k < sizeof per_cell / sizeof *per_cell; k++)
         TRY(nspd_alloc(per_cell[k], e ? e : 1, sizeof(double)));
+    TRY(nspd_alloc(&p->w, e ? e : 1, sizeof(double)));
     TRY(nspd_alloc(&p->cell, e ? e : 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->col, e ? e : 1, sizeof(int32_t)));
     TRY(nspd_alloc(&p->entry, e ? e : 1, sizeof(int64_t)));
@@ -190,13 +191,6 @@ static double gather(const PenaltyCoupling *p, int64_t c, const double *f) {
     double sum = 0.0;
     for (int64_t k = p->first[c]; k < p->first[c + 1]; k++) sum += p->weight[k] * f[p->point[k]];
     return sum;
-}
-
-static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
-    (void)impl;
-    (void)solid;
-    (void)flow;
-    return NSPD_OK;
 }
 
 /* The relaxation after the flow's step and before the solid's: the points'
@@ -379,7 +373,7 @@ const CouplingOps PENALTY_COUPLING_OPS = {
     .estimate = penalty_estimate,
     .create = penalty_create,
     .destroy = penalty_destroy,
-    .before_flow = penalty_before_flow,
+    .before_flow = NULL,
     .after_flow = penalty_after_flow,
     .solid_dt_limit = NULL,
     .loads = penalty_loads,

@@ -207,13 +207,7 @@ static void check_refused(const char *extra, double disc_x, const char *expect) 
         snprintf(moved, sizeof moved, "center: [%.2f, 0.05], radius: 0.01", disc_x);
         memcpy(at, moved, strlen(moved));
     }
-    const char *dir = test_scratch_dir("penalty_refused");
-    char path[1200];
-    snprintf(path, sizeof path, "%s/case.yaml", dir);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(text, f);
-    fclose(f);
+    const char *path = fixture_case_file("penalty_refused", text);
     CfgDoc doc;
     SimConfig cfg;
     int status = case_read(path, NULL, 0, &doc, &cfg);

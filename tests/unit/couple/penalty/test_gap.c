@@ -11,9 +11,9 @@
 #include "case/case_read.h"
 #include "core/mem.h"
 #include "core/status.h"
-#include "couple/penalty/model.h"
 #include "flow/flow.h"
 #include "sim/sim.h"
+#include "sim_fixtures.h"
 #include "solid/solid.h"
 
 #include <math.h>
@@ -199,13 +199,7 @@ static void test_gap(void **state) {
     (void)state;
     const SolidKind kind = solid_register(&GATE_OPS);
     assert_true(kind >= SOLID_KIND_COUNT);
-    const char *dir = test_scratch_dir("penalty_gap");
-    char path[1200];
-    snprintf(path, sizeof path, "%s/case.yaml", dir);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(CASE_TEXT, f);
-    fclose(f);
+    const char *path = fixture_case_file("penalty_gap", CASE_TEXT);
     CfgDoc doc;
     SimConfig cfg;
     assert_ok(case_read(path, NULL, 0, &doc, &cfg));
