@@ -66,9 +66,39 @@ static int load(const CaseOptions *opt, bool check_only, CfgDoc *doc, Sim *sim) 
     return status;
 }
 
+/* A case too large for check to build: its sizes, step and steps from the
+ * estimates, and what was left to the build. */
+static void describe_unbuilt(const Sim *sim, char *buf, size_t size) {
+    const SolidEstimate *s = &sim->solid_estimate;
+    const FlowEstimate *f = &sim->flow_estimate;
+    int len = 0;
+    if (sim->cfg.solid.kind != SOLID_NONE)
+        len += snprintf(buf + len, size - (size_t)len, "about %.3g points, %.3g bonds, ", s->points,
+                        s->bonds / 2);
+    if (sim->cfg.flow.method != FLOW_METHOD_NONE && (size_t)len < size)
+        len += snprintf(buf + len, size - (size_t)len, "about %.3g %s, ", f->cells,
+                        f->items ? f->items : "cells");
+    if ((size_t)len >= size) return;
+    if (sim->dt > 0.0)
+        len += snprintf(buf + len, size - (size_t)len, "dt %s%.4g s, about %lld steps",
+                        sim->cfg.dt_given ? "" : "about ", sim->dt, (long long)sim->steps);
+    else
+        len += snprintf(buf + len, size - (size_t)len, "dt and steps known once built");
+    if ((size_t)len >= size) return;
+    snprintf(buf + len, size - (size_t)len,
+             ", %.3g GB; checked from its configuration, not built: building it would take "
+             "about %.2g s, over check's %.2g s; the checks that need its points, cells or "
+             "nodes run when it is built (nspd info, nspd run)",
+             sim->estimate_bytes / 1e9, s->check_s + f->check_s, sim_check_budget_s());
+}
+
 /* "253000 points, 3523910 bonds, dt 1.3e-08 s, 1250 steps" or the flow's
  * equivalent. */
 static void describe(const Sim *sim, char *buf, size_t size) {
+    if (!sim->built) {
+        describe_unbuilt(sim, buf, size);
+        return;
+    }
     int len = 0;
     if (sim->solid) {
         solid_brief(sim->solid, buf, size);
@@ -89,7 +119,7 @@ int cmd_check(int argc, char **argv) {
     Sim sim;
     int status = load(&opt, true, &doc, &sim);
     if (status != NSPD_OK) return report(status);
-    char what[256];
+    char what[640];
     describe(&sim, what, sizeof what);
     printf("%s: ok (case '%s': %s)\n", opt.case_path, sim.cfg.name, what);
     sim_destroy(&sim);

@@ -47,10 +47,15 @@ void flow_config_free(FlowConfig *cfg) {
 }
 
 FlowEstimate flow_estimate(const FlowConfig *cfg) {
-    const FlowEstimate none = {0, 0, 0};
+    const FlowEstimate none = {0};
     const FlowOps *ops = method_ops(cfg->method);
     if (!ops || !ops->estimate) return none;
     return ops->estimate(cfg);
+}
+
+int flow_validate(const FlowConfig *cfg) {
+    const FlowOps *ops = method_ops(cfg->method);
+    return ops && ops->validate ? ops->validate(cfg) : NSPD_OK;
 }
 
 int flow_bench(const char *name, long size, long steps, Report *out, bool *found) {

@@ -109,11 +109,18 @@ typedef struct Flow Flow;
 
 /* What a flow will need, estimated from its configuration alone. */
 typedef struct {
-    double cells; /* or nodes */
+    double cells;      /* or nodes */
+    const char *items; /* what `cells` counts: "cells" or "nodes" */
     /* cells with the layers of ghosts and padding that per-cell arrays
      * hold (what a coupling sizes its own per-cell arrays by) */
     double stored_cells;
     double bytes;
+    /* seconds `nspd check`'s validating build would take (from a rate
+     * measured on this solver; check skips the build above a budget) */
+    double check_s;
+    /* s, the stable step of the initial state from the configuration
+     * alone; 0: known only once the solver is built */
+    double stable_dt;
 } FlowEstimate;
 
 typedef struct FlowOps {
@@ -124,6 +131,11 @@ typedef struct FlowOps {
     void (*config_free)(void *model);
     /* the estimate of a configuration of this solver (no allocation) */
     FlowEstimate (*estimate)(const FlowConfig *cfg);
+    /* optional (NULL: none beyond the reader's): the checks of a
+     * configuration that need no cells or nodes, which create makes too;
+     * what `nspd check` runs on a case too large to build within its
+     * budget */
+    int (*validate)(const FlowConfig *cfg);
     /* Builds the solver from *cfg, taking ownership of its contents. */
     int (*create)(void **impl, FlowConfig *cfg);
     void (*destroy)(void *impl);
@@ -204,6 +216,9 @@ FlowMethod flow_register(const FlowOps *ops);
 
 /* The estimate of *cfg by its solver (zeros for an unknown method). */
 FlowEstimate flow_estimate(const FlowConfig *cfg);
+
+/* The solver's validate op on *cfg (NSPD_OK without one). */
+int flow_validate(const FlowConfig *cfg);
 
 /* Runs the benchmark `name` of the registered solver that has it into
  * *out; *found false (and NSPD_OK) when none has. */

@@ -19,6 +19,21 @@
  * not a run: about a year of steps at 3e4 steps/s. */
 enum { SIM_MAX_STEPS = 1000000000 };
 
+/* The steps to time.end at sim->dt, refused beyond SIM_MAX_STEPS. */
+static int plan_steps(Sim *sim) {
+    const SimConfig *c = &sim->cfg;
+    const double steps = ceil(c->end_time / sim->dt - 1e-9);
+    if (!(steps <= SIM_MAX_STEPS))
+        return NSPD_FAIL(
+            NSPD_ERR_INPUT,
+            "%s%stime.end = %g s needs %.3g steps of %g s; expected at most %.0e steps "
+            "(a shorter time.end or a coarser case)",
+            c->end_time_at, c->end_time_at[0] ? ": " : "", c->end_time, steps, sim->dt,
+            (double)SIM_MAX_STEPS);
+    sim->steps = steps < 1 ? 1 : (int64_t)steps;
+    return NSPD_OK;
+}
+
 static int choose_pace(Sim *sim) {
     const SimConfig *c = &sim->cfg;
     if (sim->solid) {
@@ -42,16 +57,7 @@ static int choose_pace(Sim *sim) {
                      sim->stable_dt);
         sim->dt = c->dt_given ? c->dt : sim->stable_dt;
     }
-    const double steps = ceil(c->end_time / sim->dt - 1e-9);
-    if (!(steps <= SIM_MAX_STEPS))
-        return NSPD_FAIL(
-            NSPD_ERR_INPUT,
-            "%s%stime.end = %g s needs %.3g steps of %g s; expected at most %.0e steps "
-            "(a shorter time.end or a coarser case)",
-            c->end_time_at, c->end_time_at[0] ? ": " : "", c->end_time, steps, sim->dt,
-            (double)SIM_MAX_STEPS);
-    sim->steps = steps < 1 ? 1 : (int64_t)steps;
-    return NSPD_OK;
+    return plan_steps(sim);
 }
 
 /* The memory the case will need, estimated from its configuration by each
@@ -59,19 +65,55 @@ static int choose_pace(Sim *sim) {
  * cannot fit is refused before anything is built. */
 static int check_memory(Sim *sim) {
     const SimConfig *c = &sim->cfg;
-    const SolidEstimate s = solid_estimate(&c->solid);
-    const FlowEstimate f = flow_estimate(&c->flow);
+    const SolidEstimate s = sim->solid_estimate = solid_estimate(&c->solid);
+    const FlowEstimate f = sim->flow_estimate = flow_estimate(&c->flow);
     const CouplingEstimate k = coupling_estimate(&c->coupling, &f);
     sim->estimate_bytes = s.bytes + f.bytes + k.bytes;
     const bool given = c->max_memory_bytes > 0;
     const double limit = given ? c->max_memory_bytes : nspd_mem_physical_bytes();
     if (limit <= 0 || sim->estimate_bytes <= limit) return NSPD_OK;
+    char sizes[160] = "";
+    if (c->solid.kind != SOLID_NONE)
+        snprintf(sizes, sizeof sizes, "%.3g points, %.3g bonds", s.points, s.bonds / 2);
+    if (c->flow.method != FLOW_METHOD_NONE)
+        snprintf(sizes + strlen(sizes), sizeof sizes - strlen(sizes), "%s%.3g %s",
+                 sizes[0] ? ", " : "", f.cells, f.items ? f.items : "cells");
     return NSPD_FAIL(NSPD_ERR_INPUT,
-                     "the case needs about %.3g GB (%.3g points, %.3g bonds, %.3g cells) and %s "
-                     "%.3g GB; expected a coarser case%s",
-                     sim->estimate_bytes / 1e9, s.points, s.bonds / 2, f.cells,
+                     "the case needs about %.3g GB (%s) and %s %.3g GB; expected a coarser case%s",
+                     sim->estimate_bytes / 1e9, sizes,
                      given ? "--max-memory allows" : "this machine has", limit / 1e9,
                      given ? " or a larger --max-memory" : "");
+}
+
+/* `nspd check` builds the models only where that takes at most this long
+ * (the estimates' check_s, from rates measured on each model): a larger
+ * case is checked from its configuration alone (each model's validate op)
+ * and described from its estimates, so that check answers within a second
+ * however large the case it describes. The checks that need the points,
+ * cells or nodes themselves are then the build's (nspd info, nspd run). */
+#define SIM_CHECK_BUILD_S 0.5
+
+/* check of a case too large to build within SIM_CHECK_BUILD_S: the
+ * models' configurations validated, the step and the steps from the
+ * estimates (unknown, 0, where a model knows its step only once built). */
+static int check_unbuilt(Sim *sim) {
+    SimConfig *c = &sim->cfg;
+    if (c->solid.kind != SOLID_NONE) TRY(nspd_error_at(solid_validate(&c->solid), c->solid.where));
+    if (c->flow.method != FLOW_METHOD_NONE)
+        TRY(nspd_error_at(flow_validate(&c->flow), c->flow.where));
+    const bool flow = c->flow.method != FLOW_METHOD_NONE;
+    sim->stable_dt = flow ? sim->flow_estimate.stable_dt : sim->solid_estimate.stable_dt;
+    sim->dt = c->dt_given ? c->dt : flow ? sim->stable_dt : c->safety_factor * sim->stable_dt;
+    if (!(sim->dt > 0.0)) return NSPD_OK; /* known once built */
+    return plan_steps(sim);
+}
+
+bool sim_check_builds(const Sim *sim) {
+    return sim->solid_estimate.check_s + sim->flow_estimate.check_s <= SIM_CHECK_BUILD_S;
+}
+
+double sim_check_budget_s(void) {
+    return SIM_CHECK_BUILD_S;
 }
 
 int sim_create(Sim *sim, SimConfig *cfg) {
@@ -80,6 +122,12 @@ int sim_create(Sim *sim, SimConfig *cfg) {
     memset(cfg, 0, sizeof *cfg);
     SimConfig *c = &sim->cfg;
     int status = check_memory(sim);
+    if (status == NSPD_OK && c->check_only && !sim_check_builds(sim)) {
+        status = check_unbuilt(sim);
+        if (status != NSPD_OK) sim_destroy(sim);
+        return status;
+    }
+    sim->built = true;
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
         /* a refusal found while the model is built, said at its section */
         status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);

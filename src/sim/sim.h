@@ -38,9 +38,14 @@ typedef struct {
     double stable_dt;      /* the pacing model's stable step at the start (flow: CFL) */
     double solid_substep;  /* with a flow: the longest solid sub-step */
     double estimate_bytes; /* the memory the case was estimated to need before it was built */
-    int64_t steps;         /* planned steps (with a flow: estimated from the first step) */
-    int64_t step;          /* steps taken */
-    double time;           /* simulated time, s */
+    SolidEstimate solid_estimate; /* the models' estimates, before anything was built */
+    FlowEstimate flow_estimate;
+    /* the models were built (false only for a check of a case too large
+     * to build within the check's budget: sim_check_builds) */
+    bool built;
+    int64_t steps; /* planned steps (with a flow: estimated from the first step) */
+    int64_t step;  /* steps taken */
+    double time;   /* simulated time, s */
     ProbeState *probes;
 
     /* output state */
@@ -69,6 +74,12 @@ typedef struct {
  * building (geometry without points, inconsistent boundaries, a coupling
  * that does not support the models). */
 int sim_create(Sim *sim, SimConfig *cfg);
+
+/* Whether `nspd check` builds the models of a case of these estimates
+ * (sim->solid_estimate, flow_estimate): when building takes at most
+ * sim_check_budget_s() seconds. */
+bool sim_check_builds(const Sim *sim);
+double sim_check_budget_s(void);
 void sim_destroy(Sim *sim);
 
 /* Runs the case to its end time, writing outputs into opt->dir. Stops

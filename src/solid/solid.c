@@ -60,13 +60,18 @@ int solid_config_dim(const SolidConfig *cfg) {
 }
 
 SolidEstimate solid_estimate(const SolidConfig *cfg) {
-    const SolidEstimate none = {0, 0, 0};
+    const SolidEstimate none = {0};
     const SolidOps *ops = kind_ops(cfg->kind);
     if (!ops || !ops->estimate) return none;
     SolidEstimate e = ops->estimate(cfg);
     e.bytes +=
         e.points * (double)(sizeof(double) * 4); /* the handle's damage and position scratch */
     return e;
+}
+
+int solid_validate(const SolidConfig *cfg) {
+    const SolidOps *ops = kind_ops(cfg->kind);
+    return ops && ops->validate ? ops->validate(cfg) : NSPD_OK;
 }
 
 int solid_bench(const char *name, long size, long steps, Report *out, bool *found) {

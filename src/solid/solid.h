@@ -76,6 +76,12 @@ typedef struct Solid Solid;
 typedef struct {
     double points, bonds; /* bonds: each counted from both ends, as stored */
     double bytes;         /* peak while it is built and run */
+    /* seconds `nspd check`'s validating build would take (from a rate
+     * measured on this model; check skips the build above a budget) */
+    double check_s;
+    /* s, the stable step from the configuration alone (an interior point
+     * of a full family); 0: known only once the model is built */
+    double stable_dt;
 } SolidEstimate;
 
 typedef struct {
@@ -88,6 +94,10 @@ typedef struct {
     int (*config_dim)(const void *model);
     /* the estimate of a configuration of this model (no allocation) */
     SolidEstimate (*estimate)(const SolidConfig *cfg);
+    /* optional (NULL: none beyond the reader's): the checks of a
+     * configuration that need no points, which create makes too; what
+     * `nspd check` runs on a case too large to build within its budget */
+    int (*validate)(const SolidConfig *cfg);
     /* Builds the model from *cfg (taking its contents, zeroing them) and
      * points `pts` at its points. */
     int (*create)(void **impl, PdPoints *pts, SolidConfig *cfg);
@@ -127,6 +137,9 @@ SolidKind solid_register(const SolidOps *ops);
 
 /* The estimate of *cfg by its model (zeros for an unknown kind). */
 SolidEstimate solid_estimate(const SolidConfig *cfg);
+
+/* The model's validate op on *cfg (NSPD_OK without one). */
+int solid_validate(const SolidConfig *cfg);
 
 /* Runs the benchmark `name` of the registered model that has it into *out;
  * *found false (and NSPD_OK) when none has. */

@@ -74,6 +74,18 @@ static int segment_cells(const GridSegment *s, int *n, double *h0, double *ratio
     return NSPD_OK;
 }
 
+double grid_segments_min_spacing(int count, const GridSegment *segments) {
+    double h_min = INFINITY;
+    for (int k = 0; k < count; k++) {
+        int n;
+        double h0, ratio;
+        if (segment_cells(&segments[k], &n, &h0, &ratio) != NSPD_OK) return 0.0;
+        /* a progression's smallest spacing is at one of its ends */
+        h_min = fmin(h_min, fmin(h0, h0 * pow(ratio, n - 1)));
+    }
+    return count > 0 ? h_min : 0.0;
+}
+
 int grid_segments_spacing(int count, const GridSegment *segments, double *h, int max) {
     if (count < 1) return NSPD_FAIL(NSPD_ERR_INPUT, "a grid axis needs at least one segment");
     int total = 0;

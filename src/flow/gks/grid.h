@@ -79,6 +79,10 @@ double grid_segment_cells(const GridSegment *segment);
  * a negative status. */
 int grid_segments_spacing(int count, const GridSegment *segments, double *h, int max);
 
+/* The smallest spacing of a segment list without building the axis (0 for
+ * an invalid one; the failure is recorded, and create reports it). */
+double grid_segments_min_spacing(int count, const GridSegment *segments);
+
 /* Builds a grid from segment lists per axis. */
 int grid_create(Grid *g, double x0, int nsx, const GridSegment *sx, bool periodic_x, double y0,
                 int nsy, const GridSegment *sy, bool periodic_y);

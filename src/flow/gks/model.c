@@ -51,6 +51,11 @@ static void vortex_periods(GksCaseConfig *fc) {
     }
 }
 
+/* Seconds per cell of the validating build (`nspd check`): 0.17 s for the
+ * 1.9e6 cells of cases/cylinder_ma2_re300.yaml, its rigid body included
+ * (2 threads, this machine; median of 3), rounded up. */
+#define GKS_CHECK_S_PER_CELL 1.0e-7
+
 /* Cells from the grid's segments (no axis built); bytes: the solver's
  * padded state (two copies of four fields and the kinds: 65 per cell with
  * its ghost layers), its row work space (28 rows per thread), and the
@@ -58,16 +63,25 @@ static void vortex_periods(GksCaseConfig *fc) {
  * a field, two masks). */
 static FlowEstimate gks_estimate(const FlowConfig *mc) {
     const GksConfig *c = &((const GksCaseConfig *)mc->model)->solver;
-    FlowEstimate e = {0, 0, 0};
+    FlowEstimate e = {0};
     const int nx = grid_segments_spacing(c->segment_count[0], c->segments[0], NULL, 0);
     const int ny = grid_segments_spacing(c->segment_count[1], c->segments[1], NULL, 0);
     if (nx <= 0 || ny <= 0) return e; /* the solver's create says what is wrong */
     e.cells = (double)nx * (double)ny;
+    e.items = "cells";
     const double stride = (double)((nx + 2 * GRID_NG + 7) / 8 * 8);
     const double padded = stride * (double)(ny + 2 * GRID_NG);
     e.stored_cells = padded;
     e.bytes = 65.0 * padded + 28.0 * 8.0 * stride * (double)omp_get_max_threads() + 66.0 * e.cells;
+    e.check_s = GKS_CHECK_S_PER_CELL * e.cells;
+    const GksCaseConfig *fc = mc->model;
+    if (!fc->has_vortex && !fc->has_field)
+        e.stable_dt = gks_solver_config_stable_dt(c, fc->regions, fc->region_count);
     return e;
+}
+
+static int gks_validate(const FlowConfig *mc) {
+    return gks_solver_validate(&((const GksCaseConfig *)mc->model)->solver);
 }
 
 static void gks_destroy(void *impl) {
@@ -494,6 +508,7 @@ const FlowOps GKS_FLOW_OPS = {
     .name = "gks",
     .config_free = gks_config_free,
     .estimate = gks_estimate,
+    .validate = gks_validate,
     .create = gks_create,
     .destroy = gks_destroy,
     .stable_dt = gks_stable_dt,

@@ -231,6 +231,33 @@ static int alloc_work(GksSolver *s) {
     return NSPD_OK;
 }
 
+int gks_solver_validate(const GksConfig *cfg) {
+    TRY(check_config(cfg));
+    const bool per_x = cfg->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC;
+    const bool per_y = cfg->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC;
+    Grid g = {0};
+    TRY(grid_create(&g, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
+                    cfg->segment_count[1], cfg->segments[1], per_y));
+    const int status = bc_validate(&g, cfg->bc);
+    grid_destroy(&g);
+    return status;
+}
+
+double gks_solver_config_stable_dt(const GksConfig *cfg, const FlowRegion *regions, int count) {
+    if (cfg->init_fn || check_config(cfg) != NSPD_OK) return 0.0;
+    GksParams gas;
+    set_gas(&gas, cfg);
+    const double hx = grid_segments_min_spacing(cfg->segment_count[0], cfg->segments[0]);
+    const double hy = grid_segments_min_spacing(cfg->segment_count[1], cfg->segments[1]);
+    if (!(hx > 0.0 && hy > 0.0)) return 0.0;
+    const double visc_factor = gks_visc_factor(&gas);
+    double rate = gks_signal_rate(&gas, gas.law, visc_factor, &cfg->initial, 1.0 / hx, 1.0 / hy);
+    for (int r = 0; r < count; r++)
+        rate = fmax(rate, gks_signal_rate(&gas, gas.law, visc_factor, &regions[r].state, 1.0 / hx,
+                                          1.0 / hy));
+    return rate > 0.0 ? cfg->cfl / rate : 0.0;
+}
+
 /* Everything after the grid; on failure the caller destroys the solver. */
 static int build(GksSolver *s, const GksConfig *cfg) {
     TRY(bc_validate(&s->grid, cfg->bc));

@@ -155,6 +155,16 @@ void gks_solver_fill_boundaries(GksSolver *s);
  * nu_eff = max(4/3, gamma/Pr) mu / rho. */
 double gks_solver_stable_dt(const GksSolver *s);
 
+/* The checks of a configuration that need no cells (its numbers, the
+ * grid's axes, the boundaries on them), as gks_solver_create makes them:
+ * what `nspd check` runs on a grid too large to build (the axes are 1D). */
+int gks_solver_validate(const GksConfig *cfg);
+
+/* The stable step of the initial state from the configuration alone: the
+ * signal rate of the uniform state and of each region's at the smallest
+ * spacing of each axis (0 for an initial function or an invalid one). */
+double gks_solver_config_stable_dt(const GksConfig *cfg, const FlowRegion *regions, int count);
+
 /* One step of size dt (s). NSPD_ERR_NUMERIC if a fluid cell ends with NaN,
  * rho <= 0 or p <= 0; the message names the first such cell (row-major
  * order), its centre and the step. */

@@ -69,4 +69,12 @@ struct GksSolver {
     size_t bytes; /* allocated by create (state + work), for the benchmark */
 };
 
+/* The viscous factor of the stable step: 2 max(4/3, gamma/Pr), 0 inviscid. */
+double gks_visc_factor(const GksParams *gas);
+
+/* The signal-speed rate (1/s) of one primitive state on a cell of inverse
+ * widths idx, idy: what gks_solver_stable_dt takes the maximum of. */
+double gks_signal_rate(const GksParams *gas, ViscosityLaw law, double visc_factor,
+                       const FlowPrim *state, double idx, double idy);
+
 #endif

@@ -29,6 +29,16 @@ void gks_solver_fill_boundaries(GksSolver *s) {
     bc_fill(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind);
 }
 
+/* The signal-speed rate of one state (1/s): the inviscid rates
+ * (|u| + c)/dx + (|v| + c)/dy and the viscous nu (1/dx^2 + 1/dy^2). */
+static inline __attribute__((always_inline)) double
+signal_rate(const GksParams *gas, ViscosityLaw law, double visc_factor, double gamma, double iR,
+            double ir, double u, double v, double p, double idx, double idy) {
+    const double c = sqrt(gamma * p * ir);
+    const double nu = visc_factor * gks_viscosity(gas, p * ir * iR, law) * ir;
+    return (fabs(u) + c) * idx + (fabs(v) + c) * idy + nu * (idx * idx + idy * idy);
+}
+
 /* Signal-speed rate of each cell of row j into rate[0..nx) (0 in non-fluid
  * cells); the law is a constant in each instantiation so the loop vectorises. */
 static inline __attribute__((always_inline)) void
@@ -47,12 +57,19 @@ dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double
     for (int i = 0; i < g->nx; i++) {
         const double ir = 1.0 / r[i], u = mx[i] * ir, v = my[i] * ir;
         const double p = gm1 * (e[i] - 0.5 * (mx[i] * u + my[i] * v));
-        const double c = sqrt(gamma * p * ir);
-        const double nu = visc_factor * gks_viscosity(&gas, p * ir * iR, law) * ir;
-        const double rt =
-            (fabs(u) + c) * idx[i] + (fabs(v) + c) * idy + nu * (idx[i] * idx[i] + idy * idy);
+        const double rt = signal_rate(&gas, law, visc_factor, gamma, iR, ir, u, v, p, idx[i], idy);
         out[i] = kd[i] == FLOW_CELL_FLUID ? rt : 0.0;
     }
+}
+
+double gks_visc_factor(const GksParams *gas) {
+    return gas->law == VISCOSITY_NONE ? 0.0 : 2.0 * fmax(4.0 / 3.0, gas->gamma / gas->prandtl);
+}
+
+double gks_signal_rate(const GksParams *gas, ViscosityLaw law, double visc_factor,
+                       const FlowPrim *state, double idx, double idy) {
+    return signal_rate(gas, law, visc_factor, gas->gamma, 1.0 / gas->R, 1.0 / state->rho, state->u,
+                       state->v, state->p, idx, idy);
 }
 
 /* Threads for a team: OpenMP's current maximum, at most the work spaces
@@ -65,8 +82,7 @@ static int team_size(const GksSolver *s) {
 double gks_solver_stable_dt(const GksSolver *s) {
     const Grid *g = &s->grid;
     const ViscosityLaw law = s->gas.law;
-    const double visc_factor =
-        law == VISCOSITY_NONE ? 0.0 : 2.0 * fmax(4.0 / 3.0, s->gas.gamma / s->cfg.prandtl);
+    const double visc_factor = gks_visc_factor(&s->gas);
     double rmax = 0.0;
     const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
 #pragma omp parallel num_threads(team_size(s)) if (big) reduction(max : rmax)

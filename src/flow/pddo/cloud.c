@@ -186,6 +186,11 @@ static int32_t body_image(const PddoCloud *c, const PddoCloudSpec *s, int64_t k)
     return best;
 }
 
+int pddo_cloud_check(const PddoCloudSpec *s) {
+    int32_t nx, ny;
+    return check_spec(s, &nx, &ny);
+}
+
 int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     pddo_cloud_free(c);
     int32_t nx = 0, ny = 0;

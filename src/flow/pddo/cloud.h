@@ -112,6 +112,10 @@ typedef struct {
  * NSPD_ERR_NOMEM. */
 int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *spec);
 
+/* The spec's checks that need no nodes (its spacing, sides, periodic axes,
+ * holes against the sides), as pddo_cloud_build makes them first. */
+int pddo_cloud_check(const PddoCloudSpec *spec);
+
 void pddo_cloud_free(PddoCloud *c);
 
 /* The node at lattice indices (i, j), or -1 (outside the cloud or removed). */

@@ -74,3 +74,21 @@ double pd_stable_time_step(const BondBody *body) {
     }
     return sqrt(min_dt2);
 }
+
+double pd_interior_stable_dt(const PdConfig *cfg) {
+    const double m = cfg->horizon_factor, dx = cfg->spacing;
+    if (!(m > 0.0 && dx > 0.0 && cfg->density > 0.0) || m > 64.0) return 0.0;
+    const int reach = (int)floor(m), dim = cfg->dim;
+    const double volume = pow(dx, dim) * (dim == 2 ? cfg->thickness : 1.0);
+    const double c = pd_micromodulus(cfg);
+    double sum = 0.0;
+    for (int k = dim == 3 ? -reach : 0; k <= (dim == 3 ? reach : 0); k++)
+        for (int j = -reach; j <= reach; j++)
+            for (int i = -reach; i <= reach; i++) {
+                const double r2 = (double)(i * i + j * j + k * k);
+                if (r2 == 0.0 || r2 > m * m) continue;
+                const double len = sqrt(r2) * dx;
+                sum += c * pd_volume_factor(len, m * dx, dx, cfg->volume_correction) * volume / len;
+            }
+    return sum > 0.0 ? sqrt(2.0 * cfg->density / sum) : 0.0;
+}

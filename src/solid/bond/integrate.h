@@ -23,4 +23,10 @@ int pd_step(BondBody *body, double dt);
  * (0.8 is customary) before use. */
 double pd_stable_time_step(const BondBody *body);
 
+/* The same from the configuration alone: the sum over the full family of
+ * an interior point, without surface corrections (which can shorten the
+ * step near a surface: an estimate for a case not built; 0 when the
+ * configuration cannot give one). */
+double pd_interior_stable_dt(const PdConfig *cfg);
+
 #endif

@@ -53,6 +53,11 @@ void bond_solid_points_of(BondBody *b, PdPoints *pts) {
     }
 }
 
+/* Seconds per stored bond of the validating build (`nspd check`): 0.50 s
+ * for the 7.0e6 of cases/plate_crack.yaml, 0.17 s for the 1.7e6 of
+ * block_3d.yaml (2 threads, this machine; medians of 3), the larger rate. */
+#define BOND_CHECK_S_PER_BOND 1.0e-7
+
 /* Points: the lattice sites inside the geometry (sampled); bonds: the
  * family of an interior point, |xi| <= delta on the lattice, for every
  * point (an upper bound: surface points have fewer). Bytes: what
@@ -63,7 +68,7 @@ void bond_solid_points_of(BondBody *b, PdPoints *pts) {
  * 24 per point of surface factors). */
 static SolidEstimate bond_estimate(const SolidConfig *sc) {
     const PdConfig *cfg = sc->model;
-    SolidEstimate e = {0, 0, 0};
+    SolidEstimate e = {0};
     double sites, fraction;
     if (!lattice_estimate(&cfg->geometry, cfg->dim, cfg->spacing, &sites, &fraction)) return e;
     e.points = ceil(sites * fraction);
@@ -77,6 +82,8 @@ static SolidEstimate bond_estimate(const SolidConfig *sc) {
     e.bonds = e.points * family;
     const double per_point = 158.0, build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
     e.bytes = per_point * e.points + (double)PD_BYTES_PER_BOND * e.bonds + build;
+    e.check_s = BOND_CHECK_S_PER_BOND * e.bonds;
+    e.stable_dt = pd_interior_stable_dt(cfg);
     return e;
 }
 

@@ -30,6 +30,17 @@ static void test_uniform_and_stretched_segments(void **state) {
     const double last = a.width[10 + n2 - 1];
     assert_true(last > 0.4 / r && last < 0.4 * r);
     for (int i = a.n - 7; i < a.n; i++) assert_close(a.width[i], 0.5 / 7.0, 1e-15);
+    /* the smallest spacing without the axis (nspd check of a grid it does
+     * not build): the built axis' smallest width, to round-off */
+    double w_min = INFINITY;
+    for (int i = 0; i < a.n; i++) w_min = fmin(w_min, a.width[i]);
+    assert_close(grid_segments_min_spacing(3, seg), w_min, 1e-14);
+    const GridSegment shrinking = {.length = 2.0, .h_start = 0.4, .h_end = 0.1};
+    GridAxis b;
+    assert_ok(grid_axis_create(&b, 0.0, 1, &shrinking, false));
+    assert_close(grid_segments_min_spacing(1, &shrinking), b.width[b.n - 1], 1e-14);
+    assert_true(b.width[b.n - 1] < b.width[0]);
+    grid_axis_destroy(&b);
     /* mirrored ghost widths and centre distances */
     assert_close(a.width[-1], a.width[0], 0.0);
     assert_close(a.width[-2], a.width[1], 0.0);

@@ -177,6 +177,10 @@ static void test_accessors_and_dt(void **state) {
     const double cs = sqrt(1.4), h = 0.1, nu = fmax(4.0 / 3.0, 1.4 / 0.72) * 1e-3;
     const double rate = (0.3 + cs) / h + (0.1 + cs) / h + 2.0 * nu * 2.0 / (h * h);
     assert_close(gks_solver_stable_dt(s), 0.5 / rate, 1e-15);
+    /* the same from the configuration alone (nspd check of a grid it does
+     * not build), and its checks */
+    assert_close(gks_solver_config_stable_dt(&c, NULL, 0), 0.5 / rate, 1e-15);
+    assert_ok(gks_solver_validate(&c));
     assert_ok(gks_solver_advance(s, 0.05, 0));
     assert_close(gks_solver_time(s), 0.05, 1e-15);
     assert_true(gks_solver_step_count(s) > 0);
@@ -192,9 +196,12 @@ static void test_bad_config(void **state) {
     GksSolver *s = NULL;
     assert_int_equal(gks_solver_create(&s, &c), NSPD_ERR_INPUT);
     assert_null(s);
+    assert_int_equal(gks_solver_validate(&c), NSPD_ERR_INPUT); /* the same checks */
     base_config(&c, 8);
     c.cfl = 0.0;
     assert_int_equal(gks_solver_create(&s, &c), NSPD_ERR_INPUT);
+    assert_int_equal(gks_solver_validate(&c), NSPD_ERR_INPUT);
+    assert_close(gks_solver_config_stable_dt(&c, NULL, 0), 0.0, 0.0);
     nspd_error_clear();
 }
 
@@ -220,6 +227,12 @@ static void test_initial_regions(void **state) {
     assert_close(rho[3 * 20 + 19], 1.0, 1e-14);
     /* the cell straddling the disc edge gets a quadrature average */
     assert_true(rho[10 * 20 + 6] > 2.0 && rho[10 * 20 + 6] < 5.0);
+    /* the step from the configuration: the fastest state's (the
+     * rectangle's: sound speed sqrt(2.1)), as the built one, since the
+     * rectangle covers whole cells (whose state went through the conserved
+     * variables: 3 ulp measured) */
+    assert_close(gks_solver_config_stable_dt(&c, regions, 2), gks_solver_stable_dt(s),
+                 1e-14 * gks_solver_stable_dt(s));
     gks_solver_destroy(&s);
 }
 

@@ -158,6 +158,9 @@ static void test_stable_time_step(void **state) {
         }
     /* interior points have the largest sum, hence the smallest step */
     assert_close(pd_stable_time_step(&b), sqrt(2 * 8000 / sum), 1e-7 * sqrt(2 * 8000 / sum));
+    /* the same from the configuration alone (nspd check of a body it does
+     * not build): exact in the sum, the built one's coefficients are floats */
+    assert_close(pd_interior_stable_dt(&b.cfg), sqrt(2 * 8000 / sum), 1e-14 * sqrt(2 * 8000 / sum));
     bond_body_destroy(&b);
 }
 
