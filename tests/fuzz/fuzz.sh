@@ -34,8 +34,9 @@ for h in "$@"; do
     artifacts=$build/artifacts/$h
     log=$build/fuzz_$h.log
     # the harnesses' scratch directories (and libFuzzer's fork-mode files)
-    # go here, so a crashed worker leaves nothing in /tmp
-    tmp=$build/tmp
+    # go here, so a crashed worker leaves nothing in /tmp; one per harness,
+    # so that two harnesses can run side by side (one core each)
+    tmp=$build/tmp/$h
     rm -rf "$artifacts" "$tmp"
     mkdir -p "$work" "$artifacts" "$tmp" "$fuzz/regressions/$h"
     echo "fuzz_$h: $seconds s, log $log"

@@ -23,8 +23,14 @@
  * The contract (issue 23), asserted on every input: accepted, or refused
  * with NSPD_ERR_INPUT and a message that starts with the place (the case
  * file's FILE:LINE:COL or the --set), or NSPD_ERR_IO naming what could not
- * be read; anything else aborts, which libFuzzer reports as a finding. */
+ * be read; anything else aborts, which libFuzzer reports as a finding.
+ *
+ * Mutations (libFuzzer builds): half libFuzzer's own (bytes, the
+ * dictionary's keys), half set_mutator.h's: an override of a real key of
+ * the case with an extreme value. The replay in `make test` applies the
+ * latter too (replay_main --mutate). */
 #include "fuzz_target.h"
+#include "set_mutator.h"
 
 #include "case/case_read.h"
 #include "core/status.h"
@@ -90,6 +96,18 @@ static size_t find_separator(const uint8_t *data, size_t size) {
             return i;
     return size;
 }
+
+#ifdef NSPD_FUZZ_LIBFUZZER
+size_t LLVMFuzzerMutate(uint8_t *data, size_t size, size_t max_size);
+
+size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsigned int seed) {
+    if (seed & 1u) {
+        const size_t n = fuzz_set_mutate(data, size, max_size, seed >> 1);
+        if (n > 0) return n;
+    }
+    return LLVMFuzzerMutate(data, size, max_size);
+}
+#endif
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (ready == 0) ready = set_up() == 0 ? 1 : -1;

@@ -6,8 +6,14 @@
  * leak (LeakSanitizer, at exit) fails the run; so does an unreadable
  * argument or no input at all (a replay of nothing would pass silently: at
  * least one input must be found, though a directory of
- * regression inputs may be empty). */
+ * regression inputs may be empty).
+ *
+ * With --mutate K first, each input is also replayed K times more, each
+ * with one --set override of a real key of its case set to an extreme
+ * value (set_mutator.h, seeds 0..K-1): the case harnesses' own mutator,
+ * deterministic. */
 #include "fuzz_target.h"
+#include "set_mutator.h"
 
 #include <dirent.h>
 #include <stdio.h>
@@ -16,6 +22,9 @@
 #include <sys/stat.h>
 
 enum { REPLAY_MAX_BYTES = 1 << 20 }; /* the corpora hold files of at most 64 kB */
+
+static int mutations; /* --mutate K */
+static long mutated;  /* inputs the mutator made */
 
 static int replay_file(const char *path) {
     FILE *f = fopen(path, "rb");
@@ -44,9 +53,22 @@ static int replay_file(const char *path) {
         return -1;
     }
     memcpy(exact, data, size);
-    free(data);
     LLVMFuzzerTestOneInput(exact, size);
     free(exact);
+    for (int k = 0; k < mutations; k++) {
+        memcpy(exact = data + REPLAY_MAX_BYTES / 2, data, size); /* room after it */
+        const size_t n = size < REPLAY_MAX_BYTES / 4
+                             ? fuzz_set_mutate(exact, size, REPLAY_MAX_BYTES / 2, (unsigned)k)
+                             : 0;
+        if (n == 0) break; /* nothing to override in this input */
+        unsigned char *input = malloc(n);
+        if (!input) break;
+        memcpy(input, exact, n);
+        LLVMFuzzerTestOneInput(input, n);
+        free(input);
+        mutated++;
+    }
+    free(data);
     return 0;
 }
 
@@ -103,12 +125,17 @@ static int replay_dir(const char *dir) {
 }
 
 int main(int argc, char **argv) {
-    if (argc < 2) {
-        fprintf(stderr, "usage: %s FILE|DIR...\n", argv[0]);
+    int first = 1;
+    if (argc > 2 && strcmp(argv[1], "--mutate") == 0) {
+        mutations = atoi(argv[2]);
+        first = 3;
+    }
+    if (argc <= first) {
+        fprintf(stderr, "usage: %s [--mutate K] FILE|DIR...\n", argv[0]);
         return 2;
     }
     int total = 0;
-    for (int i = 1; i < argc; i++) {
+    for (int i = first; i < argc; i++) {
         struct stat st;
         if (stat(argv[i], &st) != 0) {
             fprintf(stderr, "replay: no such file or directory '%s'\n", argv[i]);
@@ -124,6 +151,8 @@ int main(int argc, char **argv) {
         printf("%s: %d inputs\n", argv[i], n);
         total += n;
     }
-    printf("replayed %d inputs\n", total);
+    printf("replayed %d inputs", total);
+    if (mutations > 0) printf(", and %ld with a --set by the mutator", mutated);
+    printf("\n");
     return total > 0 ? 0 : 1;
 }
