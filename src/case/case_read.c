@@ -4,6 +4,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "case/case_gks.h"
+#include "case/case_iga.h"
 #include "case/case_pddo.h"
 #include "case/case_shapes.h"
 #include "case/case_solid.h"
@@ -34,7 +35,7 @@ static int read_time(CfgNode *root, SimConfig *cfg) {
 static const char *const SORT_AXES[] = {"x", "y", "z", NULL};
 
 static const char *const TARGETS[] = {"solid", "flow", NULL};
-static const char *const FLOW_METHODS[] = {"gks", "pddo", NULL};
+static const char *const FLOW_METHODS[] = {"gks", "pddo", "iga", NULL};
 
 static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, int index) {
     if (item->kind != CFG_MAP)
@@ -287,6 +288,10 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
         TRY(nspd_alloc(&cfg->flow.model, 1, sizeof(PddoFlowConfig)));
         TRY(case_read_pddo(flow, cfg_map_find(root, "time"), cfg->dt_given, cfg->dt,
                            cfg->flow.model));
+    } else if (flow && method == 2) {
+        cfg->flow.method = FLOW_METHOD_IGA;
+        TRY(nspd_alloc(&cfg->flow.model, 1, sizeof(IgaFlowConfig)));
+        TRY(case_read_iga(flow, cfg->flow.model));
     } else if (flow) {
         cfg->flow.method = FLOW_METHOD_GKS;
         int status = nspd_alloc(&cfg->flow.model, 1, sizeof(GksCaseConfig));
@@ -307,6 +312,9 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
         }
         *ghost = walls;
         cfg->coupling = (CouplingConfig){.kind = COUPLING_GHOST_CELL, .model = ghost};
+        /* its refusals (a body whose markers cannot be built) said at the bodies */
+        cfg_node_place(cfg_map_find(flow, "bodies"), cfg->coupling.where,
+                       (int)sizeof cfg->coupling.where);
         const GksCaseConfig *f = cfg->flow.model;
         const FlowPrim *q = f->has_free_stream ? &f->free_stream : &f->solver.initial;
         ghost->fsi.reference =

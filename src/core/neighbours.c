@@ -139,7 +139,9 @@ int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < n; i++) f[i + 1] = visit(&cl, x, i, r2, NULL);
         for (int64_t i = 0; i < n; i++) f[i + 1] += f[i];
-        status = nspd_alloc(nbr, (size_t)f[n], sizeof(int32_t));
+        /* at least one entry: a body without bonds still gets an array,
+         * so that b + f[i] below is never an offset from NULL */
+        status = nspd_alloc(nbr, (size_t)(f[n] > 0 ? f[n] : 1), sizeof(int32_t));
     }
     if (status == NSPD_OK) {
         int64_t *f = *first;

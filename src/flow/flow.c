@@ -8,13 +8,14 @@
 /* The built-in solvers' ops tables, each defined in its own folder
  * (flow/gks/model.c, flow/pddo/model.c): the one place the interface names
  * a model, by declaration only, so no model header is in its include tree. */
-extern const FlowOps GKS_FLOW_OPS, PDDO_FLOW_OPS;
+extern const FlowOps GKS_FLOW_OPS, PDDO_FLOW_OPS, IGA_FLOW_OPS;
 
 /* The registry: one ops table per FlowMethod; flow_register fills the
  * slots after the built-in ones. */
 static const FlowOps *FLOW_METHODS[FLOW_METHOD_MAX] = {
     [FLOW_METHOD_GKS] = &GKS_FLOW_OPS,
     [FLOW_METHOD_PDDO] = &PDDO_FLOW_OPS,
+    [FLOW_METHOD_IGA] = &IGA_FLOW_OPS,
 };
 
 FlowMethod flow_register(const FlowOps *ops) {

@@ -26,6 +26,7 @@ typedef enum {
     FLOW_METHOD_NONE = 0, /* the case has no flow */
     FLOW_METHOD_GKS,      /* gas-kinetic BGK-NS finite volumes (paper 000): flow/gks/ */
     FLOW_METHOD_PDDO,     /* incompressible PDDO on node clouds (paper 002): flow/pddo/ */
+    FLOW_METHOD_IGA,      /* isogeometric SUPG compressible flow (paper 003): flow/iga/ */
     FLOW_METHOD_COUNT,    /* the built-in solvers; flow_register adds more after these */
     FLOW_METHOD_MAX = FLOW_METHOD_COUNT + 4
 } FlowMethod;

@@ -62,13 +62,18 @@ rule nspd_solid solid/solid.h flow/flow.h couple/coupling.h io/json.h
 rule nspd_couple couple/coupling.h sim/sim.h io/json.h
 rule nspd_sim sim/sim.h case/case_read.h
 # an interface sees none of its models
-rule nspd_flow flow/riemann_exact.h flow/gks/solver.h flow/gks/model.h flow/pddo/model.h
+rule nspd_flow flow/riemann_exact.h flow/gks/solver.h flow/gks/model.h flow/pddo/model.h \
+    flow/iga/model.h
 rule nspd_solid solid/solid.h solid/pd/config.h solid/bond/model.h solid/correspondence/model.h
 rule nspd_couple flow/flow.h couple/ghost/model.h couple/penalty/model.h flow/gks/model.h \
     solid/pd/surface.h
 # the models see their interface and shared part, not each other
-rule nspd_flow_gks flow/gks/solver.h flow/pddo/cloud.h flow/pddo/model.h solid/solid.h
-rule nspd_flow_pddo flow/pddo/model.h flow/gks/grid.h flow/gks/model.h solid/solid.h
+rule nspd_flow_gks flow/gks/solver.h flow/pddo/cloud.h flow/pddo/model.h solid/solid.h \
+    flow/iga/model.h
+rule nspd_flow_pddo flow/pddo/model.h flow/gks/grid.h flow/gks/model.h solid/solid.h \
+    flow/iga/space.h
+rule nspd_flow_iga flow/iga/model.h flow/gks/grid.h flow/gks/model.h flow/pddo/model.h \
+    solid/solid.h couple/coupling.h
 rule nspd_solid_pd solid/pd/lattice.h solid/bond/body.h solid/correspondence/body.h flow/flow.h
 rule nspd_solid_bond solid/pd/regions.h solid/correspondence/body.h solid/correspondence/j2_kernel.h
 rule nspd_solid_correspondence solid/pd/regions.h solid/bond/body.h solid/bond/force_kernel.h
@@ -77,10 +82,11 @@ rule nspd_couple_ghost flow/gks/model.h flow/pddo/model.h solid/bond/model.h \
 # the penalty coupling works through the interfaces only: no flow's or
 # solid's own header, not even the PD lattice's
 rule nspd_couple_penalty couple/penalty/relax.h flow/gks/model.h flow/gks/grid.h \
-    flow/pddo/model.h solid/pd/config.h solid/bond/model.h solid/correspondence/model.h \
+    flow/pddo/model.h flow/iga/model.h solid/pd/config.h solid/bond/model.h solid/correspondence/model.h \
     couple/ghost/model.h sim/sim.h
 # the driver, its output and the command name no model
-rule nspd_sim solid/solid.h flow/gks/model.h flow/gks/grid.h flow/pddo/model.h solid/pd/config.h \
+rule nspd_sim solid/solid.h flow/gks/model.h flow/gks/grid.h flow/pddo/model.h flow/iga/model.h \
+    solid/pd/config.h \
     solid/bond/model.h solid/correspondence/model.h couple/ghost/model.h couple/penalty/model.h
 rule nspd app/commands.h flow/gks/solver.h flow/pddo/model.h solid/pd/config.h \
     solid/bond/body.h solid/correspondence/body.h couple/ghost/model.h couple/penalty/relax.h

@@ -144,8 +144,9 @@ int ibm_polyline_check(const IbmPolyline *p, int index) {
     }
     if (!(ibm_polyline_area(p) > 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "immersed body %d: the markers are not counter-clockwise (signed area "
-                         "%g)",
+                         "immersed body %d: the markers enclose a signed area of %g m^2; expected "
+                         "a counter-clockwise outline of positive area (coordinates that keep "
+                         "the body's size: not over about 1e12 times it)",
                          index, ibm_polyline_area(p));
     if (p->thermal != IBM_WALL_ADIABATIC && p->thermal != IBM_WALL_ISOTHERMAL)
         return NSPD_FAIL(NSPD_ERR_INPUT, "immersed body %d: unknown thermal condition", index);

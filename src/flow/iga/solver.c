@@ -1,0 +1,582 @@
+#include "flow/iga/solver.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/status.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+struct IgaSolver {
+    IgaConfig cfg;
+    IgaAxis ax[2];
+    int ncx, ncy; /* control points per axis */
+    int64_t ncp;  /* ncx ncy */
+    int64_t nel;  /* elements */
+    int width;    /* p + 1 */
+    int local;    /* (p + 1)^2 functions per element */
+    IgaQpParams qp;
+    double am, af, gam; /* generalised-alpha: alpha_m, alpha_f, gamma */
+    /* control arrays, 4 (or 16) doubles per control point */
+    double *Y, *Yd, *Yn, *Ydn, *Ya, *Yda, *R, *M;
+    /* element-owned slots: local x 4 residual, local x 16 mass, nu max */
+    double *eR, *eM, *eNu;
+    /* per axis and control index: the elements that touch it (ascending)
+     * and the local index there, width entries each, sup_n used */
+    int *sup_n[2], *sup_e[2], *sup_a[2];
+    double time;
+    int64_t steps;
+    double nu_max;
+};
+
+int iga_config_check(const IgaConfig *c) {
+    if (c->degree < 1 || c->degree > IGA_MAX_DEGREE)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "iga: degree %d; expected 1, 2 or 3", c->degree);
+    for (int a = 0; a < 2; a++) {
+        const bool per = c->side[2 * a] == IGA_SIDE_PERIODIC;
+        if (per != (c->side[2 * a + 1] == IGA_SIDE_PERIODIC))
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "iga: periodic on one %c side only; expected both or neither",
+                             a == 0 ? 'x' : 'y');
+        if (c->elements[a] < (per ? c->degree + 1 : 1))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "iga: %d elements along %c; expected at least %d",
+                             c->elements[a], a == 0 ? 'x' : 'y', per ? c->degree + 1 : 1);
+    }
+    if (!(c->gamma > 1.0 && c->gamma < 3.0) || !(c->R > 0.0) || !(c->mu >= 0.0) ||
+        !(c->prandtl > 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "iga: gas gamma %g, R %g, mu %g, Pr %g; expected 1 < gamma < 3, R > 0, "
+                         "mu >= 0, Pr > 0",
+                         c->gamma, c->R, c->mu, c->prandtl);
+    if (!(c->cfl > 0.0 && c->cfl <= 0.5))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "iga: Courant number %g; expected (0, 0.5] (the explicit passes blow up "
+                         "above about 0.6, iga_flow.md 3.6)",
+                         c->cfl);
+    if (c->passes < 1 || c->passes > 100 || !(c->rho_inf >= 0.0 && c->rho_inf <= 1.0) ||
+        !(c->c_dc >= 0.0) || c->db_iterations < 1 || c->db_iterations > 50 || !(c->tau_dt >= 0.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "iga: passes %d, rho_inf %g, dc %g, tau iterations %d, tau_dt %g; "
+                         "expected 1..100, [0, 1], >= 0, 1..50, >= 0",
+                         c->passes, c->rho_inf, c->c_dc, c->db_iterations, c->tau_dt);
+    return NSPD_OK;
+}
+
+/* The elements touching each control point of an axis, ascending. */
+static int build_support(IgaSolver *s, int axis) {
+    const IgaAxis *a = &s->ax[axis];
+    const int w = s->width, n = a->count;
+    TRY(nspd_alloc(&s->sup_n[axis], (size_t)n, sizeof(int)));
+    TRY(nspd_alloc(&s->sup_e[axis], (size_t)n * (size_t)w, sizeof(int)));
+    TRY(nspd_alloc(&s->sup_a[axis], (size_t)n * (size_t)w, sizeof(int)));
+    for (int e = 0; e < a->elements; e++) /* ascending e: each list ends up sorted */
+        for (int l = 0; l < w; l++) {
+            const int k = iga_axis_index(a, e, l);
+            const int m = s->sup_n[axis][k]++;
+            s->sup_e[axis][k * w + m] = e;
+            s->sup_a[axis][k * w + m] = l;
+        }
+    return NSPD_OK;
+}
+
+/* The tabulated values (or slopes) of element e at its Gauss point q. */
+static const double *at_point(const IgaAxis *a, const double *table, int e, int q) {
+    return table + ((size_t)e * (size_t)a->gauss + (size_t)q) * (size_t)(a->degree + 1);
+}
+
+static double sound_speed(const IgaSolver *s, double T) {
+    return sqrt(s->cfg.gamma * s->cfg.R * T);
+}
+
+double iga_solver_stable_dt(const IgaSolver *s) {
+    double rate = 0.0;
+    for (int64_t k = 0; k < s->ncp; k++) {
+        const double *y = s->Y + 4 * k;
+        const double r = sqrt(y[1] * y[1] + y[2] * y[2]) + sound_speed(s, y[3]);
+        if (r > rate) rate = r;
+    }
+    const double h = fmin(s->ax[0].h, s->ax[1].h);
+    return rate > 0.0 ? s->cfg.cfl * h / rate : (double)INFINITY;
+}
+
+/* Element e's residual and lumped-mass slots from the alpha-level values
+ * Ya, Yda (notes 1.3): Gauss points of the tensor rule, kernel.h's body. */
+static void element_residual(IgaSolver *s, int64_t e) {
+    const int w = s->width, L = s->local, ex = (int)(e % s->ax[0].elements),
+              ey = (int)(e / s->ax[0].elements);
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    double y[IGA_MAX_LOCAL * IGA_MAX_LOCAL][4], yd[IGA_MAX_LOCAL * IGA_MAX_LOCAL][4];
+    for (int b = 0; b < w; b++)
+        for (int a = 0; a < w; a++) {
+            const int64_t k =
+                iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+            for (int v = 0; v < 4; v++)
+                y[b * w + a][v] = s->Ya[4 * k + v], yd[b * w + a][v] = s->Yda[4 * k + v];
+        }
+    double *er = s->eR + e * L * 4, *em = s->eM + e * L * 16;
+    memset(er, 0, sizeof(double) * (size_t)L * 4);
+    memset(em, 0, sizeof(double) * (size_t)L * 16);
+    double nu_e = 0.0;
+    for (int qy = 0; qy < ay->gauss; qy++)
+        for (int qx = 0; qx < ax->gauss; qx++) {
+            const double *nx = at_point(ax, ax->value, ex, qx),
+                         *dx = at_point(ax, ax->slope, ex, qx),
+                         *ny = at_point(ay, ay->value, ey, qy),
+                         *dy = at_point(ay, ay->slope, ey, qy);
+            const double wq = ax->weight[qx] * ay->weight[qy];
+            double Y[4] = {0}, Yd[4] = {0}, Yx[4] = {0}, Yy[4] = {0};
+            for (int b = 0; b < w; b++)
+                for (int a = 0; a < w; a++) {
+                    const double n = nx[a] * ny[b], nxd = dx[a] * ny[b], nyd = nx[a] * dy[b];
+                    for (int v = 0; v < 4; v++) {
+                        Y[v] += n * y[b * w + a][v];
+                        Yd[v] += n * yd[b * w + a][v];
+                        Yx[v] += nxd * y[b * w + a][v];
+                        Yy[v] += nyd * y[b * w + a][v];
+                    }
+                }
+            double gal[4], fx[4], fy[4], A0[16], nu;
+            iga_point_residual(&s->qp, Y, Yd, Yx, Yy, gal, fx, fy, A0, &nu);
+            nu_e = fmax(nu_e, nu);
+            for (int b = 0; b < w; b++)
+                for (int a = 0; a < w; a++) {
+                    const double n = wq * nx[a] * ny[b], nxd = wq * dx[a] * ny[b],
+                                 nyd = wq * nx[a] * dy[b];
+                    double *r = er + (b * w + a) * 4, *m = em + (b * w + a) * 16;
+                    for (int v = 0; v < 4; v++) r[v] += n * gal[v] + nxd * fx[v] + nyd * fy[v];
+                    for (int k = 0; k < 16; k++) m[k] += n * A0[k];
+                }
+        }
+    s->eNu[e] = nu_e;
+}
+
+/* R and the lumped blocks M of every control point: the element slots of
+ * its support summed in ascending element order. */
+static void gather(IgaSolver *s) {
+    const int w = s->width, L = s->local;
+    const int64_t ncp = s->ncp;
+#pragma omp parallel for schedule(static) if (ncp >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < ncp; k++) {
+        const int i = (int)(k % s->ncx), j = (int)(k / s->ncx);
+        double r[4] = {0}, m[16] = {0};
+        for (int bj = 0; bj < s->sup_n[1][j]; bj++)
+            for (int bi = 0; bi < s->sup_n[0][i]; bi++) {
+                const int64_t e =
+                    s->sup_e[0][i * w + bi] + (int64_t)s->ax[0].elements * s->sup_e[1][j * w + bj];
+                const int l = s->sup_a[1][j * w + bj] * w + s->sup_a[0][i * w + bi];
+                const double *er = s->eR + (e * L + l) * 4, *em = s->eM + (e * L + l) * 16;
+                for (int v = 0; v < 4; v++) r[v] += er[v];
+                for (int c = 0; c < 16; c++) m[c] += em[c];
+            }
+        memcpy(s->R + 4 * k, r, sizeof r);
+        memcpy(s->M + 16 * k, m, sizeof m);
+    }
+}
+
+static void residual(IgaSolver *s, double dt) {
+    const double tdt = s->cfg.tau_dt > 0.0 ? s->cfg.tau_dt : dt;
+    s->qp.tau_s = 4.0 / (tdt * tdt);
+    const int64_t nel = s->nel;
+#pragma omp parallel for schedule(static) if (nel >= PARALLEL_MIN_ITEMS / 16)
+    for (int64_t e = 0; e < nel; e++) element_residual(s, e);
+    gather(s);
+    double nu = 0.0;
+    for (int64_t e = 0; e < nel; e++) nu = fmax(nu, s->eNu[e]);
+    s->nu_max = nu;
+}
+
+/* Walls and fixed sides (notes 2.4): at their control points the rows of
+ * what is held get R = 0 and an identity row and column in M. */
+static void hold(double *r, double *m, int v) {
+    r[v] = 0.0;
+    for (int c = 0; c < 4; c++) m[4 * v + c] = m[4 * c + v] = 0.0;
+    m[5 * v] = 1.0;
+}
+
+static void apply_sides(IgaSolver *s) {
+    for (int f = 0; f < 4; f++) {
+        const IgaSideKind kind = s->cfg.side[f];
+        if (kind == IGA_SIDE_PERIODIC) continue;
+        const int axis = f / 2, n_along = axis == 0 ? s->ncy : s->ncx;
+        const int fixed = f % 2 == 0 ? 0 : (axis == 0 ? s->ncx : s->ncy) - 1;
+        for (int t = 0; t < n_along; t++) {
+            const int64_t k = axis == 0 ? fixed + (int64_t)s->ncx * t : t + (int64_t)s->ncx * fixed;
+            double *r = s->R + 4 * k, *m = s->M + 16 * k;
+            if (kind == IGA_SIDE_SLIP)
+                hold(r, m, 1 + axis);
+            else
+                for (int v = 0; v < 4; v++) hold(r, m, v);
+        }
+    }
+}
+
+/* Yd -= M^-1 R and, with step (gamma dt), Y -= step M^-1 R. */
+static void block_update(IgaSolver *s, double step) {
+    const int64_t ncp = s->ncp;
+#pragma omp parallel for schedule(static) if (ncp >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < ncp; k++) {
+        double inv[16], d[4];
+        if (!iga_mat4_inverse(s->M + 16 * k, inv)) {
+            for (int v = 0; v < 4; v++) s->Yd[4 * k + v] = NAN; /* caught by the range check */
+            continue;
+        }
+        iga_mat4_vec(inv, s->R + 4 * k, d);
+        for (int v = 0; v < 4; v++) {
+            s->Yd[4 * k + v] -= d[v];
+            if (step != 0.0) s->Y[4 * k + v] -= step * d[v];
+        }
+    }
+}
+
+static int check_range(const IgaSolver *s) {
+    for (int64_t k = 0; k < s->ncp; k++) {
+        const double *y = s->Y + 4 * k, *yd = s->Yd + 4 * k;
+        bool ok = y[0] > 0.0 && y[3] > 0.0 && isfinite(y[0] + y[1] + y[2] + y[3]) &&
+                  isfinite(yd[0] + yd[1] + yd[2] + yd[3]);
+        if (!ok) {
+            const int i = (int)(k % s->ncx), j = (int)(k / s->ncx);
+            return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                             "iga flow: p = %g Pa, T = %g K, u = (%g, %g) m/s at control point "
+                             "(%d, %d) near (%g, %g) m at t = %g s; expected p, T > 0 (a smaller "
+                             "time step or stronger discontinuity capturing)",
+                             y[0], y[3], y[1], y[2], i, j, iga_axis_greville(&s->ax[0], i),
+                             iga_axis_greville(&s->ax[1], j), s->time);
+        }
+    }
+    return NSPD_OK;
+}
+
+int iga_solver_step(IgaSolver *s, double dt) {
+    const size_t bytes = sizeof(double) * 4 * (size_t)s->ncp;
+    memcpy(s->Yn, s->Y, bytes);
+    memcpy(s->Ydn, s->Yd, bytes);
+    /* predictor: Y unchanged, Yd scaled (notes 3.2) */
+    for (int64_t k = 0; k < 4 * s->ncp; k++) s->Yd[k] = (s->gam - 1.0) / s->gam * s->Ydn[k];
+    for (int pass = 0; pass < s->cfg.passes; pass++) {
+        for (int64_t k = 0; k < 4 * s->ncp; k++) {
+            s->Ya[k] = s->Yn[k] + s->af * (s->Y[k] - s->Yn[k]);
+            s->Yda[k] = s->Ydn[k] + s->am * (s->Yd[k] - s->Ydn[k]);
+        }
+        residual(s, dt);
+        for (int64_t k = 0; k < 16 * s->ncp; k++) s->M[k] *= s->am;
+        apply_sides(s);
+        block_update(s, s->gam * dt);
+    }
+    s->time += dt;
+    s->steps++;
+    return check_range(s);
+}
+
+/* ------------------------------------------------------------ initial data */
+
+static void state_at(const IgaConfig *c, double x, double y, double out[4]) {
+    IgaState st = c->initial;
+    const double pt[3] = {x, y, 0.0};
+    for (int r = 0; r < c->region_count; r++)
+        if (shapeset_contains(&c->regions[r].shapes, pt)) st = c->regions[r].state;
+    out[0] = st.p, out[1] = st.u, out[2] = st.v, out[3] = st.T;
+}
+
+static void init_nodal(IgaSolver *s) {
+    for (int j = 0; j < s->ncy; j++)
+        for (int i = 0; i < s->ncx; i++)
+            state_at(&s->cfg, iga_axis_greville(&s->ax[0], i), iga_axis_greville(&s->ax[1], j),
+                     s->Y + 4 * (i + (int64_t)s->ncx * j));
+}
+
+/* Y_A = int N_A Y0 / int N_A (notes 2.5). Each element is sampled on
+ * SUB x SUB sub-cells with the element's Gauss rule on each; with
+ * exact_areas, a region's share of the element is then scaled to its
+ * exact area there (a disc's or a rectangle's), so that int p^h = int p0
+ * on any mesh. */
+enum { SUB = 8 };
+
+static int init_lumped(IgaSolver *s, bool exact_areas) {
+    const IgaConfig *c = &s->cfg;
+    const int w = s->width, L = s->local, nr = c->region_count;
+    double *num = NULL, *den = NULL, *phi = NULL; /* phi: (nr + 1) x L per element */
+    TRY(nspd_alloc(&num, (size_t)s->ncp * 4, sizeof(double)));
+    int status = nspd_alloc(&den, (size_t)s->ncp, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&phi, (size_t)(nr + 1) * (size_t)L, sizeof(double));
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    double gx[IGA_MAX_LOCAL], gw[IGA_MAX_LOCAL];
+    for (int q = 0; q < ax->gauss; q++) { /* the reference rule back from the table */
+        gx[q] = (ax->point[q] - ax->lo) / ax->h;
+        gw[q] = ax->weight[q] / ax->h;
+    }
+    for (int64_t e = 0; status == NSPD_OK && e < s->nel; e++) {
+        const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
+        const double x0 = ax->knots[ex + ax->degree], y0 = ay->knots[ey + ay->degree];
+        memset(phi, 0, sizeof(double) * (size_t)(nr + 1) * (size_t)L);
+        for (int sj = 0; sj < SUB; sj++)
+            for (int si = 0; si < SUB; si++)
+                for (int qy = 0; qy < ay->gauss; qy++)
+                    for (int qx = 0; qx < ax->gauss; qx++) {
+                        const double x = x0 + (si + gx[qx]) * ax->h / SUB,
+                                     y = y0 + (sj + gx[qy]) * ay->h / SUB;
+                        const double wq = gw[qx] * gw[qy] * ax->h * ay->h / (SUB * SUB);
+                        const double pt[3] = {x, y, 0.0};
+                        int owner = 0; /* 0: background, r + 1: region r */
+                        for (int r = 0; r < nr; r++)
+                            if (shapeset_contains(&c->regions[r].shapes, pt)) owner = r + 1;
+                        double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
+                        iga_axis_eval(ax, ex, x, bx, NULL);
+                        iga_axis_eval(ay, ey, y, by, NULL);
+                        for (int b = 0; b < w; b++)
+                            for (int a = 0; a < w; a++)
+                                phi[owner * L + b * w + a] += wq * bx[a] * by[b];
+                    }
+        if (exact_areas)
+            for (int r = 0; r < nr; r++) {
+                const ShapeSet *set = &c->regions[r].shapes;
+                if (set->count != 1) continue;
+                const double area =
+                    shape_area_in_rect(&set->shapes[0], x0, x0 + ax->h, y0, y0 + ay->h);
+                if (area < 0.0) continue;
+                double sampled = 0.0, total = 0.0;
+                for (int l = 0; l < L; l++) sampled += phi[(r + 1) * L + l];
+                for (int o = 0; o <= nr; o++)
+                    for (int l = 0; l < L; l++) total += phi[o * L + l];
+                /* the region's share scaled to its exact area, taken from
+                 * (or given to) the background's */
+                for (int l = 0; l < L; l++) {
+                    double want;
+                    if (sampled > 0.0)
+                        want = phi[(r + 1) * L + l] * area / sampled;
+                    else { /* too small to be sampled: spread like the element's mean */
+                        double col = 0.0;
+                        for (int o = 0; o <= nr; o++) col += phi[o * L + l];
+                        want = area * col / total;
+                    }
+                    phi[l] -= want - phi[(r + 1) * L + l];
+                    phi[(r + 1) * L + l] = want;
+                }
+            }
+        /* accumulate: serial in element order, so the sums do not depend
+         * on threads */
+        for (int b = 0; b < w; b++)
+            for (int a = 0; a < w; a++) {
+                const int64_t k =
+                    iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                for (int o = 0; o <= nr; o++) {
+                    const double f = phi[o * L + b * w + a];
+                    const IgaState st = o == 0 ? c->initial : c->regions[o - 1].state;
+                    num[4 * k] += f * st.p, num[4 * k + 1] += f * st.u;
+                    num[4 * k + 2] += f * st.v, num[4 * k + 3] += f * st.T;
+                    den[k] += f;
+                }
+            }
+    }
+    if (status == NSPD_OK)
+        for (int64_t k = 0; k < s->ncp; k++)
+            for (int v = 0; v < 4; v++) s->Y[4 * k + v] = num[4 * k + v] / den[k];
+    nspd_free(&num);
+    nspd_free(&den);
+    nspd_free(&phi);
+    return status;
+}
+
+/* The starting rate that makes the residual vanish (notes 2.5: lumped
+ * fixed-point passes of R(Y0, Yd) = 0). */
+static void consistent_rate(IgaSolver *s, double dt0) {
+    memcpy(s->Ya, s->Y, sizeof(double) * 4 * (size_t)s->ncp);
+    for (int it = 0; it < 30; it++) {
+        memcpy(s->Yda, s->Yd, sizeof(double) * 4 * (size_t)s->ncp);
+        residual(s, dt0);
+        apply_sides(s);
+        block_update(s, 0.0);
+    }
+}
+
+void iga_solver_destroy(IgaSolver **sp) {
+    IgaSolver *s = *sp;
+    if (!s) return;
+    for (int a = 0; a < 2; a++) {
+        iga_axis_destroy(&s->ax[a]);
+        nspd_free(&s->sup_n[a]);
+        nspd_free(&s->sup_e[a]);
+        nspd_free(&s->sup_a[a]);
+    }
+    double **arrays[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya, &s->Yda,
+                         &s->R, &s->M,  &s->eR, &s->eM,  &s->eNu};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) nspd_free(arrays[k]);
+    nspd_free(sp);
+}
+
+double iga_solver_bytes(int degree, double control_points, double elements) {
+    const double local = (degree + 1.0) * (degree + 1.0);
+    return control_points * (7 * 4 + 16) * 8.0 + elements * (local * 20.0 + 1.0) * 8.0;
+}
+
+int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
+    *out = NULL;
+    TRY(iga_config_check(cfg));
+    IgaSolver *s;
+    TRY(nspd_alloc(&s, 1, sizeof *s));
+    s->cfg = *cfg;
+    s->cfg.regions = NULL; /* borrowed only here */
+    s->cfg.region_count = 0;
+    int status = NSPD_OK;
+    for (int a = 0; a < 2 && status == NSPD_OK; a++)
+        status = iga_axis_create(&s->ax[a], cfg->degree, cfg->elements[a], cfg->lo[a], cfg->hi[a],
+                                 cfg->side[2 * a] == IGA_SIDE_PERIODIC);
+    if (status != NSPD_OK) {
+        iga_solver_destroy(&s);
+        return status;
+    }
+    s->width = cfg->degree + 1;
+    s->local = s->width * s->width;
+    s->ncx = s->ax[0].count, s->ncy = s->ax[1].count;
+    s->ncp = (int64_t)s->ncx * s->ncy;
+    s->nel = (int64_t)cfg->elements[0] * cfg->elements[1];
+    const double ri = cfg->rho_inf;
+    s->am = 0.5 * (3.0 - ri) / (1.0 + ri);
+    s->af = 1.0 / (1.0 + ri);
+    s->gam = 0.5 + s->am - s->af;
+    const double cv = cfg->R / (cfg->gamma - 1.0);
+    s->qp = (IgaQpParams){.R = cfg->R,
+                          .cv = cv,
+                          .mu = cfg->mu,
+                          .lambda = -2.0 * cfg->mu / 3.0,
+                          .kappa = cfg->mu * cfg->gamma * cv / cfg->prandtl,
+                          .c_dc = cfg->c_dc,
+                          .dc_cap = cfg->dc_cap,
+                          .db_iterations = cfg->db_iterations,
+                          .tau_s = 1.0,
+                          .G = {4.0 / (s->ax[0].h * s->ax[0].h), 4.0 / (s->ax[1].h * s->ax[1].h)}};
+    double **four[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya, &s->Yda, &s->R};
+    for (size_t k = 0; k < sizeof four / sizeof four[0] && status == NSPD_OK; k++)
+        status = nspd_alloc(four[k], (size_t)s->ncp * 4, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&s->M, (size_t)s->ncp * 16, sizeof(double));
+    if (status == NSPD_OK)
+        status = nspd_alloc(&s->eR, (size_t)s->nel * (size_t)s->local * 4, sizeof(double));
+    if (status == NSPD_OK)
+        status = nspd_alloc(&s->eM, (size_t)s->nel * (size_t)s->local * 16, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&s->eNu, (size_t)s->nel, sizeof(double));
+    for (int a = 0; a < 2 && status == NSPD_OK; a++) status = build_support(s, a);
+    if (status == NSPD_OK) {
+        IgaConfig with_regions = s->cfg;
+        with_regions.regions = cfg->regions;
+        with_regions.region_count = cfg->region_count;
+        const IgaConfig keep = s->cfg;
+        s->cfg = with_regions;
+        if (cfg->init == IGA_INIT_NODAL)
+            init_nodal(s);
+        else
+            status = init_lumped(s, cfg->exact_areas);
+        s->cfg = keep;
+    }
+    if (status == NSPD_OK) {
+        /* walls: no normal velocity at their control points */
+        for (int f = 0; f < 4; f++) {
+            if (cfg->side[f] != IGA_SIDE_SLIP) continue;
+            const int axis = f / 2, n_along = axis == 0 ? s->ncy : s->ncx;
+            const int fixed = f % 2 == 0 ? 0 : (axis == 0 ? s->ncx : s->ncy) - 1;
+            for (int t = 0; t < n_along; t++) {
+                const int64_t k =
+                    axis == 0 ? fixed + (int64_t)s->ncx * t : t + (int64_t)s->ncx * fixed;
+                s->Y[4 * k + 1 + axis] = 0.0;
+            }
+        }
+        status = check_range(s);
+    }
+    if (status == NSPD_OK && cfg->ydot0 == IGA_YDOT0_CONSISTENT) {
+        consistent_rate(s, dt0 > 0.0 ? dt0 : iga_solver_stable_dt(s));
+        status = check_range(s);
+    }
+    if (status != NSPD_OK) {
+        iga_solver_destroy(&s);
+        return status;
+    }
+    *out = s;
+    return NSPD_OK;
+}
+
+/* -------------------------------------------------------------- accessors */
+
+double iga_solver_time(const IgaSolver *s) {
+    return s->time;
+}
+
+int64_t iga_solver_steps(const IgaSolver *s) {
+    return s->steps;
+}
+
+const IgaAxis *iga_solver_axis(const IgaSolver *s, int axis) {
+    return &s->ax[axis];
+}
+
+const IgaConfig *iga_solver_config(const IgaSolver *s) {
+    return &s->cfg;
+}
+
+double *iga_solver_values(IgaSolver *s) {
+    return s->Y;
+}
+
+double *iga_solver_rates(IgaSolver *s) {
+    return s->Yd;
+}
+
+int64_t iga_solver_control_count(const IgaSolver *s) {
+    return s->ncp;
+}
+
+double iga_solver_nu_max(const IgaSolver *s) {
+    return s->nu_max;
+}
+
+void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    const int ex = iga_axis_element(ax, x), ey = iga_axis_element(ay, y), w = s->width;
+    double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
+    iga_axis_eval(ax, ex, x, bx, NULL);
+    iga_axis_eval(ay, ey, y, by, NULL);
+    for (int v = 0; v < 4; v++) out[v] = 0.0;
+    for (int b = 0; b < w; b++)
+        for (int a = 0; a < w; a++) {
+            const int64_t k =
+                iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+            for (int v = 0; v < 4; v++) out[v] += bx[a] * by[b] * s->Y[4 * k + v];
+        }
+}
+
+void iga_solver_totals(const IgaSolver *s, double totals[4]) {
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    const int w = s->width;
+    const double cv = s->qp.cv;
+    for (int v = 0; v < 4; v++) totals[v] = 0.0;
+    for (int64_t e = 0; e < s->nel; e++) {
+        const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
+        for (int qy = 0; qy < ay->gauss; qy++)
+            for (int qx = 0; qx < ax->gauss; qx++) {
+                const double *nx = at_point(ax, ax->value, ex, qx),
+                             *ny = at_point(ay, ay->value, ey, qy);
+                double Y[4] = {0};
+                for (int b = 0; b < w; b++)
+                    for (int a = 0; a < w; a++) {
+                        const int64_t k =
+                            iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                        for (int v = 0; v < 4; v++) Y[v] += nx[a] * ny[b] * s->Y[4 * k + v];
+                    }
+                const double wq = ax->weight[qx] * ay->weight[qy];
+                const double rho = Y[0] / (s->cfg.R * Y[3]);
+                totals[0] += wq * rho;
+                totals[1] += wq * rho * Y[1];
+                totals[2] += wq * rho * Y[2];
+                totals[3] += wq * rho * (cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2]));
+            }
+    }
+}
+
+int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck) {
+    int64_t count = 4 * s->ncp;
+    TRY(checkpoint_io_array(ck, "iga.values", s->Y, sizeof(double), &count, 4 * s->ncp));
+    if (count != 4 * s->ncp)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "checkpoint: %lld IGA control values; the case has %lld",
+                         (long long)count, (long long)(4 * s->ncp));
+    TRY(checkpoint_io_array(ck, "iga.rates", s->Yd, sizeof(double), &count, 4 * s->ncp));
+    TRY(checkpoint_io_double(ck, "iga.time", &s->time));
+    return checkpoint_io_int64(ck, "iga.steps", &s->steps);
+}

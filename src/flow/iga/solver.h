@@ -1,0 +1,99 @@
+/* The isogeometric compressible-flow solver of paper 003 (Sec. 3;
+ * ../shared/notes/iga_flow.md): tensor-product B-splines of degree 1-3 on a
+ * uniform rectangle, pressure-primitive control values Y = (p, u, v, T),
+ * Galerkin + SUPG + discontinuity capturing (kernel.h), and the explicit
+ * generalised-alpha predictor-multicorrector with the lumped A0 block of
+ * each control point (notes 3.2). Element results go to element-owned
+ * slots and are gathered per control point in ascending element order, so
+ * any thread count gives the same bits. */
+#ifndef NSPD_FLOW_IGA_SOLVER_H
+#define NSPD_FLOW_IGA_SOLVER_H
+
+#include "core/checkpoint.h"
+#include "core/shape.h"
+#include "flow/iga/kernel.h"
+#include "flow/iga/space.h"
+
+#include <stdint.h>
+
+typedef enum { IGA_SIDE_SLIP = 0, IGA_SIDE_PERIODIC, IGA_SIDE_FIXED, IGA_SIDE_KINDS } IgaSideKind;
+
+typedef enum { IGA_INIT_LUMPED_L2 = 0, IGA_INIT_NODAL } IgaInit;
+
+typedef enum { IGA_YDOT0_ZERO = 0, IGA_YDOT0_CONSISTENT } IgaYdot0;
+
+/* A primitive state: p (Pa), u, v (m/s), T (K). */
+typedef struct {
+    double p, u, v, T;
+} IgaState;
+
+typedef struct {
+    ShapeSet shapes; /* borrowed */
+    IgaState state;
+} IgaRegion;
+
+typedef struct {
+    double lo[2], hi[2];
+    int elements[2];
+    int degree;
+    IgaSideKind side[4]; /* x_min, x_max, y_min, y_max (periodic in pairs) */
+    double gamma, R, mu, prandtl;
+    IgaState initial;
+    int region_count;
+    const IgaRegion *regions; /* borrowed during create; later regions win */
+    IgaInit init;
+    bool exact_areas; /* lumped_l2: each single disc or rectangle region at its exact area */
+    IgaYdot0 ydot0;
+    double c_dc;
+    bool dc_cap;
+    int passes;        /* corrector passes per step (3) */
+    double rho_inf;    /* spectral radius at infinity (0.5) */
+    int db_iterations; /* tau's Denman-Beavers iterations (10) */
+    double tau_dt;     /* s: tau's time step; 0: the step taken */
+    double cfl;        /* (|u| + c) dt / h of the stable step (0.3) */
+} IgaConfig;
+
+typedef struct IgaSolver IgaSolver;
+
+/* Builds the space, the initial control values and, with ydot0
+ * consistent, the starting rate at the step dt0 (> 0). */
+int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0);
+void iga_solver_destroy(IgaSolver **s);
+
+/* The configuration's checks that need no control points (also made by
+ * create). */
+int iga_config_check(const IgaConfig *cfg);
+
+/* cfl min(hx, hy) / max over control points of (|u| + c). */
+double iga_solver_stable_dt(const IgaSolver *s);
+
+/* One step of dt (notes 3.2); NSPD_ERR_NUMERIC naming the control point
+ * where p or T left the physical range. */
+int iga_solver_step(IgaSolver *s, double dt);
+
+double iga_solver_time(const IgaSolver *s);
+int64_t iga_solver_steps(const IgaSolver *s);
+const IgaAxis *iga_solver_axis(const IgaSolver *s, int axis);
+const IgaConfig *iga_solver_config(const IgaSolver *s);
+
+/* The control values (ncp x 4, point k = i + nx j) and their rates. */
+double *iga_solver_values(IgaSolver *s);
+double *iga_solver_rates(IgaSolver *s);
+int64_t iga_solver_control_count(const IgaSolver *s);
+
+/* The field at (x, y): Y into out[4] (p, u, v, T). */
+void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]);
+
+/* Integrals of rho, rho u, rho v, rho E over the rectangle (Gauss). */
+void iga_solver_totals(const IgaSolver *s, double totals[4]);
+
+/* The largest DC viscosity of the last residual, m^2/s. */
+double iga_solver_nu_max(const IgaSolver *s);
+
+/* Writes or reads what a step changes (values, rates, clock). */
+int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck);
+
+/* Bytes per control point and per element of the solver's arrays. */
+double iga_solver_bytes(int degree, double control_points, double elements);
+
+#endif
