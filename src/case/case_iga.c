@@ -123,10 +123,9 @@ static int convert(CfgNode *flow, GksCaseConfig *g, IgaFlowConfig *out) {
 int case_read_iga(CfgNode *flow, IgaFlowConfig *out) {
     memset(out, 0, sizeof *out);
     TRY(read_method(flow, &out->solver));
-    if (cfg_map_find(flow, "numerics"))
-        return cfg_fail_at(flow, "numerics",
-                           "the GKS flow's numerics in an IGA case; expected flow.iga (cfl, dc, "
-                           "...)");
+    /* the GKS flow's numerics are read (and checked) with the rest of its
+     * keys and not used: flow.iga has this flow's (one case, either
+     * background) */
     GksCaseConfig gks;
     GhostCouplingConfig walls;
     int status = case_read_gks(flow, &gks, &walls);

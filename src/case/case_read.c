@@ -294,6 +294,10 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
         TRY(case_read_iga(flow, cfg->flow.model));
     } else if (flow) {
         cfg->flow.method = FLOW_METHOD_GKS;
+        /* the IGA flow's own keys: kept, so that one case runs on either
+         * background by --set flow.method (docs/CASES.md) */
+        CfgNode *iga = cfg_map_find(flow, "iga");
+        if (iga) iga->used = true;
         int status = nspd_alloc(&cfg->flow.model, 1, sizeof(GksCaseConfig));
         if (status == NSPD_OK) status = case_read_gks(flow, cfg->flow.model, &walls);
         if (status != NSPD_OK) {
