@@ -227,7 +227,7 @@ void flow_brief(const Flow *f, char *buf, size_t size) {
 }
 
 int64_t flow_fallbacks_total(const Flow *f) {
-    return f->ops->fallbacks_total(f->impl);
+    return f->ops->fallbacks_total ? f->ops->fallbacks_total(f->impl) : 0;
 }
 
 void flow_fields(Flow *f, FieldSet *out) {

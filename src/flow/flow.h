@@ -195,7 +195,8 @@ typedef struct FlowOps {
     void (*summary)(const void *impl, const RunStats *run, Report *out);
     void (*info)(const void *impl, size_t memory_bytes, char *buf, size_t size);
     void (*brief)(const void *impl, char *buf, size_t size); /* "nx x ny cells, " */
-    int64_t (*fallbacks_total)(const void *impl);            /* reduced-order events, for the log */
+    /* reduced-order events, for the log (NULL: a solver without them) */
+    int64_t (*fallbacks_total)(const void *impl);
     /* the fields and pictures of the current state, into the solver's own
      * scratch (no allocation) */
     void (*fields)(void *impl, FieldSet *out);

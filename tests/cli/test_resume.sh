@@ -5,11 +5,11 @@
 # was never stopped: history.csv, every field file, picture, table and
 # .pvd series, and summary.json but for the keys that measure the machine.
 # The stopped runs use 2 threads and the resumed ones 1 (or the other way
-# round): a checkpoint does not depend on the thread count. Six kinds of
+# round): a checkpoint does not depend on the thread count. Seven kinds of
 # run: solid only (plate), flow only (cylinder, a fixed body), coupled
 # (panel), the correspondence solid while it breaks (hollow cylinder), the
-# penalty coupling while a blast breaks a ring, and the PDDO flow to its
-# steady state (cavity).
+# penalty coupling while a blast breaks a ring, the IGA flow's blast, and
+# the PDDO flow to its steady state (cavity).
 # Then the refusals: another case, another binary, no checkpoint, and a
 # damaged newest checkpoint (the one before is used).
 # Release build only: the runs are ~10 s in all here, minutes under ASan
@@ -134,6 +134,9 @@ check_kind panel_shock TERM time.end=3.0e-4 output.checkpoint_interval=2.0e-5
 check_kind hollow_cylinder_pulse USR1 time.end=8e-5 output.checkpoint_interval=4e-6
 # the penalty coupling (paper 003) on a ring the blast fragments
 check_kind blast_hollow_cylinder TERM time.end=1.2e-4 output.checkpoint_interval=1e-5
+# the IGA flow (control values, their rates, its clock)
+check_kind iga_cylindrical_blast TERM time.end=6e-5 output.checkpoint_interval=1e-5 \
+    flow.grid.x.segments.0.spacing=0.012 flow.grid.y.segments.0.spacing=0.012
 # the PDDO flow (u, v, p, its clock), ending at its steady state (max du/dt
 # below 12 m/s^2 at step 636 of 1,000) after the checkpoints
 check_kind cavity_re200 USR1 time.end=1e-2 output.checkpoint_interval=1e-3 \

@@ -1,0 +1,100 @@
+/* ctest-labels: release
+ * flow/iga/solver, ../shared/notes/iga_flow.md T4: Sod on a strip against
+ * the notes' 1D prototype and the exact solution, with the closed tube's
+ * mass and energy drift. Release build only: about 170 steps of 200
+ * elements, a second here, half a minute under the sanitizers (the same
+ * code runs there in test_solver.c). */
+#include "test_support.h"
+
+#include "core/status.h"
+#include "flow/iga/solver.h"
+#include "flow/riemann_exact.h"
+
+#include <math.h>
+
+/* A strip of nx x 2 elements of the unit tube (Sod's gas, walls). */
+static IgaConfig strip(int nx) {
+    return (IgaConfig){.lo = {0.0, 0.0},
+                       .hi = {1.0, 2.0 / nx},
+                       .elements = {nx, 2},
+                       .degree = 2,
+                       .side = {IGA_SIDE_SLIP, IGA_SIDE_SLIP, IGA_SIDE_SLIP, IGA_SIDE_SLIP},
+                       .gamma = 1.4,
+                       .R = 1.0,
+                       .mu = 0.0,
+                       .prandtl = 1.0,
+                       .initial = {0.1, 0.0, 0.0, 0.8},
+                       .init = IGA_INIT_NODAL,
+                       .c_dc = 2.5,
+                       .dc_cap = true,
+                       .passes = 3,
+                       .rho_inf = 0.5,
+                       .db_iterations = 10,
+                       .cfl = 0.3};
+}
+
+/* Sod to t = 0.2 on a strip of nx elements: L1 of the density against
+ * the exact solution (20 samples an element along the middle line) */
+static double sod(int nx, double totals0[4], double totals1[4], IgaSolver **keep) {
+    IgaConfig c = strip(nx);
+    Shape left = {.kind = SHAPE_RECTANGLE, .lo = {-1.0, -1.0}, .hi = {0.5, 1.0}};
+    IgaRegion region = {.shapes = {.count = 1, .shapes = &left}, .state = {1.0, 0.0, 0.0, 1.0}};
+    c.regions = &region;
+    c.region_count = 1;
+    IgaSolver *s;
+    assert_ok(iga_solver_create(&s, &c, 0.0));
+    iga_solver_totals(s, totals0);
+    double t = 0.0;
+    while (t < 0.2 - 1e-12) {
+        const double dt = fmin(iga_solver_stable_dt(s), 0.2 - t);
+        assert_ok(iga_solver_step(s, dt));
+        t += dt;
+    }
+    iga_solver_totals(s, totals1);
+    const RiemannState l = {1.0, 0.0, 1.0}, r = {0.125, 0.0, 0.1};
+    RiemannSolution sol;
+    assert_ok(riemann_exact_solve(&l, &r, 1.4, &sol));
+    double l1 = 0.0;
+    const int n = 20 * nx;
+    for (int k = 0; k < n; k++) {
+        const double x = (k + 0.5) / n;
+        double Y[4];
+        RiemannState e;
+        iga_solver_eval(s, x, c.hi[1] / 2, Y);
+        riemann_exact_sample(&sol, (x - 0.5) / 0.2, &e);
+        l1 += fabs(Y[0] / Y[3] - e.rho) / n;
+    }
+    if (keep)
+        *keep = s;
+    else
+        iga_solver_destroy(&s);
+    return l1;
+}
+
+/* T4: the strip is the notes' 1D discrete system (tensor product, v = 0;
+ * nodal start, walls, Courant 0.3, DC 2.5 capped, 3 passes), except that
+ * the cap's trace of G^-1 has two terms: the 1D prototype (iga1d.py) with
+ * that cap gives L1(rho) = 1.35737e-2 at 100 elements (1.109e-2 with its
+ * own), this solver 1.35742e-2. Asserted to 1e-3 (the DC makes the error
+ * sensitive to round-off: 4e-5 measured). Uncapped (the code's; 3.01e-2 in
+ * 1D) the strip is unstable: round-off in v grows from the diaphragm
+ * (docs/VALIDATION.md). The closed tube keeps mass and energy to the
+ * prototype's 1e-4 level (2e-4 asserted, notes T4). */
+static void test_sod_strip(void **state) {
+    (void)state;
+    double t0[4], t1[4];
+    const double l1 = sod(100, t0, t1, NULL);
+    print_message("iga Sod strip, 100 elements: L1(rho) %.4e, mass drift %.2e, energy drift "
+                  "%.2e\n",
+                  l1, (t1[0] - t0[0]) / t0[0], (t1[3] - t0[3]) / t0[3]);
+    assert_close(l1, 1.35737e-2, 1e-3 * 1.35737e-2);
+    assert_true(fabs(t1[0] - t0[0]) <= 2e-4 * t0[0]);
+    assert_true(fabs(t1[3] - t0[3]) <= 2e-4 * t0[3]);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sod_strip),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
