@@ -183,6 +183,43 @@ static int iga_sample(void *impl, int64_t n, const double *x, const double *y, F
     return NSPD_OK;
 }
 
+/* The transfer weights (FlowOps.transfer): the B-spline basis itself, a
+ * partition of unity, when the kind's width holds (p + 1)^2 entries
+ * (quadratic for degree 2, bilinear for degree 1); otherwise the control
+ * point of the largest basis value with weight 1. */
+static void iga_transfer(const void *impl, FlowTransferKind kind, int64_t n, const double *x,
+                         const double *y, int64_t *cell, double *w) {
+    const IgaSolver *s = ((const IgaFlow *)impl)->solver;
+    const int width = flow_transfer_width(kind);
+    for (int64_t k = 0; k < n; k++) {
+        int64_t cp[IGA_MAX_LOCAL * IGA_MAX_LOCAL];
+        double b[IGA_MAX_LOCAL * IGA_MAX_LOCAL];
+        const int m = iga_solver_point_basis(s, x[k], y[k], cp, b);
+        int64_t *c = cell + k * width;
+        double *v = w + k * width;
+        for (int j = 0; j < width; j++) c[j] = -1, v[j] = 0.0;
+        if (m == 0) continue;
+        if (m <= width) {
+            for (int j = 0; j < m; j++) c[j] = cp[j], v[j] = b[j];
+        } else {
+            int best = 0;
+            for (int j = 1; j < m; j++)
+                if (b[j] > b[best]) best = j;
+            c[0] = cp[best], v[0] = 1.0;
+        }
+    }
+}
+
+static void iga_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
+                       double *momentum_x, double *momentum_y) {
+    iga_solver_lumped(((const IgaFlow *)impl)->solver, n, cells, mass, momentum_x, momentum_y);
+}
+
+static void iga_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
+                           const double *dmy, const double *de) {
+    iga_solver_add_lumped(((IgaFlow *)impl)->solver, n, cells, dmx, dmy, de);
+}
+
 static void iga_totals(const void *impl, double totals[4]) {
     iga_solver_totals(((const IgaFlow *)impl)->solver, totals);
 }
@@ -312,6 +349,9 @@ const FlowOps IGA_FLOW_OPS = {
     .cell_centre = iga_cell_centre,
     .reference = iga_reference,
     .sample = iga_sample,
+    .transfer = iga_transfer,
+    .lumped = iga_lumped,
+    .add_lumped = iga_add_lumped,
     .totals = iga_totals,
     .history = iga_history,
     .summary = iga_summary,

@@ -22,6 +22,7 @@ struct IgaSolver {
     double *Y, *Yd, *Yn, *Ydn, *Ya, *Yda, *R, *M;
     /* element-owned slots: local x 4 residual, local x 16 mass, nu max */
     double *eR, *eM, *eNu;
+    double *mass; /* per control point: add_lumped's masses */
     /* per axis and control index: the elements that touch it (ascending)
      * and the local index there, width entries each, sup_n used */
     int *sup_n[2], *sup_e[2], *sup_a[2];
@@ -454,6 +455,7 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
     if (status == NSPD_OK)
         status = nspd_alloc(&s->eM, (size_t)s->nel * (size_t)s->local * 16, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&s->eNu, (size_t)s->nel, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&s->mass, (size_t)s->ncp, sizeof(double));
     for (int a = 0; a < 2 && status == NSPD_OK; a++) status = build_support(s, a);
     if (status == NSPD_OK) {
         IgaConfig with_regions = s->cfg;
@@ -579,4 +581,82 @@ int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck) {
     TRY(checkpoint_io_array(ck, "iga.rates", s->Yd, sizeof(double), &count, 4 * s->ncp));
     TRY(checkpoint_io_double(ck, "iga.time", &s->time));
     return checkpoint_io_int64(ck, "iga.steps", &s->steps);
+}
+
+/* ------------------------------------------------ what a coupling exchanges */
+
+int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, double *w) {
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    if (!(x >= ax->lo && x <= ax->hi && y >= ay->lo && y <= ay->hi)) return 0;
+    const int ex = iga_axis_element(ax, x), ey = iga_axis_element(ay, y), n = s->width;
+    double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
+    iga_axis_eval(ax, ex, x, bx, NULL);
+    iga_axis_eval(ay, ey, y, by, NULL);
+    for (int b = 0; b < n; b++)
+        for (int a = 0; a < n; a++) {
+            cp[b * n + a] = iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+            w[b * n + a] = bx[a] * by[b];
+        }
+    return s->local;
+}
+
+/* int N_A rho^h over the support of control point k (Gauss, the
+ * support's elements in ascending order). */
+static double lumped_mass(const IgaSolver *s, int64_t k) {
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    const int w = s->width, i = (int)(k % s->ncx), j = (int)(k / s->ncx);
+    double m = 0.0;
+    for (int bj = 0; bj < s->sup_n[1][j]; bj++)
+        for (int bi = 0; bi < s->sup_n[0][i]; bi++) {
+            const int ex = s->sup_e[0][i * w + bi], ey = s->sup_e[1][j * w + bj];
+            const int la = s->sup_a[0][i * w + bi], lb = s->sup_a[1][j * w + bj];
+            for (int qy = 0; qy < ay->gauss; qy++)
+                for (int qx = 0; qx < ax->gauss; qx++) {
+                    const double *nx = at_point(ax, ax->value, ex, qx),
+                                 *ny = at_point(ay, ay->value, ey, qy);
+                    double p = 0.0, T = 0.0;
+                    for (int b = 0; b < w; b++)
+                        for (int a = 0; a < w; a++) {
+                            const int64_t c = iga_axis_index(ax, ex, a) +
+                                              (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                            p += nx[a] * ny[b] * s->Y[4 * c];
+                            T += nx[a] * ny[b] * s->Y[4 * c + 3];
+                        }
+                    m += ax->weight[qx] * ay->weight[qy] * nx[la] * ny[lb] * p / (s->cfg.R * T);
+                }
+        }
+    return m;
+}
+
+void iga_solver_lumped(const IgaSolver *s, int64_t n, const int64_t *cps, double *mass, double *mx,
+                       double *my) {
+    for (int64_t q = 0; q < n; q++) {
+        const int64_t k = cps[q];
+        const double m = lumped_mass(s, k);
+        mass[q] = m;
+        mx[q] = m * s->Y[4 * k + 1];
+        my[q] = m * s->Y[4 * k + 2];
+    }
+}
+
+void iga_solver_add_lumped(IgaSolver *s, int64_t n, const int64_t *cps, const double *dmx,
+                           const double *dmy, const double *de) {
+    const double cv = s->qp.cv;
+    /* every mass before any change (a change at one control point moves
+     * its neighbours' masses), kept in the element slots' scratch */
+    double *mass = s->mass; /* n <= the control points: they are distinct */
+    for (int64_t q = 0; q < n; q++) mass[q] = lumped_mass(s, cps[q]);
+    for (int64_t q = 0; q < n; q++) {
+        const int64_t k = cps[q];
+        double *y = s->Y + 4 * k;
+        const double m = mass[q], rho = y[0] / (s->cfg.R * y[3]);
+        const double e_old = m * (cv * y[3] + 0.5 * (y[1] * y[1] + y[2] * y[2]));
+        if (dmx) y[1] += dmx[q] / m;
+        if (dmy) y[2] += dmy[q] / m;
+        /* the total energy: the new kinetic part and what was handed over;
+         * the density at the control point kept, so p follows T */
+        const double e_new = e_old + (de ? de[q] : 0.0);
+        y[3] = (e_new / m - 0.5 * (y[1] * y[1] + y[2] * y[2])) / cv;
+        y[0] = rho * s->cfg.R * y[3];
+    }
 }

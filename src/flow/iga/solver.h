@@ -93,6 +93,23 @@ double iga_solver_nu_max(const IgaSolver *s);
 /* Writes or reads what a step changes (values, rates, clock). */
 int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck);
 
+/* The control points (k = i + nx j) and basis values N_A(x, y) of the
+ * element that holds (x, y): (p + 1)^2 of each, their number returned; 0
+ * off the rectangle. */
+int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, double *w);
+
+/* The lumped mass int N_A rho^h (kg per metre of depth) of control points
+ * cps[q] and their momentum (the mass times the control velocity). */
+void iga_solver_lumped(const IgaSolver *s, int64_t n, const int64_t *cps, double *mass, double *mx,
+                       double *my);
+
+/* Adds momentum (dmx, dmy) and total energy de (per metre of depth; NULL:
+ * none) to the distinct control points cps[q], between steps: the control
+ * velocity by the momentum over the lumped mass, the temperature by the
+ * energy, the density at the control point kept (p follows T). */
+void iga_solver_add_lumped(IgaSolver *s, int64_t n, const int64_t *cps, const double *dmx,
+                           const double *dmy, const double *de);
+
 /* Bytes per control point and per element of the solver's arrays. */
 double iga_solver_bytes(int degree, double control_points, double elements);
 

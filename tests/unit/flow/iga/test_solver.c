@@ -202,12 +202,64 @@ static void test_threads_bitwise(void **state) {
     for (int t = 0; t < 2; t++) iga_solver_destroy(&s[t]);
 }
 
+/* What a volumetric coupling exchanges (FlowOps.transfer, lumped,
+ * add_lumped; notes T12): the basis at a point is a partition of unity;
+ * the lumped masses of all control points add up to the Gauss integral of
+ * rho^h; momentum handed to control points arrives whole in the lumped
+ * sense (sum of m_A du_A), and energy whole in the control values' total. */
+static void test_exchange(void **state) {
+    (void)state;
+    IgaConfig c = strip(6);
+    c.elements[1] = 5;
+    c.hi[1] = 0.8;
+    Shape disc = {.kind = SHAPE_DISC, .center = {0.4, 0.4}, .radius = 0.2};
+    IgaRegion hot = {.shapes = {.count = 1, .shapes = &disc}, .state = {0.5, 0, 0, 2.0}};
+    c.regions = &hot;
+    c.region_count = 1;
+    c.init = IGA_INIT_LUMPED_L2;
+    IgaSolver *s;
+    assert_ok(iga_solver_create(&s, &c, 0.0));
+    int64_t cp[9];
+    double w[9], sum = 0.0;
+    assert_int_equal(iga_solver_point_basis(s, 0.37, 0.61, cp, w), 9);
+    for (int j = 0; j < 9; j++) sum += w[j];
+    assert_close(sum, 1.0, 1e-15);
+    assert_int_equal(iga_solver_point_basis(s, 1.2, 0.5, cp, w), 0);
+    const int64_t n = iga_solver_control_count(s);
+    int64_t all[64];
+    double m[64], mx[64], my[64], tot[4];
+    assert_true(n <= 64);
+    for (int64_t k = 0; k < n; k++) all[k] = k;
+    iga_solver_lumped(s, n, all, m, mx, my);
+    iga_solver_totals(s, tot);
+    double msum = 0.0;
+    for (int64_t k = 0; k < n; k++) msum += m[k];
+    assert_close(msum, tot[0], 1e-14 * tot[0]);
+    /* momentum and energy to three control points */
+    const int64_t some[3] = {9, 10, 17};
+    const double dmx[3] = {1e-3, -2e-3, 5e-4}, dmy[3] = {0, 1e-3, 2e-3}, de[3] = {1e-2, 0, 3e-3};
+    double m0[3], px0[3], py0[3], before[3][4];
+    iga_solver_lumped(s, 3, some, m0, px0, py0);
+    const double cv = 1.0 / 0.4, *Y = iga_solver_values(s);
+    for (int q = 0; q < 3; q++) memcpy(before[q], Y + 4 * some[q], sizeof before[q]);
+    iga_solver_add_lumped(s, 3, some, dmx, dmy, de);
+    for (int q = 0; q < 3; q++) { /* each with the masses from before any change */
+        const double *y = Y + 4 * some[q], *b = before[q];
+        assert_close(m0[q] * (y[1] - b[1]), dmx[q], 1e-15);
+        assert_close(m0[q] * (y[2] - b[2]), dmy[q], 1e-15);
+        const double e0 = m0[q] * (cv * b[3] + 0.5 * (b[1] * b[1] + b[2] * b[2]));
+        const double e1 = m0[q] * (cv * y[3] + 0.5 * (y[1] * y[1] + y[2] * y[2]));
+        assert_close(e1 - e0, de[q], 1e-14 * e0);
+        assert_close(y[0] / y[3], b[0] / b[3], 1e-15 * b[0] / b[3]); /* the density kept */
+    }
+    iga_solver_destroy(&s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_jacobians),
-        cmocka_unit_test(test_uniform_state),
-        cmocka_unit_test(test_chamber_energy),
-        cmocka_unit_test(test_threads_bitwise),
+        cmocka_unit_test(test_jacobians),      cmocka_unit_test(test_uniform_state),
+        cmocka_unit_test(test_chamber_energy), cmocka_unit_test(test_threads_bitwise),
+        cmocka_unit_test(test_exchange),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
