@@ -399,8 +399,8 @@ void iga_solver_destroy(IgaSolver **sp) {
         nspd_free(&s->sup_e[a]);
         nspd_free(&s->sup_a[a]);
     }
-    double **arrays[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya, &s->Yda,
-                         &s->R, &s->M,  &s->eR, &s->eM,  &s->eNu};
+    double **arrays[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya,  &s->Yda,
+                         &s->R, &s->M,  &s->eR, &s->eM,  &s->eNu, &s->mass};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) nspd_free(arrays[k]);
     nspd_free(sp);
 }
