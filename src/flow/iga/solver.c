@@ -301,8 +301,10 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
     int status = nspd_alloc(&den, (size_t)s->ncp, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&phi, (size_t)(nr + 1) * (size_t)L, sizeof(double));
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
-    double gx[IGA_MAX_LOCAL], gw[IGA_MAX_LOCAL];
-    for (int q = 0; q < ax->gauss; q++) { /* the reference rule back from the table */
+    /* the reference rule back from the table (both axes have the degree,
+     * hence the rule) */
+    double gx[IGA_MAX_LOCAL] = {0}, gw[IGA_MAX_LOCAL] = {0};
+    for (int q = 0; q < ax->gauss; q++) {
         gx[q] = (ax->point[q] - ax->lo) / ax->h;
         gw[q] = ax->weight[q] / ax->h;
     }
