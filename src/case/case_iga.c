@@ -9,7 +9,7 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const INITS[] = {"lumped_l2", "nodal", NULL};
+static const char *const INITS[] = {"lumped_l2", "nodal", "l2", NULL};
 static const char *const YDOT0S[] = {"zero", "consistent", NULL};
 static const char *const FACE_KEYS[4] = {"x_min", "x_max", "y_min", "y_max"};
 

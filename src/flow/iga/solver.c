@@ -272,6 +272,10 @@ int iga_solver_step(IgaSolver *s, double dt) {
 /* ------------------------------------------------------------ initial data */
 
 static void state_at(const IgaConfig *c, double x, double y, double out[4]) {
+    if (c->init_fn) {
+        c->init_fn(c->init_ctx, x, y, out);
+        return;
+    }
     IgaState st = c->initial;
     const double pt[3] = {x, y, 0.0};
     for (int r = 0; r < c->region_count; r++)
@@ -292,6 +296,72 @@ static void init_nodal(IgaSolver *s) {
  * exact area there (a disc's or a rectangle's), so that int p^h = int p0
  * on any mesh. */
 enum { SUB = 8 };
+
+/* y = M x for the consistent mass matrix M_AB = int N_A N_B (Gauss;
+ * serial, in element order). */
+static void mass_apply(const IgaSolver *s, const double *x, double *y) {
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    const int w = s->width;
+    memset(y, 0, sizeof(double) * (size_t)s->ncp);
+    for (int64_t e = 0; e < s->nel; e++) {
+        const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
+        for (int qy = 0; qy < ay->gauss; qy++)
+            for (int qx = 0; qx < ax->gauss; qx++) {
+                const double *nx = at_point(ax, ax->value, ex, qx),
+                             *ny = at_point(ay, ay->value, ey, qy);
+                double v = 0.0;
+                for (int b = 0; b < w; b++)
+                    for (int a = 0; a < w; a++)
+                        v += nx[a] * ny[b] *
+                             x[iga_axis_index(ax, ex, a) +
+                               (int64_t)s->ncx * iga_axis_index(ay, ey, b)];
+                v *= ax->weight[qx] * ay->weight[qy];
+                for (int b = 0; b < w; b++)
+                    for (int a = 0; a < w; a++)
+                        y[iga_axis_index(ax, ex, a) +
+                          (int64_t)s->ncx * iga_axis_index(ay, ey, b)] += v * nx[a] * ny[b];
+            }
+    }
+}
+
+/* The L2 projection: M Y_v = num_v for each variable, by conjugate
+ * gradients preconditioned with the lumped mass (den), from the lumped
+ * solution, to 1e-14 of the right side (the mass matrix's condition number
+ * does not grow with the mesh: tens of iterations). R and M are scratch
+ * here (nothing has stepped yet). */
+static void project_l2(IgaSolver *s, const double *num, const double *den) {
+    const int64_t n = s->ncp;
+    double *x = s->R, *r = s->M, *z = s->M + n, *p = s->M + 2 * n, *q = s->M + 3 * n,
+           *b = s->M + 4 * n;
+    for (int v = 0; v < 4; v++) {
+        double bb = 0.0;
+        for (int64_t k = 0; k < n; k++)
+            b[k] = num[4 * k + v], x[k] = b[k] / den[k], bb += b[k] * b[k];
+        mass_apply(s, x, q);
+        double rz = 0.0;
+        for (int64_t k = 0; k < n; k++)
+            r[k] = b[k] - q[k], z[k] = r[k] / den[k], p[k] = z[k], rz += r[k] * z[k];
+        for (int it = 0; it < 500; it++) {
+            double rr = 0.0;
+            for (int64_t k = 0; k < n; k++) rr += r[k] * r[k];
+            if (rr <= 1e-28 * bb) break;
+            mass_apply(s, p, q);
+            double pq = 0.0;
+            for (int64_t k = 0; k < n; k++) pq += p[k] * q[k];
+            const double alpha = rz / pq;
+            double rz_new = 0.0;
+            for (int64_t k = 0; k < n; k++) {
+                x[k] += alpha * p[k];
+                r[k] -= alpha * q[k];
+                z[k] = r[k] / den[k];
+                rz_new += r[k] * z[k];
+            }
+            for (int64_t k = 0; k < n; k++) p[k] = z[k] + rz_new / rz * p[k];
+            rz = rz_new;
+        }
+        for (int64_t k = 0; k < n; k++) s->Y[4 * k + v] = x[k];
+    }
+}
 
 static int init_lumped(IgaSolver *s, bool exact_areas) {
     const IgaConfig *c = &s->cfg;
@@ -326,6 +396,19 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
                         double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
                         iga_axis_eval(ax, ex, x, bx, NULL);
                         iga_axis_eval(ay, ey, y, by, NULL);
+                        if (c->init_fn) { /* a function: straight into the sums */
+                            double f[4];
+                            c->init_fn(c->init_ctx, x, y, f);
+                            for (int b = 0; b < w; b++)
+                                for (int a = 0; a < w; a++) {
+                                    const int64_t k = iga_axis_index(ax, ex, a) +
+                                                      (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                                    const double n = wq * bx[a] * by[b];
+                                    for (int v = 0; v < 4; v++) num[4 * k + v] += n * f[v];
+                                    den[k] += n;
+                                }
+                            continue;
+                        }
                         for (int b = 0; b < w; b++)
                             for (int a = 0; a < w; a++)
                                 phi[owner * L + b * w + a] += wq * bx[a] * by[b];
@@ -358,7 +441,7 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
             }
         /* accumulate: serial in element order, so the sums do not depend
          * on threads */
-        for (int b = 0; b < w; b++)
+        for (int b = 0; b < w && !c->init_fn; b++)
             for (int a = 0; a < w; a++) {
                 const int64_t k =
                     iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
@@ -374,6 +457,7 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
     if (status == NSPD_OK)
         for (int64_t k = 0; k < s->ncp; k++)
             for (int v = 0; v < 4; v++) s->Y[4 * k + v] = num[4 * k + v] / den[k];
+    if (status == NSPD_OK && c->init == IGA_INIT_L2) project_l2(s, num, den);
     nspd_free(&num);
     nspd_free(&den);
     nspd_free(&phi);

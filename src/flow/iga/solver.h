@@ -18,7 +18,10 @@
 
 typedef enum { IGA_SIDE_SLIP = 0, IGA_SIDE_PERIODIC, IGA_SIDE_FIXED, IGA_SIDE_KINDS } IgaSideKind;
 
-typedef enum { IGA_INIT_LUMPED_L2 = 0, IGA_INIT_NODAL } IgaInit;
+/* lumped_l2: int N_A Y0 / int N_A; nodal: Y0 at the Greville points (the
+ * paper's code); l2: the L2 projection (the consistent mass matrix, by
+ * conjugate gradients: for order studies of smooth data) */
+typedef enum { IGA_INIT_LUMPED_L2 = 0, IGA_INIT_NODAL, IGA_INIT_L2 } IgaInit;
 
 typedef enum { IGA_YDOT0_ZERO = 0, IGA_YDOT0_CONSISTENT } IgaYdot0;
 
@@ -42,6 +45,10 @@ typedef struct {
     int region_count;
     const IgaRegion *regions; /* borrowed during create; later regions win */
     IgaInit init;
+    /* optional: the initial state (p, u, v, T) at (x, y) instead of
+     * `initial` and `regions` (smooth test data) */
+    void (*init_fn)(void *ctx, double x, double y, double out[4]);
+    void *init_ctx;
     bool exact_areas; /* lumped_l2: each single disc or rectangle region at its exact area */
     IgaYdot0 ydot0;
     double c_dc;
