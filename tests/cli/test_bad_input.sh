@@ -158,6 +158,22 @@ check "PDDO seed without bodies" "flow.seed: a seed without bodies; expected flo
     "$nspd" check "$cav" --set "flow.seed={spin: 1.0, until: 0.1}"
 check "PDDO seed duration" "flow.seed.until: .*expected the time in s at which the walls stop" \
     "$nspd" check "$cyl" --set "flow.seed={spin: 1.0, until: 0.0}"
+# the IGA flow (issue 25): what its reader refuses, at the key
+iga=$src/cases/iga_cylindrical_blast.yaml
+check "IGA degree" "flow.iga.degree: 4; expected 1, 2 \\(the paper's\\) or 3" \
+    "$nspd" run "$iga" -o "$work/result" --set flow.iga.degree=4
+check "IGA Courant number" "flow.iga.cfl: .*expected a Courant number of at most 0.5" \
+    "$nspd" check "$iga" --set flow.iga.cfl=0.8
+check "IGA stretched grid" "flow.grid.x: 1 segment\\(s\\), stretched; expected one uniform segment" \
+    "$nspd" check "$iga" --set "flow.grid.x.segments=[{length: 0.3, spacing_start: 0.01, spacing_end: 0.005}]"
+check "IGA two segments" "flow.grid.y: 2 segment\\(s\\); expected one uniform segment" \
+    "$nspd" check "$iga" --set "flow.grid.y.segments=[{length: 0.1, spacing: 0.006}, {length: 0.2, spacing: 0.006}]"
+check "IGA boundary kind" "flow.boundaries.x_max: subsonic_outflow; expected slip_wall or periodic" \
+    "$nspd" check "$iga" --set "flow.boundaries.x_max={type: subsonic_outflow, pressure: 1e5}"
+check "IGA gas constant" "flow.gas.gas_constant: .*expected" \
+    "$nspd" check "$iga" --set flow.gas.gas_constant=-287
+check "IGA free stream" "flow.free_stream: a free stream; expected an initial state and regions for the IGA flow" \
+    "$nspd" check "$iga" --set "flow.free_stream={density: 1.2, velocity: [10, 0], pressure: 1e5}"
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"
