@@ -1,4 +1,9 @@
-/* The Rayleigh wave speed of the bond-associated correspondence force
+/* ctest-labels: release
+ * (Release build only: a dense stiffness and its Jacobi eigenvalues, 4 s
+ * here and 49 s under the sanitizers; the force it probes runs under them
+ * in test_solid.c and test_zero_energy.c.)
+ *
+ * The Rayleigh wave speed of the bond-associated correspondence force
  * (notes 1c.10 C4: plane-strain steel, E = 200 GPa, nu = 0.29, rho = 7870:
  * c_R = 2905.7 m/s), from the surface modes of a strip.
  *
