@@ -25,4 +25,6 @@ row "PDDO, confined cylinder 10 mm" cases/cylinder_confined_re100.yaml --set flo
 row "penalty, cylinder 50 um, 0.1 mm" cases/blast_hollow_cylinder.yaml --set solid.spacing=5e-5 \
     --set flow.grid.x.segments.0.spacing=1e-4 --set flow.grid.y.segments.0.spacing=1e-4
 row "ghost, panel 3 um" cases/panel_shock.yaml --set solid.spacing=3e-6
+row "IGA, blast 0.1 mm" cases/iga_cylindrical_blast.yaml --set flow.grid.x.segments.0.spacing=1e-4 \
+    --set flow.grid.y.segments.0.spacing=1e-4
 for f in cases/*.yaml; do row "$(basename "$f")" "$f"; done
