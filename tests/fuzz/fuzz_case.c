@@ -85,18 +85,6 @@ static int set_up(void) {
     return devnull ? 0 : -1;
 }
 
-/* The offset of the "#--set" line (at the start or after a newline), or
- * size if there is none. */
-static size_t find_separator(const uint8_t *data, size_t size) {
-    static const char mark[] = "#--set";
-    const size_t len = sizeof mark - 1;
-    for (size_t i = 0; i + len <= size; i++)
-        if ((i == 0 || data[i - 1] == '\n') && memcmp(data + i, mark, len) == 0 &&
-            (i + len == size || data[i + len] == '\n'))
-            return i;
-    return size;
-}
-
 #ifdef NSPD_FUZZ_LIBFUZZER
 size_t LLVMFuzzerMutate(uint8_t *data, size_t size, size_t max_size);
 
@@ -112,7 +100,7 @@ size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsi
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (ready == 0) ready = set_up() == 0 ? 1 : -1;
     if (ready < 0) abort(); /* no scratch directory: nothing can be tested */
-    const size_t cut = find_separator(data, size);
+    const size_t cut = fuzz_set_separator(data, size);
     if (fuzz_write_file(case_path, data, cut) != 0) abort();
 
     /* the overrides: NUL-terminated lines (an embedded NUL ends its line,

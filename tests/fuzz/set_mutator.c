@@ -39,7 +39,7 @@ static void dotted(const char *path, char *out, size_t size) {
     out[n] = '\0';
 }
 
-static size_t find_mark(const uint8_t *data, size_t size) {
+size_t fuzz_set_separator(const uint8_t *data, size_t size) {
     static const char mark[] = "#--set";
     const size_t len = sizeof mark - 1;
     for (size_t i = 0; i + len <= size; i++)
@@ -50,7 +50,7 @@ static size_t find_mark(const uint8_t *data, size_t size) {
 }
 
 size_t fuzz_set_mutate(uint8_t *data, size_t size, size_t max_size, unsigned seed) {
-    const size_t cut = find_mark(data, size);
+    const size_t cut = fuzz_set_separator(data, size);
     int overrides = 0; /* the lines after the mark's (an upper bound: blank ones count) */
     for (size_t i = cut; i < size; i++) overrides += data[i] == '\n';
     if (cut < size && overrides > 0) overrides--;

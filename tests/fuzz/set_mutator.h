@@ -10,6 +10,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The offset of the line "#--set" (at the start or after a newline) that
+ * ends an input's case part, or size if there is none. */
+size_t fuzz_set_separator(const uint8_t *data, size_t size);
+
 /* Rewrites data[0..size) in place (at most max_size bytes) with one more
  * override, chosen by `seed`; the new size, or 0 when it cannot (a case
  * part that does not parse, no scalar key, 8 overrides already, no

@@ -48,19 +48,8 @@ static FlowEstimate iga_estimate(const FlowConfig *fc) {
      * elements of cases/iga_cylindrical_blast.yaml (2 threads, this
      * machine), 1.6e-5 s an element */
     e.check_s = 1.6e-5 * nel;
-    /* the stable step of the initial and region states at the control
-     * points, as iga_solver_stable_dt takes it from the built values */
-    const IgaFlowConfig *fcfg = fc->model;
-    if (!c->init_fn && c->gamma > 1.0 && c->R > 0.0 && c->cfl > 0.0) {
-        double rate = 0.0;
-        for (int r = -1; r < fcfg->region_count; r++) {
-            const IgaState *q = r < 0 ? &c->initial : &fcfg->regions[r].state;
-            rate = fmax(rate, hypot(q->u, q->v) + sqrt(c->gamma * c->R * q->T));
-        }
-        const double h =
-            fmin((c->hi[0] - c->lo[0]) / c->elements[0], (c->hi[1] - c->lo[1]) / c->elements[1]);
-        if (rate > 0.0 && h > 0.0) e.stable_dt = c->cfl * h / rate;
-    }
+    const IgaFlowConfig *f = fc->model;
+    e.stable_dt = iga_config_stable_dt(c, f->regions, f->region_count);
     return e;
 }
 

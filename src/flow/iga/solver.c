@@ -81,24 +81,56 @@ static int build_support(IgaSolver *s, int axis) {
     return NSPD_OK;
 }
 
+/* The control point of local function (a, b) of element (ex, ey). */
+static int64_t control_index(const IgaSolver *s, int ex, int ey, int a, int b) {
+    return iga_axis_index(&s->ax[0], ex, a) + (int64_t)s->ncx * iga_axis_index(&s->ax[1], ey, b);
+}
+
+/* The t-th control point along side f (x_min, x_max, y_min, y_max) and
+ * the side's number of them. */
+static int side_count(const IgaSolver *s, int f) {
+    return f / 2 == 0 ? s->ncy : s->ncx;
+}
+
+static int64_t side_point(const IgaSolver *s, int f, int t) {
+    const int axis = f / 2, across = f % 2 == 0 ? 0 : (axis == 0 ? s->ncx : s->ncy) - 1;
+    return axis == 0 ? across + (int64_t)s->ncx * t : t + (int64_t)s->ncx * across;
+}
+
 /* The tabulated values (or slopes) of element e at its Gauss point q. */
 static const double *at_point(const IgaAxis *a, const double *table, int e, int q) {
     return table + ((size_t)e * (size_t)a->gauss + (size_t)q) * (size_t)(a->degree + 1);
 }
 
-static double sound_speed(const IgaSolver *s, double T) {
-    return sqrt(s->cfg.gamma * s->cfg.R * T);
+/* |u| + c of a state */
+static double signal_speed(const IgaConfig *c, double u, double v, double T) {
+    return sqrt(u * u + v * v) + sqrt(c->gamma * c->R * T);
+}
+
+/* cfl min(hx, hy) / the largest signal speed */
+static double step_of(const IgaConfig *c, double rate) {
+    const double h =
+        fmin((c->hi[0] - c->lo[0]) / c->elements[0], (c->hi[1] - c->lo[1]) / c->elements[1]);
+    return rate > 0.0 ? c->cfl * h / rate : (double)INFINITY;
 }
 
 double iga_solver_stable_dt(const IgaSolver *s) {
     double rate = 0.0;
     for (int64_t k = 0; k < s->ncp; k++) {
         const double *y = s->Y + 4 * k;
-        const double r = sqrt(y[1] * y[1] + y[2] * y[2]) + sound_speed(s, y[3]);
-        if (r > rate) rate = r;
+        rate = fmax(rate, signal_speed(&s->cfg, y[1], y[2], y[3]));
     }
-    const double h = fmin(s->ax[0].h, s->ax[1].h);
-    return rate > 0.0 ? s->cfg.cfl * h / rate : (double)INFINITY;
+    return step_of(&s->cfg, rate);
+}
+
+double iga_config_stable_dt(const IgaConfig *c, const IgaRegion *regions, int count) {
+    if (c->init_fn || iga_config_check(c) != NSPD_OK) return 0.0;
+    double rate = signal_speed(c, c->initial.u, c->initial.v, c->initial.T);
+    for (int r = 0; r < count; r++) {
+        const IgaState *q = &regions[r].state;
+        rate = fmax(rate, signal_speed(c, q->u, q->v, q->T));
+    }
+    return rate > 0.0 ? step_of(c, rate) : 0.0;
 }
 
 /* Element e's residual and lumped-mass slots from the alpha-level values
@@ -110,8 +142,7 @@ static void element_residual(IgaSolver *s, int64_t e) {
     double y[IGA_MAX_LOCAL * IGA_MAX_LOCAL][4], yd[IGA_MAX_LOCAL * IGA_MAX_LOCAL][4];
     for (int b = 0; b < w; b++)
         for (int a = 0; a < w; a++) {
-            const int64_t k =
-                iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+            const int64_t k = control_index(s, ex, ey, a, b);
             for (int v = 0; v < 4; v++)
                 y[b * w + a][v] = s->Ya[4 * k + v], yd[b * w + a][v] = s->Yda[4 * k + v];
         }
@@ -199,13 +230,11 @@ static void apply_sides(IgaSolver *s) {
     for (int f = 0; f < 4; f++) {
         const IgaSideKind kind = s->cfg.side[f];
         if (kind == IGA_SIDE_PERIODIC) continue;
-        const int axis = f / 2, n_along = axis == 0 ? s->ncy : s->ncx;
-        const int fixed = f % 2 == 0 ? 0 : (axis == 0 ? s->ncx : s->ncy) - 1;
-        for (int t = 0; t < n_along; t++) {
-            const int64_t k = axis == 0 ? fixed + (int64_t)s->ncx * t : t + (int64_t)s->ncx * fixed;
+        for (int t = 0; t < side_count(s, f); t++) {
+            const int64_t k = side_point(s, f, t);
             double *r = s->R + 4 * k, *m = s->M + 16 * k;
             if (kind == IGA_SIDE_SLIP)
-                hold(r, m, 1 + axis);
+                hold(r, m, 1 + f / 2);
             else
                 for (int v = 0; v < 4; v++) hold(r, m, v);
         }
@@ -312,14 +341,11 @@ static void mass_apply(const IgaSolver *s, const double *x, double *y) {
                 double v = 0.0;
                 for (int b = 0; b < w; b++)
                     for (int a = 0; a < w; a++)
-                        v += nx[a] * ny[b] *
-                             x[iga_axis_index(ax, ex, a) +
-                               (int64_t)s->ncx * iga_axis_index(ay, ey, b)];
+                        v += nx[a] * ny[b] * x[control_index(s, ex, ey, a, b)];
                 v *= ax->weight[qx] * ay->weight[qy];
                 for (int b = 0; b < w; b++)
                     for (int a = 0; a < w; a++)
-                        y[iga_axis_index(ax, ex, a) +
-                          (int64_t)s->ncx * iga_axis_index(ay, ey, b)] += v * nx[a] * ny[b];
+                        y[control_index(s, ex, ey, a, b)] += v * nx[a] * ny[b];
             }
     }
 }
@@ -401,8 +427,7 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
                             c->init_fn(c->init_ctx, x, y, f);
                             for (int b = 0; b < w; b++)
                                 for (int a = 0; a < w; a++) {
-                                    const int64_t k = iga_axis_index(ax, ex, a) +
-                                                      (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                                    const int64_t k = control_index(s, ex, ey, a, b);
                                     const double n = wq * bx[a] * by[b];
                                     for (int v = 0; v < 4; v++) num[4 * k + v] += n * f[v];
                                     den[k] += n;
@@ -443,8 +468,7 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
          * on threads */
         for (int b = 0; b < w && !c->init_fn; b++)
             for (int a = 0; a < w; a++) {
-                const int64_t k =
-                    iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                const int64_t k = control_index(s, ex, ey, a, b);
                 for (int o = 0; o <= nr; o++) {
                     const double f = phi[o * L + b * w + a];
                     const IgaState st = o == 0 ? c->initial : c->regions[o - 1].state;
@@ -557,16 +581,10 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
     }
     if (status == NSPD_OK) {
         /* walls: no normal velocity at their control points */
-        for (int f = 0; f < 4; f++) {
-            if (cfg->side[f] != IGA_SIDE_SLIP) continue;
-            const int axis = f / 2, n_along = axis == 0 ? s->ncy : s->ncx;
-            const int fixed = f % 2 == 0 ? 0 : (axis == 0 ? s->ncx : s->ncy) - 1;
-            for (int t = 0; t < n_along; t++) {
-                const int64_t k =
-                    axis == 0 ? fixed + (int64_t)s->ncx * t : t + (int64_t)s->ncx * fixed;
-                s->Y[4 * k + 1 + axis] = 0.0;
-            }
-        }
+        for (int f = 0; f < 4; f++)
+            if (cfg->side[f] == IGA_SIDE_SLIP)
+                for (int t = 0; t < side_count(s, f); t++)
+                    s->Y[4 * side_point(s, f, t) + 1 + f / 2] = 0.0;
         status = check_range(s);
     }
     if (status == NSPD_OK && cfg->ydot0 == IGA_YDOT0_CONSISTENT) {
@@ -624,8 +642,7 @@ void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
     for (int v = 0; v < 4; v++) out[v] = 0.0;
     for (int b = 0; b < w; b++)
         for (int a = 0; a < w; a++) {
-            const int64_t k =
-                iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+            const int64_t k = control_index(s, ex, ey, a, b);
             for (int v = 0; v < 4; v++) out[v] += bx[a] * by[b] * s->Y[4 * k + v];
         }
 }
@@ -644,8 +661,7 @@ void iga_solver_totals(const IgaSolver *s, double totals[4]) {
                 double Y[4] = {0};
                 for (int b = 0; b < w; b++)
                     for (int a = 0; a < w; a++) {
-                        const int64_t k =
-                            iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                        const int64_t k = control_index(s, ex, ey, a, b);
                         for (int v = 0; v < 4; v++) Y[v] += nx[a] * ny[b] * s->Y[4 * k + v];
                     }
                 const double wq = ax->weight[qx] * ay->weight[qy];
@@ -680,7 +696,7 @@ int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, 
     iga_axis_eval(ay, ey, y, by, NULL);
     for (int b = 0; b < n; b++)
         for (int a = 0; a < n; a++) {
-            cp[b * n + a] = iga_axis_index(ax, ex, a) + (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+            cp[b * n + a] = control_index(s, ex, ey, a, b);
             w[b * n + a] = bx[a] * by[b];
         }
     return s->local;
@@ -703,8 +719,7 @@ static double lumped_mass(const IgaSolver *s, int64_t k) {
                     double p = 0.0, T = 0.0;
                     for (int b = 0; b < w; b++)
                         for (int a = 0; a < w; a++) {
-                            const int64_t c = iga_axis_index(ax, ex, a) +
-                                              (int64_t)s->ncx * iga_axis_index(ay, ey, b);
+                            const int64_t c = control_index(s, ex, ey, a, b);
                             p += nx[a] * ny[b] * s->Y[4 * c];
                             T += nx[a] * ny[b] * s->Y[4 * c + 3];
                         }

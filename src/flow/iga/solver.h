@@ -74,6 +74,10 @@ int iga_config_check(const IgaConfig *cfg);
 /* cfl min(hx, hy) / max over control points of (|u| + c). */
 double iga_solver_stable_dt(const IgaSolver *s);
 
+/* The same from the configuration alone: the initial and region states
+ * (0 for an initial function or an invalid configuration). */
+double iga_config_stable_dt(const IgaConfig *cfg, const IgaRegion *regions, int count);
+
 /* One step of dt (notes 3.2); NSPD_ERR_NUMERIC naming the control point
  * where p or T left the physical range. */
 int iga_solver_step(IgaSolver *s, double dt);

@@ -4,6 +4,7 @@
  * mass and energy drift. Release build only: about 170 steps of 200
  * elements, a second here, half a minute under the sanitizers (the same
  * code runs there in test_solver.c). */
+#include "iga_fixtures.h"
 #include "test_support.h"
 
 #include "core/status.h"
@@ -13,34 +14,13 @@
 #include <math.h>
 #include <stdbool.h>
 
-/* A strip of nx x 2 elements of the unit tube (Sod's gas, walls). */
-static IgaConfig strip(int nx) {
-    return (IgaConfig){.lo = {0.0, 0.0},
-                       .hi = {1.0, 2.0 / nx},
-                       .elements = {nx, 2},
-                       .degree = 2,
-                       .side = {IGA_SIDE_SLIP, IGA_SIDE_SLIP, IGA_SIDE_SLIP, IGA_SIDE_SLIP},
-                       .gamma = 1.4,
-                       .R = 1.0,
-                       .mu = 0.0,
-                       .prandtl = 1.0,
-                       .initial = {0.1, 0.0, 0.0, 0.8},
-                       .init = IGA_INIT_NODAL,
-                       .c_dc = 2.5,
-                       .dc_cap = true,
-                       .passes = 3,
-                       .rho_inf = 0.5,
-                       .db_iterations = 10,
-                       .cfl = 0.3};
-}
-
 /* A shock tube on a strip of nx elements to t_end: L1 of the density
  * against the exact solution (20 samples an element along the middle
  * line). `fixed`: the ends' control values held (Lax's inflow), else
  * walls. */
 static double tube(int nx, const IgaState *left, const IgaState *right, double t_end, bool fixed,
                    double totals0[4], double totals1[4]) {
-    IgaConfig c = strip(nx);
+    IgaConfig c = iga_fixture_strip(nx);
     c.initial = *right;
     if (fixed) c.side[0] = c.side[1] = IGA_SIDE_FIXED;
     Shape half = {.kind = SHAPE_RECTANGLE, .lo = {-1.0, -1.0}, .hi = {0.5, 1.0}};

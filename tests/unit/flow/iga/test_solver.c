@@ -1,6 +1,7 @@
 /* flow/iga/kernel and solver: ../shared/notes/iga_flow.md T2 (Jacobians,
  * A0^-1, tau), T3 (a uniform state stays), T7 at the start (the charge's
  * energy), T13 (1 and 2 threads bitwise); T4 is test_sod.c. */
+#include "iga_fixtures.h"
 #include "test_support.h"
 
 #include "core/status.h"
@@ -82,33 +83,12 @@ static void test_jacobians(void **state) {
     }
 }
 
-/* A strip of nx x 2 elements of the unit tube (Sod's gas, walls). */
-static IgaConfig strip(int nx) {
-    return (IgaConfig){.lo = {0.0, 0.0},
-                       .hi = {1.0, 2.0 / nx},
-                       .elements = {nx, 2},
-                       .degree = 2,
-                       .side = {IGA_SIDE_SLIP, IGA_SIDE_SLIP, IGA_SIDE_SLIP, IGA_SIDE_SLIP},
-                       .gamma = 1.4,
-                       .R = 1.0,
-                       .mu = 0.0,
-                       .prandtl = 1.0,
-                       .initial = {0.1, 0.0, 0.0, 0.8},
-                       .init = IGA_INIT_NODAL,
-                       .c_dc = 2.5,
-                       .dc_cap = true,
-                       .passes = 3,
-                       .rho_inf = 0.5,
-                       .db_iterations = 10,
-                       .cfl = 0.3};
-}
-
 /* A uniform state at rest in a closed box and moving in a periodic one:
  * the residual vanishes, so it stays to round-off (T3). */
 static void test_uniform_state(void **state) {
     (void)state;
     for (int per = 0; per <= 1; per++) {
-        IgaConfig c = strip(8);
+        IgaConfig c = iga_fixture_strip(8);
         c.elements[1] = 6;
         c.hi[1] = 0.75;
         c.initial = (IgaState){1e5, per ? 100.0 : 0.0, per ? 50.0 : 0.0, 290.0};
@@ -144,7 +124,7 @@ static void test_uniform_state(void **state) {
  * docs/VALIDATION.md). */
 static void test_chamber_energy(void **state) {
     (void)state;
-    IgaConfig c = strip(20);
+    IgaConfig c = iga_fixture_strip(20);
     c.hi[0] = c.hi[1] = 0.4;
     c.elements[1] = 20;
     c.R = 287.05;
@@ -188,7 +168,7 @@ static void test_threads_bitwise(void **state) {
     IgaSolver *s[2];
     for (int t = 0; t < 2; t++) {
         omp_set_num_threads(t + 1);
-        IgaConfig c = strip(130); /* 260 elements: the element loop runs parallel */
+        IgaConfig c = iga_fixture_strip(130); /* 260 elements: the element loop runs parallel */
         Shape left = {.kind = SHAPE_RECTANGLE, .lo = {-1.0, -1.0}, .hi = {0.5, 1.0}};
         IgaRegion region = {.shapes = {.count = 1, .shapes = &left}, .state = {1.0, 0, 0, 1.0}};
         c.regions = &region;
@@ -209,7 +189,7 @@ static void test_threads_bitwise(void **state) {
  * sense (sum of m_A du_A), and energy whole in the control values' total. */
 static void test_exchange(void **state) {
     (void)state;
-    IgaConfig c = strip(6);
+    IgaConfig c = iga_fixture_strip(6);
     c.elements[1] = 5;
     c.hi[1] = 0.8;
     Shape disc = {.kind = SHAPE_DISC, .center = {0.4, 0.4}, .radius = 0.2};
@@ -261,7 +241,7 @@ static void test_exchange(void **state) {
  * give f back at any point, to round-off. */
 static void test_sample_exact(void **state) {
     (void)state;
-    IgaConfig c = strip(7);
+    IgaConfig c = iga_fixture_strip(7);
     c.elements[1] = 5;
     c.hi[1] = 0.6;
     IgaSolver *s;
@@ -291,7 +271,7 @@ static void test_sample_exact(void **state) {
  * the walls. */
 static void test_blast_symmetry(void **state) {
     (void)state;
-    IgaConfig c = strip(12);
+    IgaConfig c = iga_fixture_strip(12);
     c.elements[1] = 12;
     c.hi[1] = 1.0;
     c.init = IGA_INIT_LUMPED_L2;
