@@ -100,12 +100,12 @@ static int convert(CfgNode *flow, GksCaseConfig *g, IgaFlowConfig *out) {
                            s->viscosity == VISCOSITY_POWER ? "power" : "sutherland");
     c->gamma = s->gamma, c->R = s->gas_constant, c->prandtl = s->prandtl;
     c->mu = s->viscosity == VISCOSITY_CONSTANT ? s->mu_ref : 0.0;
-    if (g->has_vortex || g->has_field || g->has_free_stream)
+    if (g->has_field || g->has_free_stream)
         return cfg_fail_at(flow, g->has_free_stream ? "free_stream" : "initial",
-                           "%s; expected an initial state and regions for the IGA flow",
-                           g->has_vortex  ? "an initial vortex"
-                           : g->has_field ? "an initial field from a file"
-                                          : "a free stream");
+                           "%s; expected an initial state, regions or a vortex for the IGA flow",
+                           g->has_field ? "an initial field from a file" : "a free stream");
+    out->has_vortex = g->has_vortex;
+    out->vortex = g->vortex;
     c->initial = state_of(&s->initial, s->gas_constant);
     c->exact_areas = s->init_area_fractions;
     /* the regions, their shapes moved over */

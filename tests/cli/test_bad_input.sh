@@ -172,7 +172,7 @@ check "IGA boundary kind" "flow.boundaries.x_max: subsonic_outflow; expected sli
     "$nspd" check "$iga" --set "flow.boundaries.x_max={type: subsonic_outflow, pressure: 1e5}"
 check "IGA gas constant" "flow.gas.gas_constant: .*expected" \
     "$nspd" check "$iga" --set flow.gas.gas_constant=-287
-check "IGA free stream" "flow.free_stream: a free stream; expected an initial state and regions for the IGA flow" \
+check "IGA free stream" "flow.free_stream: a free stream; expected an initial state, regions or a vortex for the IGA flow" \
     "$nspd" check "$iga" --set "flow.free_stream={density: 1.2, velocity: [10, 0], pressure: 1e5}"
 mkdir -p "$work/existing"
 count=$((count + 1))

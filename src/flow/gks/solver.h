@@ -35,6 +35,7 @@
 #include "flow/gks/flux_kernel.h"
 #include "flow/gks/grid.h"
 #include "flow/gks/recon_kernel.h"
+#include "flow/vortex.h"
 
 #include <stdint.h>
 
@@ -200,18 +201,8 @@ void gks_solver_primitive(const GksSolver *s, FlowField field, double *out);
 /* Integrals over the fluid cells: mass (kg/m), x and y momentum, energy (J/m). */
 void gks_solver_totals(const GksSolver *s, double totals[4]);
 
-/* The isentropic vortex (Yee et al.): a free-stream (rho_inf, u_inf, v_inf,
- * p_inf) carrying a vortex of strength `strength` centred at (x0, y0), with
- * T = p/(rho R). With R = 1, rho_inf = p_inf = 1:
- *   du = -eps/(2 pi) (y - y0) exp((1 - r^2)/2), dv = eps/(2 pi) (x - x0) exp((1 - r^2)/2),
- *   T = 1 - (gamma - 1) eps^2 / (8 gamma pi^2) exp(1 - r^2), rho = T^(1/(gamma-1)).
- * The general form scales T and rho by the free stream (isentropic). Coordinates
- * on a periodic box [lo, lo + period] take the nearest image (period <= 0: none). */
-typedef struct {
-    double x0, y0, strength, gamma;
-    double rho_inf, u_inf, v_inf, p_inf;
-    double period_x, period_y, lo_x, lo_y;
-} FlowVortex;
+/* The isentropic vortex of flow/vortex.h (a FlowVortex) as an initial
+ * condition. */
 void flow_isentropic_vortex(void *vortex, double x, double y, FlowPrim *out);
 
 /* Benchmark: viscous (Sutherland air, Pr 0.72) Taylor-Green-like flow at Mach

@@ -23,6 +23,12 @@ struct IgaSolver {
     /* element-owned slots: local x 4 residual, local x 16 mass, nu max */
     double *eR, *eM, *eNu;
     double *mass; /* per control point: add_lumped's masses */
+    /* point sources (iga_solver_set_sources): src_n points, each with the
+     * local control points and basis values of its element and its force
+     * and power */
+    int64_t src_n;
+    int64_t *src_cp;
+    double *src_w, *src_f;
     /* per axis and control index: the elements that touch it (ascending)
      * and the local index there, width entries each, sup_n used */
     int *sup_n[2], *sup_e[2], *sup_a[2];
@@ -206,6 +212,20 @@ static void gather(IgaSolver *s) {
     }
 }
 
+/* The point sources' Galerkin term, -N_A(x_q) f_q in R_A, in point order
+ * (serial: the same bits on any thread count; sources are few). */
+static void add_sources(IgaSolver *s) {
+    const int L = s->local;
+    for (int64_t q = 0; q < s->src_n; q++) {
+        const double *f = s->src_f + 3 * q;
+        for (int l = 0; l < L; l++) {
+            double *r = s->R + 4 * s->src_cp[q * L + l];
+            const double w = s->src_w[q * L + l];
+            for (int v = 0; v < 3; v++) r[1 + v] -= w * f[v];
+        }
+    }
+}
+
 static void residual(IgaSolver *s, double dt) {
     const double tdt = s->cfg.tau_dt > 0.0 ? s->cfg.tau_dt : dt;
     s->qp.tau_s = 4.0 / (tdt * tdt);
@@ -213,6 +233,7 @@ static void residual(IgaSolver *s, double dt) {
 #pragma omp parallel for schedule(static) if (nel >= PARALLEL_MIN_ITEMS / 16)
     for (int64_t e = 0; e < nel; e++) element_residual(s, e);
     gather(s);
+    add_sources(s);
     double nu = 0.0;
     for (int64_t e = 0; e < nel; e++) nu = fmax(nu, s->eNu[e]);
     s->nu_max = nu;
@@ -509,8 +530,9 @@ void iga_solver_destroy(IgaSolver **sp) {
         nspd_free(&s->sup_e[a]);
         nspd_free(&s->sup_a[a]);
     }
-    double **arrays[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya,  &s->Yda,
-                         &s->R, &s->M,  &s->eR, &s->eM,  &s->eNu, &s->mass};
+    double **arrays[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya,   &s->Yda,   &s->R,
+                         &s->M, &s->eR, &s->eM, &s->eNu, &s->mass, &s->src_w, &s->src_f};
+    nspd_free(&s->src_cp);
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) nspd_free(arrays[k]);
     nspd_free(sp);
 }
@@ -647,11 +669,12 @@ void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
         }
 }
 
-void iga_solver_totals(const IgaSolver *s, double totals[4]) {
+/* Gauss sums over the rectangle: rho, rho u, rho v, rho E and p. */
+static void quadrature_sums(const IgaSolver *s, double sums[5]) {
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
     const int w = s->width;
     const double cv = s->qp.cv;
-    for (int v = 0; v < 4; v++) totals[v] = 0.0;
+    for (int v = 0; v < 5; v++) sums[v] = 0.0;
     for (int64_t e = 0; e < s->nel; e++) {
         const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
         for (int qy = 0; qy < ay->gauss; qy++)
@@ -666,12 +689,25 @@ void iga_solver_totals(const IgaSolver *s, double totals[4]) {
                     }
                 const double wq = ax->weight[qx] * ay->weight[qy];
                 const double rho = Y[0] / (s->cfg.R * Y[3]);
-                totals[0] += wq * rho;
-                totals[1] += wq * rho * Y[1];
-                totals[2] += wq * rho * Y[2];
-                totals[3] += wq * rho * (cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2]));
+                sums[0] += wq * rho;
+                sums[1] += wq * rho * Y[1];
+                sums[2] += wq * rho * Y[2];
+                sums[3] += wq * rho * (cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2]));
+                sums[4] += wq * Y[0];
             }
     }
+}
+
+void iga_solver_totals(const IgaSolver *s, double totals[4]) {
+    double sums[5];
+    quadrature_sums(s, sums);
+    memcpy(totals, sums, 4 * sizeof(double));
+}
+
+double iga_solver_mean_pressure(const IgaSolver *s) {
+    double sums[5];
+    quadrature_sums(s, sums);
+    return sums[4] / ((s->cfg.hi[0] - s->cfg.lo[0]) * (s->cfg.hi[1] - s->cfg.lo[1]));
 }
 
 int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck) {
@@ -700,6 +736,41 @@ int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, 
             w[b * n + a] = bx[a] * by[b];
         }
     return s->local;
+}
+
+int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const double *y,
+                           const double *fx, const double *fy, const double *power,
+                           int64_t *outside) {
+    const int L = s->local;
+    int64_t *cp = NULL;
+    double *w = NULL, *f = NULL;
+    int64_t kept = 0;
+    *outside = 0;
+    if (n > 0) {
+        TRY(nspd_alloc(&cp, (size_t)n * (size_t)L, sizeof *cp));
+        int status = nspd_alloc(&w, (size_t)n * (size_t)L, sizeof *w);
+        if (status == NSPD_OK) status = nspd_alloc(&f, (size_t)n * 3, sizeof *f);
+        if (status != NSPD_OK) {
+            nspd_free(&cp);
+            nspd_free(&w);
+            return status;
+        }
+        for (int64_t q = 0; q < n; q++) {
+            if (iga_solver_point_basis(s, x[q], y[q], cp + kept * L, w + kept * L) == 0) {
+                (*outside)++;
+                continue;
+            }
+            f[3 * kept] = fx[q];
+            f[3 * kept + 1] = fy[q];
+            f[3 * kept + 2] = power ? power[q] : 0.0;
+            kept++;
+        }
+    }
+    nspd_free(&s->src_cp);
+    nspd_free(&s->src_w);
+    nspd_free(&s->src_f);
+    s->src_cp = cp, s->src_w = w, s->src_f = f, s->src_n = kept;
+    return NSPD_OK;
 }
 
 /* int N_A rho^h over the support of control point k (Gauss, the

@@ -98,6 +98,10 @@ void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]);
 /* Integrals of rho, rho u, rho v, rho E over the rectangle (Gauss). */
 void iga_solver_totals(const IgaSolver *s, double totals[4]);
 
+/* The area-mean of the pressure field, Pa (a closed box's late mean
+ * pressure is its energy balance's). */
+double iga_solver_mean_pressure(const IgaSolver *s);
+
 /* The largest DC viscosity of the last residual, m^2/s. */
 double iga_solver_nu_max(const IgaSolver *s);
 
@@ -108,6 +112,18 @@ int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck);
  * element that holds (x, y): (p + 1)^2 of each, their number returned; 0
  * off the rectangle. */
 int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, double *w);
+
+/* Point sources for the steps that follow: point q at (x[q], y[q]) gives
+ * the gas the force (fx[q], fy[q]) and the power power[q] (per metre of
+ * depth; power NULL: none). Each enters the momentum and energy rows of
+ * its element's control points as the Galerkin term of a point load,
+ * R_A -= N_A(x_q) f_q, so the partition of unity hands over exactly f_q
+ * (notes T12; the strong residual of SUPG and DC sees no delta). Points
+ * off the rectangle are dropped and counted in *outside; n = 0 clears the
+ * sources. */
+int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const double *y,
+                           const double *fx, const double *fy, const double *power,
+                           int64_t *outside);
 
 /* The lumped mass int N_A rho^h (kg per metre of depth) of control points
  * cps[q] and their momentum (the mass times the control velocity). */

@@ -1,0 +1,84 @@
+#!/bin/sh
+# The three blast experiments of paper 003 (chamber, hollow square, hollow
+# cylinder) on both gas backgrounds (gks, iga) with weak and strong
+# coupling, at one of the paper's meshes; one table row per run and the
+# chamber's and the rings' pressure histories plotted side by side.
+#   scripts/blast_study.sh NSPD LEVEL [CASES] [THREADS]
+# LEVEL: coarse, medium or fine (the meshes of the case files' headers);
+# CASES: a space-separated subset of "chamber square cylinder" (default all).
+# Results under out/blast_study/LEVEL/, the table in
+# out/blast_study/LEVEL/table.txt, plots in docs/img/blast_*_LEVEL.png.
+# REUSE=1 in the environment keeps the runs that completed (their
+# summary.json) and only tabulates and plots them.
+set -eu
+nspd=${1:-build/nspd}
+level=${2:-coarse}
+cases=${3:-chamber square cylinder}
+threads=${4:-1}
+out=out/blast_study/$level
+mkdir -p "$out" docs/img
+
+# mesh CASE: the --set overrides of LEVEL (solid spacing, gas spacing,
+# C_pen's h and dt), from the case files' headers
+mesh() {
+    case "$1:$level" in
+    *:coarse) echo "" ;;
+    chamber:medium) echo "3.3333333e-3 0.01 6.25e-8" ;;
+    chamber:fine) echo "1.6666667e-3 0.005 3.125e-8" ;;
+    square:medium) echo "1.5e-3 6.0e-3 7.5e-8" ;;
+    square:fine) echo "1.0e-3 4.0e-3 5.0e-8" ;;
+    cylinder:medium) echo "1.5e-3 4.5e-3 7.5e-8" ;;
+    cylinder:fine) echo "1.0e-3 3.0e-3 5.0e-8" ;;
+    *) echo "blast_study.sh: unknown case or level '$1:$level'" >&2; exit 2 ;;
+    esac
+}
+
+file_of() {
+    case "$1" in
+    chamber) echo cases/chamber_detonation.yaml ;;
+    square) echo cases/blast_hollow_square.yaml ;;
+    cylinder) echo cases/blast_hollow_cylinder.yaml ;;
+    esac
+}
+
+# key FILE NAME: a number from summary.json
+key() { sed -n "s/.*\"$2\": \([^,]*\),*/\1/p" "$1" | head -1; }
+# fmt FORMAT VALUE [SCALE]: the value scaled and formatted, "-" if absent
+fmt() { echo "$2" | awk -v f="$1" -v m="${3:-1}" '{ if ($0 == "") print "-"; else printf f "\n", m * $1 }'; }
+
+table=$out/table.txt
+printf '%-8s %-4s %-6s %6s %8s %10s %10s %8s %8s %8s %5s %8s\n' case bg coupl steps wall_s \
+    mean_p_Pa F_max_N com_dx_mm broken mass_loss frag eps_p >"$table"
+for c in $cases; do
+    set -- $(mesh "$c")
+    over=""
+    if [ $# -eq 3 ]; then
+        over="--set solid.spacing=$1 --set flow.grid.x.segments.0.spacing=$2 \
+--set flow.grid.y.segments.0.spacing=$2 --set coupling.h=$2 --set coupling.dt=$3"
+    fi
+    for bg in gks iga; do
+        for coupling in weak strong; do
+            dir=$out/${c}_${bg}_$coupling
+            strong=false
+            [ "$coupling" = strong ] && strong=true
+            echo "== $c, $level, $bg, $coupling"
+            [ "${REUSE:-0}" = 1 ] && [ -f "$dir/summary.json" ] ||
+            # shellcheck disable=SC2086
+            "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
+                --set flow.method=$bg --set coupling.strong=$strong $over
+            s=$dir/summary.json
+            printf '%-8s %-4s %-6s %6s %8s %10s %10s %8s %8s %8s %5s %8s\n' "$c" "$bg" "$coupling" \
+                "$(key "$s" steps)" "$(fmt %.1f "$(key "$s" wall_s)")" \
+                "$(fmt %.1f "$(key "$s" mean_pressure_pa)")" "$(fmt %.0f "$(key "$s" penalty_force_x_max_n)")" \
+                "$(fmt %.3f "$(key "$s" com_dx_m)" 1e3)" "$(fmt %.4f "$(key "$s" broken_bond_fraction)")" \
+                "$(fmt %.4f "$(key "$s" mass_loss)")" "$(key "$s" fragment_count)" \
+                "$(fmt %.4f "$(key "$s" max_plastic_strain)")" >>"$table"
+        done
+    done
+    # the probe's pressure on both backgrounds, weak and strong
+    probe=centre
+    [ "$c" = chamber ] && probe=right_wall
+    gnuplot -e "dir='$out'; name='$c'; probe='$probe'; level='$level'; \
+outfile='docs/img/blast_${c}_$level.png'" scripts/plots/blast_study.gp
+done
+cat "$table"
