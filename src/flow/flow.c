@@ -193,6 +193,10 @@ void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx
     f->ops->add_lumped(f->impl, n, cells, dmx, dmy, de);
 }
 
+bool flow_has_point_probes(const Flow *f) {
+    return f->ops->probe_add != NULL;
+}
+
 int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id) {
     if (!f->ops->probe_add)
         return NSPD_FAIL(NSPD_ERR_INPUT,

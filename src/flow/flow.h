@@ -180,11 +180,12 @@ typedef struct FlowOps {
      * none of that) to the n unknowns cells[k] (distinct), between steps. */
     void (*add_lumped)(void *impl, int64_t n, const int64_t *cells, const double *dmx,
                        const double *dmy, const double *de);
-    /* point probes on a mesh without cells (MESH_POINTS): prepares the
+    /* point probes on a mesh without cells (MESH_POINTS), or on a grid
+     * whose field is defined between the cells (B-splines): prepares the
      * state at (x, y) once, before the run (it may allocate), and returns
      * its handle for probe_state in *id; NSPD_ERR_INPUT naming the probe
      * `name` for a point outside the fluid. NULL: none (a grid's probes
-     * read cell_state) */
+     * read cell_state of the cell that holds the point) */
     int (*probe_add)(void *impl, const char *name, double x, double y, int64_t *id);
     /* density, u, v, pressure, temperature at probe `id` (NaN for what the
      * solver does not have); allocation free */
@@ -257,6 +258,8 @@ void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, d
                  double *momentum_y);
 void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx, const double *dmy,
                      const double *de);
+/* Whether the solver reads point probes at their points (probe_add). */
+bool flow_has_point_probes(const Flow *f);
 /* FlowOps.probe_add; NSPD_ERR_INPUT for a solver without point probes. */
 int flow_probe_add(Flow *f, const char *name, double x, double y, int64_t *id);
 void flow_probe_state(const Flow *f, int64_t id, double out[5]);

@@ -49,8 +49,9 @@ static int sort_members(ProbeState *p, const PdPoints *body) {
 static int setup_flow(ProbeState *p, Flow *flow) {
     const ProbeConfig *c = p->cfg;
     const FlowMesh mesh = flow_mesh(flow);
-    /* a node cloud: the solver prepares the point's interpolation */
-    if (mesh.kind != MESH_GRID && c->kind == PROBE_POINT)
+    /* a node cloud, or a flow whose field is defined between its cells
+     * (B-splines): the solver prepares the point's interpolation */
+    if (c->kind == PROBE_POINT && (mesh.kind != MESH_GRID || flow_has_point_probes(flow)))
         return flow_probe_add(flow, c->name, c->at[0], c->at[1], &p->point);
     /* a grid: the cell that holds the point, and a line's row or column through it */
     TRY(flow_cell_at(flow, c->name, c->at[0], c->at[1], &p->point));
@@ -230,13 +231,14 @@ void probes_sample(ProbeState *probes, int count, const PdPoints *body, const do
             static const char *const QUANTITY[5] = {"rho_kg_per_m3", "u_m_per_s", "v_m_per_s",
                                                     "p_Pa", "T_K"};
             double q[5];
-            if (flow_mesh(flow).kind == MESH_GRID) {
+            const bool grid = flow_mesh(flow).kind == MESH_GRID;
+            if (grid && !flow_has_point_probes(flow))
                 flow_cell_state(flow, p->point, q);
-                for (int m = 0; m < 5; m++) report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
-            } else { /* a node cloud (incompressible): u, v, p */
+            else
                 flow_probe_state(flow, p->point, q);
-                for (int m = 1; m < 4; m++) report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
-            }
+            /* a node cloud (incompressible) has u, v, p */
+            for (int m = grid ? 0 : 1; m < (grid ? 5 : 4); m++)
+                report_realf(row, q[m], "%s_%s", c->name, QUANTITY[m]);
         } else if (c->kind == PROBE_POINT) {
             double ux = body->u[0][p->point];
             if (p->samples++ == 0 || ux > p->dx_max) {
