@@ -1,6 +1,7 @@
 /* nspd bench: throughput of the solvers' hot loops, one JSON object each.
  * A model's benchmark is its own (SolidOps.bench, FlowOps.bench: pd, cpd,
- * gks); the machine's memory bandwidth is measured here. */
+ * gks); the machine's memory bandwidth and FP64 peak (the roofline's two
+ * ceilings) are measured here. */
 #include "app/commands.h"
 #include "core/mem.h"
 #include "core/report.h"
@@ -114,21 +115,101 @@ static int bench_memory(const BenchOptions *opt) {
     return NSPD_OK;
 }
 
+/* FP64 peak: independent fused multiply-adds a = fma(a, x, y) (two flops
+ * each), enough chains to keep every FMA pipe busy through its latency;
+ * once in SIMD lanes (FLOPS_CHAINS chains: the vector peak at the
+ * compiler's vector width, the ceiling of a vectorised kernel) and once
+ * one at a time (8 chains, each held in its own register: the scalar peak,
+ * the ceiling of a kernel the compiler leaves scalar, such as the IGA
+ * flow's 4 x 4 algebra). nspd's kernels are ISO C without contraction
+ * (CMakeLists.txt), so their multiplies and adds are separate
+ * instructions: half these rates is their ceiling. Each thread runs its
+ * own chains. */
+enum { FLOPS_CHAINS = 64 };
+
+static double fma_vector(long iterations) {
+    double a[FLOPS_CHAINS];
+    const double x = 0.999999, y = 1e-6;
+    for (int k = 0; k < FLOPS_CHAINS; k++) a[k] = 1.0 + k * 1e-3;
+    for (long it = 0; it < iterations; it++) {
+#pragma omp simd
+        for (int k = 0; k < FLOPS_CHAINS; k++) a[k] = fma(a[k], x, y);
+    }
+    double sum = 0.0;
+    for (int k = 0; k < FLOPS_CHAINS; k++) sum += a[k];
+    return sum;
+}
+
+/* a = fma(a, x, y) with `a` kept alone in a register (no lanes) */
+#define SCALAR_FMA(a)                                                                              \
+    do {                                                                                           \
+        (a) = fma((a), x, y);                                                                      \
+        __asm__("" : "+x"(a));                                                                     \
+    } while (0)
+
+static double fma_scalar(long iterations) {
+    const double x = 0.999999, y = 1e-6;
+    double a0 = 1.0, a1 = 1.001, a2 = 1.002, a3 = 1.003, a4 = 1.004, a5 = 1.005, a6 = 1.006,
+           a7 = 1.007;
+    for (long it = 0; it < 8L * iterations; it++) { /* 8 x 8 = FLOPS_CHAINS an iteration */
+        SCALAR_FMA(a0);
+        SCALAR_FMA(a1);
+        SCALAR_FMA(a2);
+        SCALAR_FMA(a3);
+        SCALAR_FMA(a4);
+        SCALAR_FMA(a5);
+        SCALAR_FMA(a6);
+        SCALAR_FMA(a7);
+    }
+    return a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
+}
+
+static int bench_flops(const BenchOptions *opt) {
+    const long iterations = opt->points;
+    double best[2] = {0.0, 0.0}, check = 0.0;
+    for (int simd = 0; simd < 2; simd++)
+        for (long rep = 0; rep < opt->steps; rep++) {
+            double t0 = nspd_wall_time(), sum = 0.0;
+#pragma omp parallel reduction(+ : sum)
+            sum += simd ? fma_vector(iterations) : fma_scalar(iterations);
+            const double t = nspd_wall_time() - t0;
+            const double rate =
+                2.0 * FLOPS_CHAINS * (double)iterations * (double)omp_get_max_threads() / t;
+            if (rate > best[simd]) best[simd] = rate;
+            check += sum;
+        }
+    JsonWriter w;
+    json_begin(&w, stdout);
+    json_string(&w, "bench", "flops");
+    json_int(&w, "iterations", iterations);
+    json_int(&w, "repeats", opt->steps);
+    json_int(&w, "threads", omp_get_max_threads());
+    json_number(&w, "fp64_simd_flops_per_s", best[1]);
+    json_number(&w, "fp64_scalar_flops_per_s", best[0]);
+    json_number(&w, "check", check); /* keeps the chains from being optimised away */
+    json_end(&w);
+    return NSPD_OK;
+}
+
 int cmd_bench(int argc, char **argv) {
     if (argc < 1) {
         fprintf(stderr, "usage: nspd bench pd [--points N] [--threads T] [--steps S]\n"
                         "       nspd bench cpd [--points N] [--threads T] [--steps S]\n"
                         "       nspd bench gks [--cells N] [--threads T] [--steps S]\n"
-                        "       nspd bench memory [--points N] [--threads T] [--steps REPEATS]\n");
+                        "       nspd bench memory [--points N] [--threads T] [--steps REPEATS]\n"
+                        "       nspd bench flops [--points ITERATIONS] [--threads T] [--steps "
+                        "REPEATS]\n");
         return EXIT_BAD_INPUT;
     }
     bool gks = strcmp(argv[0], "gks") == 0, memory = strcmp(argv[0], "memory") == 0;
-    BenchOptions opt = {memory ? (1L << 25)
-                        : gks  ? 1000000
-                               : 250000,
-                        memory ? 10
-                        : gks  ? 20
-                               : 50,
+    bool flops = strcmp(argv[0], "flops") == 0;
+    BenchOptions opt = {memory  ? (1L << 25)
+                        : flops ? 20000000
+                        : gks   ? 1000000
+                                : 250000,
+                        memory || flops ? 10
+                        : gks           ? 20
+                                        : 50,
                         0};
     if (!parse(argc - 1, argv + 1, &opt)) return EXIT_BAD_INPUT;
     if (opt.threads > 0) omp_set_num_threads(opt.threads);
@@ -136,11 +217,14 @@ int cmd_bench(int argc, char **argv) {
     bool found = true;
     if (memory) {
         status = bench_memory(&opt);
+    } else if (flops) {
+        status = bench_flops(&opt);
     } else {
         status = bench_model(argv[0], &opt, &found);
     }
     if (!found) {
-        fprintf(stderr, "nspd bench: unknown benchmark '%s' (expected pd, cpd, gks or memory)\n",
+        fprintf(stderr,
+                "nspd bench: unknown benchmark '%s' (expected pd, cpd, gks, memory or flops)\n",
                 argv[0]);
         return EXIT_BAD_INPUT;
     }
