@@ -9,4 +9,9 @@
  * the paper's code's scheme with the DC cap, Courant 0.3. */
 IgaConfig iga_fixture_strip(int nx);
 
+/* How far the control values of a square mesh are from the symmetries of
+ * the square (x <-> y and the two mirrors), relative to the largest: p
+ * into *p_rel, u against the mirrored v into *uv_rel (notes T6). */
+void iga_fixture_symmetry(IgaSolver *s, double *p_rel, double *uv_rel);
+
 #endif
