@@ -9,7 +9,7 @@
 # Results under out/blast_study/LEVEL/, the table in
 # out/blast_study/LEVEL/table.txt, plots in docs/img/blast_*_LEVEL.png.
 # REUSE=1 in the environment keeps the runs that completed (their
-# summary.json) and only tabulates and plots them.
+# summary.json says so) and only tabulates and plots them.
 set -eu
 nspd=${1:-build/nspd}
 level=${2:-coarse}
@@ -62,7 +62,7 @@ for c in $cases; do
             strong=false
             [ "$coupling" = strong ] && strong=true
             echo "== $c, $level, $bg, $coupling"
-            [ "${REUSE:-0}" = 1 ] && [ -f "$dir/summary.json" ] ||
+            [ "${REUSE:-0}" = 1 ] && grep -q '"completed": true' "$dir/summary.json" 2>/dev/null ||
             # shellcheck disable=SC2086
             "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
                 --set flow.method=$bg --set coupling.strong=$strong $over
