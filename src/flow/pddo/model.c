@@ -206,7 +206,10 @@ static int build_line(PddoFlow *f, int l) {
         f->line_a[l][st] = (int32_t)a, f->line_b[l][st] = (int32_t)b, f->line_w[l][st] = w;
         st++;
     }
-    snprintf(f->line_file[l], sizeof f->line_file[l], "line_%s", line->name);
+    /* through a local: the name lives in *f too, which -Wrestrict flags */
+    char file[sizeof f->line_file[l]];
+    snprintf(file, sizeof file, "line_%s", line->name);
+    memcpy(f->line_file[l], file, sizeof file);
     return NSPD_OK;
 }
 
