@@ -7,7 +7,9 @@
 # LEVEL: coarse, medium or fine (the meshes of the case files' headers);
 # CASES: a space-separated subset of "chamber square cylinder" (default all).
 # Results under out/blast_study/LEVEL/, the table in
-# out/blast_study/LEVEL/table.txt, plots in docs/img/blast_*_LEVEL.png.
+# out/blast_study/LEVEL/table_CASES.txt (one per invocation, so that the
+# cases of a level can run side by side), plots in
+# docs/img/blast_*_LEVEL.png.
 # REUSE=1 in the environment keeps the runs that completed (their
 # summary.json says so) and only tabulates and plots them.
 set -eu
@@ -46,9 +48,9 @@ key() { sed -n "s/.*\"$2\": \([^,]*\),*/\1/p" "$1" | head -1; }
 # fmt FORMAT VALUE [SCALE]: the value scaled and formatted, "-" if absent
 fmt() { echo "$2" | awk -v f="$1" -v m="${3:-1}" '{ if ($0 == "") print "-"; else printf f "\n", m * $1 }'; }
 
-table=$out/table.txt
-printf '%-8s %-4s %-6s %6s %8s %10s %10s %8s %8s %8s %5s %8s\n' case bg coupl steps wall_s \
-    mean_p_Pa F_max_N com_dx_mm broken mass_loss frag eps_p >"$table"
+table=$out/table_$(echo $cases | tr ' ' _).txt
+printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %8s %9s %5s %8s\n' case bg coupl steps wall_s \
+    flow_s mean_p_Pa F_max_N impulse com_dx_mm broken mass_loss frag eps_p >"$table"
 for c in $cases; do
     set -- $(mesh "$c")
     over=""
@@ -67,9 +69,12 @@ for c in $cases; do
             "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
                 --set flow.method=$bg --set coupling.strong=$strong $over
             s=$dir/summary.json
-            printf '%-8s %-4s %-6s %6s %8s %10s %10s %8s %8s %8s %5s %8s\n' "$c" "$bg" "$coupling" \
-                "$(key "$s" steps)" "$(fmt %.1f "$(key "$s" wall_s)")" \
+            impulse=-
+            [ "$c" = chamber ] && impulse=$(awk -f scripts/lib/first_pulse.awk "$dir/history.csv")
+            printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %8s %9s %5s %8s\n' "$c" "$bg" "$coupling" \
+                "$(key "$s" steps)" "$(fmt %.1f "$(key "$s" wall_s)")" "$(fmt %.2f "$(key "$s" flow_s)")" \
                 "$(fmt %.1f "$(key "$s" mean_pressure_pa)")" "$(fmt %.0f "$(key "$s" penalty_force_x_max_n)")" \
+                "$impulse" \
                 "$(fmt %.3f "$(key "$s" com_dx_m)" 1e3)" "$(fmt %.4f "$(key "$s" broken_bond_fraction)")" \
                 "$(fmt %.4f "$(key "$s" mass_loss)")" "$(key "$s" fragment_count)" \
                 "$(fmt %.4f "$(key "$s" max_plastic_strain)")" >>"$table"
