@@ -72,6 +72,11 @@ typedef struct {
     const uint8_t *blank;
     int field_count;
     FieldRef field[FIELDSET_MAX_FIELDS];
+    /* MESH_GRID: fields at the (nx + 1) x (ny + 1) grid nodes, x fastest
+     * (written as the .vtr's point data beside the cells'; a field defined
+     * between the cells, such as a spline's, sampled at the corners) */
+    int point_field_count;
+    FieldRef point_field[FIELDSET_MAX_FIELDS];
     int picture_count;
     PictureRef picture[FIELDSET_MAX_PICTURES];
     int table_count;

@@ -140,7 +140,7 @@ static int write_vtk(const char *dir, int index, double t, const FieldSet *fs, P
     if (fs->mesh == MESH_GRID) {
         const double zf[2] = {0.0, 0.0};
         TRY(vtk_write_rectilinear(path, fs->nx, fs->ny, 1, fs->face[0], fs->face[1], zf, fs->field,
-                                  fs->field_count));
+                                  fs->field_count, fs->point_field, fs->point_field_count));
     } else {
         TRY(vtk_write_points(path, fs->n, fs->position, fs->field, fs->field_count));
     }

@@ -32,19 +32,27 @@ enum { CHUNK = 4096 };
 
 /* Writes the block header and n tuples of a SoA double field, interleaving
  * components through a small buffer. */
-static int write_soa(FILE *f, int64_t n, int components, const double *const data[3]) {
-    uint64_t bytes = (uint64_t)n * (uint64_t)components * sizeof(double);
+/* One block of n values a component, written `layers` times over (the
+ * same values on each layer of a grid's nodes; 1: once). */
+static int write_soa_layers(FILE *f, int64_t n, int layers, int components,
+                            const double *const data[3]) {
+    uint64_t bytes = (uint64_t)n * (uint64_t)layers * (uint64_t)components * sizeof(double);
     if (fwrite(&bytes, sizeof bytes, 1, f) != 1) return -1;
     double buf[CHUNK * 3];
-    for (int64_t lo = 0; lo < n; lo += CHUNK) {
-        int64_t hi = lo + CHUNK < n ? lo + CHUNK : n;
-        for (int64_t i = lo; i < hi; i++)
-            for (int c = 0; c < components; c++)
-                buf[(i - lo) * components + c] = data[c] ? data[c][i] : 0.0;
-        size_t count = (size_t)((hi - lo) * components);
-        if (fwrite(buf, sizeof(double), count, f) != count) return -1;
-    }
+    for (int layer = 0; layer < layers; layer++)
+        for (int64_t lo = 0; lo < n; lo += CHUNK) {
+            int64_t hi = lo + CHUNK < n ? lo + CHUNK : n;
+            for (int64_t i = lo; i < hi; i++)
+                for (int c = 0; c < components; c++)
+                    buf[(i - lo) * components + c] = data[c] ? data[c][i] : 0.0;
+            size_t count = (size_t)((hi - lo) * components);
+            if (fwrite(buf, sizeof(double), count, f) != count) return -1;
+        }
     return 0;
+}
+
+static int write_soa(FILE *f, int64_t n, int components, const double *const data[3]) {
+    return write_soa_layers(f, n, 1, components, data);
 }
 
 int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
@@ -102,18 +110,28 @@ int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
 
 int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
                           const double *yf, const double *zf, const VtkField *fields,
-                          int field_count) {
+                          int field_count, const VtkField *point_fields, int point_count) {
     OutFile out;
     TRY(out_file_open(&out, path));
     FILE *f = out.f;
-    int64_t cells = (int64_t)nx * ny * nz;
+    int64_t cells = (int64_t)nx * ny * nz, layer = (int64_t)(nx + 1) * (ny + 1),
+            nodes = layer * (nz + 1);
     uint64_t offset = 0;
     fprintf(f,
             "<?xml version=\"1.0\"?>\n<VTKFile type=\"RectilinearGrid\" version=\"1.0\" "
             "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
             "  <RectilinearGrid WholeExtent=\"0 %d 0 %d 0 %d\">\n"
-            "    <Piece Extent=\"0 %d 0 %d 0 %d\">\n      <CellData>\n",
+            "    <Piece Extent=\"0 %d 0 %d 0 %d\">\n",
             nx, ny, nz, nx, ny, nz);
+    if (point_count > 0) {
+        fprintf(f, "      <PointData>\n");
+        for (int k = 0; k < point_count; k++) {
+            ArrayInfo a = {point_fields[k].name, "Float64", point_fields[k].components, nodes, 8};
+            declare(f, &a, &offset);
+        }
+        fprintf(f, "      </PointData>\n");
+    }
+    fprintf(f, "      <CellData>\n");
     for (int k = 0; k < field_count; k++) {
         ArrayInfo a = {fields[k].name, "Float64", fields[k].components, cells, 8};
         declare(f, &a, &offset);
@@ -127,6 +145,8 @@ int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double
     fprintf(f, "      </Coordinates>\n    </Piece>\n  </RectilinearGrid>\n  <AppendedData "
                "encoding=\"raw\">\n_");
     int err = 0;
+    for (int k = 0; k < point_count && !err; k++)
+        err = write_soa_layers(f, layer, nz + 1, point_fields[k].components, point_fields[k].data);
     for (int k = 0; k < field_count && !err; k++)
         err = write_soa(f, cells, fields[k].components, fields[k].data);
     const double *axes[3] = {xf, yf, zf};

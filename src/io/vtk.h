@@ -1,6 +1,6 @@
 /* VTK XML writers that ParaView and VTK's own readers open:
  *   .vtu  material points (UnstructuredGrid of vertex cells) with point data
- *   .vtr  a rectilinear grid with cell data
+ *   .vtr  a rectilinear grid with cell data (and point data at its nodes)
  *   .pvd  a time series pointing at the files above
  * Data are binary, appended raw (little-endian, UInt64 block headers): the
  * fastest form to write and read, and exact (Float64). */
@@ -21,10 +21,13 @@ int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
                      const VtkField *fields, int field_count);
 
 /* Cells of a rectilinear grid with nx * ny * nz cells; face coordinates
- * xf[0..nx], yf[0..ny], zf[0..nz]; fields hold nx*ny*nz values, x fastest. */
+ * xf[0..nx], yf[0..ny], zf[0..nz]; fields hold nx*ny*nz values, x fastest;
+ * point_fields (point_count of them, 0: no PointData element) hold the
+ * (nx+1)(ny+1) values of one layer of nodes, x fastest, written on each of
+ * the nz + 1 layers (a 2D grid is one cell thick). */
 int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
                           const double *yf, const double *zf, const VtkField *fields,
-                          int field_count);
+                          int field_count, const VtkField *point_fields, int point_count);
 
 /* A .pvd collection, rewritten whole after each addition so that it is
  * valid even if the run stops early. */

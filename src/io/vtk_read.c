@@ -4,7 +4,8 @@
  * rather than pull in an XML library for one known layout, it is scanned
  * for the attributes that matter (WholeExtent; per DataArray: type, Name,
  * NumberOfComponents, format, offset) and the appended block is located by
- * its `_` marker. Each block's UInt64 byte count is checked against the
+ * its `_` marker. Point data (a spline flow's corner values) is skipped:
+ * what starts a flow is the cells'. Each block's UInt64 byte count is checked against the
  * size the extent implies, so a truncated or foreign file fails cleanly. */
 #include "io/vtk_read.h"
 
@@ -27,6 +28,7 @@ typedef struct {
     char name[VTK_MAX_NAME];
     int components;
     int is_coordinate;
+    int is_point; /* in PointData: node values, not read (the cells' are) */
 } Declared;
 
 /* The value of attribute `key` in the tag starting at `tag` (up to '>'),
@@ -70,6 +72,7 @@ static int parse_header(const char *path, const char *h, VtkRectilinear *out, De
         out->n[a] = (int)n;
     }
     const char *coords = strstr(h, "<Coordinates>");
+    const char *points = strstr(h, "<PointData>"), *points_end = strstr(h, "</PointData>");
     *decl_count = 0;
     for (const char *p = strstr(h, "<DataArray"); p; p = strstr(p + 1, "<DataArray")) {
         if (*decl_count == VTK_MAX_ARRAYS + 3)
@@ -93,6 +96,7 @@ static int parse_header(const char *path, const char *h, VtkRectilinear *out, De
                              d->components);
         d->offset = strtoull(off, NULL, 10);
         d->is_coordinate = coords && p > coords;
+        d->is_point = points && points_end && p > points && p < points_end;
     }
     return NSPD_OK;
 }
@@ -161,6 +165,7 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
     const uint64_t cells = cells_xy * (uint64_t)out->n[2];
     for (int k = 0; k < decl_count; k++) {
         const Declared *d = &decl[k];
+        if (d->is_point) continue;
         if (d->is_coordinate) {
             int a = d->name[0] - 'x';
             if (d->name[1] != '\0' || a < 0 || a > 2 || out->face[a])

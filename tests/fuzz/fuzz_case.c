@@ -71,7 +71,8 @@ static int write_field(void) {
                                {"cell_kind", 1, {kind, NULL, NULL}}};
     char path[4200];
     if (!fuzz_scratch_path("field.vtr", path, sizeof path)) return -1;
-    return vtk_write_rectilinear(path, NX, NY, 1, xf, yf, zf, fields, 4) == NSPD_OK ? 0 : -1;
+    return vtk_write_rectilinear(path, NX, NY, 1, xf, yf, zf, fields, 4, NULL, 0) == NSPD_OK ? 0
+                                                                                             : -1;
 }
 
 static int set_up(void) {

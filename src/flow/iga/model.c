@@ -1,6 +1,7 @@
 /* The IGA flow behind FlowOps: the driver's cells are the elements (the
- * field at their centres), so grid probes, line probes and the .vtr series
- * work as for the GKS grid. */
+ * field at their centres), so line probes, pictures and the .vtr series
+ * work as for the GKS grid; the series adds the field at the element
+ * corners as point data, and point probes read it at their points. */
 #include "flow/iga/model.h"
 
 #include "core/mem.h"
@@ -16,9 +17,10 @@ typedef struct {
     IgaFlowConfig cfg;
     IgaSolver *solver;
     double last_dt;
-    double *face[2];         /* element faces per axis */
-    double *out[OUT_FIELDS]; /* element-centre fields, the output's scratch */
-    double *kind;            /* 0 everywhere: all fluid */
+    double *face[2];            /* element faces per axis */
+    double *out[OUT_FIELDS];    /* element-centre fields, the output's scratch */
+    double *corner[OUT_FIELDS]; /* the same at the element corners */
+    double *kind;               /* 0 everywhere: all fluid */
     uint8_t *blank;
     double mach_scale;
     int64_t probe_count;
@@ -65,7 +67,7 @@ static void iga_destroy(void *impl) {
     iga_solver_destroy(&f->solver);
     iga_flow_config_free(&f->cfg);
     for (int a = 0; a < 2; a++) nspd_free(&f->face[a]);
-    for (int k = 0; k < OUT_FIELDS; k++) nspd_free(&f->out[k]);
+    for (int k = 0; k < OUT_FIELDS; k++) nspd_free(&f->out[k]), nspd_free(&f->corner[k]);
     nspd_free(&f->kind);
     nspd_free(&f->blank);
     nspd_free(&f->probe_xy);
@@ -103,8 +105,11 @@ static int iga_create(void **impl, FlowConfig *fc) {
         for (int i = 0; ax && i <= c.elements[a]; i++)
             f->face[a][i] = i == c.elements[a] ? ax->hi : ax->lo + i * ax->h;
     }
-    for (int k = 0; k < OUT_FIELDS && status == NSPD_OK; k++)
+    const size_t corners = (size_t)(c.elements[0] + 1) * (size_t)(c.elements[1] + 1);
+    for (int k = 0; k < OUT_FIELDS && status == NSPD_OK; k++) {
         status = nspd_alloc(&f->out[k], (size_t)nel, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&f->corner[k], corners, sizeof(double));
+    }
     if (status == NSPD_OK) status = nspd_alloc(&f->kind, (size_t)nel, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&f->blank, (size_t)nel, 1);
     if (status != NSPD_OK) {
@@ -344,6 +349,18 @@ static void iga_brief(const void *impl, char *buf, size_t size) {
              c->degree);
 }
 
+/* The output fields of the state s (density, u, v, p, T) into slot k of
+ * `to`; returns the Mach number. */
+static double output_state(const IgaConfig *c, const double s[5], double *const to[OUT_FIELDS],
+                           int64_t k) {
+    for (int v = 0; v < 5; v++) to[v][k] = s[v];
+    to[5][k] = hypot(s[1], s[2]) / sqrt(c->gamma * s[3] / s[0]);
+    return to[5][k];
+}
+
+/* The field at the element centres (cell data: pictures, and what a later
+ * run starts from) and at the element corners (point data: ParaView
+ * interpolates the spline's samples between them). */
 static void iga_fields(void *impl, FieldSet *out) {
     IgaFlow *f = impl;
     const IgaConfig *c = &f->cfg.solver;
@@ -352,10 +369,14 @@ static void iga_fields(void *impl, FieldSet *out) {
     for (int64_t k = 0; k < (int64_t)nx * ny; k++) {
         double s[5];
         iga_cell_state(f, k, s);
-        for (int v = 0; v < 5; v++) f->out[v][k] = s[v];
-        f->out[5][k] = hypot(s[1], s[2]) / sqrt(c->gamma * s[3] / s[0]);
-        top = fmax(top, f->out[5][k]);
+        top = fmax(top, output_state(c, s, f->out, k));
     }
+    for (int j = 0; j <= ny; j++)
+        for (int i = 0; i <= nx; i++) {
+            double s[5];
+            state_at(f, f->face[0][i], f->face[1][j], s);
+            output_state(c, s, f->corner, i + (int64_t)(nx + 1) * j);
+        }
     if (f->mach_scale == 0.0) /* fixed for the series, as the GKS flow's */
         f->mach_scale = top > 0.0 && isfinite(top) ? ceil(12.5 * top) / 10.0 : 1.0;
     memset(out, 0, sizeof *out);
@@ -372,6 +393,14 @@ static void iga_fields(void *impl, FieldSet *out) {
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         out->field[out->field_count++] = fields[k];
+    double *const *q = f->corner;
+    const FieldRef corner[] = {
+        {"density", 1, {q[0], NULL, NULL}},  {"velocity", 3, {q[1], q[2], NULL}},
+        {"pressure", 1, {q[3], NULL, NULL}}, {"temperature", 1, {q[4], NULL, NULL}},
+        {"mach", 1, {q[5], NULL, NULL}},
+    };
+    for (size_t k = 0; k < sizeof corner / sizeof corner[0]; k++)
+        out->point_field[out->point_field_count++] = corner[k];
     out->picture[out->picture_count++] = (PictureRef){.file = "mach",
                                                       .label = "Mach number",
                                                       .units = "-",

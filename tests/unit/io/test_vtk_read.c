@@ -14,6 +14,7 @@
 #include "io/vtk_read.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -30,8 +31,10 @@ static double linear(double x, double y, double a) {
 }
 
 /* Writes a field linear in x and y at the cell centres; cell (1, 1) is a
- * body cell (kind 1) holding nonsense that sampling must not see. */
-static void write_field(const char *path) {
+ * body cell (kind 1) holding nonsense that sampling must not see. With
+ * points, a node density of -7 and a node velocity too (point data, as the
+ * IGA flow writes), which the reader must skip. */
+static void write_field_with(const char *path, bool points) {
     double xf[NX + 1], yf[NY + 1], zf[2] = {0.0, 0.0};
     faces(xf, yf);
     static double rho[NX * NY], u[NX * NY], v[NX * NY], p[NX * NY], kind[NX * NY];
@@ -53,7 +56,16 @@ static void write_field(const char *path) {
         {"pressure", 1, {p, NULL, NULL}},
         {"cell_kind", 1, {kind, NULL, NULL}},
     };
-    assert_ok(vtk_write_rectilinear(path, NX, NY, 1, xf, yf, zf, fields, 4));
+    static double node_rho[(NX + 1) * (NY + 1)], node_u[(NX + 1) * (NY + 1)];
+    for (int k = 0; k < (NX + 1) * (NY + 1); k++) node_rho[k] = -7.0, node_u[k] = 1e9;
+    VtkField nodes[] = {{"density", 1, {node_rho, NULL, NULL}},
+                        {"velocity", 3, {node_u, NULL, NULL}}};
+    assert_ok(vtk_write_rectilinear(path, NX, NY, 1, xf, yf, zf, fields, 4, points ? nodes : NULL,
+                                    points ? 2 : 0));
+}
+
+static void write_field(const char *path) {
+    write_field_with(path, false);
 }
 
 static void test_round_trip(void **state) {
@@ -78,6 +90,25 @@ static void test_round_trip(void **state) {
     assert_true(vel->data[3 * k] == linear(x, y, -1.0)); /* bit for bit */
     assert_true(vel->data[3 * k + 1] == linear(x, y, 0.5));
     assert_true(vel->data[3 * k + 2] == 0.0);
+    vtk_rectilinear_free(&g);
+}
+
+/* The same file with point data: the cells' arrays come back, the nodes'
+ * are skipped. */
+static void test_point_data_skipped(void **state) {
+    (void)state;
+    char path[1200];
+    snprintf(path, sizeof path, "%s/points.vtr", test_scratch_dir("vtk_read_points"));
+    write_field_with(path, true);
+    VtkRectilinear g;
+    assert_ok(vtk_read_rectilinear(path, &g));
+    assert_int_equal(g.array_count, 4);
+    double xf[NX + 1], yf[NY + 1];
+    faces(xf, yf);
+    const VtkCellArray *rho = vtk_find_cell_array(&g, "density", 1);
+    assert_non_null(rho);
+    const int k = 3 * NX + 2;
+    assert_true(rho->data[k] == linear(0.5 * (xf[2] + xf[3]), 0.5 * (yf[3] + yf[4]), 3.0));
     vtk_rectilinear_free(&g);
 }
 
@@ -181,6 +212,7 @@ static void test_sampling(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip),
+        cmocka_unit_test(test_point_data_skipped),
         cmocka_unit_test(test_bad_files),
         cmocka_unit_test(test_sampling),
     };
