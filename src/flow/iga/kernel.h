@@ -210,7 +210,8 @@ NSPD_KERNEL void iga_point_residual(const IgaQpParams *g, const double Y[4], con
         /* a gradient of 1e-12 of the state across an element */
         const double gsum = g->G[0] + g->G[1];
         const double guard = 1e-24 * ref[grp] * ref[grp] * gsum * gsum;
-        double nu = h > guard ? g->c_dc * sqrt(r2 / h) : 0.0;
+        double nu = 0.0;
+        if (h > guard) nu = g->c_dc * sqrt(r2 / h);
         if (g->dc_cap && nu > cap) nu = cap;
         for (int i = first[grp]; i < first[grp + 1]; i++)
             fx[i] += nu * dUx[i], fy[i] += nu * dUy[i];
