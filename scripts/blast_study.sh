@@ -49,8 +49,8 @@ key() { sed -n "s/.*\"$2\": \([^,]*\),*/\1/p" "$1" | head -1; }
 fmt() { echo "$2" | awk -v f="$1" -v m="${3:-1}" '{ if ($0 == "") print "-"; else printf f "\n", m * $1 }'; }
 
 table=$out/table_$(echo $cases | tr ' ' _).txt
-printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %8s %9s %5s %8s\n' case bg coupl steps wall_s \
-    flow_s mean_p_Pa F_max_N impulse com_dx_mm broken mass_loss frag eps_p >"$table"
+printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %11s %8s %9s %5s %8s\n' case bg coupl steps \
+    wall_s flow_s mean_p_Pa F_max_N impulse com_dx_mm corners_um broken mass_loss frag eps_p >"$table"
 for c in $cases; do
     set -- $(mesh "$c")
     over=""
@@ -69,13 +69,16 @@ for c in $cases; do
             "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
                 --set flow.method=$bg --set coupling.strong=$strong $over
             s=$dir/summary.json
-            impulse=-
-            [ "$c" = chamber ] && impulse=$(awk -f scripts/lib/first_pulse.awk "$dir/history.csv")
-            printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %8s %9s %5s %8s\n' "$c" "$bg" "$coupling" \
+            impulse=- corners=-
+            if [ "$c" = chamber ]; then
+                impulse=$(awk -f scripts/lib/first_pulse.awk "$dir/history.csv")
+                corners=$(awk -f scripts/lib/corner_distortion.awk "$dir/history.csv" | tr ' ' /)
+            fi
+            printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %11s %8s %9s %5s %8s\n' "$c" "$bg" "$coupling" \
                 "$(key "$s" steps)" "$(fmt %.1f "$(key "$s" wall_s)")" "$(fmt %.2f "$(key "$s" flow_s)")" \
                 "$(fmt %.1f "$(key "$s" mean_pressure_pa)")" "$(fmt %.0f "$(key "$s" penalty_force_x_max_n)")" \
-                "$impulse" \
-                "$(fmt %.3f "$(key "$s" com_dx_m)" 1e3)" "$(fmt %.4f "$(key "$s" broken_bond_fraction)")" \
+                "$impulse" "$(fmt %.3f "$(key "$s" com_dx_m)" 1e3)" "$corners" \
+                "$(fmt %.4f "$(key "$s" broken_bond_fraction)")" \
                 "$(fmt %.4f "$(key "$s" mass_loss)")" "$(key "$s" fragment_count)" \
                 "$(fmt %.4f "$(key "$s" max_plastic_strain)")" >>"$table"
         done
