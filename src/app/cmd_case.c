@@ -137,6 +137,12 @@ int cmd_info(int argc, char **argv) {
     if (status != NSPD_OK) return report(status);
     double setup_s = nspd_wall_time() - t0;
     size_t memory = nspd_mem_live_bytes();
+    /* what the models say of themselves and the step, taken before the
+     * timed steps below move them: "at the start" must mean the start */
+    char solid_text[4096] = "", flow_text[4096] = "";
+    if (sim.solid) solid_info(sim.solid, memory, solid_text, sizeof solid_text);
+    if (sim.flow) flow_info(sim.flow, memory, flow_text, sizeof flow_text);
+    const double start_dt = sim.dt;
     /* time a few steps to estimate the run (outputs not included) */
     int64_t probe_steps = sim.steps < 5 ? sim.steps : 5;
     t0 = nspd_wall_time();
@@ -150,21 +156,14 @@ int cmd_info(int argc, char **argv) {
     char eta[32];
     progress_format_duration(step_s * (double)sim.steps, eta, sizeof eta);
     printf("case                 %s\n", sim.cfg.name);
-    char text[4096];
-    if (sim.solid) {
-        solid_info(sim.solid, memory, text, sizeof text);
-        fputs(text, stdout);
-    }
-    if (sim.flow) {
-        flow_info(sim.flow, memory, text, sizeof text);
-        fputs(text, stdout);
-    }
+    fputs(solid_text, stdout);
+    fputs(flow_text, stdout);
     if (sim.solid && sim.flow)
         printf("time step            %.6g s (the flow's CFL step); the solid sub-steps at most "
                "%.6g s\n",
-               sim.dt, sim.solid_substep);
+               start_dt, sim.solid_substep);
     else
-        printf("time step            %.6g s (%s)\n", sim.dt,
+        printf("time step            %.6g s (%s)\n", start_dt,
                sim.cfg.dt_given ? "given"
                : sim.solid      ? "safety factor x stable"
                                 : "CFL; it follows the flow");
