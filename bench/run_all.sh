@@ -12,6 +12,14 @@ for t in 1 2; do
     printf "threads %d: %.3g GB/s\n" "$t" "$("$nspd" bench memory --threads "$t" | field triad_bytes_per_s | awk '{print $1/1e9}')"
 done
 
+echo "== FP64 peak (fused multiply-adds, vector and scalar, best of 10)"
+for t in 1 2; do
+    "$nspd" bench flops --threads "$t" | tr -d ' \n' | sed 's/.*"fp64_simd/threads '"$t"': "fp64_simd/; s/,"check.*//'
+    echo
+done
+echo "== the kernels' flops, counted (bench/flops/*.cpp)"
+(cd "$here/.." && bench/kernel_flops.sh)
+
 echo "== GKS, viscous 2D, 1000 x 1000 cells (median of 5 runs of 20 steps)"
 for t in 1 2; do
     rates=""
@@ -31,3 +39,5 @@ echo "== GKS against OpenFOAM rhoCentralFoam"
 "$here/gks_vs_openfoam.sh" "$nspd" 3
 echo "== PDDO flow against OpenFOAM icoFoam at matched accuracy (about 30 min)"
 "$here/pddo_vs_openfoam.sh" "$nspd" 3
+echo "== the IGA flow against the GKS flow on the free-field blast"
+(cd "$here/.." && bench/iga_vs_gks.sh "$nspd" 5)

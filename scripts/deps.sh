@@ -11,7 +11,8 @@
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine, OpenFOAM (reference
 #                              flow code), gnuplot and GNU time (bench/pddo_vs_openfoam.sh
 #                              scores its cavities with scripts/ghia_compare.sh, which
-#                              plots, and takes each solver's CPU time)
+#                              plots, and takes each solver's CPU time), g++
+#                              (bench/kernel_flops.sh counts the kernels' flops in C++)
 #   scripts/deps.sh fuzz       + clang, libFuzzer (libclang-rt-14-dev), OpenMP for clang (make fuzz)
 # As root the missing packages are installed with apt-get; otherwise the exact
 # command is printed and the script fails, so nothing runs half set up.
@@ -22,7 +23,7 @@ for group in "$@"; do
     case "$group" in
     build) ;;
     validate) want="$want gnuplot-nox" ;;
-    bench) want="$want lammps hyperfine openfoam gnuplot-nox time" ;;
+    bench) want="$want lammps hyperfine openfoam gnuplot-nox time g++" ;;
     fuzz) want="$want clang libclang-rt-14-dev libomp-14-dev" ;;
     *) echo "deps.sh: unknown group '$group' (expected build, validate, bench or fuzz)" >&2; exit 2 ;;
     esac
