@@ -6,21 +6,13 @@
 #define NSPD_TEST_VORTEX_H
 
 #include "flow/gks/solver.h"
+#include "vortex_fixtures.h"
 
 #include <math.h>
 
+/* started at (8, 8) */
 static FlowVortex vortex_at(double t) {
-    FlowVortex v = {.x0 = 8.0 + t,
-                    .y0 = 8.0 + t,
-                    .strength = 5.0,
-                    .gamma = 1.4,
-                    .rho_inf = 1.0,
-                    .u_inf = 1.0,
-                    .v_inf = 1.0,
-                    .p_inf = 1.0,
-                    .period_x = 10.0,
-                    .period_y = 10.0};
-    return v;
+    return vortex_fixture_at(8.0, t);
 }
 
 /* nseg/segments: NULL for a uniform n x n grid, else the same segment list on both axes.
