@@ -12,6 +12,9 @@
 # docs/img/blast_*_LEVEL.png.
 # REUSE=1 in the environment keeps the runs that completed (their
 # summary.json says so) and only tabulates and plots them.
+# BACKGROUNDS (default "gks iga") and COUPLINGS (default "weak strong";
+# "damaged" is the weak coupling with the damaged penalty, Eq. 23) in the
+# environment choose the runs.
 set -eu
 nspd=${1:-build/nspd}
 level=${2:-coarse}
@@ -46,11 +49,14 @@ file_of() {
 # key FILE NAME: a number from summary.json
 key() { sed -n "s/.*\"$2\": \([^,]*\),*/\1/p" "$1" | head -1; }
 # fmt FORMAT VALUE [SCALE]: the value scaled and formatted, "-" if absent
-fmt() { echo "$2" | awk -v f="$1" -v m="${3:-1}" '{ if ($0 == "") print "-"; else printf f "\n", m * $1 }'; }
+fmt() { echo "$2" | awk -v f="$1" -v m="${3:-1}" '{ if ($0 == "" || $0 == "null") print "-"; else printf f "\n", m * $1 }'; }
 
 table=$out/table_$(echo $cases | tr ' ' _).txt
-printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %11s %8s %9s %5s %8s\n' case bg coupl steps \
-    wall_s flow_s mean_p_Pa F_max_N impulse com_dx_mm corners_um broken mass_loss frag eps_p >"$table"
+[ -n "${BACKGROUNDS:-}${COUPLINGS:-}" ] &&
+    table=$out/table_$(echo $cases ${BACKGROUNDS:-} ${COUPLINGS:-} | tr ' ' _).txt
+printf '%-8s %-4s %-7s %6s %8s %7s %10s %8s %7s %9s %11s %8s %9s %7s %5s %8s %11s\n' case bg coupl steps \
+    wall_s flow_s mean_p_Pa F_max_N impulse com_dx_mm corners_um broken mass_loss partly frag eps_p \
+    onset_c/f_us >"$table"
 for c in $cases; do
     set -- $(mesh "$c")
     over=""
@@ -58,29 +64,35 @@ for c in $cases; do
         over="--set solid.spacing=$1 --set flow.grid.x.segments.0.spacing=$2 \
 --set flow.grid.y.segments.0.spacing=$2 --set coupling.h=$2 --set coupling.dt=$3"
     fi
-    for bg in gks iga; do
-        for coupling in weak strong; do
+    for bg in ${BACKGROUNDS:-gks iga}; do
+        for coupling in ${COUPLINGS:-weak strong}; do
             dir=$out/${c}_${bg}_$coupling
-            strong=false
+            strong=false damaged=false
             [ "$coupling" = strong ] && strong=true
+            [ "$coupling" = damaged ] && damaged=true
             echo "== $c, $level, $bg, $coupling"
             [ "${REUSE:-0}" = 1 ] && grep -q '"completed": true' "$dir/summary.json" 2>/dev/null ||
             # shellcheck disable=SC2086
             "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
-                --set flow.method=$bg --set coupling.strong=$strong $over
+                --set flow.method=$bg --set coupling.strong=$strong \
+                --set coupling.damaged=$damaged $over
             s=$dir/summary.json
-            impulse=- corners=-
+            impulse=- corners=- onset=-
             if [ "$c" = chamber ]; then
                 impulse=$(awk -f scripts/lib/first_pulse.awk "$dir/history.csv")
                 corners=$(awk -f scripts/lib/corner_distortion.awk "$dir/history.csv" | tr ' ' /)
             fi
-            printf '%-8s %-4s %-6s %6s %8s %7s %10s %8s %7s %9s %11s %8s %9s %5s %8s\n' "$c" "$bg" "$coupling" \
+            # the square's first damage at its interior corners and mid-faces
+            [ "$c" = square ] && onset="$(fmt %.1f "$(key "$s" corner_damage_onset_s)" 1e6)/$(fmt %.1f \
+                "$(key "$s" face_damage_onset_s)" 1e6)"
+            printf '%-8s %-4s %-7s %6s %8s %7s %10s %8s %7s %9s %11s %8s %9s %7s %5s %8s %11s\n' \
+                "$c" "$bg" "$coupling" \
                 "$(key "$s" steps)" "$(fmt %.1f "$(key "$s" wall_s)")" "$(fmt %.2f "$(key "$s" flow_s)")" \
                 "$(fmt %.1f "$(key "$s" mean_pressure_pa)")" "$(fmt %.0f "$(key "$s" penalty_force_x_max_n)")" \
                 "$impulse" "$(fmt %.3f "$(key "$s" com_dx_m)" 1e3)" "$corners" \
                 "$(fmt %.4f "$(key "$s" broken_bond_fraction)")" \
-                "$(fmt %.4f "$(key "$s" mass_loss)")" "$(key "$s" fragment_count)" \
-                "$(fmt %.4f "$(key "$s" max_plastic_strain)")" >>"$table"
+                "$(fmt %.4f "$(key "$s" mass_loss)")" "$(fmt %.4f "$(key "$s" partly_damaged_fraction)")" \
+                "$(key "$s" fragment_count)" "$(fmt %.4f "$(key "$s" max_plastic_strain)")" "$onset" >>"$table"
         done
     done
     # the probe's pressure on both backgrounds, weak and strong

@@ -247,6 +247,11 @@ static int read_penalty(CfgNode *m, SimConfig *cfg) {
     TRY(cfg_opt_enum(m, "thickness", PENALTY_THICKNESS_NAMES, PENALTY_DEPTH_CONSISTENT,
                      &thickness));
     TRY(cfg_opt_enum(m, "energy", PENALTY_ENERGY_NAMES, PENALTY_ENERGY_TOTAL, &energy));
+    TRY(cfg_opt_bool(m, "seal", false, &c->seal));
+    TRY(cfg_opt_double(m, "seal_fraction", 0.75, &c->seal_fraction));
+    TRY(cfg_check_range(m, "seal_fraction", c->seal_fraction, 1e-6, 1.0,
+                        "the covered fraction of a cell's area in (0, 1] above which its faces "
+                        "to other such cells are sealed"));
     c->transfer = (FlowTransferKind)transfer;
     c->thickness = (PenaltyThickness)thickness;
     c->energy = (PenaltyEnergy)energy;

@@ -193,6 +193,15 @@ void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx
     f->ops->add_lumped(f->impl, n, cells, dmx, dmy, de);
 }
 
+bool flow_can_seal(const Flow *f) {
+    return f->ops->seal != NULL;
+}
+
+int flow_seal(Flow *f, int64_t n, const int64_t *cells, const double *area, const double *u,
+              const double *v, double fraction) {
+    return f->ops->seal(f->impl, n, cells, area, u, v, fraction);
+}
+
 bool flow_has_point_probes(const Flow *f) {
     return f->ops->probe_add != NULL;
 }

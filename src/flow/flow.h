@@ -180,6 +180,15 @@ typedef struct FlowOps {
      * none of that) to the n unknowns cells[k] (distinct), between steps. */
     void (*add_lumped)(void *impl, int64_t n, const int64_t *cells, const double *dmx,
                        const double *dmy, const double *de);
+    /* Sealed faces inside a solid, for the next steps: a solid moving at
+     * (u[k], v[k]) covers area[k] m^2 (per metre of depth) of the n
+     * unknowns cells[k] (distinct); between two cells it covers to at least
+     * `fraction` of their area, the gas carries only the mass the solid's
+     * motion moves (no numerical pressure diffusion through locked gas).
+     * Replaces the last call's. NULL: the solver cannot (a coupling that
+     * asks refuses the flow when it is built). */
+    int (*seal)(void *impl, int64_t n, const int64_t *cells, const double *area, const double *u,
+                const double *v, double fraction);
     /* point probes on a mesh without cells (MESH_POINTS), or on a grid
      * whose field is defined between the cells (B-splines): prepares the
      * state at (x, y) once, before the run (it may allocate), and returns
@@ -258,6 +267,10 @@ void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, d
                  double *momentum_y);
 void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx, const double *dmy,
                      const double *de);
+/* FlowOps.seal: only where flow_can_seal. */
+bool flow_can_seal(const Flow *f);
+int flow_seal(Flow *f, int64_t n, const int64_t *cells, const double *area, const double *u,
+              const double *v, double fraction);
 /* Whether the solver reads point probes at their points (probe_add). */
 bool flow_has_point_probes(const Flow *f);
 /* FlowOps.probe_add; NSPD_ERR_INPUT for a solver without point probes. */

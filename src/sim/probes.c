@@ -294,18 +294,31 @@ const TableRef *probe_line_table(ProbeState *p, const PdPoints *body, const doub
     return &p->table;
 }
 
+/* The samples the tip arrays hold (the first `capacity`). */
+static int kept_samples(const ProbeState *p) {
+    return p->samples < p->capacity ? p->samples : p->capacity;
+}
+
+/* The first sample with a damaged point in the probe's region, or -1. */
+static int first_tip_sample(const ProbeState *p) {
+    for (int s = 0; s < kept_samples(p); s++)
+        if (!isnan(p->along[s])) return s;
+    return -1;
+}
+
+double probe_crack_onset(const ProbeState *p) {
+    const int first = first_tip_sample(p);
+    return first < 0 ? (double)NAN : p->times[first];
+}
+
 double probe_crack_speed(const ProbeState *p) {
-    int first = -1;
-    for (int s = 0; s < p->samples; s++)
-        if (!isnan(p->along[s])) {
-            first = s;
-            break;
-        }
+    const int first = first_tip_sample(p);
     if (first < 0) return NAN;
-    double start = p->along[first], end = p->along[p->samples - 1];
+    const int last = kept_samples(p) - 1;
+    double start = p->along[first], end = p->along[last];
     if (isnan(end) || end <= start) return 0.0;
-    int s0 = first, s1 = p->samples - 1;
-    while (s0 + 1 < p->samples && p->along[s0 + 1] == start) s0++;
+    int s0 = first, s1 = last;
+    while (s0 + 1 <= last && p->along[s0 + 1] == start) s0++;
     while (s1 > s0 && p->along[s1 - 1] == end) s1--;
     return (end - start) / (p->times[s1] - p->times[s0]);
 }
@@ -543,6 +556,7 @@ int probes_summary(ProbeState *probes, int count, const PdPoints *body, const do
         for (int d = 0; d < (body ? body->dim : 0); d++)
             report_realf(out, p->last_tip[d], "%s_tip_%s_m", p->cfg->name, axis_name(d));
         report_realf(out, probe_crack_speed(p), "%s_speed_m_per_s", p->cfg->name);
+        report_realf(out, probe_crack_onset(p), "%s_onset_s", p->cfg->name);
     }
     return NSPD_OK;
 }

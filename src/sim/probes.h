@@ -93,6 +93,11 @@ int probe_branches(const ProbeConfig *c, const PdPoints *body, const double *dam
  * moved, NaN if never detected. */
 double probe_crack_speed(const ProbeState *p);
 
+/* The time of the first sample at which the probe saw a damaged point (in
+ * its region): where a crack starts, read against other regions' probes;
+ * NaN if never. */
+double probe_crack_onset(const ProbeState *p);
+
 /* The probes' summary keys: per solid point probe its largest x
  * displacement and when; per branch probe its measurement, then the overall
  * branch angle; per crack tip probe its last position and speed. */

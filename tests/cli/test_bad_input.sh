@@ -174,6 +174,9 @@ check "IGA gas constant" "flow.gas.gas_constant: .*expected" \
     "$nspd" check "$iga" --set flow.gas.gas_constant=-287
 check "IGA free stream" "flow.free_stream: a free stream; expected an initial state, regions or a vortex for the IGA flow" \
     "$nspd" check "$iga" --set "flow.free_stream={density: 1.2, velocity: [10, 0], pressure: 1e5}"
+check "IGA seal" "coupling: the penalty coupling's 'seal' needs a flow that can seal faces; the 'iga' flow solver cannot" \
+    "$nspd" run "$src/cases/blast_hollow_square.yaml" -o "$work/result" --set flow.method=iga \
+    --set coupling.seal=true
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"

@@ -41,6 +41,10 @@ typedef struct {
     /* the flow's cell -> touched cell, -1 (grown to the largest cell seen) */
     int64_t *local;
     int64_t local_size;
+    /* sealed faces (cfg.seal): per point its covering area and that times
+     * its velocity; per touched cell the covered area and velocity */
+    double *cover, *cover_v[2];
+    double *seal_area, *seal_u[2];
     PenaltyWork work;
     double last_dt; /* s, of the last relaxation */
     bool said;      /* C_pen logged (at the first step: the run's log is open then) */
@@ -51,11 +55,12 @@ typedef struct {
 static void penalty_destroy(void *impl) {
     PenaltyCoupling *p = impl;
     if (!p) return;
-    double **arrays[] = {&p->x[0],      &p->x[1],        &p->m,        &p->b,      &p->v[0],
-                         &p->v[1],      &p->J[0],        &p->J[1],     &p->w,      &p->mass,
-                         &p->u[0],      &p->u[1],        &p->dm[0],    &p->dm[1],  &p->de,
-                         &p->work_rate, &p->work.sample, &p->work.x,   &p->work.r, &p->work.z,
-                         &p->work.p,    &p->work.ap,     &p->work.diag};
+    double **arrays[] = {
+        &p->x[0],       &p->x[1],       &p->m,         &p->b,         &p->v[0],        &p->v[1],
+        &p->J[0],       &p->J[1],       &p->w,         &p->mass,      &p->u[0],        &p->u[1],
+        &p->dm[0],      &p->dm[1],      &p->de,        &p->work_rate, &p->work.sample, &p->work.x,
+        &p->work.r,     &p->work.z,     &p->work.p,    &p->work.ap,   &p->work.diag,   &p->cover,
+        &p->cover_v[0], &p->cover_v[1], &p->seal_area, &p->seal_u[0], &p->seal_u[1]};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++) nspd_free(arrays[k]);
     nspd_free(&p->cell);
     nspd_free(&p->col);
@@ -79,6 +84,14 @@ static int allocate(PenaltyCoupling *p) {
                            &p->work.z, &p->work.p, &p->work.ap, &p->work.diag};
     for (size_t k = 0; k < sizeof per_cell / sizeof *per_cell; k++)
         TRY(nspd_alloc(per_cell[k], e ? e : 1, sizeof(double)));
+    if (p->cfg.seal) {
+        double **seal_point[] = {&p->cover, &p->cover_v[0], &p->cover_v[1]};
+        double **seal_cell[] = {&p->seal_area, &p->seal_u[0], &p->seal_u[1]};
+        for (size_t k = 0; k < 3; k++) {
+            TRY(nspd_alloc(seal_point[k], n ? n : 1, sizeof(double)));
+            TRY(nspd_alloc(seal_cell[k], e ? e : 1, sizeof(double)));
+        }
+    }
     TRY(nspd_alloc(&p->w, e ? e : 1, sizeof(double)));
     TRY(nspd_alloc(&p->cell, e ? e : 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->col, e ? e : 1, sizeof(int32_t)));
@@ -97,6 +110,12 @@ static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "the penalty coupling needs a flow with transfer weights; the '%s' "
                          "flow solver has none",
+                         flow_name(flow));
+    const PenaltyConfig *pc = cfg->model;
+    if (pc->seal && !flow_can_seal(flow))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the penalty coupling's 'seal' needs a flow that can seal faces; the "
+                         "'%s' flow solver cannot (expected seal: false or flow.method: gks)",
                          flow_name(flow));
     const PdPoints *pts = solid_points(solid);
     if (pts->dim != 2)
@@ -191,6 +210,36 @@ static double gather(const PenaltyCoupling *p, int64_t c, const double *f) {
     double sum = 0.0;
     for (int64_t k = p->first[c]; k < p->first[c + 1]; k++) sum += p->weight[k] * f[p->point[k]];
     return sum;
+}
+
+/* Before the flow's step, with `seal`: the area the intact solid covers
+ * in each cell around it (a point's in-plane area times 1 - d through its
+ * weights) and the solid's area-weighted velocity there, handed to the
+ * flow, which seals the faces between the cells covered beyond
+ * seal_fraction. From the solid's state alone, so a resumed run seals the
+ * same faces. */
+static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
+    PenaltyCoupling *p = impl;
+    if (!p->cfg.seal) return NSPD_OK;
+    const PdPoints *pts = solid_points(solid);
+    const double *damage = solid_damage(solid);
+    for (int64_t i = 0; i < p->n; i++) {
+        p->x[0][i] = pts->x[0][i] + pts->u[0][i];
+        p->x[1][i] = pts->x[1][i] + pts->u[1][i];
+        const double a = pts->volume[i] / pts->thickness * (1.0 - damage[i]);
+        p->cover[i] = a;
+        p->cover_v[0][i] = a * pts->v[0][i];
+        p->cover_v[1][i] = a * pts->v[1][i];
+    }
+    TRY(stencil(p, flow));
+    for (int64_t c = 0; c < p->cells; c++) {
+        const double a = gather(p, c, p->cover);
+        p->seal_area[c] = a;
+        p->seal_u[0][c] = a > 0.0 ? gather(p, c, p->cover_v[0]) / a : 0.0;
+        p->seal_u[1][c] = a > 0.0 ? gather(p, c, p->cover_v[1]) / a : 0.0;
+    }
+    return flow_seal(flow, p->cells, p->cell_id, p->seal_area, p->seal_u[0], p->seal_u[1],
+                     p->cfg.seal_fraction);
 }
 
 /* The relaxation after the flow's step and before the solid's: the points'
@@ -373,7 +422,7 @@ const CouplingOps PENALTY_COUPLING_OPS = {
     .estimate = penalty_estimate,
     .create = penalty_create,
     .destroy = penalty_destroy,
-    .before_flow = NULL,
+    .before_flow = penalty_before_flow,
     .after_flow = penalty_after_flow,
     .solid_dt_limit = NULL,
     .loads = penalty_loads,

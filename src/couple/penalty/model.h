@@ -54,6 +54,13 @@ typedef struct {
     FlowTransferKind transfer;
     PenaltyThickness thickness;
     PenaltyEnergy energy;
+    /* Sealed faces (notes Sec. 1a.7 (ii), beyond the paper): between two
+     * cells the intact solid covers to at least seal_fraction of their area,
+     * the gas carries only the mass the solid moves (FlowOps.seal), so no
+     * pressure diffuses through the locked gas; a point covers its area
+     * times 1 - d, so cracks open the faces again. */
+    bool seal;
+    double seal_fraction; /* in (0, 1] */
 } PenaltyConfig;
 
 struct CouplingOps;

@@ -323,6 +323,11 @@ static void gks_flow_add_lumped(void *impl, int64_t n, const int64_t *cells, con
     gks_add_lumped(gks_solver_grid(s), &f, n, cells, dmx, dmy, de);
 }
 
+static int gks_flow_seal(void *impl, int64_t n, const int64_t *cells, const double *area,
+                         const double *u, const double *v, double fraction) {
+    return gks_solver_set_seals(((GksFlow *)impl)->solver, n, cells, area, u, v, fraction);
+}
+
 static void gks_totals(const void *impl, double totals[4]) {
     gks_solver_totals(((const GksFlow *)impl)->solver, totals);
 }
@@ -525,6 +530,7 @@ const FlowOps GKS_FLOW_OPS = {
     .transfer = gks_flow_transfer,
     .lumped = gks_flow_lumped,
     .add_lumped = gks_flow_add_lumped,
+    .seal = gks_flow_seal,
     .totals = gks_totals,
     .history = gks_history,
     .summary = gks_summary,

@@ -90,6 +90,39 @@ void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double 
     s->wall_u = u;
     s->wall_v = v;
 }
+int gks_solver_set_seals(GksSolver *s, int64_t n, const int64_t *cells, const double *area,
+                         const double *u, const double *v, double fraction) {
+    if (!s->seal_slot) {
+        if (n == 0) return NSPD_OK;
+        TRY(nspd_alloc(&s->seal_slot, (size_t)s->grid.size, sizeof(int32_t)));
+        for (int64_t k = 0; k < s->grid.size; k++) s->seal_slot[k] = -1;
+    }
+    for (int64_t k = 0; k < s->seals; k++) s->seal_slot[s->seal_cell[k]] = -1;
+    s->seals = 0;
+    if (n > s->seal_capacity) {
+        const size_t old = (size_t)s->seal_capacity, size = (size_t)n;
+        TRY(nspd_realloc(&s->seal_cell, old, size, sizeof(int64_t)));
+        TRY(nspd_realloc(&s->seal_u, old, size, sizeof(double)));
+        TRY(nspd_realloc(&s->seal_v, old, size, sizeof(double)));
+        s->seal_capacity = n;
+    }
+    const Grid *g = &s->grid;
+    int64_t kept = 0;
+    for (int64_t k = 0; k < n; k++) {
+        const int64_t c = cells[k];
+        const int64_t i = c % g->stride - GRID_NG, j = c / g->stride - GRID_NG;
+        if (s->kind[c] != FLOW_CELL_FLUID ||
+            area[k] < fraction * g->ax[0].width[i] * g->ax[1].width[j])
+            continue;
+        s->seal_cell[kept] = c;
+        s->seal_u[kept] = u[k];
+        s->seal_v[kept] = v[k];
+        s->seal_slot[c] = (int32_t)kept++;
+    }
+    s->seals = kept;
+    return NSPD_OK;
+}
+
 double gks_solver_time(const GksSolver *s) {
     return s->time;
 }
@@ -305,6 +338,10 @@ void gks_solver_destroy(GksSolver **sp) {
     nspd_free(&s->half_w[1]);
     nspd_free(&s->row_sums);
     for (int k = 0; k < 3; k++) nspd_free(&s->source[k]);
+    nspd_free(&s->seal_slot);
+    nspd_free(&s->seal_cell);
+    nspd_free(&s->seal_u);
+    nspd_free(&s->seal_v);
     for (int face = 0; face < 4; face++) nspd_free(&s->wall[face]);
     if (s->work)
         for (int t = 0; t < s->nthreads; t++) nspd_free(&s->work[t].block);

@@ -139,6 +139,18 @@ void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx);
 void gks_solver_set_ghost_walls(GksSolver *s, const int32_t *slot, const double *u,
                                 const double *v);
 
+/* Sealed faces inside a solid (the penalty coupling's remedy for the
+ * pressure that leaks through the gas it locks; update_kernel.h). A solid
+ * moving at (u[k], v[k]) covers area[k] (m^2) of cell cells[k] (distinct,
+ * indices of grid_index); the FLUID cells it covers to at least `fraction`
+ * of their area are locked. For the next steps, a face between two locked
+ * cells carries only the locked gas, advected with the mean of their
+ * velocities, F = dt u_s.n W_face (gks_seal_face: no pressure, no
+ * numerical diffusion). Replaces the last call's seals (n = 0: none).
+ * Copies what it keeps; allocates on growth. */
+int gks_solver_set_seals(GksSolver *s, int64_t n, const int64_t *cells, const double *area,
+                         const double *u, const double *v, double fraction);
+
 /* Volume sources for the next steps (a coupling's forces on the gas): the
  * per-cell arrays (index with grid_index) of x and y momentum (N/m^3) and
  * energy (W/m^3), zeroed, for the caller to fill; every later step adds

@@ -63,6 +63,12 @@ struct GksSolver {
     bool has_sources;
     const int32_t *wall_slot; /* gks_solver_set_ghost_walls */
     const double *wall_u, *wall_v;
+    /* gks_solver_set_seals: per cell the seal's slot (-1: none; allocated
+     * by the first call), per seal its cell and velocity */
+    int32_t *seal_slot;
+    int64_t *seal_cell;
+    double *seal_u, *seal_v;
+    int64_t seals, seal_capacity;
     double time;
     int64_t steps;
     int64_t fallbacks_last, fallbacks_total;

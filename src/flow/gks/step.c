@@ -151,6 +151,9 @@ static GksGhostFaces ghost_faces(const GksSolver *s) {
                            .wall_slot = s->wall_slot,
                            .wall_u = s->wall_u,
                            .wall_v = s->wall_v,
+                           .seal_slot = s->seal_slot,
+                           .seal_u = s->seal_u,
+                           .seal_v = s->seal_v,
                            .w = {s->w[0], s->w[1], s->w[2], s->w[3]},
                            .gamma = s->gas.gamma};
 }
@@ -188,6 +191,11 @@ static void row_yflux(const GksSolver *s, int j, double *const sxl[4], double *c
         const int64_t bl = grid_index(g, 0, j), br = grid_index(g, 0, j + 1);
         for (int i = 0; i < g->nx; i++) gks_ghost_face(&gf, bl + i, br + i, 1, dt, gout, i);
     }
+    if (s->seals > 0) {
+        const GksGhostFaces gf = ghost_faces(s);
+        const int64_t bl = grid_index(g, 0, j), br = grid_index(g, 0, j + 1);
+        for (int i = 0; i < g->nx; i++) gks_seal_face(&gf, bl + i, br + i, 1, dt, gout, i);
+    }
 }
 
 /* x-face fluxes of row j: face i (i = 0 .. nx) between cells i-1 and i. */
@@ -217,6 +225,11 @@ static void row_xflux(const GksSolver *s, int j, double *const sx[4], double *co
         const GksGhostFaces gf = ghost_faces(s);
         const int64_t b = grid_index(g, 0, j);
         for (int i = 0; i <= g->nx; i++) gks_ghost_face(&gf, b + i - 1, b + i, 0, dt, fout, i);
+    }
+    if (s->seals > 0) {
+        const GksGhostFaces gf = ghost_faces(s);
+        const int64_t b = grid_index(g, 0, j);
+        for (int i = 0; i <= g->nx; i++) gks_seal_face(&gf, b + i - 1, b + i, 0, dt, fout, i);
     }
 }
 

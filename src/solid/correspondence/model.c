@@ -180,13 +180,22 @@ static double max_of(const double *a, int64_t n) {
     return m;
 }
 
-double cpd_mass_loss(const CpdBody *b, const double *damage) {
-    double lost = 0.0, all = 0.0;
+/* The volume fraction of the points whose damage lies in [lo, hi). */
+static double damaged_fraction(const CpdBody *b, const double *damage, double lo, double hi) {
+    double in = 0.0, all = 0.0;
     for (int64_t i = 0; i < b->n; i++) {
         all += b->volume[i];
-        lost += damage[i] >= 0.99 ? b->volume[i] : 0.0;
+        in += damage[i] >= lo && damage[i] < hi ? b->volume[i] : 0.0;
     }
-    return all > 0.0 ? lost / all : 0.0;
+    return all > 0.0 ? in / all : 0.0;
+}
+
+double cpd_mass_loss(const CpdBody *b, const double *damage) {
+    return damaged_fraction(b, damage, 0.99, (double)INFINITY);
+}
+
+double cpd_partly_damaged(const CpdBody *b, const double *damage) {
+    return damaged_fraction(b, damage, nextafter(0.0, 1.0), 0.99);
 }
 
 static int64_t root_of(int64_t *parent, int64_t i) {
@@ -221,7 +230,7 @@ int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris) {
 
 /* max plastic strain over bonds, and mass loss from the mean damage */
 static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_loss,
-                          double *max_damage) {
+                          double *max_damage, double *partly) {
     const CpdBody *b = &cs->body;
     double m = 0.0; /* over intact bonds: a broken bond's state stops at its break */
     if (b->cfg.force == CPD_FORCE_CLASSIC) /* per point: over the points not debris */
@@ -232,14 +241,15 @@ static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_los
     *max_eqps = m;
     cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
     *mass_loss = cpd_mass_loss(b, cs->broken);
+    *partly = cpd_partly_damaged(b, cs->broken);
     *max_damage = max_of(cs->broken, b->n);
 }
 
 static void cpd_history(const void *impl, Report *row) {
     const CpdSolid *cs = impl;
     const CpdBody *b = &cs->body;
-    double eqps, loss, dmax;
-    state_numbers(cs, &eqps, &loss, &dmax);
+    double eqps, loss, dmax, partly;
+    state_numbers(cs, &eqps, &loss, &dmax, &partly);
     report_real(row, "kinetic_energy_J", kinetic_energy(b));
     report_int(row, "broken_bonds", broken_pairs(b));
     report_real(row, "max_plastic_strain", eqps);
@@ -250,8 +260,8 @@ static void cpd_history(const void *impl, Report *row) {
 static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     const CpdSolid *cs = impl;
     const CpdBody *b = &cs->body;
-    double eqps, loss, dmax;
-    state_numbers(cs, &eqps, &loss, &dmax);
+    double eqps, loss, dmax, partly;
+    state_numbers(cs, &eqps, &loss, &dmax, &partly);
     report_int(out, "points", b->n);
     report_int(out, "bonds", b->bond_count / 2);
     const int64_t broken = broken_pairs(b);
@@ -261,6 +271,7 @@ static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "max_damage", dmax);
     report_real(out, "max_plastic_strain", eqps);
     report_real(out, "mass_loss", loss);
+    report_real(out, "partly_damaged_fraction", partly);
     int64_t debris = 0;
     report_int(out, "fragment_count", cpd_fragment_count(b, &debris));
     report_int(out, "debris_points", debris);

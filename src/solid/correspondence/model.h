@@ -23,5 +23,9 @@ int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris);
 /* Eq. 24 of paper 003: the mass fraction of points whose (mean) damage is
  * at least 0.99; `damage` per point. */
 double cpd_mass_loss(const CpdBody *b, const double *damage);
+/* The mass fraction of points damaged but not lost, 0 < damage < 0.99: the
+ * flanks of the cracks. Beside the mass loss it measures how wide the
+ * cracks' fully damaged bands are (docs/VALIDATION.md, the hollow square). */
+double cpd_partly_damaged(const CpdBody *b, const double *damage);
 
 #endif

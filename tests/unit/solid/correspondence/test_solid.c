@@ -352,6 +352,11 @@ static void test_ductile_damage_ramp(void **state) {
     int64_t count = 0;
     for (int64_t i = 0; i < b.n; i++) count += i % 4 == 0;
     assert_close(cpd_mass_loss(&b, dmean), (double)count / (double)b.n, 1e-15);
+    assert_close(cpd_partly_damaged(&b, dmean), 1.0 - (double)count / (double)b.n, 1e-15);
+    for (int64_t i = 0; i < b.n; i += 2) dmean[i] = 0.0; /* undamaged: neither */
+    int64_t partly = 0;
+    for (int64_t i = 0; i < b.n; i++) partly += i % 2 == 1;
+    assert_close(cpd_partly_damaged(&b, dmean), (double)partly / (double)b.n, 1e-15);
     int64_t debris;
     assert_int_equal(cpd_fragment_count(&b, &debris), 0);
     assert_int_equal(debris, b.n);
