@@ -13,8 +13,9 @@
 # REUSE=1 in the environment keeps the runs that completed (their
 # summary.json says so) and only tabulates and plots them.
 # BACKGROUNDS (default "gks iga") and COUPLINGS (default "weak strong";
-# "damaged" is the weak coupling with the damaged penalty, Eq. 23) in the
-# environment choose the runs.
+# "damaged" is the weak coupling with the damaged penalty, Eq. 23;
+# "sealed" the weak coupling with sealed faces, coupling.seal, GKS only) in
+# the environment choose the runs.
 set -eu
 nspd=${1:-build/nspd}
 level=${2:-coarse}
@@ -67,15 +68,16 @@ for c in $cases; do
     for bg in ${BACKGROUNDS:-gks iga}; do
         for coupling in ${COUPLINGS:-weak strong}; do
             dir=$out/${c}_${bg}_$coupling
-            strong=false damaged=false
+            strong=false damaged=false seal=false
             [ "$coupling" = strong ] && strong=true
             [ "$coupling" = damaged ] && damaged=true
+            [ "$coupling" = sealed ] && seal=true
             echo "== $c, $level, $bg, $coupling"
             [ "${REUSE:-0}" = 1 ] && grep -q '"completed": true' "$dir/summary.json" 2>/dev/null ||
             # shellcheck disable=SC2086
             "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
                 --set flow.method=$bg --set coupling.strong=$strong \
-                --set coupling.damaged=$damaged $over
+                --set coupling.damaged=$damaged --set coupling.seal=$seal $over
             s=$dir/summary.json
             impulse=- corners=- onset=-
             if [ "$c" = chamber ]; then
