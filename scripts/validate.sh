@@ -224,6 +224,17 @@ done
 echo "== the blast experiments of paper 003 on both backgrounds, coarse and medium meshes"
 for level in coarse medium; do
     scripts/blast_study.sh "$nspd" $level
+    # the damaged penalty and the sealed faces beside them (GKS), and where
+    # the square breaks
+    BACKGROUNDS=gks COUPLINGS="damaged sealed" scripts/blast_study.sh "$nspd" $level "square cylinder"
+    for run in out/blast_study/$level/square_*; do
+        echo "$run (time_us corners faces all, damage >= 0.5):"
+        /usr/bin/python3 scripts/lib/square_damage_regions.py "$run" 0.5
+    done
+done
+for c in square cylinder; do
+    gnuplot -e "root='out/blast_study'; name='$c'; outfile='docs/img/blast_${c}_couplings.png'" \
+        scripts/plots/blast_couplings.gp
 done
 
 echo "== slow tests"
