@@ -79,9 +79,16 @@ int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, i
  * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic
  * J2 material of *state, whose stresses it advances by the step from
  * state->u_prev to u (2D). work_point: 19 n doubles (F, F at u_prev and
- * w0 per point); work_bond: dim per bond (T). Three passes: F_i and w0_i;
- * per point its bonds' P_b, S_i and T_ij; per point the gather of T_ij -
- * T_ji. A point with w0 = 0 (every bond broken) exerts no force. */
+ * 1 / w0 per point); work_bond: dim + dim^2 per bond (T, P_b). Four passes:
+ * F_i and w0_i; per pair its P_b (and state update) once, from the pair's
+ * lower-numbered bond, copied to the other; per point S_i and T_ij; per
+ * point the gather of T_ij - T_ji. A point with w0 = 0 (every bond broken)
+ * exerts no force. */
+/* The doubles of work_bond per bond that bac_force needs: T and P_b. */
+static inline int bac_work_per_bond(int dim) {
+    return dim + dim * dim;
+}
+
 void bac_force(const BacSystem *s, BacState *state, const double *const u[3],
                double *const force[3], double *work_point, double *work_bond);
 

@@ -81,7 +81,9 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->principal, ns, sizeof(double)));
     TRY(nspd_alloc(&b->inverted, ns, 1));
     if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, ns, sizeof(double)));
-    TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * nb, sizeof(double)));
+    /* T (dim per bond) and, for the bond-associated force, P_b (dim^2) */
+    const size_t work = (size_t)(classic ? b->dim : bac_work_per_bond(b->dim));
+    TRY(nspd_alloc(&b->work_bond, work * nb, sizeof(double)));
     return NSPD_OK;
 }
 

@@ -11,7 +11,8 @@
  * state at both ends, so no atomics and no cross-writes): neighbour,
  * reverse bond, kernel omega, RK weights phi (dim), unrotated stress sigma
  * (4), equivalent plastic strain, damage, 1 - damage, the last maximum
- * principal stress and an inversion flag: 117 bytes per bond in 2D.
+ * principal stress and an inversion flag: 117 bytes per bond in 2D, and a
+ * scratch of T (dim) and the pair's P_b (dim^2) per bond: 165 in all.
  *
  * Damage (notes 1c.8) never decreases; a bond whose damage grew rescales
  * its kernel (omega (1 - d)) and its points' RK weights are recomputed. A
@@ -47,7 +48,7 @@
  * 52 bytes per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16)
  * and CPD_CLASSIC_BYTES_PER_POINT more per point (sigma 32, eqps and
  * principal 8 each, inverted 1). */
-enum { CPD_BYTES_PER_BOND = 117, CPD_CLASSIC_BYTES_PER_BOND = 52 };
+enum { CPD_BYTES_PER_BOND = 165, CPD_CLASSIC_BYTES_PER_BOND = 52 };
 enum { CPD_CLASSIC_BYTES_PER_POINT = 49 };
 
 typedef struct {

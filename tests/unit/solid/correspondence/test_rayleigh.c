@@ -93,7 +93,7 @@ static void strip_make(Strip *t, int N, int M, double h, int order) {
     t->reverse = calloc((size_t)k, sizeof(int64_t));
     t->ok = calloc((size_t)t->n, 1);
     t->work_point = calloc((size_t)(19 * t->n), sizeof(double));
-    t->work_bond = calloc((size_t)(2 * k), sizeof(double));
+    t->work_bond = calloc((size_t)(bac_work_per_bond(2) * k), sizeof(double));
     for (int64_t p = 0; p < t->n; p++)
         for (int64_t q = t->first[p]; q < t->first[p + 1]; q++) {
             const double xi[3] = {t->x[0][t->nbr[q]] - t->x[0][p], t->x[1][t->nbr[q]] - t->x[1][p],

@@ -65,7 +65,7 @@ static void patch_make(Patch *t, Model model, double cs, double jitter) {
     t->ok = calloc((size_t)c->n, 1);
     t->work_point =
         calloc((size_t)(19 * c->n), sizeof(double)) /* bac_force 19 n, classic_force 18 n */;
-    t->work_bond = calloc((size_t)(2 * bonds), sizeof(double));
+    t->work_bond = calloc((size_t)(bac_work_per_bond(2) * bonds), sizeof(double));
     for (int a = 0; a < 2; a++) {
         t->u[a] = calloc((size_t)c->n, sizeof(double));
         t->f[a] = calloc((size_t)c->n, sizeof(double));
