@@ -99,16 +99,21 @@ fast2(int64_t i, const double *restrict x, const double *restrict y, const doubl
     fy[i] = scale * sy;
 }
 
-#define LOOP(K)                                                                                    \
-    static void run_##K(int64_t n, const double *x, const double *y, const double *ux,             \
-                        const double *uy, const int64_t *first, const int32_t *nbr, float *coef,   \
-                        double *fx, double *fy) {                                                  \
-        for (int64_t i = 0; i < n; i++) K(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);    \
+/* Every point's force by variant v (0 reference, 1 and 2 the Newton forms). */
+static void run(int v, int64_t n, const double *x, const double *y, const double *ux,
+                const double *uy, const int64_t *first, const int32_t *nbr, float *coef, double *fx,
+                double *fy) {
+    for (int64_t i = 0; i < n; i++) {
+        if (v == 0)
+            ref(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
+        else if (v == 1)
+            fast(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
+        else
+            fast2(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
     }
-LOOP(ref)
-LOOP(fast) LOOP(fast2)
+}
 
-    static double now(void) {
+static double now(void) {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return t.tv_sec + 1e-9 * t.tv_nsec;
@@ -148,25 +153,25 @@ int main(void) {
             first[(int64_t)j * N + i + 1] = b;
         }
     printf("%lld bonds\n", (long long)b);
-    run_ref(n, x, y, ux, uy, first, nbr, coef, fx, fy);
-    run_fast(n, x, y, ux, uy, first, nbr, coef, gx, gy);
+    run(0, n, x, y, ux, uy, first, nbr, coef, fx, fy);
+    run(1, n, x, y, ux, uy, first, nbr, coef, gx, gy);
     double err = 0, big = 0;
     for (int64_t i = 0; i < n; i++) {
         err = fmax(err, fabs(gx[i] - fx[i]));
         big = fmax(big, fabs(fx[i]));
     }
     printf("fast: max diff %.3g of max %.3g\n", err, big);
-    run_fast2(n, x, y, ux, uy, first, nbr, coef, gx, gy);
+    run(2, n, x, y, ux, uy, first, nbr, coef, gx, gy);
     err = 0;
     for (int64_t i = 0; i < n; i++) err = fmax(err, fabs(gx[i] - fx[i]));
     printf("fast2: max diff %.3g of max %.3g\n", err, big);
     for (int rep = 0; rep < 3; rep++) {
         double t0 = now();
-        for (int s = 0; s < 10; s++) run_ref(n, x, y, ux, uy, first, nbr, coef, fx, fy);
+        for (int s = 0; s < 10; s++) run(0, n, x, y, ux, uy, first, nbr, coef, fx, fy);
         double t1 = now();
-        for (int s = 0; s < 10; s++) run_fast(n, x, y, ux, uy, first, nbr, coef, fx, fy);
+        for (int s = 0; s < 10; s++) run(1, n, x, y, ux, uy, first, nbr, coef, fx, fy);
         double t2 = now();
-        for (int s = 0; s < 10; s++) run_fast2(n, x, y, ux, uy, first, nbr, coef, fx, fy);
+        for (int s = 0; s < 10; s++) run(2, n, x, y, ux, uy, first, nbr, coef, fx, fy);
         double t3 = now();
         printf("ref %.3g  fast %.3g  fast2 %.3g bonds/s\n", 10 * b / (t1 - t0), 10 * b / (t2 - t1),
                10 * b / (t3 - t2));
