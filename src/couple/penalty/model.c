@@ -46,8 +46,9 @@ typedef struct {
     double *cover, *cover_v[2];
     double *seal_area, *seal_u[2];
     PenaltyWork work;
-    double last_dt; /* s, of the last relaxation */
-    bool said;      /* C_pen logged (at the first step: the run's log is open then) */
+    bool stencil_fresh; /* before_flow built the stencils at the points' current positions */
+    double last_dt;     /* s, of the last relaxation */
+    bool said;          /* C_pen logged (at the first step: the run's log is open then) */
     PenaltyStepInfo step;
     double force_x_max; /* N per metre of depth, on the solid, over the run */
 } PenaltyCoupling;
@@ -232,6 +233,7 @@ static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
         p->cover_v[1][i] = a * pts->v[1][i];
     }
     TRY(stencil(p, flow));
+    p->stencil_fresh = true; /* the flow's step does not move the solid */
     for (int64_t c = 0; c < p->cells; c++) {
         const double a = gather(p, c, p->cover);
         p->seal_area[c] = a;
@@ -269,7 +271,8 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
         p->v[0][i] = pts->v[0][i];
         p->v[1][i] = pts->v[1][i];
     }
-    TRY(stencil(p, flow));
+    if (!p->stencil_fresh) TRY(stencil(p, flow));
+    p->stencil_fresh = false;
     flow_lumped(flow, p->cells, p->cell_id, p->mass, p->dm[0], p->dm[1]);
     for (int64_t c = 0; c < p->cells; c++) {
         p->u[0][c] = p->dm[0][c] / p->mass[c];
