@@ -134,6 +134,8 @@ check_kind panel_shock TERM time.end=3.0e-4 output.checkpoint_interval=2.0e-5
 check_kind hollow_cylinder_pulse USR1 time.end=8e-5 output.checkpoint_interval=4e-6
 # the penalty coupling (paper 003) on a ring the blast fragments
 check_kind blast_hollow_cylinder TERM time.end=1.2e-4 output.checkpoint_interval=1e-5
+# ... with sealed faces, which the coupling rebuilds from the solid before every flow step
+check_kind chamber_detonation USR1 time.end=3e-4 output.checkpoint_interval=3e-5 coupling.seal=true
 # the IGA flow (control values, their rates, its clock)
 check_kind iga_cylindrical_blast TERM time.end=6e-5 output.checkpoint_interval=1e-5 \
     flow.grid.x.segments.0.spacing=0.012 flow.grid.y.segments.0.spacing=0.012
