@@ -1,43 +1,18 @@
 /* Issue 27 experiment (docs/PERFORMANCE.md, "Rooflines of the kernels"):
- * the bond-based force's point loop (a copy of solid/bond/force_kernel.h's
- * 2D body, CSR, an omp simd reduction over a point's bonds) on the 500 x 500
- * plate in row-major order, against the same loop with 1/|y| by a bit-level
- * guess and four Newton steps (vectorisable, no division or square root)
- * in two forms. Standalone; prints bond updates/s.
- *   gcc -O3 -march=native -fno-math-errno -fopenmp-simd csr.c -lm && ./a.out */
-#include <math.h>
-#include <stdint.h>
+ * the bond-based force's kernel (solid/bond/force_kernel.h, CSR, an omp
+ * simd reduction over a point's bonds) on the plate of plate.h, against the
+ * same loop with |xi| / |y| by a bit-level first guess of 1/sqrt and four
+ * Newton steps (vectorisable, no division or square root). Prints bond
+ * updates/s of both.
+ *   gcc -O3 -march=native -fno-math-errno -fopenmp-simd -I../../src csr.c -lm && ./a.out */
+#include "plate.h"
+#include "solid/bond/force_kernel.h"
+
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-/* the reference kernel */
-static inline __attribute__((always_inline)) void
-ref(int64_t i, const double *restrict x, const double *restrict y, const double *restrict ux,
-    const double *restrict uy, const int64_t *restrict first, const int32_t *restrict nbr,
-    float *restrict coef, double scale, double limit2, double *restrict fx, double *restrict fy) {
-    const double xi = x[i], yi = y[i], uxi = ux[i], uyi = uy[i];
-    double sx = 0.0, sy = 0.0;
-    const int64_t b0 = first[i], b1 = first[i + 1];
-#pragma omp simd reduction(+ : sx, sy)
-    for (int64_t b = b0; b < b1; b++) {
-        const int32_t j = nbr[b];
-        float k = coef[b];
-        const double ex = x[j] - xi, ey = y[j] - yi;
-        const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi);
-        const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
-        const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
-        if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
-        sx += f * rx;
-        sy += f * ry;
-    }
-    fx[i] = scale * sx;
-    fy[i] = scale * sy;
-}
-
-/* 1/sqrt(a) by the bit-level first guess and Newton steps: plain
- * arithmetic the compiler vectorises */
+/* 1/sqrt(a) by the bit-level guess and four Newton steps: plain arithmetic
+ * the compiler vectorises. */
 #pragma omp declare simd
 static inline double rsqrt_newton(double a) {
     int64_t bits;
@@ -46,24 +21,22 @@ static inline double rsqrt_newton(double a) {
     double r;
     memcpy(&r, &bits, 8);
     const double h = 0.5 * a;
-    r = r * (1.5 - h * r * r);
-    r = r * (1.5 - h * r * r);
-    r = r * (1.5 - h * r * r);
-    r = r * (1.5 - h * r * r);
+    for (int k = 0; k < 4; k++) r = r * (1.5 - h * r * r);
     return r;
 }
 
-static inline __attribute__((always_inline)) void
-fast(int64_t i, const double *restrict x, const double *restrict y, const double *restrict ux,
-     const double *restrict uy, const int64_t *restrict first, const int32_t *restrict nbr,
-     float *restrict coef, double scale, double limit2, double *restrict fx, double *restrict fy) {
+/* force_kernel.h's 2D body with sqrt(e2 / r2) replaced by rsqrt_newton. */
+static inline void newton_point(int64_t i, const double *restrict x, const double *restrict y,
+                                const double *restrict ux, const double *restrict uy,
+                                const int64_t *restrict first, const int32_t *restrict nbr,
+                                float *restrict coef, double limit2, double *restrict fx,
+                                double *restrict fy) {
     const double xi = x[i], yi = y[i], uxi = ux[i], uyi = uy[i];
     double sx = 0.0, sy = 0.0;
-    const int64_t b0 = first[i], b1 = first[i + 1];
 #pragma omp simd reduction(+ : sx, sy)
-    for (int64_t b = b0; b < b1; b++) {
+    for (int64_t b = first[i]; b < first[i + 1]; b++) {
         const int32_t j = nbr[b];
-        float k = coef[b];
+        const float k = coef[b];
         const double ex = x[j] - xi, ey = y[j] - yi;
         const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi);
         const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
@@ -72,108 +45,48 @@ fast(int64_t i, const double *restrict x, const double *restrict y, const double
         sx += f * rx;
         sy += f * ry;
     }
-    fx[i] = scale * sx;
-    fy[i] = scale * sy;
-}
-
-static inline __attribute__((always_inline)) void
-fast2(int64_t i, const double *restrict x, const double *restrict y, const double *restrict ux,
-      const double *restrict uy, const int64_t *restrict first, const int32_t *restrict nbr,
-      float *restrict coef, double scale, double limit2, double *restrict fx, double *restrict fy) {
-    const double xi = x[i], yi = y[i], uxi = ux[i], uyi = uy[i];
-    double sx = 0.0, sy = 0.0;
-    const int64_t b0 = first[i], b1 = first[i + 1];
-#pragma omp simd reduction(+ : sx, sy)
-    for (int64_t b = b0; b < b1; b++) {
-        const int32_t j = nbr[b];
-        float k = coef[b];
-        const double ex = x[j] - xi, ey = y[j] - yi;
-        const double rx = ex + (ux[j] - uxi), ry = ey + (uy[j] - uyi);
-        const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
-        const double f = (double)fabsf(k) * (1.0 - sqrt(e2) * rsqrt_newton(r2));
-        if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
-        sx += f * rx;
-        sy += f * ry;
-    }
-    fx[i] = scale * sx;
-    fy[i] = scale * sy;
-}
-
-/* Every point's force by variant v (0 reference, 1 and 2 the Newton forms). */
-static void run(int v, int64_t n, const double *x, const double *y, const double *ux,
-                const double *uy, const int64_t *first, const int32_t *nbr, float *coef, double *fx,
-                double *fy) {
-    for (int64_t i = 0; i < n; i++) {
-        if (v == 0)
-            ref(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
-        else if (v == 1)
-            fast(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
-        else
-            fast2(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
-    }
-}
-
-static double now(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
+    fx[i] = sx;
+    fy[i] = sy;
 }
 
 int main(void) {
-    const int N = 500;
-    const int64_t n = (int64_t)N * N;
-    const double dx = 1e-3, delta = 3.015 * dx;
-    double *x = malloc(n * 8), *y = malloc(n * 8), *ux = malloc(n * 8), *uy = malloc(n * 8),
-           *fx = malloc(n * 8), *fy = malloc(n * 8), *gx = malloc(n * 8), *gy = malloc(n * 8);
+    const int64_t n = (int64_t)PLATE_N * PLATE_N;
+    double *x, *y, *ux, *uy;
+    plate_points(&x, &y, &ux, &uy);
+    double *fx = malloc(n * 8), *fy = malloc(n * 8), *gx = malloc(n * 8), *gy = malloc(n * 8);
     int64_t *first = malloc((n + 1) * 8);
-    int32_t *nbr = malloc(n * 30 * 4);
-    float *coef = malloc(n * 30 * 4);
-    for (int j = 0; j < N; j++)
-        for (int i = 0; i < N; i++) {
-            int64_t k = (int64_t)j * N + i;
-            x[k] = i * dx;
-            y[k] = j * dx;
-            ux[k] = 1e-3 * x[k] + 1e-7 * sin(k);
-            uy[k] = -3e-4 * y[k];
-        }
-    int64_t b = 0;
+    int32_t *nbr = malloc(n * 32 * 4);
+    float *coef = malloc(n * 32 * 4);
     first[0] = 0;
-    for (int j = 0; j < N; j++)
-        for (int i = 0; i < N; i++) {
-            for (int q = -3; q <= 3; q++)
-                for (int p = -3; p <= 3; p++) {
-                    if (!p && !q) continue;
-                    int ii = i + p, jj = j + q;
-                    if (ii < 0 || jj < 0 || ii >= N || jj >= N) continue;
-                    if ((p * p + q * q) * dx * dx > delta * delta) continue;
-                    nbr[b] = jj * N + ii;
-                    coef[b] = 1.0f;
-                    b++;
-                }
-            first[(int64_t)j * N + i + 1] = b;
-        }
-    printf("%lld bonds\n", (long long)b);
-    run(0, n, x, y, ux, uy, first, nbr, coef, fx, fy);
-    run(1, n, x, y, ux, uy, first, nbr, coef, gx, gy);
+    for (int64_t i = 0; i < n; i++) {
+        const int m = plate_family(i, nbr + first[i]);
+        for (int q = 0; q < m; q++) coef[first[i] + q] = 1.0f;
+        first[i + 1] = first[i] + m;
+    }
+    const int64_t bonds = first[n];
+    printf("%lld bonds\n", (long long)bonds);
+    for (int64_t i = 0; i < n; i++) {
+        bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
+        newton_point(i, x, y, ux, uy, first, nbr, coef, 1e9, gx, gy);
+    }
     double err = 0, big = 0;
     for (int64_t i = 0; i < n; i++) {
         err = fmax(err, fabs(gx[i] - fx[i]));
         big = fmax(big, fabs(fx[i]));
     }
-    printf("fast: max diff %.3g of max %.3g\n", err, big);
-    run(2, n, x, y, ux, uy, first, nbr, coef, gx, gy);
-    err = 0;
-    for (int64_t i = 0; i < n; i++) err = fmax(err, fabs(gx[i] - fx[i]));
-    printf("fast2: max diff %.3g of max %.3g\n", err, big);
+    printf("Newton: max difference %.3g of max %.3g\n", err, big);
     for (int rep = 0; rep < 3; rep++) {
-        double t0 = now();
-        for (int s = 0; s < 10; s++) run(0, n, x, y, ux, uy, first, nbr, coef, fx, fy);
-        double t1 = now();
-        for (int s = 0; s < 10; s++) run(1, n, x, y, ux, uy, first, nbr, coef, fx, fy);
-        double t2 = now();
-        for (int s = 0; s < 10; s++) run(2, n, x, y, ux, uy, first, nbr, coef, fx, fy);
-        double t3 = now();
-        printf("ref %.3g  fast %.3g  fast2 %.3g bonds/s\n", 10 * b / (t1 - t0), 10 * b / (t2 - t1),
-               10 * b / (t3 - t2));
+        const double t0 = plate_now();
+        for (int s = 0; s < 10; s++)
+            for (int64_t i = 0; i < n; i++)
+                bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, 1.0, 1e9, fx, fy);
+        const double t1 = plate_now();
+        for (int s = 0; s < 10; s++)
+            for (int64_t i = 0; i < n; i++)
+                newton_point(i, x, y, ux, uy, first, nbr, coef, 1e9, fx, fy);
+        const double t2 = plate_now();
+        printf("kernel %.3g  Newton %.3g bonds/s\n", 10 * bonds / (t1 - t0),
+               10 * bonds / (t2 - t1));
     }
+    return 0;
 }

@@ -47,6 +47,12 @@ GksSolver *fixture_flow(Sim *sim) {
     return f;
 }
 
+void fixture_flow_state_at(Sim *sim, double x, double y, double out[5]) {
+    int64_t cell;
+    assert_ok(flow_cell_at(sim->flow, "fixture", x, y, &cell));
+    flow_cell_state(sim->flow, cell, out);
+}
+
 double fixture_coupling_summary(Sim *sim, const char *name) {
     static Report r; /* large for the stack of a test; tests are single-threaded */
     report_clear(&r);

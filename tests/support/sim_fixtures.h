@@ -25,6 +25,10 @@ void fixture_sim_text(const char *yaml, Sim *sim);
 BondBody *fixture_body(Sim *sim);
 GksSolver *fixture_flow(Sim *sim);
 
+/* The flow's state (density, u, v, pressure, temperature) in the cell
+ * that holds (x, y); fails the test for a point off the grid. */
+void fixture_flow_state_at(Sim *sim, double x, double y, double out[5]);
+
 /* The value of summary key `name` of the coupling (fails if absent). */
 double fixture_coupling_summary(Sim *sim, const char *name);
 

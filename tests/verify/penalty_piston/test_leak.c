@@ -58,10 +58,8 @@ static double leak(double cells_across, double beta, bool seal) {
     double sum = 0.0;
     int count = 0;
     for (double x = 0.5605; x < 0.7; x += 1e-3) {
-        int64_t cell;
-        assert_ok(flow_cell_at(sim.flow, "behind", x, 0.02, &cell));
         double s[5];
-        flow_cell_state(sim.flow, cell, s);
+        fixture_flow_state_at(&sim, x, 0.02, s);
         sum += s[3];
         count++;
     }

@@ -25,10 +25,8 @@ static double mean_pressure(Sim *sim, double x0, double x1) {
     double sum = 0.0;
     int count = 0;
     for (double x = x0; x <= x1; x += 1e-3) {
-        int64_t cell;
-        assert_ok(flow_cell_at(sim->flow, "window", x, 0.005, &cell));
         double s[5];
-        flow_cell_state(sim->flow, cell, s);
+        fixture_flow_state_at(sim, x, 0.005, s);
         sum += s[3];
         count++;
     }

@@ -188,10 +188,8 @@ static const char CASE_TEXT[] =
 
 /* The gas's x velocity at (x, y). */
 static double gas_u(Sim *sim, double x, double y) {
-    int64_t cell;
-    assert_ok(flow_cell_at(sim->flow, "at", x, y, &cell));
     double s[5];
-    flow_cell_state(sim->flow, cell, s);
+    fixture_flow_state_at(sim, x, y, s);
     return s[1];
 }
 
