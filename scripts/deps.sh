@@ -12,7 +12,9 @@
 #                              flow code), gnuplot and GNU time (bench/pddo_vs_openfoam.sh
 #                              scores its cavities with scripts/ghia_compare.sh, which
 #                              plots, and takes each solver's CPU time), g++
-#                              (bench/kernel_flops.sh counts the kernels' flops in C++)
+#                              (bench/kernel_flops.sh counts the kernels' flops in C++),
+#                              SuperLU, sequential MUMPS and hypre (with Open MPI), which
+#                              bench/ppe_solvers/ measures against UMFPACK
 #   scripts/deps.sh fuzz       + clang, libFuzzer (libclang-rt-14-dev), OpenMP for clang (make fuzz)
 # As root the missing packages are installed with apt-get; otherwise the exact
 # command is printed and the script fails, so nothing runs half set up.
@@ -23,7 +25,7 @@ for group in "$@"; do
     case "$group" in
     build) ;;
     validate) want="$want gnuplot-nox" ;;
-    bench) want="$want lammps hyperfine openfoam gnuplot-nox time g++" ;;
+    bench) want="$want lammps hyperfine openfoam gnuplot-nox time g++ libsuperlu-dev libmumps-seq-dev libhypre-dev libopenmpi-dev" ;;
     fuzz) want="$want clang libclang-rt-14-dev libomp-14-dev" ;;
     *) echo "deps.sh: unknown group '$group' (expected build, validate, bench or fuzz)" >&2; exit 2 ;;
     esac

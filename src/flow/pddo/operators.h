@@ -77,6 +77,19 @@ void pddo_ops_apply(const PddoOps *ops, PddoOp op, const double *f, double *out)
 /* The same at one node. */
 double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k);
 
+/* Up to PDDO_FUSED_MAX applications in one pass over the families:
+ * out[o] = operator op[o] of field f[o], each the same bits as
+ * pddo_ops_apply alone. The flow step applies six operators to the same
+ * nodes; one pass reads each member's neighbour index once instead of six
+ * times (docs/PERFORMANCE.md). No out[o] may alias any f. */
+#define PDDO_FUSED_MAX 6
+void pddo_ops_apply_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
+                         double *const *out);
+
+/* The same at one node: sum[o] for o < count. */
+void pddo_ops_at_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
+                      int64_t k, double *sum);
+
 void pddo_ops_free(PddoOps *ops);
 
 /* Interpolation at a point (xc, yc) that need not be a node (the flow's

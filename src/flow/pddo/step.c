@@ -221,12 +221,12 @@ int pddo_step_advance(PddoStep *ps) {
     pddo_step_apply_bc(ps); /* 7.1 (a no-op between steps; the caller may have set u) */
 
     /* 7.2: first and second derivatives of the velocity (Eqs. 20, 21) */
-    pddo_ops_apply(ops, PDDO_D_X, u, w[UX]);
-    pddo_ops_apply(ops, PDDO_D_Y, u, w[UY]);
-    pddo_ops_apply(ops, PDDO_D_X, v, w[VX]);
-    pddo_ops_apply(ops, PDDO_D_Y, v, w[VY]);
-    pddo_ops_apply(ops, PDDO_LAP, u, w[LU]);
-    pddo_ops_apply(ops, PDDO_LAP, v, w[LV]);
+    {
+        const PddoOp op[] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y, PDDO_LAP, PDDO_LAP};
+        const double *const f[] = {u, u, v, v, u, v};
+        double *const out[] = {w[UX], w[UY], w[VX], w[VY], w[LU], w[LV]};
+        pddo_ops_apply_many(ops, 6, op, f, out);
+    }
     /* d = u.grad u (Eq. 23) pointwise at every node */
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
@@ -247,19 +247,18 @@ int pddo_step_advance(PddoStep *ps) {
             continue;
         }
         const double div_u = w[UX][k] + w[VY][k];
-        const double div_d =
-            pddo_ops_at(ops, PDDO_D_X, w[D1], k) + pddo_ops_at(ops, PDDO_D_Y, w[D2], k);
-        const double div_l =
-            pddo_ops_at(ops, PDDO_D_X, w[LU], k) + pddo_ops_at(ops, PDDO_D_Y, w[LV], k);
+        const PddoOp op[] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y};
+        const double *const f[] = {w[D1], w[D2], w[LU], w[LV]};
+        double d[4];
+        pddo_ops_at_many(ops, 4, op, f, k, d);
+        const double div_d = d[0] + d[1], div_l = d[2] + d[3];
         const bool feeds_back =
             ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
         w[R][k] = (feeds_back ? rho / dt * div_u : 0.0) - rho * div_d + mu * div_l;
     }
     /* 7.3 */
     TRY(pddo_ppe_solve(ps->ppe, w[R], p));
-    /* 7.4 (Eq. 8); grad p into the spent first-derivative arrays */
-    pddo_ops_apply(ops, PDDO_D_X, p, w[UX]);
-    pddo_ops_apply(ops, PDDO_D_Y, p, w[UY]);
+    /* 7.4 (Eq. 8); grad p only where the velocity is updated */
     int64_t bad = n;
     double rate = 0.0; /* max |du/dt|: a max is exact, so any thread count gives these bits */
 #pragma omp parallel for schedule(static) reduction(min                                            \
@@ -268,8 +267,12 @@ int pddo_step_advance(PddoStep *ps) {
               : rate) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
         if (ps->rule[k] != PDDO_VEL_FREE) continue;
-        const double du = -w[D1][k] - w[UX][k] / rho + nu * w[LU][k] + ps->par.force_x;
-        const double dv = -w[D2][k] - w[UY][k] / rho + nu * w[LV][k] + ps->par.force_y;
+        const PddoOp op[] = {PDDO_D_X, PDDO_D_Y};
+        const double *const f[] = {p, p};
+        double grad_p[2];
+        pddo_ops_at_many(ops, 2, op, f, k, grad_p);
+        const double du = -w[D1][k] - grad_p[0] / rho + nu * w[LU][k] + ps->par.force_x;
+        const double dv = -w[D2][k] - grad_p[1] / rho + nu * w[LV][k] + ps->par.force_y;
         u[k] += dt * du;
         v[k] += dt * dv;
         rate = fmax(rate, fmax(fabs(du), fabs(dv)));

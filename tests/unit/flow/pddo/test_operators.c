@@ -2,6 +2,7 @@
  * its PDDO operators (Eqs. 10-19), against notes/pddo.md 1.2 and tests
  * V1-V3 of its section 4:
  *  - the lattice cloud: node counts, kinds, pressure images, 28 neighbours;
+ *  - the fused applications: the bits of the single ones;
  *  - the interior weights against the notes' table (Laplacian by offset,
  *    its diagonal, the gradient along x);
  *  - exactness for every polynomial of degree <= 2 at every node of the
@@ -308,6 +309,46 @@ static void test_jittered_exactness(void **state) {
     points_free(&p);
 }
 
+/* The fused applications (the flow step's one pass for six operators)
+ * give the bits of the operators applied one by one, for every count up
+ * to PDDO_FUSED_MAX (1, 2, 4 and 6 take the unrolled paths, 3 and 5 the
+ * general one), on whole fields and at single nodes. */
+static void test_fused_equals_single(void **state) {
+    (void)state;
+    Points p = {0};
+    points_make(&p, 0.1, 0.0, 1.0, 0.0, 1.0, 0.3);
+    PddoOps ops = {0};
+    assert_ok(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.3));
+    uint64_t seed = 5;
+    double *f[PDDO_FUSED_MAX], *out[PDDO_FUSED_MAX], *one = calloc((size_t)p.n, sizeof(double));
+    PddoOp op[PDDO_FUSED_MAX];
+    for (int o = 0; o < PDDO_FUSED_MAX; o++) {
+        f[o] = calloc((size_t)p.n, sizeof(double));
+        out[o] = calloc((size_t)p.n, sizeof(double));
+        for (int64_t k = 0; k < p.n; k++) f[o][k] = uniform(&seed);
+        op[o] = (PddoOp)(o % PDDO_OPS);
+    }
+    for (int count = 1; count <= PDDO_FUSED_MAX; count++) {
+        pddo_ops_apply_many(&ops, count, op, (const double *const *)f, out);
+        for (int o = 0; o < count; o++) {
+            pddo_ops_apply(&ops, op[o], f[o], one);
+            assert_memory_equal(one, out[o], (size_t)p.n * sizeof(double));
+        }
+        for (int64_t k = 0; k < p.n; k += 7) {
+            double sum[PDDO_FUSED_MAX];
+            pddo_ops_at_many(&ops, count, op, (const double *const *)f, k, sum);
+            for (int o = 0; o < count; o++) {
+                const double single = pddo_ops_at(&ops, op[o], f[o], k);
+                assert_memory_equal(&single, &sum[o], sizeof single);
+            }
+        }
+    }
+    for (int o = 0; o < PDDO_FUSED_MAX; o++) free(f[o]), free(out[o]);
+    free(one);
+    pddo_ops_free(&ops);
+    points_free(&p);
+}
+
 /* The error of every operator at node k for sin x cos 2y. */
 static void errors_at(const Points *p, const PddoOps *ops, int64_t k, double e[PDDO_OPS]) {
     double *v = calloc((size_t)p->n, sizeof(double)), d[PDDO_OPS];
@@ -379,9 +420,13 @@ static void test_refuses_degenerate_family(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_lattice_cloud),     cmocka_unit_test(test_lattice_weights),
-        cmocka_unit_test(test_lattice_exactness), cmocka_unit_test(test_jittered_exactness),
-        cmocka_unit_test(test_convergence),       cmocka_unit_test(test_refuses_degenerate_family),
+        cmocka_unit_test(test_lattice_cloud),
+        cmocka_unit_test(test_lattice_weights),
+        cmocka_unit_test(test_lattice_exactness),
+        cmocka_unit_test(test_jittered_exactness),
+        cmocka_unit_test(test_convergence),
+        cmocka_unit_test(test_refuses_degenerate_family),
+        cmocka_unit_test(test_fused_equals_single),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
