@@ -68,3 +68,25 @@ add_test(NAME unit.core.cuda_kernels
         ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR}/cuda_kernels
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
 set_tests_properties(unit.core.cuda_kernels PROPERTIES LABELS "unit;cuda" SKIP_RETURN_CODE 77)
+
+# The distributed engine (issue 28): tests/mpi/test_<topic>.c, each run by
+# mpiexec on 1, 2, 3 and 4 ranks (ctest mpi.<topic>.ranks<N>, label "mpi"),
+# oversubscribed on a machine with fewer cores, one OpenMP thread a rank.
+# Open MPI refuses root unless told; CI runs as root.
+if(NSPD_MPI)
+    file(GLOB mpi_tests CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/mpi/test_*.c)
+    foreach(src ${mpi_tests})
+        get_filename_component(stem ${src} NAME_WE)
+        string(REGEX REPLACE "^test_" "" topic ${stem})
+        add_executable(mpi_${topic} ${src})
+        target_link_libraries(mpi_${topic} PRIVATE nspd_test_support MPI::MPI_C)
+        foreach(ranks 1 2 3 4)
+            add_test(NAME mpi.${topic}.ranks${ranks}
+                COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ranks} --oversubscribe
+                    $<TARGET_FILE:mpi_${topic}>
+                WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+            set_tests_properties(mpi.${topic}.ranks${ranks} PROPERTIES LABELS "mpi"
+                ENVIRONMENT "OMP_NUM_THREADS=1;OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+        endforeach()
+    endforeach()
+endif()

@@ -6,7 +6,8 @@
 #                              test walks the case files' keys), ffmpeg (movies),
 #                              Chromium (tests/cli/test_report.sh opens report.html in it),
 #                              SuiteSparse (UMFPACK: the PDDO flow's sparse LU of its
-#                              pressure matrix, which is not symmetric)
+#                              pressure matrix, which is not symmetric), Open MPI (the
+#                              distributed engine, core/comm.h; tests/mpi)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine, OpenFOAM (reference
 #                              flow code), gnuplot and GNU time (bench/pddo_vs_openfoam.sh
@@ -20,7 +21,7 @@
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev"
+want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev libopenmpi-dev openmpi-bin"
 for group in "$@"; do
     case "$group" in
     build) ;;

@@ -228,10 +228,19 @@ static void fill_face(const Grid *g, int face, const FlowFaceBc *b, const GksPar
     }
 }
 
+void bc_fill_faces(const Grid *g, const FlowFaceBc bc[4], const GksParams *gas, double *const w[4],
+                   uint8_t *kind, unsigned faces) {
+    /* x faces for the interior rows, then y faces over every column */
+    for (int face = 0; face < 4; face++) {
+        if (!(faces >> face & 1u)) continue;
+        if (face < 2)
+            fill_face(g, face, &bc[face], gas, w, kind, 0, g->ny);
+        else
+            fill_face(g, face, &bc[face], gas, w, kind, -GRID_NG, g->nx + GRID_NG);
+    }
+}
+
 void bc_fill(const Grid *g, const FlowFaceBc bc[4], const GksParams *gas, double *const w[4],
              uint8_t *kind) {
-    fill_face(g, FLOW_FACE_XLO, &bc[FLOW_FACE_XLO], gas, w, kind, 0, g->ny);
-    fill_face(g, FLOW_FACE_XHI, &bc[FLOW_FACE_XHI], gas, w, kind, 0, g->ny);
-    fill_face(g, FLOW_FACE_YLO, &bc[FLOW_FACE_YLO], gas, w, kind, -GRID_NG, g->nx + GRID_NG);
-    fill_face(g, FLOW_FACE_YHI, &bc[FLOW_FACE_YHI], gas, w, kind, -GRID_NG, g->nx + GRID_NG);
+    bc_fill_faces(g, bc, gas, w, kind, 15u);
 }

@@ -98,6 +98,11 @@ int bc_validate(const Grid *g, const FlowFaceBc bc[4]);
  * faces. gas supplies gamma and R. Serial; touches only ghost cells. */
 void bc_fill(const Grid *g, const FlowFaceBc bc[4], const GksParams *gas, double *const w[4],
              uint8_t *kind);
+/* The same on the faces of the mask (bit 1 << FLOW_FACE_*) only, in the
+ * same order: a process's slab fills the whole grid's faces it holds and
+ * takes the others from its neighbours (flow/gks/solver.h). */
+void bc_fill_faces(const Grid *g, const FlowFaceBc bc[4], const GksParams *gas, double *const w[4],
+                   uint8_t *kind, unsigned faces);
 
 /* The state behind a shock of Mach number ms (> 1) moving into `pre` along
  * +x (direction = +1) or -x (-1), by the Rankine-Hugoniot relations. The

@@ -60,7 +60,12 @@ void gks_solver_totals(const GksSolver *s, double totals[4]) {
         }
         for (int v = 0; v < 4; v++) rs[4 * j + v] = acc[v];
     }
+    int rows = g->ny;
+    if (s->row_sums_all) { /* several processes: every row's sums, in row order */
+        (void)comm_allgatherv(&s->comm, rs, 4 * g->ny, s->row_sums_all);
+        rs = s->row_sums_all, rows = s->rows;
+    }
     for (int v = 0; v < 4; v++) totals[v] = 0.0;
-    for (int j = 0; j < g->ny; j++)
+    for (int j = 0; j < rows; j++)
         for (int v = 0; v < 4; v++) totals[v] += rs[4 * j + v];
 }

@@ -111,13 +111,9 @@ int grid_segments_spacing(int count, const GridSegment *segments, double *h, int
     return total;
 }
 
-int grid_axis_create(GridAxis *a, double lo, int count, const GridSegment *segments,
-                     bool periodic) {
-    memset(a, 0, sizeof *a);
-    const int n = grid_segments_spacing(count, segments, NULL, 0);
-    TRY(n);
+/* The six arrays of an axis of n cells (face has one more entry). */
+static int axis_alloc(GridAxis *a, int n) {
     const int nt = n + 2 * GRID_NG;
-    /* six arrays; face has one more entry */
     TRY(nspd_alloc(&a->block_, (size_t)(6 * (nt + 1)), sizeof(double)));
     double *p = a->block_;
     a->face = p + GRID_NG;
@@ -132,6 +128,15 @@ int grid_axis_create(GridAxis *a, double lo, int count, const GridSegment *segme
     p += nt + 1;
     a->inv_dr = p + GRID_NG;
     a->n = n;
+    return NSPD_OK;
+}
+
+int grid_axis_create(GridAxis *a, double lo, int count, const GridSegment *segments,
+                     bool periodic) {
+    memset(a, 0, sizeof *a);
+    const int n = grid_segments_spacing(count, segments, NULL, 0);
+    TRY(n);
+    TRY(axis_alloc(a, n));
     a->periodic = periodic;
     grid_segments_spacing(count, segments, a->width, n);
     for (int k = 0; k < GRID_NG; k++) {
@@ -158,6 +163,25 @@ int grid_axis_create(GridAxis *a, double lo, int count, const GridSegment *segme
     return NSPD_OK;
 }
 
+/* Cells first .. first + n - 1 of axis a, with its ghost layers. */
+static int axis_slice(GridAxis *out, const GridAxis *a, int first, int n) {
+    memset(out, 0, sizeof *out);
+    TRY(axis_alloc(out, n));
+    out->periodic = a->periodic;
+    for (int i = -GRID_NG; i <= n + GRID_NG; i++) out->face[i] = a->face[first + i];
+    for (int i = -GRID_NG; i < n + GRID_NG; i++) {
+        out->center[i] = a->center[first + i];
+        out->width[i] = a->width[first + i];
+        out->inv_width[i] = a->inv_width[first + i];
+        /* the whole axis' ends have no outer neighbour */
+        if (first + i > -GRID_NG) out->inv_dl[i] = a->inv_dl[first + i];
+        if (first + i < a->n + GRID_NG - 1) out->inv_dr[i] = a->inv_dr[first + i];
+    }
+    out->lo = out->face[0];
+    out->hi = out->face[n];
+    return NSPD_OK;
+}
+
 void grid_axis_destroy(GridAxis *a) {
     nspd_free(&a->block_);
     memset(a, 0, sizeof *a);
@@ -176,6 +200,24 @@ int grid_create(Grid *g, double x0, int nsx, const GridSegment *sx, bool periodi
     g->ny = g->ax[1].n;
     g->stride = (g->nx + 2 * GRID_NG + 7) / 8 * 8;
     g->size = (int64_t)g->stride * (g->ny + 2 * GRID_NG);
+    return NSPD_OK;
+}
+
+int grid_slice_rows(Grid *out, const Grid *g, int first, int rows) {
+    memset(out, 0, sizeof *out);
+    if (first < 0 || rows < GRID_NG || first + rows > g->ny)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "grid: rows %d..%d are not a slab of %d rows", first,
+                         first + rows - 1, g->ny);
+    TRY(axis_slice(&out->ax[0], &g->ax[0], 0, g->nx));
+    const int st = axis_slice(&out->ax[1], &g->ax[1], first, rows);
+    if (st < 0) {
+        grid_axis_destroy(&out->ax[0]);
+        return st;
+    }
+    out->nx = g->nx;
+    out->ny = rows;
+    out->stride = g->stride;
+    out->size = (int64_t)out->stride * (rows + 2 * GRID_NG);
     return NSPD_OK;
 }
 

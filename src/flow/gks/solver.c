@@ -63,6 +63,14 @@ const Grid *gks_solver_grid(const GksSolver *s) {
 const GksParams *gks_solver_gas(const GksSolver *s) {
     return &s->gas;
 }
+int gks_solver_first_row(const GksSolver *s) {
+    return s->row0;
+}
+
+int gks_solver_rows(const GksSolver *s) {
+    return s->rows;
+}
+
 const GksConfig *gks_solver_config(const GksSolver *s) {
     return &s->cfg;
 }
@@ -291,12 +299,50 @@ double gks_solver_config_stable_dt(const GksConfig *cfg, const FlowRegion *regio
     return rate > 0.0 ? cfg->cfl / rate : 0.0;
 }
 
+/* This process's slab of the whole grid `whole` (solver.h), into
+ * s->grid; the whole grid itself on one process. */
+static int take_rows(GksSolver *s, Grid *whole, const NspdComm *comm) {
+    s->comm = comm ? *comm : comm_self();
+    s->rows = whole->ny;
+    s->below = s->above = -1;
+    s->bc_faces = 15u;
+    if (!comm_distributed(&s->comm)) {
+        s->grid = *whole;
+        return NSPD_OK;
+    }
+    const int r = s->comm.rank, p = s->comm.size, ny = whole->ny;
+    const int first = (int)((int64_t)ny * r / p), last = (int)((int64_t)ny * (r + 1) / p);
+    int status = NSPD_OK;
+    if (ny / p < GRID_NG)
+        status = NSPD_FAIL(NSPD_ERR_INPUT,
+                           "flow: %d rows over %d processes leave fewer than %d on one; expected "
+                           "at most %d processes",
+                           ny, p, GRID_NG, ny / GRID_NG);
+    else
+        status = grid_slice_rows(&s->grid, whole, first, last - first);
+    grid_destroy(whole);
+    TRY(status);
+    s->row0 = first;
+    const bool wrap = s->grid.ax[1].periodic;
+    s->below = r > 0 ? r - 1 : (wrap ? p - 1 : -1);
+    s->above = r < p - 1 ? r + 1 : (wrap ? 0 : -1);
+    s->bc_faces = 1u << FLOW_FACE_XLO | 1u << FLOW_FACE_XHI;
+    if (r == 0 && !wrap) s->bc_faces |= 1u << FLOW_FACE_YLO;
+    if (r == p - 1 && !wrap) s->bc_faces |= 1u << FLOW_FACE_YHI;
+    return NSPD_OK;
+}
+
 /* Everything after the grid; on failure the caller destroys the solver. */
 static int build(GksSolver *s, const GksConfig *cfg) {
     TRY(bc_validate(&s->grid, cfg->bc));
     set_gas(&s->gas, cfg);
     TRY(alloc_state(s));
     TRY(build_walls(s, cfg));
+    /* a slab's inner y faces are no walls */
+    for (int face = FLOW_FACE_YLO; face <= FLOW_FACE_YHI; face++)
+        if (!(s->bc_faces >> face & 1u)) memset(s->wall[face], 0, (size_t)s->grid.nx);
+    if (comm_distributed(&s->comm))
+        TRY(alloc_counted(s, &s->row_sums_all, (size_t)4 * (size_t)s->rows, sizeof(double)));
     TRY(alloc_work(s));
     gks_solver_apply_initial(s, cfg);
     return NSPD_OK;
@@ -310,10 +356,13 @@ int gks_solver_create(GksSolver **out, const GksConfig *cfg) {
     s->cfg = *cfg;
     s->cfg.regions = NULL; /* borrowed only during create */
     s->cfg.region_count = 0;
+    s->cfg.comm = NULL; /* borrowed only during create; s->comm is the copy */
     const bool per_x = cfg->bc[FLOW_FACE_XLO].seg[0].kind == BC_PERIODIC;
     const bool per_y = cfg->bc[FLOW_FACE_YLO].seg[0].kind == BC_PERIODIC;
-    int st = grid_create(&s->grid, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
+    Grid whole;
+    int st = grid_create(&whole, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
                          cfg->segment_count[1], cfg->segments[1], per_y);
+    if (st >= 0) st = take_rows(s, &whole, cfg->comm);
     if (st < 0) {
         nspd_free(&s);
         return st;
@@ -337,6 +386,7 @@ void gks_solver_destroy(GksSolver **sp) {
     nspd_free(&s->half_w[0]);
     nspd_free(&s->half_w[1]);
     nspd_free(&s->row_sums);
+    nspd_free(&s->row_sums_all);
     for (int k = 0; k < 3; k++) nspd_free(&s->source[k]);
     nspd_free(&s->seal_slot);
     nspd_free(&s->seal_cell);

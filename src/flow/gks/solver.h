@@ -29,6 +29,7 @@
 #define NSPD_FLOW_GKS_SOLVER_H
 
 #include "core/checkpoint.h"
+#include "core/comm.h"
 #include "core/shape.h"
 #include "flow/gks/bc.h"
 #include "flow/gks/cell_kind.h"
@@ -89,7 +90,24 @@ typedef struct {
      * of the conserved variables by exact area fractions (a charge holds
      * the same energy on every mesh) instead of the quadrature */
     bool init_area_fractions;
+    /* processes (borrowed during create; copied): NULL or a group of one,
+     * the whole grid; more, each process holds a slab of rows (below) */
+    const NspdComm *comm;
 } GksConfig;
+
+/* Several processes (issue 28; first step: flows without a coupling).
+ * Process r of P holds the rows ny r / P .. ny (r + 1) / P - 1 with the
+ * whole x extent (grid_slice_rows: the same stretched-grid weights), at
+ * least GRID_NG of them. Its box ghost layers come from the boundary
+ * conditions on the whole grid's faces it holds and, on the others (and
+ * on a periodic y axis), from its neighbours' rows: two rows of the four
+ * fields and of the kinds, exchanged after every fill, so each rank's
+ * cells see the values the one-process run gives. The stable step is the
+ * maximum rate over all ranks, the fallback counts integer sums, the
+ * totals the row sums gathered and added in global row order: every
+ * number is the one-process run's, bit for bit, at any process count
+ * (tests/mpi). The immersed boundary, seals, sources and checkpoints are
+ * one-process only for now. */
 
 /* Defaults: air (gamma 1.4, R 287, Pr 0.72), inviscid, van Leer, CFL 0.5,
  * C = 1, eps = 0, extrapolation on all faces, no grid segments. */
@@ -119,6 +137,10 @@ GksFields gks_solver_fields(GksSolver *s);
 const Grid *gks_solver_grid(const GksSolver *s);
 const GksParams *gks_solver_gas(const GksSolver *s);
 const GksConfig *gks_solver_config(const GksSolver *s);
+/* The first row this process holds, and the whole grid's row count (0 and
+ * ny on one process). */
+int gks_solver_first_row(const GksSolver *s);
+int gks_solver_rows(const GksSolver *s);
 
 void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx);
 

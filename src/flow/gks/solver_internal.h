@@ -73,6 +73,14 @@ struct GksSolver {
     int64_t steps;
     int64_t fallbacks_last, fallbacks_total;
     size_t bytes; /* allocated by create (state + work), for the benchmark */
+    /* processes (solver.h): the group, this slab's first row and the whole
+     * grid's rows, the neighbours below and above (-1: none), the box
+     * faces this slab fills from boundary conditions (bit 1 << face) */
+    NspdComm comm;
+    int row0, rows;
+    int below, above;
+    unsigned bc_faces;
+    double *row_sums_all; /* 4 * rows, the gathered row sums (several processes) */
 };
 
 /* The viscous factor of the stable step: 2 max(4/3, gamma/Pr), 0 inviscid. */

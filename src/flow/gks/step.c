@@ -25,8 +25,30 @@
 #include <math.h>
 #include <omp.h>
 
+/* The neighbours' rows into a slab's ghost rows (solver.h): the first
+ * GRID_NG rows go down into the ghost rows above the slab below, the last
+ * GRID_NG up; whole rows, x ghosts included, so corners come along. */
+static int exchange_rows(GksSolver *s) {
+    const Grid *g = &s->grid;
+    const int64_t low = grid_index(g, -GRID_NG, 0), high = grid_index(g, -GRID_NG, g->ny - GRID_NG);
+    const int64_t under = grid_index(g, -GRID_NG, -GRID_NG), over = grid_index(g, -GRID_NG, g->ny);
+    const int64_t count = (int64_t)GRID_NG * g->stride;
+    for (int v = 0; v <= 4; v++) {
+        const size_t size = v < 4 ? sizeof(double) : 1;
+        char *base = v < 4 ? (char *)s->w[v] : (char *)s->kind;
+        const int bytes = (int)(count * (int64_t)size);
+        TRY(comm_sendrecv(&s->comm, base + low * (int64_t)size, bytes, s->below,
+                          base + over * (int64_t)size, s->above));
+        TRY(comm_sendrecv(&s->comm, base + high * (int64_t)size, bytes, s->above,
+                          base + under * (int64_t)size, s->below));
+    }
+    return NSPD_OK;
+}
+
 void gks_solver_fill_boundaries(GksSolver *s) {
-    bc_fill(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind);
+    bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces);
+    /* a failed exchange is MPI's abort, not a recoverable status */
+    if (comm_distributed(&s->comm)) (void)exchange_rows(s);
 }
 
 /* The signal-speed rate of one state (1/s): the inviscid rates
@@ -109,6 +131,7 @@ double gks_solver_stable_dt(const GksSolver *s) {
         }
         rmax = m > rmax ? m : rmax;
     }
+    rmax = comm_max(&s->comm, rmax); /* a max is exact: the same bits on any ranks */
     return rmax > 0.0 ? s->cfg.cfl / rmax : (double)INFINITY;
 }
 
@@ -273,16 +296,18 @@ static void step_block(GksSolver *s, FlowWork *wk, int j0, int j1, double dt) {
     const int ny = s->grid.ny;
     int cur = 0;
     int64_t nb = 0;
-    /* slopes of rows j0-1 and j0; fallbacks counted for owned rows only */
+    /* slopes of rows j0-1 and j0; fallbacks counted for owned rows only,
+     * and the whole grid's ghost rows by the block at its end */
+    const bool first_slab = s->row0 == 0, last_slab = s->row0 + ny == s->rows;
     int64_t c = row_slopes(s, j0 - 1, wk->sx[1], wk->sy[1]);
-    if (j0 == 0) nb += c;
+    if (j0 == 0 && first_slab) nb += c;
     nb += row_slopes(s, j0, wk->sx[0], wk->sy[0]);
     row_yflux(s, j0 - 1, wk->sx[1], wk->sy[1], wk->sx[0], wk->sy[0], dt, wk->gy[0]);
     int gbot = 0;
     for (int j = j0; j < j1; j++) {
         const int nxt = 1 - cur;
         c = row_slopes(s, j + 1, wk->sx[nxt], wk->sy[nxt]);
-        if (j + 1 < j1 || j + 1 == ny) nb += c;
+        if (j + 1 < j1 || (j + 1 == ny && last_slab)) nb += c;
         row_xflux(s, j, wk->sx[cur], wk->sy[cur], dt, wk->fx);
         row_yflux(s, j, wk->sx[cur], wk->sy[cur], wk->sx[nxt], wk->sy[nxt], dt, wk->gy[1 - gbot]);
         wk->bad |= row_update(s, j, wk->fx, wk->gy[gbot], wk->gy[1 - gbot]);
@@ -292,7 +317,9 @@ static void step_block(GksSolver *s, FlowWork *wk, int j0, int j1, double dt) {
     wk->fallbacks = nb;
 }
 
-static int report_bad_cell(const GksSolver *s) {
+/* The first non-physical fluid cell of the slab in row-major order, as
+ * its index in the whole grid (j nx + i), or INT64_MAX. */
+static int64_t first_bad_cell(const GksSolver *s) {
     const Grid *g = &s->grid;
     const double gm1 = s->gas.gamma - 1.0;
     for (int j = 0; j < g->ny; j++)
@@ -302,14 +329,32 @@ static int report_bad_cell(const GksSolver *s) {
             const double r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k], e = s->w[3][k];
             const double p = gm1 * (e - 0.5 * (mx * mx + my * my) / r);
             if (!(r > 0.0) || !(p > 0.0) || !(2.0 * r * e - mx * mx - my * my > 0.0))
-                return NSPD_FAIL(NSPD_ERR_NUMERIC,
-                                 "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, "
-                                 "%d) at (%.6g, %.6g) m: rho = %.6g kg/m^3, p = %.6g Pa",
-                                 (long long)s->steps, s->time, i, j, g->ax[0].center[i],
-                                 g->ax[1].center[j], r, p);
+                return (int64_t)(s->row0 + j) * g->nx + i;
         }
-    return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: non-physical state at step %lld",
-                     (long long)s->steps);
+    return INT64_MAX;
+}
+
+/* The message names the first bad cell of the whole grid; every process
+ * fails with it, the one that holds the cell with the numbers. */
+static int report_bad_cell(const GksSolver *s, int64_t first) {
+    const Grid *g = &s->grid;
+    const int i = (int)(first % g->nx), j = (int)(first / g->nx) - s->row0;
+    if (first == INT64_MAX)
+        return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: non-physical state at step %lld",
+                         (long long)s->steps);
+    if (j < 0 || j >= g->ny)
+        return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                         "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, %d) "
+                         "(held by another process)",
+                         (long long)s->steps, s->time, i, j + s->row0);
+    const int64_t k = grid_index(g, i, j);
+    const double gm1 = s->gas.gamma - 1.0, r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k];
+    const double p = gm1 * (s->w[3][k] - 0.5 * (mx * mx + my * my) / r);
+    return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                     "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, %d) at "
+                     "(%.6g, %.6g) m: rho = %.6g kg/m^3, p = %.6g Pa",
+                     (long long)s->steps, s->time, i, j + s->row0, g->ax[0].center[i],
+                     g->ax[1].center[j], r, p);
 }
 
 /* dt times the volume sources into the new state of the fluid cells: each
@@ -351,6 +396,10 @@ int gks_solver_step(GksSolver *s, double dt) {
         bad |= s->work[t].bad;
         nb += s->work[t].fallbacks;
     }
+    if (comm_distributed(&s->comm)) { /* integers: exact on any ranks */
+        nb = comm_sum_i64(&s->comm, nb);
+        bad = (int)comm_max_i64(&s->comm, bad);
+    }
     for (int v = 0; v < 4; v++) {
         double *tmp = s->w[v];
         s->w[v] = s->wn[v];
@@ -367,7 +416,7 @@ int gks_solver_step(GksSolver *s, double dt) {
     s->time += dt;
     s->fallbacks_last = nb;
     s->fallbacks_total += nb;
-    if (bad) return report_bad_cell(s);
+    if (bad) return report_bad_cell(s, comm_min_i64(&s->comm, first_bad_cell(s)));
     return NSPD_OK;
 }
 

@@ -1,0 +1,52 @@
+/* The distributed engine (MPI; issue 28), behind plain C.
+ *
+ * A model that runs on several processes takes an NspdComm: its rank, its
+ * size and the handle of the MPI communicator of the group. Built without
+ * MPI (-DNSPD_MPI=OFF), or given NULL or a group of one, every operation
+ * below is the one-process answer and nothing is sent, so the same code
+ * runs serially without mpirun.
+ *
+ * Reductions that must not depend on the number of processes never add
+ * doubles across processes (MPI_SUM's order is the library's): a max, a
+ * min and an integer sum are exact; a floating-point total is gathered
+ * (comm_allgatherv) and summed in a fixed global order by the caller. */
+#ifndef NSPD_CORE_COMM_H
+#define NSPD_CORE_COMM_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+typedef struct {
+    int rank, size;
+    int handle; /* MPI_Comm_c2f of the group's communicator (a portable integer) */
+} NspdComm;
+
+/* MPI_Init where nspd is built with MPI and not yet initialised (the
+ * thread level funneled: OpenMP threads inside a rank never call MPI);
+ * a no-op otherwise. Returns the world group. */
+NspdComm comm_init(int *argc, char ***argv);
+/* MPI_Finalize where comm_init initialised MPI. */
+void comm_finalize(void);
+/* Whether this build has MPI. */
+bool comm_enabled(void);
+
+/* The one-process group (rank 0 of 1). */
+NspdComm comm_self(void);
+/* Whether c spans more than one process (NULL: no). */
+bool comm_distributed(const NspdComm *c);
+
+/* Exact reductions over the group, the result on every rank. */
+double comm_max(const NspdComm *c, double value);
+int64_t comm_min_i64(const NspdComm *c, int64_t value);
+int64_t comm_max_i64(const NspdComm *c, int64_t value);
+int64_t comm_sum_i64(const NspdComm *c, int64_t value);
+
+/* Every rank's `count` doubles, concatenated in rank order into all[] on
+ * every rank (counts may differ between ranks; all holds their sum). */
+int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all);
+
+/* Sends `bytes` to rank `to` and receives `bytes` from rank `from` (-1:
+ * nothing that way), as one exchange that cannot deadlock. */
+int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from);
+
+#endif

@@ -1,0 +1,195 @@
+/* ctest-labels: mpi
+ * The GKS flow on several processes (flow/gks/solver.h, issue 28): run by
+ * mpiexec on 1 to 4 ranks (cmake/NspdTests.cmake). Every rank advances its
+ * slab of rows; rank 0 also runs the whole grid on its own. After the
+ * steps, the slabs' interior states gathered in row order must be the
+ * one-process states bit for bit, and so must the totals (row sums added
+ * in global row order), the time (each step's dt a max over ranks), the
+ * step count and the first-order fallbacks (integer sums), on:
+ *  - a shock tube along x with slip walls on y (uniform grid);
+ *  - a viscous periodic box (Sutherland air): the y wrap between the
+ *    first and last ranks;
+ *  - a vortex crossing a stretched y axis between an isothermal no-slip
+ *    floor and a moving adiabatic lid, with a subsonic inflow and outflow:
+ *    the slabs' ghost widths from the whole stretched axis, the walls'
+ *    mass and energy flux corrections on the whole grid's faces only.
+ * A rank count that leaves fewer than two rows on a rank is refused by
+ * every rank with NSPD_ERR_INPUT. */
+#include "core/comm.h"
+#include "core/status.h"
+#include "flow/gks/solver.h"
+#include "flow/vortex.h"
+
+#include <math.h>
+#include <mpi.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static NspdComm world;
+static int failures = 0;
+
+static void check(bool ok, const char *what, const char *name) {
+    const int64_t bad = comm_max_i64(&world, ok ? 0 : 1);
+    if (bad) {
+        failures++;
+        if (world.rank == 0) fprintf(stderr, "FAIL %s: %s\n", name, what);
+    }
+}
+
+static void shock_tube(void *ctx, double x, double y, FlowPrim *out) {
+    (void)ctx, (void)y;
+    *out = x < 0.5 ? (FlowPrim){1.0, 0.0, 0.0, 1.0} : (FlowPrim){0.125, 0.0, 0.0, 0.1};
+}
+
+static void taylor_green(void *ctx, double x, double y, FlowPrim *out) {
+    (void)ctx;
+    const double u0 = 0.3 * sqrt(1.4);
+    *out = (FlowPrim){1.0, u0 * sin(2.0 * M_PI * x) * cos(2.0 * M_PI * y),
+                      -u0 * cos(2.0 * M_PI * x) * sin(2.0 * M_PI * y),
+                      1.0 + 0.25 * u0 * u0 * (cos(4.0 * M_PI * x) + cos(4.0 * M_PI * y))};
+}
+
+static FlowVortex vortex;
+
+static void config_tube(GksConfig *c) {
+    gks_config_default(c);
+    gks_config_uniform_grid(c, 0.0, 1.0, 100, 0.0, 0.08, 8);
+    FlowBc wall = {.kind = BC_SLIP_WALL}, open = {.kind = BC_EXTRAPOLATION};
+    gks_config_set_bc(c, FLOW_FACE_XLO, &open);
+    gks_config_set_bc(c, FLOW_FACE_XHI, &open);
+    gks_config_set_bc(c, FLOW_FACE_YLO, &wall);
+    gks_config_set_bc(c, FLOW_FACE_YHI, &wall);
+    c->init_fn = shock_tube;
+}
+
+static void config_box(GksConfig *c) {
+    gks_config_default(c);
+    gks_config_uniform_grid(c, 0.0, 1.0, 24, 0.0, 1.0, 24);
+    FlowBc per = {.kind = BC_PERIODIC};
+    for (int face = 0; face < 4; face++) gks_config_set_bc(c, face, &per);
+    c->viscosity = VISCOSITY_SUTHERLAND;
+    c->mu_ref = 1e-3;
+    c->T_ref = 0.0035;
+    c->sutherland_S = 0.0013;
+    c->init_fn = taylor_green;
+}
+
+static void config_channel(GksConfig *c) {
+    gks_config_default(c);
+    c->x0 = 0.0, c->y0 = 0.0;
+    c->segment_count[0] = 1;
+    c->segments[0][0] = (GridSegment){.length = 2.0, .cells = 40};
+    c->segment_count[1] = 2;
+    c->segments[1][0] = (GridSegment){.length = 0.5, .h_start = 0.01, .h_end = 0.05};
+    c->segments[1][1] = (GridSegment){.length = 0.5, .h_start = 0.05, .h_end = 0.02};
+    c->viscosity = VISCOSITY_CONSTANT;
+    c->mu_ref = 2e-3;
+    const FlowPrim free = {1.0, 0.5, 0.0, 1.0 / 1.4};
+    FlowBc in = {.kind = BC_SUBSONIC_INFLOW, .state = free};
+    FlowBc out = {.kind = BC_SUBSONIC_OUTFLOW, .pressure = 1.0 / 1.4};
+    FlowBc floor = {.kind = BC_NOSLIP_ISOTHERMAL, .wall_temperature = 1.0 / 1.4 / 287.0};
+    FlowBc lid = {.kind = BC_NOSLIP_ADIABATIC, .wall_velocity = 0.2};
+    gks_config_set_bc(c, FLOW_FACE_XLO, &in);
+    gks_config_set_bc(c, FLOW_FACE_XHI, &out);
+    gks_config_set_bc(c, FLOW_FACE_YLO, &floor);
+    gks_config_set_bc(c, FLOW_FACE_YHI, &lid);
+    vortex = (FlowVortex){.x0 = 0.6,
+                          .y0 = 0.45,
+                          .strength = 2.0,
+                          .gamma = 1.4,
+                          .rho_inf = 1.0,
+                          .u_inf = 0.5,
+                          .p_inf = 1.0 / 1.4};
+    c->init_fn = flow_isentropic_vortex;
+    c->init_ctx = &vortex;
+}
+
+/* The interior of the four fields, rows in order, x fastest. */
+static void interior(const GksSolver *s, double *out) {
+    GksFields f = gks_solver_fields((GksSolver *)s);
+    const Grid *g = gks_solver_grid(s);
+    for (int v = 0; v < 4; v++)
+        for (int j = 0; j < g->ny; j++)
+            for (int i = 0; i < g->nx; i++)
+                out[((int64_t)j * g->nx + i) * 4 + v] = f.w[v][grid_index(g, i, j)];
+}
+
+static void run(const char *name, void (*configure)(GksConfig *), int steps) {
+    GksConfig c;
+    configure(&c);
+    GksSolver *whole = NULL, *slab = NULL;
+    if (world.rank == 0 && gks_solver_create(&whole, &c) != NSPD_OK) {
+        fprintf(stderr, "%s: %s\n", name, nspd_error_message());
+        exit(1);
+    }
+    c.comm = &world;
+    check(gks_solver_create(&slab, &c) == NSPD_OK, "create on slabs", name);
+    check(gks_solver_advance(slab, 1e9, steps) == NSPD_OK, "advance on slabs", name);
+    /* check() is collective: every rank calls it, rank 0 with the answer */
+    check(!whole || gks_solver_advance(whole, 1e9, steps) == NSPD_OK, "advance whole", name);
+    const Grid *g = gks_solver_grid(slab);
+    const int rows = gks_solver_rows(slab);
+    check(gks_solver_first_row(slab) == rows * world.rank / world.size, "slab rows", name);
+    const int64_t cells = (int64_t)g->nx * rows;
+    double *mine = malloc((size_t)g->nx * (size_t)g->ny * 4 * sizeof(double));
+    double *all = malloc((size_t)cells * 4 * sizeof(double));
+    double *ref = malloc((size_t)cells * 4 * sizeof(double));
+    interior(slab, mine);
+    comm_allgatherv(&world, mine, g->nx * g->ny * 4, all);
+    double t_slab[4], t_whole[4] = {0};
+    gks_solver_totals(slab, t_slab);
+    bool same = true;
+    if (whole) {
+        interior(whole, ref);
+        gks_solver_totals(whole, t_whole);
+        same = memcmp(all, ref, (size_t)cells * 4 * sizeof(double)) == 0;
+        int64_t first = -1;
+        for (int64_t k = 0; k < cells * 4 && same == false && first < 0; k++)
+            if (memcmp(&all[k], &ref[k], sizeof(double))) first = k;
+        if (!same)
+            fprintf(stderr, "%s: first difference at cell %lld field %lld: %.17g vs %.17g\n", name,
+                    (long long)(first / 4), (long long)(first % 4), all[first], ref[first]);
+        check(memcmp(t_slab, t_whole, sizeof t_slab) == 0, "totals", name);
+        const double ts = gks_solver_time(slab), tw = gks_solver_time(whole);
+        check(memcmp(&ts, &tw, sizeof ts) == 0, "time", name);
+        check(gks_solver_step_count(slab) == gks_solver_step_count(whole), "steps", name);
+        check(gks_solver_fallbacks_total(slab) == gks_solver_fallbacks_total(whole), "fallbacks",
+              name);
+        printf("%s on %d ranks: %lld cells, %lld steps to t = %.6g, mass %.17g, fallbacks %lld\n",
+               name, world.size, (long long)cells, (long long)gks_solver_step_count(whole),
+               gks_solver_time(whole), t_whole[0], (long long)gks_solver_fallbacks_total(whole));
+    } else {
+        /* the other ranks take part in the collective checks */
+        check(true, "totals", name), check(true, "time", name), check(true, "steps", name);
+        check(true, "fallbacks", name);
+    }
+    check(same, "interior states", name);
+    free(mine), free(all), free(ref);
+    gks_solver_destroy(&slab);
+    gks_solver_destroy(&whole);
+}
+
+static void too_many_ranks(void) {
+    GksConfig c;
+    config_tube(&c);
+    c.segments[1][0] = (GridSegment){.length = 0.08, .cells = 2 * world.size - 1};
+    c.comm = &world;
+    GksSolver *s = NULL;
+    const int status = gks_solver_create(&s, &c);
+    check(world.size == 1 ? status == NSPD_OK : status == NSPD_ERR_INPUT, "too few rows refused",
+          "slabs");
+    if (world.rank == 0 && world.size > 1) printf("refused: %s\n", nspd_error_message());
+    gks_solver_destroy(&s);
+}
+
+int main(int argc, char **argv) {
+    world = comm_init(&argc, &argv);
+    run("shock tube", config_tube, 40);
+    run("periodic box", config_box, 30);
+    run("channel", config_channel, 30);
+    too_many_ranks();
+    if (world.rank == 0) printf("%s\n", failures ? "FAILED" : "all bitwise equal");
+    comm_finalize();
+    return failures ? 1 : 0;
+}
