@@ -74,6 +74,9 @@ set_tests_properties(unit.core.cuda_kernels PROPERTIES LABELS "unit;cuda" SKIP_R
 # oversubscribed on a machine with fewer cores, one OpenMP thread a rank.
 # Open MPI refuses root unless told; CI runs as root.
 if(NSPD_MPI)
+    # bench/mpi_gks.c: the GKS step's strong and weak scaling (docs/PERFORMANCE.md)
+    add_executable(bench_mpi_gks ${PROJECT_SOURCE_DIR}/bench/mpi_gks.c)
+    target_link_libraries(bench_mpi_gks PRIVATE nspdlib)
     file(GLOB mpi_tests CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/mpi/test_*.c)
     foreach(src ${mpi_tests})
         get_filename_component(stem ${src} NAME_WE)

@@ -71,6 +71,10 @@ int gks_solver_rows(const GksSolver *s) {
     return s->rows;
 }
 
+double gks_solver_comm_seconds(const GksSolver *s) {
+    return s->comm_seconds;
+}
+
 const GksConfig *gks_solver_config(const GksSolver *s) {
     return &s->cfg;
 }

@@ -141,6 +141,10 @@ const GksConfig *gks_solver_config(const GksSolver *s);
  * ny on one process). */
 int gks_solver_first_row(const GksSolver *s);
 int gks_solver_rows(const GksSolver *s);
+/* Wall time (s) this process spent in the exchanges of ghost rows and the
+ * reductions of the stable step and the counts, since creation (0 on one
+ * process). */
+double gks_solver_comm_seconds(const GksSolver *s);
 
 void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx);
 
@@ -249,7 +253,9 @@ typedef struct {
     double seconds;            /* wall time of the timed steps */
     double cell_updates_per_s; /* cells * steps / seconds */
     double bytes_per_cell;     /* state + kinds + work arrays of the solver, per cell */
+    double comm_seconds;       /* of the timed steps: the largest over the processes */
 } GksBenchResult;
-int gks_bench(int cells, int threads, int steps, GksBenchResult *out);
+/* comm: NULL, or the processes that share the grid (slabs; every one calls) */
+int gks_bench(int cells, int threads, int steps, const NspdComm *comm, GksBenchResult *out);
 
 #endif

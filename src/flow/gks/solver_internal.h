@@ -81,6 +81,7 @@ struct GksSolver {
     int below, above;
     unsigned bc_faces;
     double *row_sums_all; /* 4 * rows, the gathered row sums (several processes) */
+    double comm_seconds;  /* wall time in exchanges and reductions so far */
 };
 
 /* The viscous factor of the stable step: 2 max(4/3, gamma/Pr), 0 inviscid. */

@@ -17,6 +17,7 @@
 
 #include "core/kernel.h"
 #include "core/status.h"
+#include "core/timer.h"
 #include "flow/gks/solver_internal.h"
 #include "flow/gks/flux.h"
 #include "flow/gks/update_kernel.h"
@@ -48,7 +49,11 @@ static int exchange_rows(GksSolver *s) {
 void gks_solver_fill_boundaries(GksSolver *s) {
     bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces);
     /* a failed exchange is MPI's abort, not a recoverable status */
-    if (comm_distributed(&s->comm)) (void)exchange_rows(s);
+    if (comm_distributed(&s->comm)) {
+        const double t0 = nspd_wall_time();
+        (void)exchange_rows(s);
+        s->comm_seconds += nspd_wall_time() - t0;
+    }
 }
 
 /* The signal-speed rate of one state (1/s): the inviscid rates
@@ -131,7 +136,11 @@ double gks_solver_stable_dt(const GksSolver *s) {
         }
         rmax = m > rmax ? m : rmax;
     }
-    rmax = comm_max(&s->comm, rmax); /* a max is exact: the same bits on any ranks */
+    if (comm_distributed(&s->comm)) { /* a max is exact: the same bits on any ranks */
+        const double t0 = nspd_wall_time();
+        rmax = comm_max(&s->comm, rmax);
+        ((GksSolver *)s)->comm_seconds += nspd_wall_time() - t0;
+    }
     return rmax > 0.0 ? s->cfg.cfl / rmax : (double)INFINITY;
 }
 
@@ -397,8 +406,10 @@ int gks_solver_step(GksSolver *s, double dt) {
         nb += s->work[t].fallbacks;
     }
     if (comm_distributed(&s->comm)) { /* integers: exact on any ranks */
+        const double t0 = nspd_wall_time();
         nb = comm_sum_i64(&s->comm, nb);
         bad = (int)comm_max_i64(&s->comm, bad);
+        s->comm_seconds += nspd_wall_time() - t0;
     }
     for (int v = 0; v < 4; v++) {
         double *tmp = s->w[v];

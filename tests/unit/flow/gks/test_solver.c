@@ -239,7 +239,7 @@ static void test_initial_regions(void **state) {
 static void test_bench_runs(void **state) {
     (void)state;
     GksBenchResult r;
-    assert_ok(gks_bench(1024, 1, 2, &r));
+    assert_ok(gks_bench(1024, 1, 2, NULL, &r));
     assert_true(r.cells == 1024 && r.steps == 2 && r.threads == 1);
     assert_true(r.cell_updates_per_s > 0.0);
     assert_true(r.bytes_per_cell > 64.0 && r.bytes_per_cell < 200.0);
