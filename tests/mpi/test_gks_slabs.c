@@ -5,7 +5,8 @@
  * steps, the slabs' interior states gathered in row order must be the
  * one-process states bit for bit, and so must the totals (row sums added
  * in global row order), the time (each step's dt a max over ranks), the
- * step count and the first-order fallbacks (integer sums), on:
+ * step count and the first-order fallbacks (integer sums), and the six
+ * primitive fields gathered for the writers (gks_solver_primitive_whole), on:
  *  - a shock tube along x with slip walls on y (uniform grid);
  *  - a viscous periodic box (Sutherland air): the y wrap between the
  *    first and last ranks;
@@ -165,6 +166,21 @@ static void run(const char *name, void (*configure)(GksConfig *), int steps) {
         check(true, "fallbacks", name);
     }
     check(same, "interior states", name);
+    /* the writers' gather: every primitive field of the whole grid */
+    double *slab_field = malloc((size_t)g->nx * (size_t)g->ny * sizeof(double));
+    double *whole_field = malloc((size_t)cells * sizeof(double));
+    bool fields_same = true;
+    for (int field = 0; field < FLOW_FIELD_COUNT; field++) {
+        check(gks_solver_primitive_whole(slab, (FlowField)field, slab_field, whole_field) ==
+                  NSPD_OK,
+              "gather a field", name);
+        if (whole) {
+            gks_solver_primitive(whole, (FlowField)field, ref);
+            fields_same = fields_same && !memcmp(whole_field, ref, (size_t)cells * sizeof(double));
+        }
+    }
+    check(fields_same, "gathered primitive fields", name);
+    free(slab_field), free(whole_field);
     free(mine), free(all), free(ref);
     gks_solver_destroy(&slab);
     gks_solver_destroy(&whole);

@@ -1,6 +1,7 @@
 /* Diagnostics of the flow operator: primitive fields and conserved totals. */
 #include "flow/gks/solver.h"
 
+#include "core/status.h"
 #include "flow/gks/solver_internal.h"
 
 #include <math.h>
@@ -41,6 +42,15 @@ void gks_solver_primitive(const GksSolver *s, FlowField field, double *out) {
             }
             out[(int64_t)j * g->nx + i] = v;
         }
+}
+
+int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out) {
+    if (!comm_distributed(&s->comm)) {
+        gks_solver_primitive(s, field, out);
+        return NSPD_OK;
+    }
+    gks_solver_primitive(s, field, slab);
+    return comm_allgatherv(&s->comm, slab, s->grid.nx * s->grid.ny, out);
 }
 
 /* Deterministic at any thread count: each row is summed in index order by one

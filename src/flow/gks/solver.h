@@ -235,6 +235,11 @@ typedef enum {
 /* Writes a primitive field of the interior cells into out[nx * ny], x
  * fastest, no ghosts (non-fluid cells included as stored). */
 void gks_solver_primitive(const GksSolver *s, FlowField field, double *out);
+/* The same over the whole grid on several processes (every rank calls):
+ * out[nx * rows] on every rank, the slabs in row order, for the writers
+ * of rank 0; `slab` (nx * ny of this rank) is scratch. On one process
+ * gks_solver_primitive. */
+int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out);
 
 /* Integrals over the fluid cells: mass (kg/m), x and y momentum, energy (J/m). */
 void gks_solver_totals(const GksSolver *s, double totals[4]);
