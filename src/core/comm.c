@@ -7,6 +7,17 @@
 
 #include <string.h>
 
+/* The one-process answers, shared by both builds. */
+static int gather_alone(const double *mine, int count, double *all) {
+    if (count > 0) memmove(all, mine, (size_t)count * sizeof(double));
+    return NSPD_OK;
+}
+
+static int sendrecv_alone(const void *send, int bytes, int to, void *recv, int from) {
+    if (to == 0 && from == 0 && bytes > 0) memmove(recv, send, (size_t)bytes);
+    return NSPD_OK;
+}
+
 #ifdef NSPD_HAVE_MPI
 #include <mpi.h>
 
@@ -66,10 +77,7 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
 }
 
 int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all) {
-    if (!comm_distributed(c)) {
-        if (count > 0) memmove(all, mine, (size_t)count * sizeof(double));
-        return NSPD_OK;
-    }
+    if (!comm_distributed(c)) return gather_alone(mine, count, all);
     int *counts = NULL, *offsets = NULL;
     int status = nspd_alloc(&counts, (size_t)c->size, sizeof(int));
     if (status == NSPD_OK) status = nspd_alloc(&offsets, (size_t)c->size, sizeof(int));
@@ -84,10 +92,7 @@ int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *al
 }
 
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from) {
-    if (!comm_distributed(c)) {
-        if (to == c->rank && from == c->rank && bytes > 0) memmove(recv, send, (size_t)bytes);
-        return NSPD_OK;
-    }
+    if (!comm_distributed(c)) return sendrecv_alone(send, bytes, to, recv, from);
     const MPI_Comm m = mpi_of(c);
     const int rc = MPI_Sendrecv(send, to >= 0 ? bytes : 0, MPI_BYTE, to >= 0 ? to : MPI_PROC_NULL,
                                 0, recv, from >= 0 ? bytes : 0, MPI_BYTE,
@@ -124,14 +129,12 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
 
 int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all) {
     (void)c;
-    if (count > 0) memmove(all, mine, (size_t)count * sizeof(double));
-    return NSPD_OK;
+    return gather_alone(mine, count, all);
 }
 
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from) {
     (void)c;
-    if (to == 0 && from == 0 && bytes > 0) memmove(recv, send, (size_t)bytes);
-    return NSPD_OK;
+    return sendrecv_alone(send, bytes, to, recv, from);
 }
 
 #endif
