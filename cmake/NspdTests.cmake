@@ -92,4 +92,11 @@ if(NSPD_MPI)
                 ENVIRONMENT "OMP_NUM_THREADS=1;OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
         endforeach()
     endforeach()
+    # `mpirun nspd run`: flow cases bitwise on 1-4 ranks, checkpoints and
+    # fields across process counts, the refusals (tests/mpi/run.sh)
+    add_test(NAME mpi.run
+        COMMAND sh ${PROJECT_SOURCE_DIR}/tests/mpi/run.sh $<TARGET_FILE:nspd> ${PROJECT_SOURCE_DIR}
+            ${MPIEXEC_EXECUTABLE}
+        WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    set_tests_properties(mpi.run PROPERTIES LABELS "mpi;release" SKIP_RETURN_CODE 77)
 endif()

@@ -1,6 +1,7 @@
 /* nspd run | check | info: the commands that take a case file. */
 #include "app/commands.h"
 #include "app/options.h"
+#include "core/comm.h"
 #include "core/interrupt.h"
 #include "core/log.h"
 #include "core/mem.h"
@@ -58,6 +59,7 @@ static int load(const CaseOptions *opt, bool check_only, CfgDoc *doc, Sim *sim) 
     if (status != NSPD_OK) return status;
     cfg.max_memory_bytes = opt->max_memory_mb * 1e6;
     cfg.check_only = check_only;
+    cfg.comm = comm_world(); /* the processes of `mpirun nspd run` (this one alone otherwise) */
     status = sim_create(sim, &cfg);
     if (status != NSPD_OK) {
         sim_config_free(&cfg);
@@ -296,42 +298,71 @@ static int reopen_dir(const char *dir, int *lock_fd) {
     return remove_files(dir, is_part_file);
 }
 
+/* Where the run writes (rank 0 of several): the directory prepared (or
+ * reopened to resume), the resolved case and the log. */
+static int open_outputs(const CaseOptions *opt, const char *dir, CfgDoc *doc, int *lock_fd) {
+    TRY(opt->resume ? reopen_dir(dir, lock_fd) : prepare_dir(dir, opt->force, lock_fd));
+    char path[8192];
+    if (!opt->resume) {
+        snprintf(path, sizeof path, "%s/case.yaml", dir);
+        TRY(case_write_resolved(doc, path));
+    }
+    snprintf(path, sizeof path, "%s/log.txt", dir);
+    return nspd_log_open(path, opt->resume);
+}
+
 int cmd_run(int argc, char **argv) {
+    /* under mpirun every rank runs this; rank 0 prints and writes, and
+     * what fails on any rank is agreed (comm_agree), so all stop together
+     * with the message of the rank that failed, printed once by rank 0 */
+    const NspdComm world = comm_world();
+    const bool writer = world.rank == 0;
+    if (!writer) {
+        nspd_log_set_console_level(LOG_QUIET);
+        if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) {
+            /* still quiet through the log level; nothing else prints here */
+        }
+    }
     CaseOptions opt;
     if (!options_parse(argc, argv, true, "run", &opt)) return EXIT_BAD_INPUT;
     CfgDoc doc;
     Sim sim;
-    int status = load(&opt, false, &doc, &sim);
-    if (status != NSPD_OK) return report(status);
+    const int loaded = load(&opt, false, &doc, &sim);
+    int status = comm_agree(&world, loaded, NULL, 0);
+    if (status != NSPD_OK) {
+        if (loaded == NSPD_OK) { /* another rank failed */
+            sim_destroy(&sim);
+            cfg_doc_free(&doc);
+        }
+        return report(status);
+    }
     char dir[4096];
     if (opt.out_dir)
         snprintf(dir, sizeof dir, "%s", opt.out_dir);
     else
         snprintf(dir, sizeof dir, "out/%s", sim.cfg.name);
-    char path[8192];
     int lock_fd = -1;
     status = case_resolved_hash(&doc, &sim.case_hash);
-    if (status == NSPD_OK)
-        status = opt.resume ? reopen_dir(dir, &lock_fd) : prepare_dir(dir, opt.force, &lock_fd);
-    if (status == NSPD_OK && !opt.resume) {
-        snprintf(path, sizeof path, "%s/case.yaml", dir);
-        status = case_write_resolved(&doc, path);
-    }
-    if (status == NSPD_OK) {
-        snprintf(path, sizeof path, "%s/log.txt", dir);
-        status = nspd_log_open(path, opt.resume);
-    }
+    if (status == NSPD_OK && writer) status = open_outputs(&opt, dir, &doc, &lock_fd);
+    status = comm_agree(&world, status, NULL, 0);
     if (status == NSPD_OK && opt.quiet) nspd_log_set_console_level(LOG_WARN);
+    if (status == NSPD_OK && !writer) nspd_log_set_console_level(LOG_QUIET);
     if (status == NSPD_OK)
         nspd_log(LOG_INFO, "nspd %s: case '%s' from %s -> %s%s", NSPD_VERSION, sim.cfg.name,
                  opt.case_path, dir, opt.resume ? " (resumed)" : "");
-    if (status == NSPD_OK && opt.resume) status = sim_resume(&sim, dir);
+    /* every rank reads the checkpoint (its own rows of it) */
+    if (status == NSPD_OK && opt.resume)
+        status = comm_agree(&world, sim_resume(&sim, dir), NULL, 0);
     if (status == NSPD_OK) {
         char what[256];
         describe(&sim, what, sizeof what);
-        nspd_log(LOG_INFO, "%s, %d threads", what, omp_get_max_threads());
+        if (comm_distributed(&world))
+            nspd_log(LOG_INFO, "%s, %d processes x %d threads", what, world.size,
+                     omp_get_max_threads());
+        else
+            nspd_log(LOG_INFO, "%s, %d threads", what, omp_get_max_threads());
         interrupt_install();
-        SimRunOptions ro = {dir, !opt.quiet};
+        SimRunOptions ro = {writer ? dir : NULL, !opt.quiet && writer};
         status = sim_run(&sim, &ro);
         if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED) {
             if (sim.flow && flow_fallbacks_total(sim.flow) > 0)

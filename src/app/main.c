@@ -1,5 +1,6 @@
 /* The nspd command: dispatches to the subcommands. */
 #include "app/commands.h"
+#include "core/comm.h"
 
 #include <signal.h>
 #include <stdio.h>
@@ -45,7 +46,13 @@ int main(int argc, char **argv) {
      * and nspd says so, instead of the process dying of SIGXFSZ */
     signal(SIGXFSZ, SIG_IGN);
     const char *cmd = argv[1];
-    if (strcmp(cmd, "run") == 0) return cmd_run(argc - 2, argv + 2);
+    if (strcmp(cmd, "run") == 0) {
+        /* under an MPI launcher the run is shared by its processes */
+        comm_init(&argc, &argv);
+        const int code = cmd_run(argc - 2, argv + 2);
+        comm_finalize();
+        return code;
+    }
     if (strcmp(cmd, "check") == 0) return cmd_check(argc - 2, argv + 2);
     if (strcmp(cmd, "info") == 0) return cmd_info(argc - 2, argv + 2);
     if (strcmp(cmd, "bench") == 0) return cmd_bench(argc - 2, argv + 2);

@@ -24,6 +24,7 @@ struct Checkpoint {
     uint64_t bytes;    /* writing: so far; reading: the file's size */
     uint64_t position; /* reading: where the next record starts */
     bool failed;       /* writing: a write failed (out_file_close says why) */
+    bool discard;      /* writing to no file (checkpoint_create with no path) */
 };
 
 bool checkpoint_reading(const Checkpoint *ck) {
@@ -36,7 +37,7 @@ uint64_t checkpoint_bytes(const Checkpoint *ck) {
 
 static void put(Checkpoint *ck, const void *data, size_t bytes) {
     if (ck->failed || bytes == 0) return;
-    if (fwrite(data, 1, bytes, ck->out.f) != bytes) ck->failed = true;
+    if (!ck->discard && fwrite(data, 1, bytes, ck->out.f) != bytes) ck->failed = true;
     hash64_add(&ck->hash, data, bytes);
     ck->bytes += bytes;
 }
@@ -60,13 +61,14 @@ static void put_header(Checkpoint *ck, const CheckpointHeader *h) {
 int checkpoint_create(Checkpoint **out, const char *path, const CheckpointHeader *header) {
     Checkpoint *ck;
     TRY(nspd_alloc(&ck, 1, sizeof *ck));
-    snprintf(ck->path, sizeof ck->path, "%s", path);
-    int status = out_file_open(&ck->out, path);
+    ck->discard = path == NULL;
+    snprintf(ck->path, sizeof ck->path, "%s", path ? path : "(none)");
+    int status = ck->discard ? NSPD_OK : out_file_open(&ck->out, path);
     if (status != NSPD_OK) {
         nspd_free(&ck);
         return status;
     }
-    setvbuf(ck->out.f, NULL, _IOFBF, STREAM_BUFFER);
+    if (!ck->discard) setvbuf(ck->out.f, NULL, _IOFBF, STREAM_BUFFER);
     hash64_init(&ck->hash);
     put_header(ck, header);
     *out = ck;
@@ -161,7 +163,7 @@ static void sync_directory(const char *path) {
 int checkpoint_close(Checkpoint **p) {
     Checkpoint *ck = *p;
     if (!ck) return NSPD_OK;
-    int status;
+    int status = NSPD_OK;
     if (ck->reading) {
         status = ck->position + sizeof(uint64_t) == ck->bytes
                      ? NSPD_OK
@@ -170,7 +172,7 @@ int checkpoint_close(Checkpoint **p) {
                                  "written for another case",
                                  ck->path);
         fclose(ck->in);
-    } else {
+    } else if (!ck->discard) {
         const uint64_t sum = hash64_final(&ck->hash);
         if (!ck->failed && fwrite(&sum, sizeof sum, 1, ck->out.f) != 1) ck->failed = true;
         /* on the disk before it takes the real name, and the name with it:
@@ -189,7 +191,7 @@ void checkpoint_abort(Checkpoint **p) {
     if (!ck) return;
     if (ck->reading) {
         if (ck->in) fclose(ck->in);
-    } else {
+    } else if (!ck->discard) {
         out_file_abort(&ck->out);
     }
     nspd_free(p);

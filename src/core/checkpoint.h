@@ -35,8 +35,9 @@ typedef struct {
     uint64_t case_hash;   /* the resolved case it was written from */
     uint64_t binary_hash; /* the executable that wrote it */
     char version[CHECKPOINT_MAX_TEXT];
-    /* how the state is laid out: "serial" (one process; the same at any
-     * thread count) */
+    /* how the state is laid out: "serial" (the whole state as one process
+     * holds it; the same at any thread count, and written so by a run on
+     * several processes, which any number of processes reads back) */
     char layout[CHECKPOINT_MAX_TEXT];
     int64_t step;
     double time;
@@ -44,7 +45,9 @@ typedef struct {
 
 typedef struct Checkpoint Checkpoint;
 
-/* Starts writing `path` (as <path>.part). NSPD_ERR_IO with the OS's reason. */
+/* Starts writing `path` (as <path>.part). NSPD_ERR_IO with the OS's reason.
+ * path NULL: a checkpoint written to no file (the processes other than
+ * the writer of a run on several, which take part in its gathers). */
 int checkpoint_create(Checkpoint **ck, const char *path, const CheckpointHeader *header);
 /* Opens `path` for reading: checks its format and hash (the whole file is
  * read once for it) and returns its header. NSPD_ERR_IO when it cannot be

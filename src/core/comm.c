@@ -5,11 +5,19 @@
 #include "core/mem.h"
 #include "core/status.h"
 
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+static NspdComm world_group = {0, 1, 0};
+
+NspdComm comm_world(void) {
+    return world_group;
+}
+
 /* The one-process answers, shared by both builds. */
-static int gather_alone(const double *mine, int count, double *all) {
-    if (count > 0) memmove(all, mine, (size_t)count * sizeof(double));
+static int gather_alone(const void *mine, int bytes, void *all) {
+    if (bytes > 0) memmove(all, mine, (size_t)bytes);
     return NSPD_OK;
 }
 
@@ -31,9 +39,19 @@ bool comm_enabled(void) {
     return true;
 }
 
+/* Whether an MPI launcher started this process: Open MPI's mpirun,
+ * MPICH's Hydra and PMIx-based launchers (srun) set these. */
+static bool launched(void) {
+    static const char *const VARS[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", NULL};
+    for (int k = 0; VARS[k]; k++)
+        if (getenv(VARS[k])) return true;
+    return false;
+}
+
 NspdComm comm_init(int *argc, char ***argv) {
     int ready = 0;
     MPI_Initialized(&ready);
+    if (!ready && !launched()) return world_group;
     if (!ready) {
         int provided = 0;
         MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
@@ -42,6 +60,7 @@ NspdComm comm_init(int *argc, char ***argv) {
     NspdComm c = {0, 1, (int)MPI_Comm_c2f(MPI_COMM_WORLD)};
     MPI_Comm_rank(MPI_COMM_WORLD, &c.rank);
     MPI_Comm_size(MPI_COMM_WORLD, &c.size);
+    world_group = c;
     return c;
 }
 
@@ -50,6 +69,7 @@ void comm_finalize(void) {
     MPI_Finalized(&done);
     if (initialised_here && !done) MPI_Finalize();
     initialised_here = false;
+    world_group = comm_self();
 }
 
 double comm_max(const NspdComm *c, double value) {
@@ -76,19 +96,34 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
     return reduce_i64(c, value, MPI_SUM);
 }
 
-int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all) {
-    if (!comm_distributed(c)) return gather_alone(mine, count, all);
+int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all) {
+    if (!comm_distributed(c)) return gather_alone(mine, bytes, all);
     int *counts = NULL, *offsets = NULL;
     int status = nspd_alloc(&counts, (size_t)c->size, sizeof(int));
     if (status == NSPD_OK) status = nspd_alloc(&offsets, (size_t)c->size, sizeof(int));
     if (status == NSPD_OK) {
-        MPI_Allgather(&count, 1, MPI_INT, counts, 1, MPI_INT, mpi_of(c));
-        for (int r = 0, at = 0; r < c->size; r++) offsets[r] = at, at += counts[r];
-        MPI_Allgatherv(mine, count, MPI_DOUBLE, all, counts, offsets, MPI_DOUBLE, mpi_of(c));
+        MPI_Allgather(&bytes, 1, MPI_INT, counts, 1, MPI_INT, mpi_of(c));
+        int64_t at = 0;
+        for (int r = 0; r < c->size; r++) offsets[r] = (int)at, at += counts[r];
+        if (at > INT32_MAX)
+            status = NSPD_FAIL(NSPD_ERR_INTERNAL, "a gather of %lld bytes exceeds MPI's int counts",
+                               (long long)at);
     }
+    if (status == NSPD_OK)
+        MPI_Allgatherv(mine, bytes, MPI_BYTE, all, counts, offsets, MPI_BYTE, mpi_of(c));
     nspd_free(&counts);
     nspd_free(&offsets);
     return status;
+}
+
+int comm_bcast(const NspdComm *c, void *data, int bytes, int root) {
+    if (!comm_distributed(c)) return NSPD_OK;
+    MPI_Bcast(data, bytes, MPI_BYTE, root, mpi_of(c));
+    return NSPD_OK;
+}
+
+static void max_i64_n(const NspdComm *c, int64_t *values, int n) {
+    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_INT64_T, MPI_MAX, mpi_of(c));
 }
 
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from) {
@@ -127,9 +162,18 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
     return (void)c, value;
 }
 
-int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all) {
+int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all) {
     (void)c;
-    return gather_alone(mine, count, all);
+    return gather_alone(mine, bytes, all);
+}
+
+int comm_bcast(const NspdComm *c, void *data, int bytes, int root) {
+    (void)c, (void)data, (void)bytes, (void)root;
+    return NSPD_OK;
+}
+
+static void max_i64_n(const NspdComm *c, int64_t *values, int n) {
+    (void)c, (void)values, (void)n;
 }
 
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from) {
@@ -145,4 +189,35 @@ NspdComm comm_self(void) {
 
 bool comm_distributed(const NspdComm *c) {
     return c && c->size > 1;
+}
+
+int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all) {
+    if ((int64_t)count * (int64_t)sizeof(double) > INT32_MAX)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "a gather of %d doubles exceeds MPI's int counts",
+                         count);
+    return comm_allgatherv_bytes(c, mine, count * (int)sizeof(double), all);
+}
+
+int comm_agree(const NspdComm *c, int status, int64_t *flags, int n) {
+    if (!comm_distributed(c)) return status;
+    enum { MAX_FLAGS = 7 };
+    int64_t v[MAX_FLAGS + 1] = {0};
+    if (n > MAX_FLAGS) return NSPD_FAIL(NSPD_ERR_INTERNAL, "comm_agree takes %d flags", MAX_FLAGS);
+    /* the largest of size - rank over the failed ranks is the lowest of them */
+    v[0] = status != NSPD_OK ? c->size - c->rank : 0;
+    for (int k = 0; k < n; k++) v[k + 1] = flags[k];
+    max_i64_n(c, v, n + 1);
+    for (int k = 0; k < n; k++) flags[k] = v[k + 1];
+    if (v[0] == 0) return NSPD_OK;
+    const int failed = c->size - (int)v[0];
+    struct {
+        int status;
+        char message[1800];
+    } said = {status, ""};
+    if (c->rank == failed) snprintf(said.message, sizeof said.message, "%s", nspd_error_message());
+    comm_bcast(c, &said, (int)sizeof said, failed);
+    if (c->rank == failed) return status;
+    if (failed > 0)
+        return nspd_error(said.status, __FILE__, __LINE__, "on rank %d: %s", failed, said.message);
+    return nspd_error(said.status, __FILE__, __LINE__, "%s", said.message);
 }

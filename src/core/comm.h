@@ -21,10 +21,14 @@ typedef struct {
     int handle; /* MPI_Comm_c2f of the group's communicator (a portable integer) */
 } NspdComm;
 
-/* MPI_Init where nspd is built with MPI and not yet initialised (the
- * thread level funneled: OpenMP threads inside a rank never call MPI);
- * a no-op otherwise. Returns the world group. */
+/* MPI_Init where nspd is built with MPI, started by an MPI launcher
+ * (mpirun, mpiexec, srun: their environment says so) and not yet
+ * initialised (the thread level funneled: OpenMP threads inside a rank
+ * never call MPI); otherwise nothing, so a plain `nspd run` starts no MPI
+ * runtime. Returns the world group (comm_self() without MPI). */
 NspdComm comm_init(int *argc, char ***argv);
+/* The group comm_init returned; comm_self() before it or without MPI. */
+NspdComm comm_world(void);
 /* MPI_Finalize where comm_init initialised MPI. */
 void comm_finalize(void);
 /* Whether this build has MPI. */
@@ -44,6 +48,21 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value);
 /* Every rank's `count` doubles, concatenated in rank order into all[] on
  * every rank (counts may differ between ranks; all holds their sum). */
 int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all);
+
+/* The same for bytes (each rank's count in bytes). */
+int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all);
+
+/* Rank `root`'s `bytes` at data, copied into data on every rank. */
+int comm_bcast(const NspdComm *c, void *data, int bytes, int root);
+
+/* What one process decides, all do: every rank passes its own status (and
+ * flags[n], reduced to their maximum in place); every rank gets back the
+ * status of the lowest rank that failed, with that rank's message recorded
+ * on every rank ("on rank R: ..." where R > 0), or NSPD_OK. One
+ * reduction (a broadcast more on a failure); a failure on one rank then
+ * stops all of them at the same point, and none waits for a partner that
+ * left. */
+int comm_agree(const NspdComm *c, int status, int64_t *flags, int n);
 
 /* Sends `bytes` to rank `to` and receives `bytes` from rank `from` (-1:
  * nothing that way), as one exchange that cannot deadlock. */

@@ -75,6 +75,12 @@ int flow_create(Flow **out, FlowConfig *cfg) {
     *out = NULL;
     if (!method_ops(cfg->method))
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown flow solver %d", (int)cfg->method);
+    const FlowOps *ops = method_ops(cfg->method);
+    if (comm_distributed(cfg->comm) && !ops->distributed)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the '%s' flow runs on one process, not on %d; expected a run without "
+                         "mpirun (or mpirun -n 1)",
+                         ops->name, cfg->comm->size);
     Flow *f;
     TRY(nspd_alloc(&f, 1, sizeof *f));
     f->method = cfg->method;

@@ -15,6 +15,7 @@
 #define NSPD_FLOW_FLOW_H
 
 #include "core/checkpoint.h"
+#include "core/comm.h"
 #include "core/fields.h"
 #include "core/report.h"
 
@@ -48,6 +49,13 @@ typedef struct {
      * on a valid one and costs time (a factorisation); the flow is then
      * described, never stepped */
     bool validate_only;
+    /* the processes that share the flow (NULL or a group of one: this
+     * process alone); borrowed during create. Only a solver whose ops say
+     * `distributed` takes a group of several (flow_create refuses it for
+     * the others). Every rank then calls every flow_* function in the same
+     * order: the solver's ops may communicate (they are collective), and
+     * the grid, cells and fields they show are the whole flow's. */
+    const NspdComm *comm;
     /* owned (nspd_alloc) when the method's ops have config_free: the solver's
      * create takes it (and sets this NULL), else flow_config_free frees it; otherwise
      * borrowed (a registered solver's configuration, never freed) */
@@ -126,6 +134,8 @@ typedef struct {
 
 typedef struct FlowOps {
     const char *name;
+    /* the solver runs on several processes (FlowConfig.comm) */
+    bool distributed;
     /* frees what a configuration of this solver owns, not the struct
      * itself (one that no create took); NULL: configurations are borrowed,
      * and create leaves them */

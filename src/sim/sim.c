@@ -108,6 +108,20 @@ static int check_unbuilt(Sim *sim) {
     return plan_steps(sim);
 }
 
+/* What runs on several processes so far: a flow alone (the solid and
+ * the couplings are issue 28's next steps). */
+static int check_distributed(const SimConfig *c) {
+    if (!comm_distributed(&c->comm)) return NSPD_OK;
+    const char *part = c->solid.kind != SOLID_NONE         ? "a solid"
+                       : c->coupling.kind != COUPLING_NONE ? "a body or coupling"
+                                                           : NULL;
+    if (!part) return NSPD_OK;
+    return NSPD_FAIL(NSPD_ERR_INPUT,
+                     "case '%s' has %s, which runs on one process only so far, not on %d; "
+                     "expected a run without mpirun (or mpirun -n 1), or a case with a flow alone",
+                     c->name, part, c->comm.size);
+}
+
 bool sim_check_builds(const Sim *sim) {
     return sim->solid_estimate.check_s + sim->flow_estimate.check_s <= SIM_CHECK_BUILD_S;
 }
@@ -128,6 +142,8 @@ int sim_create(Sim *sim, SimConfig *cfg) {
         return status;
     }
     sim->built = true;
+    if (status == NSPD_OK) status = check_distributed(c);
+    c->flow.comm = &c->comm;
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
         /* a refusal found while the model is built, said at its section */
         status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);
@@ -217,18 +233,22 @@ static bool due(double time, double next, double dt) {
     return time >= next - 1e-6 * dt;
 }
 
-/* A checkpoint is due by the simulated-time schedule or the wall clock. */
+/* Whether this process's wall clock asks for a checkpoint. */
+static bool wall_checkpoint_due(const Sim *sim) {
+    const double every = sim->cfg.output.checkpoint_wall_interval;
+    return every > 0 && nspd_wall_time() - sim->checkpoint_wall >= every;
+}
+
+/* A checkpoint is due by the simulated-time schedule or the wall clock
+ * (sim->wall_checkpoint: agreed by the processes of the run). */
 static bool checkpoint_due(Sim *sim) {
     const OutputConfig *out = &sim->cfg.output;
-    bool due_now = false;
+    bool due_now = sim->wall_checkpoint;
     if (out->checkpoint_interval > 0 && due(sim->time, sim->next_checkpoint, sim->dt)) {
         due_now = true;
         while (due(sim->time, sim->next_checkpoint, sim->dt))
             sim->next_checkpoint += out->checkpoint_interval;
     }
-    if (out->checkpoint_wall_interval > 0 &&
-        nspd_wall_time() - sim->checkpoint_wall >= out->checkpoint_wall_interval)
-        due_now = true;
     return due_now;
 }
 
@@ -282,17 +302,22 @@ static int step_outputs(Sim *sim, bool last) {
 }
 
 int sim_run(Sim *sim, const SimRunOptions *opt) {
+    /* on several processes every rank runs this loop; what one decides
+     * (a failure, a signal, a wall-clock checkpoint) all do, agreed once a
+     * step after the step and once after its outputs (comm_agree; nothing
+     * on one process), so none waits on a partner that stopped */
+    const NspdComm *comm = &sim->cfg.comm;
     sim->dir = opt->dir;
     /* a resumed run's wall time continues the time already spent */
     sim->wall_start = nspd_wall_time() - sim->wall_s;
     sim->checkpoint_wall = nspd_wall_time();
     int status = NSPD_OK;
     if (sim->resumed) {
-        TRY(resume_outputs(sim));
+        TRY(comm_agree(comm, resume_outputs(sim), NULL, 0));
     } else {
-        TRY(sim_output_open(sim));
+        TRY(comm_agree(comm, sim_output_open(sim), NULL, 0));
         /* a failure from here on still ends with summary.json saying why */
-        status = initial_outputs(sim);
+        status = comm_agree(comm, initial_outputs(sim), NULL, 0);
     }
 
     Progress progress;
@@ -309,10 +334,13 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
                           "%s (in step %lld, from t = %g s; the outputs written before are kept)",
                           what, (long long)sim->step + 1, sim->time);
         }
+        const bool last = status == NSPD_OK && finished(sim);
+        int64_t asks[2] = {interrupt_requested() && !last, wall_checkpoint_due(sim)};
+        status = comm_agree(comm, status, asks, 2);
         if (status != NSPD_OK) break;
-        const bool last = finished(sim);
-        sim->interrupted = interrupt_requested() && !last;
-        status = step_outputs(sim, last);
+        sim->interrupted = asks[0] != 0;
+        sim->wall_checkpoint = asks[1] != 0;
+        status = comm_agree(comm, step_outputs(sim, last), NULL, 0);
         if (status != NSPD_OK) break;
         progress_update(&progress, sim->step, sim->time);
         if (sim->interrupted) {
@@ -332,6 +360,7 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
     int summary = sim_output_summary(sim, status, reason);
     sim_output_close(sim);
     if (summary == NSPD_OK) summary = sim_output_plots(sim);
+    summary = comm_agree(comm, summary, NULL, 0);
     if (status != NSPD_OK) {
         /* writing the summary may have recorded another message: the run's is the one to show */
         if (strcmp(nspd_error_message(), reason) != 0)

@@ -21,8 +21,10 @@
 #include "solid/solid.h"
 
 typedef struct {
-    const char *dir; /* existing output directory; NULL writes nothing */
-    bool progress;   /* progress line on stderr */
+    /* existing output directory; NULL writes nothing (on several
+     * processes: the ranks other than the writer, rank 0) */
+    const char *dir;
+    bool progress; /* progress line on stderr */
 } SimRunOptions;
 
 enum { SIM_CHECKPOINTS_KEPT = 2 };
@@ -64,6 +66,7 @@ typedef struct {
     uint64_t case_hash;     /* of the resolved case, recorded in each checkpoint */
     bool resumed;           /* the state was read from a checkpoint: continue its files */
     double next_checkpoint; /* simulated time of the next scheduled one */
+    bool wall_checkpoint;   /* this step: the wall clock asks for one (sim_run) */
     double checkpoint_wall; /* wall time of the last one (or of the start) */
     int64_t history_bytes;  /* history.csv's length at the checkpoint read */
     int checkpoints_written;

@@ -28,7 +28,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* How the state is laid out in a checkpoint: one process holds it all. */
+/* How the state is laid out in a checkpoint: as one process holds it all
+ * (written so by a run on several processes too; sim_checkpoint_write). */
 static const char *const LAYOUT = "serial";
 enum { MAX_CHECKPOINT_FILES = 256, MAX_PVD_NAME = 4096 };
 
@@ -143,10 +144,13 @@ static void checkpoint_path(const char *dir, long long step, char *out, size_t s
 }
 
 int sim_checkpoint_write(Sim *sim) {
-    if (!sim->dir) return NSPD_OK;
+    /* on several processes all take part (the flow gathers its state into
+     * the one layout) and the one with the directory writes */
+    const bool writes = sim->dir != NULL;
+    if (!writes && !comm_distributed(&sim->cfg.comm)) return NSPD_OK;
     const double t0 = nspd_wall_time();
     sim->wall_s = t0 - sim->wall_start;
-    TRY(history_bytes(&sim->history, &sim->history_bytes));
+    if (writes) TRY(history_bytes(&sim->history, &sim->history_bytes));
     CheckpointHeader h;
     memset(&h, 0, sizeof h);
     h.case_hash = sim->case_hash;
@@ -155,10 +159,10 @@ int sim_checkpoint_write(Sim *sim) {
     snprintf(h.layout, sizeof h.layout, "%s", LAYOUT);
     h.step = sim->step;
     h.time = sim->time;
-    char path[4200];
-    checkpoint_path(sim->dir, (long long)sim->step, path, sizeof path);
+    char path[4200] = "";
+    if (writes) checkpoint_path(sim->dir, (long long)sim->step, path, sizeof path);
     Checkpoint *ck;
-    TRY(checkpoint_create(&ck, path, &h));
+    TRY(checkpoint_create(&ck, writes ? path : NULL, &h));
     const int status = state_io(sim, ck);
     if (status != NSPD_OK) {
         checkpoint_abort(&ck);
@@ -166,6 +170,8 @@ int sim_checkpoint_write(Sim *sim) {
     }
     const double mb = (double)checkpoint_bytes(ck) / 1e6;
     TRY(checkpoint_close(&ck));
+    sim->checkpoint_wall = nspd_wall_time();
+    if (!writes) return NSPD_OK;
     /* the older ones go once the new one is whole */
     long long steps[MAX_CHECKPOINT_FILES];
     int count;
@@ -175,7 +181,6 @@ int sim_checkpoint_write(Sim *sim) {
         checkpoint_path(sim->dir, steps[k], old, sizeof old);
         remove(old);
     }
-    sim->checkpoint_wall = nspd_wall_time();
     sim->checkpoints_written++;
     nspd_log(LOG_INFO, "checkpoint at step %lld (t = %g s): %s, %.1f MB in %.2f s",
              (long long)sim->step, sim->time, path, mb, sim->checkpoint_wall - t0);

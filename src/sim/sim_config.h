@@ -82,6 +82,10 @@ typedef struct {
     OutputConfig output;
     double max_memory_bytes; /* the estimate's limit (--max-memory); 0: this machine's memory */
     bool check_only;         /* `nspd check`: models validate, skip costly setup; never stepped */
+    /* the processes the run shares (size 0 or 1: this one alone): every
+     * rank builds and steps the same case; the flow is divided between
+     * them, rank 0 writes the outputs (sim.h) */
+    NspdComm comm;
 } SimConfig;
 
 void sim_config_free(SimConfig *cfg);

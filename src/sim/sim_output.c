@@ -1,6 +1,10 @@
 /* The generic writer: it asks each part of the case (solid, flow, coupling,
  * probes) for its history columns, summary keys and fields, and hands them
- * to io/run_files.h. It knows no model. */
+ * to io/run_files.h. It knows no model.
+ *
+ * On several processes every rank asks (a model's answers are collective:
+ * it gathers its fields and reduces its sums), and the rank that has the
+ * directory (rank 0) writes. */
 #include "sim/sim_output.h"
 
 #include "core/mem.h"
@@ -39,8 +43,15 @@ int sim_output_history(Sim *sim) {
     return history_write(&sim->history, row);
 }
 
+/* Whether this process takes part in the outputs: it writes them, or the
+ * run is shared and the writer needs its part. */
+static bool takes_part(const Sim *sim) {
+    return sim->dir || comm_distributed(&sim->cfg.comm);
+}
+
 int sim_output_fields(Sim *sim) {
-    if (!sim->dir) return NSPD_OK;
+    if (!takes_part(sim)) return NSPD_OK;
+    const bool writes = sim->dir != NULL;
     const OutputConfig *out = &sim->cfg.output;
     const FieldOutputOptions opt = {out->vtk, out->png, out->png_max_pixels, sim->cfg.name};
     FieldSet solid_set, flow_set, coupling_set;
@@ -49,32 +60,35 @@ int sim_output_fields(Sim *sim) {
     const double *damage = damage_if(sim, true);
     if (sim->solid) {
         solid_fields(sim->solid, damage, &solid_set);
-        TRY(field_set_write(sim->dir, sim->field_index, sim->time, &solid_set, NULL, &opt,
-                            &sim->pvd[0]));
+        if (writes)
+            TRY(field_set_write(sim->dir, sim->field_index, sim->time, &solid_set, NULL, &opt,
+                                &sim->pvd[0]));
         overlay = &solid_set;
     }
     if (sim->flow) {
         flow_fields(sim->flow, &flow_set);
         /* the solid drawn over the flow where the two are coupled */
-        TRY(field_set_write(sim->dir, sim->field_index, sim->time, &flow_set,
-                            sim->coupling ? overlay : NULL, &opt, &sim->pvd[1]));
+        if (writes)
+            TRY(field_set_write(sim->dir, sim->field_index, sim->time, &flow_set,
+                                sim->coupling ? overlay : NULL, &opt, &sim->pvd[1]));
     }
     if (sim->coupling) {
         TRY(coupling_fields(sim->coupling, sim->solid, sim->flow, &coupling_set));
-        TRY(field_set_write(sim->dir, sim->field_index, sim->time, &coupling_set, NULL, &opt,
-                            NULL));
+        if (writes)
+            TRY(field_set_write(sim->dir, sim->field_index, sim->time, &coupling_set, NULL, &opt,
+                                NULL));
     }
     for (int k = 0; k < sim->cfg.output.probe_count; k++) {
         const TableRef *t = probe_line_table(
             &sim->probes[k], sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow);
-        if (t) TRY(table_write(sim->dir, sim->field_index, sim->time, t));
+        if (t && writes) TRY(table_write(sim->dir, sim->field_index, sim->time, t));
     }
     sim->field_index++;
     return NSPD_OK;
 }
 
 int sim_output_summary(Sim *sim, int run_status, const char *reason) {
-    if (!sim->dir) return NSPD_OK;
+    if (!takes_part(sim)) return NSPD_OK;
     static const char *const PART_KEYS[SIM_PART_COUNT] = {"flow_s", "solid_s", "coupling_s"};
     const bool part_present[SIM_PART_COUNT] = {sim->flow != NULL, sim->solid != NULL,
                                                sim->coupling != NULL};
@@ -105,7 +119,7 @@ int sim_output_summary(Sim *sim, int run_status, const char *reason) {
         status = probes_summary(sim->probes, sim->cfg.output.probe_count,
                                 sim->solid ? solid_points_const(sim->solid) : NULL,
                                 damage_if(sim, true), r);
-    if (status == NSPD_OK) status = summary_write(sim->dir, r);
+    if (status == NSPD_OK && sim->dir) status = summary_write(sim->dir, r);
     return status;
 }
 

@@ -53,6 +53,52 @@ int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab
     return comm_allgatherv(&s->comm, slab, s->grid.nx * s->grid.ny, out);
 }
 
+int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
+    const Grid *g = &s->grid;
+    double *mine = comm_distributed(&s->comm) ? slab : out;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = s->kind[grid_index(g, i, j)];
+    if (mine == out) return NSPD_OK;
+    return comm_allgatherv(&s->comm, slab, g->nx * g->ny, out);
+}
+
+int gks_solver_row_owner(const GksSolver *s, int row) {
+    const int p = s->comm.size, ny = s->rows;
+    int r = 0;
+    while (r + 1 < p && (int)((int64_t)ny * (r + 1) / p) <= row) r++;
+    return r;
+}
+
+/* Each fluid cell's pressure times its area (NaN marks the others), then
+ * the sums in cell order over the whole grid: the same additions in the
+ * same order on any number of processes. */
+int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, double *mean) {
+    const Grid *g = &s->grid;
+    const double gm1 = s->gas.gamma - 1.0;
+    double *mine = comm_distributed(&s->comm) ? slab : all;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            const int64_t k = grid_index(g, i, j);
+            const double a = g->ax[0].width[i] * g->ax[1].width[j];
+            const double ke =
+                0.5 * (s->w[1][k] * s->w[1][k] + s->w[2][k] * s->w[2][k]) / s->w[0][k];
+            mine[(int64_t)j * g->nx + i] =
+                s->kind[k] == FLOW_CELL_FLUID ? gm1 * (s->w[3][k] - ke) * a : (double)NAN;
+        }
+    if (mine != all) TRY(comm_allgatherv(&s->comm, slab, g->nx * g->ny, all));
+    const Grid *w = gks_solver_whole_grid(s);
+    double sum = 0.0, area = 0.0;
+    for (int j = 0; j < w->ny; j++)
+        for (int i = 0; i < w->nx; i++) {
+            const double term = all[(int64_t)j * w->nx + i];
+            if (isnan(term)) continue;
+            sum += term;
+            area += w->ax[0].width[i] * w->ax[1].width[j];
+        }
+    *mean = area > 0 ? sum / area : (double)NAN;
+    return NSPD_OK;
+}
+
 /* Deterministic at any thread count: each row is summed in index order by one
  * thread, then the row sums in row order. */
 void gks_solver_totals(const GksSolver *s, double totals[4]) {

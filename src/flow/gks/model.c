@@ -20,7 +20,10 @@ void gks_case_config_free(GksCaseConfig *c) {
 
 enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
 
-/* The model: the solver, its case and the output scratch (allocated once). */
+/* The model: the solver, its case and the output scratch (allocated once).
+ * On several processes the model shows the whole grid: its cells are
+ * numbered as the whole grid's padded arrays, and the output scratch holds
+ * the whole grid's fields (gathered); `slab` is this process's part. */
 typedef struct {
     GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
     GksSolver *solver;
@@ -30,6 +33,7 @@ typedef struct {
     double *kind;   /* cell kinds as a field */
     uint8_t *blank; /* 1: not a fluid cell */
     uint8_t *valid; /* 1: a fluid cell (sampling) */
+    double *slab;   /* this process's interior cells (several processes) */
 } GksFlow;
 
 /* The vortex on a periodic box takes its nearest image: its periods are the
@@ -92,6 +96,7 @@ static void gks_destroy(void *impl) {
     nspd_free(&g->kind);
     nspd_free(&g->blank);
     nspd_free(&g->valid);
+    nspd_free(&g->slab);
     nspd_free(&g);
 }
 
@@ -112,10 +117,12 @@ static int gks_create(void **impl, FlowConfig *mc) {
         c->init_fn = flow_field_sample;
         c->init_ctx = &fc->field;
     }
+    c->comm = mc->comm; /* borrowed during create */
     int status = gks_solver_create(&g->solver, c);
     if (status == NSPD_OK) {
-        const Grid *grid = gks_solver_grid(g->solver);
+        const Grid *grid = gks_solver_whole_grid(g->solver), *slab = gks_solver_grid(g->solver);
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
+        status = nspd_alloc(&g->slab, (size_t)slab->nx * (size_t)slab->ny, sizeof(double));
         for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK; k++)
             status = nspd_alloc(&g->cells[k], n, sizeof(double));
         if (status == NSPD_OK) status = nspd_alloc(&g->kind, n, sizeof(double));
@@ -155,9 +162,9 @@ static FlowMesh gks_mesh(const void *impl) {
 }
 
 /* The probes' view of the grid (FlowOps.cell_at, grid_line, cell_centre):
- * cells are numbered as the solver's padded arrays (grid_index). */
+ * cells are numbered as the whole grid's padded arrays (grid_index). */
 static int gks_cell_at(const void *impl, const char *name, double x, double y, int64_t *cell) {
-    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    const Grid *g = gks_solver_whole_grid(((const GksFlow *)impl)->solver);
     const double at[2] = {x, y};
     for (int d = 0; d < 2; d++)
         if (at[d] < g->ax[d].lo || at[d] > g->ax[d].hi)
@@ -177,7 +184,7 @@ static void cell_ij(const Grid *g, int64_t cell, int *i, int *j) {
 
 static int gks_grid_line(const void *impl, int64_t through, int along, int64_t **cells,
                          int64_t *count) {
-    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    const Grid *g = gks_solver_whole_grid(((const GksFlow *)impl)->solver);
     int i, j;
     cell_ij(g, through, &i, &j);
     const int n = g->ax[along].n;
@@ -189,26 +196,37 @@ static int gks_grid_line(const void *impl, int64_t through, int along, int64_t *
 }
 
 static void gks_cell_centre(const void *impl, int64_t cell, double xy[2]) {
-    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    const Grid *g = gks_solver_whole_grid(((const GksFlow *)impl)->solver);
     int i, j;
     cell_ij(g, cell, &i, &j);
     xy[0] = g->ax[0].center[i];
     xy[1] = g->ax[1].center[j];
 }
 
+/* A cell of the whole grid: read on the process that holds its row, then
+ * sent to the others (every rank calls). */
 static void gks_cell_state(const void *impl, int64_t cell, double out[5]) {
     /* the fields are read only here; the accessor is not const-qualified */
     GksSolver *solver = ((const GksFlow *)impl)->solver;
-    GksFields f = gks_solver_fields(solver);
-    const GksParams *gas = gks_solver_gas(solver);
-    double w[4] = {f.w[0][cell], f.w[1][cell], f.w[2][cell], f.w[3][cell]};
-    FlowPrim q;
-    flow_cons_to_prim(w, gas->gamma, &q);
-    out[0] = q.rho;
-    out[1] = q.u;
-    out[2] = q.v;
-    out[3] = q.p;
-    out[4] = q.p / (q.rho * gas->R);
+    const Grid *whole = gks_solver_whole_grid(solver);
+    int i, j;
+    cell_ij(whole, cell, &i, &j);
+    const int owner = gks_solver_row_owner(solver, j);
+    const NspdComm *comm = gks_solver_comm(solver);
+    if (comm->rank == owner) {
+        const int64_t k = grid_index(gks_solver_grid(solver), i, j - gks_solver_first_row(solver));
+        GksFields f = gks_solver_fields(solver);
+        const GksParams *gas = gks_solver_gas(solver);
+        double w[4] = {f.w[0][k], f.w[1][k], f.w[2][k], f.w[3][k]};
+        FlowPrim q;
+        flow_cons_to_prim(w, gas->gamma, &q);
+        out[0] = q.rho;
+        out[1] = q.u;
+        out[2] = q.v;
+        out[3] = q.p;
+        out[4] = q.p / (q.rho * gas->R);
+    }
+    (void)comm_bcast(comm, out, 5 * (int)sizeof(double), owner);
 }
 
 static FlowReference gks_reference(const void *impl) {
@@ -225,20 +243,19 @@ static FlowReference gks_reference(const void *impl) {
                            .gas_constant = gas->R};
 }
 
-/* The primitive fields of the interior cells and their kinds, into the
- * output scratch (cells[0..5], blank, kind). */
+/* The primitive fields of the whole grid's interior cells and their
+ * kinds, into the output scratch (cells[0..5], blank, kind); every rank
+ * calls, every rank gets the whole grid's. */
 static void primitives(GksFlow *gf) {
-    const Grid *g = gks_solver_grid(gf->solver);
+    const Grid *g = gks_solver_whole_grid(gf->solver);
     static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
                                        FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
-    for (int k = 0; k < 6; k++) gks_solver_primitive(gf->solver, order[k], gf->cells[k]);
-    GksFields f = gks_solver_fields(gf->solver);
-    for (int j = 0; j < g->ny; j++)
-        for (int i = 0; i < g->nx; i++) {
-            uint8_t k = f.kind[grid_index(g, i, j)];
-            gf->blank[(int64_t)j * g->nx + i] = k != FLOW_CELL_FLUID;
-            gf->kind[(int64_t)j * g->nx + i] = k;
-        }
+    /* a failed gather is MPI's (its default handler stops the job) */
+    for (int k = 0; k < 6; k++)
+        (void)gks_solver_primitive_whole(gf->solver, order[k], gf->slab, gf->cells[k]);
+    (void)gks_solver_kinds_whole(gf->solver, gf->slab, gf->kind);
+    for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++)
+        gf->blank[c] = gf->kind[c] != FLOW_CELL_FLUID;
 }
 
 /* Bilinear between the cell centres around each point, body cells left out:
@@ -246,7 +263,7 @@ static void primitives(GksFlow *gf) {
  * (field_sample.h), over the current state. */
 static int gks_sample(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out) {
     GksFlow *gf = impl;
-    const Grid *g = gks_solver_grid(gf->solver);
+    const Grid *g = gks_solver_whole_grid(gf->solver);
     primitives(gf);
     for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++) gf->valid[c] = !gf->blank[c];
     /* a view of the scratch: the source's arrays are read only here */
@@ -353,7 +370,7 @@ static void gks_history(const void *impl, Report *row) {
 
 static void gks_summary(const void *impl, const RunStats *run, Report *out) {
     const GksFlow *g = impl;
-    const Grid *grid = gks_solver_grid(g->solver);
+    const Grid *grid = gks_solver_whole_grid(g->solver);
     double totals[4];
     gks_solver_totals(g->solver, totals);
     int64_t cells = (int64_t)grid->nx * grid->ny;
@@ -369,24 +386,14 @@ static void gks_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "energy_J_per_m", totals[3]);
     /* the area-weighted mean pressure of the fluid cells (a closed box's
      * late pressure is its energy balance's) */
-    GksFields f = gks_solver_fields(g->solver);
-    const double gm1 = gks_solver_gas(g->solver)->gamma - 1.0;
-    double sum = 0.0, area = 0.0;
-    for (int j = 0; j < grid->ny; j++)
-        for (int i = 0; i < grid->nx; i++) {
-            const int64_t k = grid_index(grid, i, j);
-            if (f.kind[k] != FLOW_CELL_FLUID) continue;
-            const double a = grid->ax[0].width[i] * grid->ax[1].width[j];
-            const double ke = 0.5 * (f.w[1][k] * f.w[1][k] + f.w[2][k] * f.w[2][k]) / f.w[0][k];
-            sum += gm1 * (f.w[3][k] - ke) * a;
-            area += a;
-        }
-    report_real(out, "mean_pressure_pa", area > 0 ? sum / area : (double)NAN);
+    double mean = NAN;
+    (void)gks_solver_mean_pressure(g->solver, g->slab, g->cells[6], &mean);
+    report_real(out, "mean_pressure_pa", mean);
 }
 
 static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
     const GksFlow *gf = impl;
-    const Grid *g = gks_solver_grid(gf->solver);
+    const Grid *g = gks_solver_whole_grid(gf->solver);
     const GksConfig *c = gks_solver_config(gf->solver);
     int len = 0;
 #define APPEND(...)                                                                                \
@@ -422,7 +429,7 @@ static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {
 }
 
 static void gks_brief(const void *impl, char *buf, size_t size) {
-    const Grid *g = gks_solver_grid(((const GksFlow *)impl)->solver);
+    const Grid *g = gks_solver_whole_grid(((const GksFlow *)impl)->solver);
     snprintf(buf, size, "%d x %d cells, ", g->nx, g->ny);
 }
 
@@ -471,7 +478,7 @@ static double mach_scale(const GksFlow *gf, int64_t ncell) {
 
 static void gks_fields(void *impl, FieldSet *out) {
     GksFlow *gf = impl;
-    const Grid *g = gks_solver_grid(gf->solver);
+    const Grid *g = gks_solver_whole_grid(gf->solver);
     const int64_t ncell = (int64_t)g->nx * g->ny;
     primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
     if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
@@ -511,6 +518,7 @@ static void gks_fields(void *impl, FieldSet *out) {
 
 const FlowOps GKS_FLOW_OPS = {
     .name = "gks",
+    .distributed = true,
     .config_free = gks_config_free,
     .estimate = gks_estimate,
     .validate = gks_validate,

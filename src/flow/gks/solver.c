@@ -63,6 +63,12 @@ const Grid *gks_solver_grid(const GksSolver *s) {
 const GksParams *gks_solver_gas(const GksSolver *s) {
     return &s->gas;
 }
+const Grid *gks_solver_whole_grid(const GksSolver *s) {
+    return comm_distributed(&s->comm) ? &s->whole : &s->grid;
+}
+const NspdComm *gks_solver_comm(const GksSolver *s) {
+    return &s->comm;
+}
 int gks_solver_first_row(const GksSolver *s) {
     return s->row0;
 }
@@ -151,18 +157,44 @@ int64_t gks_solver_fallbacks_total(const GksSolver *s) {
 /* The state a step changes: the conservative fields (ghost layers too),
  * the cell kinds (an immersed boundary changes them), the sources a
  * coupling holds over the steps, the clock and the counters. */
+/* One per-cell array of `elem`-byte values as the whole grid's padded
+ * array: one process's as it is; on several, each slab's own padded rows
+ * (its interior, and the ghost rows at the whole grid's ends) gathered in
+ * row order, and on reading each slab's rows with their ghost rows cut
+ * from the whole. So a checkpoint is the same for any number of
+ * processes and is read back by any other. */
+static int io_cells(GksSolver *s, Checkpoint *ck, const char *name, void *cells, size_t elem) {
+    const Grid *g = &s->grid;
+    if (!comm_distributed(&s->comm)) return checkpoint_io(ck, name, cells, (size_t)g->size * elem);
+    const size_t row = (size_t)g->stride * elem;
+    const size_t whole_rows = (size_t)s->rows + 2 * GRID_NG;
+    unsigned char *whole = NULL;
+    TRY(nspd_alloc(&whole, whole_rows * row, 1));
+    int status = NSPD_OK;
+    if (!checkpoint_reading(ck)) {
+        const int lo = s->row0 > 0 ? GRID_NG : 0;
+        const int hi = g->ny + (s->row0 + g->ny < s->rows ? GRID_NG : 2 * GRID_NG);
+        status = comm_allgatherv_bytes(&s->comm, (unsigned char *)cells + (size_t)lo * row,
+                                       (int)((size_t)(hi - lo) * row), whole);
+    }
+    if (status == NSPD_OK) status = checkpoint_io(ck, name, whole, whole_rows * row);
+    if (status == NSPD_OK && checkpoint_reading(ck))
+        memcpy(cells, whole + (size_t)s->row0 * row, (size_t)g->size * elem);
+    nspd_free(&whole);
+    return status;
+}
+
 int gks_solver_checkpoint(GksSolver *s, Checkpoint *ck) {
-    const size_t n = (size_t)s->grid.size;
     static const char *const W[4] = {"gks.rho", "gks.rho_u", "gks.rho_v", "gks.rho_e"};
-    for (int v = 0; v < 4; v++) TRY(checkpoint_io(ck, W[v], s->w[v], n * sizeof(double)));
-    TRY(checkpoint_io(ck, "gks.kind", s->kind, n));
+    for (int v = 0; v < 4; v++) TRY(io_cells(s, ck, W[v], s->w[v], sizeof(double)));
+    TRY(io_cells(s, ck, "gks.kind", s->kind, 1));
     int has = s->has_sources;
     TRY(checkpoint_io_int(ck, "gks.has_sources", &has));
     if (has) {
         double *src[3];
         if (checkpoint_reading(ck)) TRY(gks_solver_source_cells(s, src));
         static const char *const S[3] = {"gks.source_x", "gks.source_y", "gks.source_e"};
-        for (int k = 0; k < 3; k++) TRY(checkpoint_io(ck, S[k], s->source[k], n * sizeof(double)));
+        for (int k = 0; k < 3; k++) TRY(io_cells(s, ck, S[k], s->source[k], sizeof(double)));
     }
     s->has_sources = has != 0;
     TRY(checkpoint_io_double(ck, "gks.time", &s->time));
@@ -324,8 +356,11 @@ static int take_rows(GksSolver *s, Grid *whole, const NspdComm *comm) {
                            ny, p, GRID_NG, ny / GRID_NG);
     else
         status = grid_slice_rows(&s->grid, whole, first, last - first);
-    grid_destroy(whole);
-    TRY(status);
+    if (status != NSPD_OK) {
+        grid_destroy(whole);
+        return status;
+    }
+    s->whole = *whole; /* kept: the probes and writers see the whole grid */
     s->row0 = first;
     const bool wrap = s->grid.ax[1].periodic;
     s->below = r > 0 ? r - 1 : (wrap ? p - 1 : -1);
@@ -401,5 +436,6 @@ void gks_solver_destroy(GksSolver **sp) {
         for (int t = 0; t < s->nthreads; t++) nspd_free(&s->work[t].block);
     nspd_free(&s->work);
     grid_destroy(&s->grid);
+    if (comm_distributed(&s->comm)) grid_destroy(&s->whole);
     nspd_free(sp);
 }

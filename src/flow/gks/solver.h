@@ -137,6 +137,11 @@ GksFields gks_solver_fields(GksSolver *s);
 const Grid *gks_solver_grid(const GksSolver *s);
 const GksParams *gks_solver_gas(const GksSolver *s);
 const GksConfig *gks_solver_config(const GksSolver *s);
+/* The whole grid (its axes and sizes): on one process gks_solver_grid,
+ * on several the grid this process's slab is cut from. */
+const Grid *gks_solver_whole_grid(const GksSolver *s);
+/* The processes the solver runs on (the one-process group alone). */
+const NspdComm *gks_solver_comm(const GksSolver *s);
 /* The first row this process holds, and the whole grid's row count (0 and
  * ny on one process). */
 int gks_solver_first_row(const GksSolver *s);
@@ -240,6 +245,16 @@ void gks_solver_primitive(const GksSolver *s, FlowField field, double *out);
  * of rank 0; `slab` (nx * ny of this rank) is scratch. On one process
  * gks_solver_primitive. */
 int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out);
+
+/* The cell kinds (FLOW_CELL_*) of the whole grid as numbers, gathered
+ * like gks_solver_primitive_whole. */
+int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);
+/* The process that holds row `row` of the whole grid (0 on one). */
+int gks_solver_row_owner(const GksSolver *s, int row);
+/* The area-weighted mean pressure of the whole grid's fluid cells into
+ * *mean (every rank calls; NaN without fluid); slab (this slab's cells)
+ * and all (the whole grid's) are scratch. */
+int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, double *mean);
 
 /* Integrals over the fluid cells: mass (kg/m), x and y momentum, energy (J/m). */
 void gks_solver_totals(const GksSolver *s, double totals[4]);

@@ -48,6 +48,7 @@ typedef struct {
 struct GksSolver {
     GksConfig cfg;
     Grid grid;
+    Grid whole; /* the whole grid (its axes); several processes only, else unused */
     GksParams gas;
     double *w[4], *wn[4];
     uint8_t *kind;

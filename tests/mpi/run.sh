@@ -1,0 +1,138 @@
+# `mpirun -n N nspd run` (issue 28): the flow cases that run on several
+# processes end with every file bit for bit as the run of one process
+# without mpirun (history.csv, every .vtr, .pvd, picture and line table,
+# and summary.json but for the keys that measure the machine), on 2, 3 and
+# 4 ranks: a shock tube (extrapolated ends, periodic y), the isentropic
+# vortex (periodic box), Couette flow (moving isothermal walls) and the
+# Blasius plate (stretched rows, inflow, outflow, a no-slip plate, point
+# probes). Then the state moves between process counts: a checkpoint
+# written on 3 ranks resumes on 2 and on 1, and a field written on 3 ranks
+# starts a run on 1 (and one written by 1 a run on 3), all with the same
+# bits. Then the refusals: a bad case, a solid, and more ranks than rows,
+# each exit status 2 with its message printed once.
+#   usage: run.sh NSPD SOURCE_DIR MPIEXEC
+set -u
+nspd=$1
+src=$2
+mpiexec=$3
+. "$src/tests/cli/common.sh"
+export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+# a hung rank must fail the test, not the suite's time limit
+on() { n=$1; shift; timeout 300 "$mpiexec" -n "$n" "$nspd" run "$@"; }
+
+# Every file of the run in $1 is in $2 with the same bytes (summary.json
+# but for the machine's keys), and $2 has no other files than its log
+# and checkpoints; $4 = paths: the cases name other files (case.yaml
+# left out).
+same_results() {
+    a=$1 b=$2 what=$3 skip=${4:-}
+    bad=""
+    for f in $(ls "$a"); do
+        case "$f" in checkpoint_* | log.txt) continue ;; esac
+        [ "$f" = case.yaml ] && [ "$skip" = paths ] && continue
+        if [ "$f" = summary.json ]; then
+            for d in "$a" "$b"; do
+                grep -v -E '"(wall_s|flow_s|threads|processes|peak_rss_mb|[a-z_]+_per_s)":' \
+                    "$d/summary.json" >"$d.summary"
+            done
+            cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
+        else
+            cmp -s "$a/$f" "$b/$f" || bad="$bad $f"
+        fi
+    done
+    extra=$(ls "$b" | grep -v -e '^checkpoint_' -e '^log.txt$' | while read -r f; do
+        [ -e "$a/$f" ] || echo "$f"
+    done)
+    if [ -z "$bad$extra" ]; then
+        ok
+    else
+        fail "$what: differs from one process in:$bad${extra:+; extra files: $extra}"
+    fi
+}
+
+# name, end time, the process counts; one process without mpirun first
+check_case() {
+    name=$1 end=$2
+    shift 2
+    ref="$work/$name.1"
+    "$nspd" run "$src/cases/$name.yaml" -o "$ref" --quiet --set "time.end=$end" ||
+        { fail "$name: the run of one process failed"; return; }
+    for n in "$@"; do
+        if on "$n" "$src/cases/$name.yaml" -o "$work/$name.$n" --quiet --set "time.end=$end"; then
+            same_results "$ref" "$work/$name.$n" "$name on $n ranks"
+        else
+            fail "$name on $n ranks: exit status $?"
+        fi
+    done
+}
+
+check_case sod 0.2 2
+check_case vortex 1.0 2 3 4
+check_case couette 2.0 2 3 4
+check_case blasius 0.3 2 3 4
+
+# Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
+# on 2 and on 1 with the outputs after it removed; both end as the run of
+# one process.
+vortex="$src/cases/vortex.yaml"
+ck="--set time.end=1.0 --set output.checkpoint_interval=0.2"
+# n processes: by mpiexec, or one without it
+runs() {
+    n=$1
+    shift
+    if [ "$n" -eq 1 ]; then "$nspd" run "$@"; else on "$n" "$@"; fi
+}
+"$nspd" run "$vortex" -o "$work/ck.ref" --quiet $ck || fail "the checkpointed run of one process failed"
+if on 3 "$vortex" -o "$work/ck.3" --quiet $ck; then
+    for n in 2 1; do
+        cp -r "$work/ck.3" "$work/ck.3to$n"
+        # the last field output (t = 1.0) and the summary come after the newest checkpoint
+        last=$(ls "$work/ck.3to$n"/flow_*.vtr | tail -n 1)
+        rm -f "$work/ck.3to$n/summary.json" "$last"
+        if runs "$n" "$vortex" -o "$work/ck.3to$n" --quiet --resume $ck; then
+            [ -e "$last" ] || fail "resume on $n: $last not written again"
+            same_results "$work/ck.ref" "$work/ck.3to$n" "checkpoint of 3 ranks resumed on $n"
+        else
+            fail "checkpoint of 3 ranks resumed on $n: exit status $?"
+        fi
+    done
+else
+    fail "the checkpointed run on 3 ranks failed"
+fi
+
+# Fields: the last field of the Blasius plate on 3 ranks starts a run of
+# one process, and the one process's a run on 3; each ends as the other.
+blasius="$src/cases/blasius.yaml"
+from3=$(ls "$work/blasius.3"/flow_*.vtr | tail -n 1)
+from1=$(ls "$work/blasius.1"/flow_*.vtr | tail -n 1)
+"$nspd" run "$blasius" -o "$work/from3.1" --quiet --set time.end=0.1 --set "flow.initial={from: $from3}" ||
+    fail "a run of one process from the field of 3 ranks failed"
+if on 3 "$blasius" -o "$work/from1.3" --quiet --set time.end=0.1 --set "flow.initial={from: $from1}"; then
+    same_results "$work/from3.1" "$work/from1.3" "a field of 3 ranks on 1 against one of 1 on 3" paths
+else
+    fail "a run on 3 ranks from the field of one process: exit status $?"
+fi
+
+# Refusals: exit status 2, the message once, nothing written.
+refused() {
+    what=$1 pattern=$2 n=$3
+    shift 3
+    on "$n" "$@" >"$work/out" 2>&1
+    status=$?
+    lines=$(grep -c -E "$pattern" "$work/out")
+    if [ "$status" -eq 2 ] && [ "$lines" -eq 1 ]; then
+        ok
+    else
+        fail "$what: exit status $status, the message $lines times (expected 2, once):"
+        cat "$work/out"
+    fi
+}
+sod="$src/cases/sod.yaml"
+refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
+refused "a solid on 2 ranks" "runs on one process only so far, not on 2" 2 \
+    "$src/cases/plate_crack.yaml" -o "$work/bad"
+refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
+[ -e "$work/bad" ] && fail "a refused run wrote $work/bad"
+
+finish
