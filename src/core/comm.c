@@ -122,6 +122,17 @@ int comm_bcast(const NspdComm *c, void *data, int bytes, int root) {
     return NSPD_OK;
 }
 
+int comm_alltoallv_bytes(const NspdComm *c, const void *send, const int *send_bytes,
+                         const int *send_at, void *recv, const int *recv_bytes,
+                         const int *recv_at) {
+    if (!comm_distributed(c))
+        return gather_alone((const char *)send + send_at[0], send_bytes[0],
+                            (char *)recv + recv_at[0]);
+    MPI_Alltoallv(send, send_bytes, send_at, MPI_BYTE, recv, recv_bytes, recv_at, MPI_BYTE,
+                  mpi_of(c));
+    return NSPD_OK;
+}
+
 static void max_i64_n(const NspdComm *c, int64_t *values, int n) {
     MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_INT64_T, MPI_MAX, mpi_of(c));
 }
@@ -170,6 +181,13 @@ int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *
 int comm_bcast(const NspdComm *c, void *data, int bytes, int root) {
     (void)c, (void)data, (void)bytes, (void)root;
     return NSPD_OK;
+}
+
+int comm_alltoallv_bytes(const NspdComm *c, const void *send, const int *send_bytes,
+                         const int *send_at, void *recv, const int *recv_bytes,
+                         const int *recv_at) {
+    (void)c, (void)recv_bytes;
+    return gather_alone((const char *)send + send_at[0], send_bytes[0], (char *)recv + recv_at[0]);
 }
 
 static void max_i64_n(const NspdComm *c, int64_t *values, int n) {

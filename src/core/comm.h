@@ -52,6 +52,12 @@ int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *al
 /* The same for bytes (each rank's count in bytes). */
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all);
 
+/* Each rank sends send_bytes[q] bytes from send + send_at[q] to rank q
+ * and receives recv_bytes[q] bytes from rank q at recv + recv_at[q]
+ * (arrays of `size` entries; the counts must match pairwise). */
+int comm_alltoallv_bytes(const NspdComm *c, const void *send, const int *send_bytes,
+                         const int *send_at, void *recv, const int *recv_bytes, const int *recv_at);
+
 /* Rank `root`'s `bytes` at data, copied into data on every rank. */
 int comm_bcast(const NspdComm *c, void *data, int bytes, int root);
 

@@ -60,6 +60,11 @@ int coupling_create(Coupling **out, CouplingConfig *cfg, Solid *solid, Flow *flo
     const CouplingOps *ops = kind_ops(cfg->kind);
     if (!ops) return NSPD_FAIL(NSPD_ERR_INPUT, "unknown coupling %d", (int)cfg->kind);
     if (!flow) return NSPD_FAIL(NSPD_ERR_INPUT, "the %s coupling needs a flow", ops->name);
+    if (comm_distributed(cfg->comm) && !ops->distributed)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the %s coupling runs on one process, not on %d; expected a run without "
+                         "mpirun (or mpirun -n 1)",
+                         ops->name, cfg->comm->size);
     Coupling *c;
     TRY(nspd_alloc(&c, 1, sizeof *c));
     c->kind = cfg->kind;

@@ -44,6 +44,9 @@ typedef struct {
     /* `nspd check`: as FlowConfig.validate_only (no soft start of the gas
      * around fixed bodies: it changes the initial field, never refuses) */
     bool validate_only;
+    /* the processes that share the run (as FlowConfig.comm): only a
+     * coupling whose ops say `distributed` takes a group of several */
+    const NspdComm *comm;
     /* owned (nspd_alloc) when the kind's ops have config_free: the coupling's
      * create takes it (and sets this NULL), else coupling_config_free frees it; otherwise
      * borrowed (a registered coupling's configuration, never freed) */
@@ -67,6 +70,9 @@ typedef struct {
 
 typedef struct CouplingOps {
     const char *name;
+    /* runs on several processes (CouplingConfig.comm); its ops are then
+     * collective, as the flow's */
+    bool distributed;
     /* frees what a configuration of this coupling owns, not the struct
      * itself (one that no create took); NULL: configurations are borrowed,
      * and create leaves them */

@@ -108,18 +108,15 @@ static int check_unbuilt(Sim *sim) {
     return plan_steps(sim);
 }
 
-/* What runs on several processes so far: a flow alone (the solid and
- * the couplings are issue 28's next steps). */
+/* What runs on several processes so far: a flow, with the fixed bodies
+ * of a coupling that distributes (its ops say so; coupling_create checks);
+ * a solid does not yet (issue 28's next step). */
 static int check_distributed(const SimConfig *c) {
-    if (!comm_distributed(&c->comm)) return NSPD_OK;
-    const char *part = c->solid.kind != SOLID_NONE         ? "a solid"
-                       : c->coupling.kind != COUPLING_NONE ? "a body or coupling"
-                                                           : NULL;
-    if (!part) return NSPD_OK;
+    if (!comm_distributed(&c->comm) || c->solid.kind == SOLID_NONE) return NSPD_OK;
     return NSPD_FAIL(NSPD_ERR_INPUT,
-                     "case '%s' has %s, which runs on one process only so far, not on %d; "
-                     "expected a run without mpirun (or mpirun -n 1), or a case with a flow alone",
-                     c->name, part, c->comm.size);
+                     "case '%s' has a solid, which runs on one process only so far, not on %d; "
+                     "expected a run without mpirun (or mpirun -n 1), or a flow with fixed bodies",
+                     c->name, c->comm.size);
 }
 
 bool sim_check_builds(const Sim *sim) {
@@ -143,7 +140,7 @@ int sim_create(Sim *sim, SimConfig *cfg) {
     }
     sim->built = true;
     if (status == NSPD_OK) status = check_distributed(c);
-    c->flow.comm = &c->comm;
+    c->flow.comm = c->coupling.comm = &c->comm;
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
         /* a refusal found while the model is built, said at its section */
         status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);

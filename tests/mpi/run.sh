@@ -3,9 +3,11 @@
 # without mpirun (history.csv, every .vtr, .pvd, picture and line table,
 # and summary.json but for the keys that measure the machine), on 2, 3 and
 # 4 ranks: a shock tube (extrapolated ends, periodic y), the isentropic
-# vortex (periodic box), Couette flow (moving isothermal walls) and the
+# vortex (periodic box), Couette flow (moving isothermal walls), the
 # Blasius plate (stretched rows, inflow, outflow, a no-slip plate, point
-# probes). Then the state moves between process counts: a checkpoint
+# probes), and fixed bodies in a stream (the Mach 2 cylinder with sealed and
+# with reflected ghost faces, the NACA 0012: ghost cells, surface loads and
+# forces). Then the state moves between process counts: a checkpoint
 # written on 3 ranks resumes on 2 and on 1, and a field written on 3 ranks
 # starts a run on 1 (and one written by 1 a run on 3), all with the same
 # bits. Then the refusals: a bad case, a solid, and more ranks than rows,
@@ -33,7 +35,7 @@ same_results() {
         [ "$f" = case.yaml ] && [ "$skip" = paths ] && continue
         if [ "$f" = summary.json ]; then
             for d in "$a" "$b"; do
-                grep -v -E '"(wall_s|flow_s|threads|processes|peak_rss_mb|[a-z_]+_per_s)":' \
+                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|threads|processes|peak_rss_mb|[a-z_]+_per_s)":' \
                     "$d/summary.json" >"$d.summary"
             done
             cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
@@ -71,6 +73,34 @@ check_case sod 0.2 2
 check_case vortex 1.0 2 3 4
 check_case couette 2.0 2 3 4
 check_case blasius 0.3 2 3 4
+
+# Fixed bodies (the ghost-cell immersed boundary, couple/ghost/share.c):
+# the coarse golden runs of the Mach 2 cylinder (sealed ghost faces, soft
+# start, forces) and of it with reflected faces, and of the NACA 0012
+# (reflected), on 2, 3 and 4 ranks: the walls cross the slabs' edges.
+check_body() {
+    name=$1 tag=$2
+    shift 2
+    set -f
+    IFS='
+'
+    args=$(golden_overrides "$name" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
+    ref="$work/$tag.1"
+    "$nspd" run "$src/cases/$name.yaml" -o "$ref" --quiet $args "$@" ||
+        { fail "$tag: the run of one process failed"; unset IFS; set +f; return; }
+    for n in 2 3 4; do
+        if on "$n" "$src/cases/$name.yaml" -o "$work/$tag.$n" --quiet $args "$@"; then
+            same_results "$ref" "$work/$tag.$n" "$tag on $n ranks"
+        else
+            fail "$tag on $n ranks: exit status $?"
+        fi
+    done
+    unset IFS
+    set +f
+}
+check_body cylinder_ma2_re300 cylinder_sealed
+check_body cylinder_ma2_re300 cylinder_reflected --set flow.ghost_faces=reflected
+check_body naca0012_ma05_re5000 naca
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of

@@ -326,6 +326,7 @@ void ibm_destroy(Ibm **pp) {
     nspd_free(&ibm->list_b);
     nspd_free(&ibm->swept);
     nspd_free(&ibm->moved_bucket);
+    ibm_share_free(&ibm->share);
     nspd_free(pp);
 }
 
@@ -339,7 +340,10 @@ static inline void set_cons(double *const w[4], int64_t k, double rho, double u,
     w[3][k] = p / gm1 + 0.5 * rho * (u * u + v * v);
 }
 
-static inline void fill_one(Ibm *ibm, int e, double *const w[4], double gm1, double R) {
+/* Ghost entry e from the fluid state w (indexed like the Ibm's cells),
+ * into out (the solver's arrays, whose cell 0 is the Ibm's cell `lo`). */
+static inline void fill_one(Ibm *ibm, int e, double *const w[4], double *const out[4], int64_t lo,
+                            double gm1, double R) {
     IbmStencilSet *G = &ibm->ghosts;
     const int b = G->body[e];
     const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
@@ -351,7 +355,7 @@ static inline void fill_one(Ibm *ibm, int e, double *const w[4], double gm1, dou
     G->wv[e] = vw;
     const double u = uw + r * (uw - q.u), v = vw + r * (vw - q.v); /* Eq. 39 */
     const double T = iso ? fmax(Tw + r * (Tw - q.T), 0.25 * Tw) : q.T;
-    set_cons(w, G->cell[e], q.p / (R * T), u, v, q.p, gm1);
+    set_cons(out, G->cell[e] - lo, q.p / (R * T), u, v, q.p, gm1);
 }
 
 void ibm_fill_ghosts(void *ctx, GksSolver *s) {
@@ -359,12 +363,23 @@ void ibm_fill_ghosts(void *ctx, GksSolver *s) {
     GksFields f = gks_solver_fields(s);
     const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
-    const int n = ibm->ghosts.n;
     double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
+    if (ibm->share) { /* several processes: this slab's ghosts, from the shadow */
+        int n;
+        const int *mine = ibm_share_ghosts(ibm, &n);
+        double *const *shadow = ibm_share_refresh(ibm, s);
+        const int64_t lo = ibm_share_local_lo(ibm);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int e = 0; e < n; e++) fill_one(ibm, e, w, gm1, R);
+        for (int i = 0; i < n; i++) fill_one(ibm, mine[i], shadow, w, lo, gm1, R);
+    } else {
+        const int n = ibm->ghosts.n;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+        for (int e = 0; e < n; e++) fill_one(ibm, e, w, w, 0, gm1, R);
+    }
+    /* the solver reads the slot of its cells: the Ibm's from its cell 0 on */
     if (ibm->faces == IBM_FACES_SEALED)
-        gks_solver_set_ghost_walls(s, ibm->slot, ibm->ghosts.wu, ibm->ghosts.wv);
+        gks_solver_set_ghost_walls(s, ibm->slot + ibm_share_local_lo(ibm), ibm->ghosts.wu,
+                                   ibm->ghosts.wv);
     else
         gks_solver_set_ghost_walls(s, NULL, NULL, NULL);
 }
@@ -376,16 +391,20 @@ void ibm_set_ghost_faces(Ibm *ibm, IbmGhostFaces faces) {
 }
 
 int ibm_attach(Ibm *ibm, GksSolver *s) {
-    const Grid *g = gks_solver_grid(s);
+    const Grid *g = gks_solver_whole_grid(s);
     if (g->nx != ibm->nx || g->ny != ibm->ny || g->size != ibm->cells)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "immersed boundary: built for a %d x %d grid, attached to %d x %d",
                          ibm->nx, ibm->ny, g->nx, g->ny);
+    if (comm_distributed(gks_solver_comm(s)) && !ibm->share) TRY(ibm_share_create(ibm, s));
+    /* the kinds of this process's rows (all of them on one) */
     GksFields f = gks_solver_fields(s);
-    for (int j = 0; j < g->ny; j++)
+    const int64_t lo = ibm_share_local_lo(ibm);
+    const int j0 = gks_solver_first_row(s), j1 = j0 + gks_solver_grid(s)->ny;
+    for (int j = j0; j < j1; j++)
         for (int i = 0; i < g->nx; i++) {
             const int64_t k = grid_index(g, i, j);
-            f.kind[k] = ibm->kind[k];
+            f.kind[k - lo] = ibm->kind[k];
         }
     gks_solver_set_ghost_hook(s, ibm_fill_ghosts, ibm);
     gks_solver_fill_boundaries(s);
@@ -403,12 +422,18 @@ static void soft_start(Ibm *ibm, GksSolver *s, double length, bool keep_total) {
     walls_box(ibm, box);
     const int i0 = lower_bound(&g->ax[0], box[0] - length);
     const int i1 = upper_last(&g->ax[0], box[1] + length);
-    const int j0 = lower_bound(&g->ax[1], box[2] - length);
-    const int j1 = upper_last(&g->ax[1], box[3] + length);
+    /* this process's rows (all on one); the cells are the Ibm's, the
+     * solver's arrays start at its cell lo */
+    const int row0 = gks_solver_first_row(s), rows = gks_solver_grid(s)->ny;
+    const int jl = lower_bound(&g->ax[1], box[2] - length);
+    const int jh = upper_last(&g->ax[1], box[3] + length);
+    const int j0 = jl > row0 ? jl : row0, j1 = jh < row0 + rows - 1 ? jh : row0 + rows - 1;
+    const int64_t lo = ibm_share_local_lo(ibm);
+    double *const *w = f.w;
     for (int j = j0; j <= j1; j++)
         for (int i = i0; i <= i1; i++) {
-            const int64_t k = grid_index(g, i, j);
-            if (ibm->kind[k] != FLOW_CELL_FLUID) continue;
+            const int64_t cell = grid_index(g, i, j), k = cell - lo;
+            if (ibm->kind[cell] != FLOW_CELL_FLUID) continue;
             const IbmWallPoint wp = ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j]);
             if (wp.d >= length) continue;
             const double z = wp.d / length, fz = z * z * (3.0 - 2.0 * z);
@@ -418,14 +443,14 @@ static void soft_start(Ibm *ibm, GksSolver *s, double length, bool keep_total) {
             const double p = gm1 * (f.w[3][k] - 0.5 * (f.w[1][k] * u + f.w[2][k] * v));
             const double un = uw + (u - uw) * fz, vn = vw + (v - vw) * fz;
             if (!keep_total) {
-                set_cons(f.w, k, rho, un, vn, p, gm1);
+                set_cons(w, k, rho, un, vn, p, gm1);
                 continue;
             }
             const double T = p / (rho * gks_solver_gas(s)->R);
             const double T0 = T + 0.5 * (u * u + v * v) / cp;
             const double Tn = T0 - 0.5 * (un * un + vn * vn) / cp;
             const double pn = p * pow(Tn / T, gamma / gm1);
-            set_cons(f.w, k, pn / (gks_solver_gas(s)->R * Tn), un, vn, pn, gm1);
+            set_cons(w, k, pn / (gks_solver_gas(s)->R * Tn), un, vn, pn, gm1);
         }
     ibm_fill_ghosts(ibm, s);
 }
@@ -767,6 +792,9 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, GksSolver *s) {
                          "same bodies (build a new one with ibm_create)",
                          count, ibm->body_count);
     TRY(check_bodies(bodies, count));
+    if (ibm->share)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "immersed boundary: moving walls run on one process only so far");
     if (s) {
         const Grid *sg = gks_solver_grid(s);
         if (sg->nx != ibm->nx || sg->ny != ibm->ny)

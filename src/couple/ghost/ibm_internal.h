@@ -38,6 +38,8 @@ enum { IBM_REACH = 2 };
 /* Stencil node slot states (rseg). */
 enum { IBM_NODE_FLUID = -1, IBM_NODE_UNUSED = -2 };
 
+typedef struct IbmShare IbmShare;
+
 typedef struct {
     int nbx, nby;
     double x0, y0, size, inv_size;
@@ -107,6 +109,7 @@ struct Ibm {
     int moved_cap;
     IbmUpdateStats last;
     IbmGhostFaces faces;
+    IbmShare *share; /* several processes (share.c); NULL on one */
 };
 
 /* ------------------------------------------------------------ geometry */
@@ -144,6 +147,25 @@ void ibm_build_ghost(const Ibm *ibm, int i, int j, IbmStencilSet *set, int e);
  * the wall; `exclude` (may be NULL): cells flagged there are not usable. */
 void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const uint8_t *exclude,
                      IbmStencilSet *set, int e);
+
+/* ------------------------------------------------------------ processes */
+/* share.c: the plan of which ghosts and probes this process evaluates and
+ * which cells it fetches, built by ibm_attach when the solver runs on
+ * several processes. */
+int ibm_share_create(Ibm *ibm, const GksSolver *s);
+void ibm_share_free(IbmShare **sh);
+/* The whole-grid shadow of the conserved fields, current where this
+ * process's stencils read (collective: every rank calls). */
+double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s);
+/* The ghost entries this process fills, the probe entries it evaluates. */
+const int *ibm_share_ghosts(const Ibm *ibm, int *count);
+const int *ibm_share_probes(const Ibm *ibm, int *count);
+/* The whole padded cell of the solver's local cell 0 (0 on one process). */
+int64_t ibm_share_local_lo(const Ibm *ibm);
+/* Every probe's 4 values (u, v, p, T at entry e: q[4 e ..]) from the 4
+ * values of this process's probes (mine[4 e ..] for its entries e);
+ * collective. */
+int ibm_share_probe_values(const Ibm *ibm, const double *mine, double *q);
 
 /* ------------------------------------------------------------ evaluation */
 static inline void ibm_wall_velocity(const Ibm *ibm, int s, double t, double *u, double *v) {

@@ -67,7 +67,7 @@ static int create_rigid(GhostCoupling *g, GksSolver *solver) {
     TRY(nspd_alloc(&g->bodies, (size_t)set->count, sizeof(IbmPolyline)));
     g->body_count = set->count;
     for (int b = 0; b < set->count; b++) TRY(ibm_body_markers(&set->bodies[b], &g->bodies[b]));
-    TRY(ibm_create(&g->ibm, gks_solver_grid(solver), g->bodies, g->body_count));
+    TRY(ibm_create(&g->ibm, gks_solver_whole_grid(solver), g->bodies, g->body_count));
     ibm_set_ghost_faces(g->ibm, (IbmGhostFaces)g->cfg.fsi.ghost_faces);
     TRY(ibm_attach(g->ibm, solver));
     if (g->cfg.fsi.soft_start > 0) ibm_soft_start(g->ibm, solver, g->cfg.fsi.soft_start);
@@ -264,6 +264,7 @@ static void ghost_config_free(void *model) {
 
 const CouplingOps GHOST_COUPLING_OPS = {
     .name = "ghost_cell",
+    .distributed = true, /* fixed bodies; a solid is refused on several (sim.c) */
     .config_free = ghost_config_free,
     .estimate = ghost_estimate,
     .create = ghost_create,

@@ -28,6 +28,7 @@ int ibm_surface_reserve(const Ibm *ibm, IbmSurface *o) {
         for (size_t q = 0; q < sizeof arrays / sizeof arrays[0]; q++)
             TRY(nspd_realloc(arrays[q], a, c, sizeof(double)));
         TRY(nspd_realloc(&o->upper, a, c, 1));
+        TRY(nspd_realloc(&o->probe_q, 8 * a, 8 * c, sizeof(double)));
         o->cap = n;
     }
     if (ibm->body_count > o->body_count) {
@@ -44,6 +45,7 @@ void ibm_surface_free(IbmSurface *o) {
     double **arrays[] = {&o->arc, &o->x,   &o->y,  &o->nx, &o->ny, &o->ds,
                          &o->p,   &o->tau, &o->fx, &o->fy, &o->cp, &o->cf};
     for (size_t q = 0; q < sizeof arrays / sizeof arrays[0]; q++) nspd_free(arrays[q]);
+    nspd_free(&o->probe_q);
     nspd_free(&o->upper);
     nspd_free(&o->forces);
     memset(o, 0, sizeof *o);
@@ -67,7 +69,6 @@ static void edges(const Ibm *ibm, int b, double ex, double ey, int *le, int *te)
 
 /* What the segments of every body share. */
 typedef struct {
-    double *w[4]; /* the solver's conserved fields */
     const GksParams *gas;
     double gm1;
     const IbmReference *ref;
@@ -89,13 +90,12 @@ static void segment_loads(const Ibm *ibm, const SurfaceFlow *F, const SurfaceBod
                           IbmSurface *o) {
     const IbmStencilSet *P = &ibm->probes;
     const IbmReference *ref = F->ref;
-    const double R = F->gas->R;
     const int sg = B->fb + k, e = ibm->seg_end[sg], n = B->n;
     const double ax = ibm->mx[sg], ay = ibm->my[sg], bx = ibm->mx[e], by = ibm->my[e];
     const double ds = hypot(bx - ax, by - ay);
     const double tx = (bx - ax) / ds, ty = (by - ay) / ds, nx = ty, ny = -tx;
-    const IbmPrim q1 = ibm_stencil_eval(ibm, P, 2 * sg, F->w, F->gm1, R, B->iso, B->Tw);
-    const IbmPrim q2 = ibm_stencil_eval(ibm, P, 2 * sg + 1, F->w, F->gm1, R, B->iso, B->Tw);
+    const double *at = o->probe_q + 8 * sg;
+    const IbmPrim q1 = {at[0], at[1], at[2], at[3]}, q2 = {at[4], at[5], at[6], at[7]};
     const double d = P->ratio[2 * sg];
     /* A probe with no fluid cell in reach (it left the grid, or the normal
      * points into another part of the body: a folded surface, the bridged
@@ -206,17 +206,47 @@ static void body_separation(const Ibm *ibm, const SurfaceFlow *F, const SurfaceB
     }
 }
 
+/* Probe entry e's (u, v, p, T) into q[4 e ..]. */
+static void probe_value(const Ibm *ibm, int e, double *const w[4], double gm1, double R,
+                        double *q) {
+    const int b = ibm->seg_body[e / 2];
+    const IbmPrim v = ibm_stencil_eval(ibm, &ibm->probes, e, w, gm1, R,
+                                       ibm->thermal[b] == IBM_WALL_ISOTHERMAL, ibm->wall_t[b]);
+    q[4 * e] = v.u, q[4 * e + 1] = v.v, q[4 * e + 2] = v.p, q[4 * e + 3] = v.T;
+}
+
+/* Every probe's values into o->probe_q: evaluated here, or on several
+ * processes each by the process whose rows hold it, then shared. */
+static int probe_values(const Ibm *ibm, GksSolver *s, IbmSurface *o) {
+    const GksParams *gas = gks_solver_gas(s);
+    const double gm1 = gas->gamma - 1.0, R = gas->R;
+    if (!ibm->share) {
+        const GksFields f = gks_solver_fields(s);
+        double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
+        const int n = ibm->probes.n;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+        for (int e = 0; e < n; e++) probe_value(ibm, e, w, gm1, R, o->probe_q);
+        return NSPD_OK;
+    }
+    double *const *shadow = ibm_share_refresh(ibm, s);
+    int n;
+    const int *mine = ibm_share_probes(ibm, &n);
+    /* this process's probes in place, then everyone's (the share reads
+     * them out before it writes) */
+    for (int i = 0; i < n; i++) probe_value(ibm, mine[i], shadow, gm1, R, o->probe_q);
+    return ibm_share_probe_values(ibm, o->probe_q, o->probe_q);
+}
+
 int ibm_surface_compute(const Ibm *ibm, GksSolver *s, const IbmReference *ref, IbmSurface *o) {
     if (o->cap < ibm->nm || o->body_count < ibm->body_count)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "immersed boundary: surface arrays not reserved for %d segments", ibm->nm);
     o->n = ibm->nm;
-    const GksFields fields = gks_solver_fields(s);
+    TRY(probe_values(ibm, s, o));
     const GksParams *gas = gks_solver_gas(s);
     const double U2 = ref->u * ref->u + ref->v * ref->v, Um = sqrt(U2);
     const double q = 0.5 * ref->rho * U2;
     const SurfaceFlow F = {
-        .w = {fields.w[0], fields.w[1], fields.w[2], fields.w[3]},
         .gas = gas,
         .gm1 = gas->gamma - 1.0,
         .ref = ref,

@@ -70,7 +70,8 @@ typedef struct {
     double *p, *tau; /* wall pressure (Pa), wall shear along t (Pa) */
     double *fx, *fy; /* traction on the wall, Pa (see above) */
     double *cp, *cf;
-    uint8_t *upper; /* 1 on the upper side */
+    uint8_t *upper;  /* 1 on the upper side */
+    double *probe_q; /* scratch: u, v, p, T at the two probe points of each segment (8 each) */
     IbmBodyForces *forces;
 } IbmSurface;
 

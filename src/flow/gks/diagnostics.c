@@ -63,9 +63,8 @@ int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
 }
 
 int gks_solver_row_owner(const GksSolver *s, int row) {
-    const int p = s->comm.size, ny = s->rows;
     int r = 0;
-    while (r + 1 < p && (int)((int64_t)ny * (r + 1) / p) <= row) r++;
+    while (r + 1 < s->comm.size && gks_solver_slab_first(s, r + 1) <= row) r++;
     return r;
 }
 

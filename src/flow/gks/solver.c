@@ -66,6 +66,10 @@ const GksParams *gks_solver_gas(const GksSolver *s) {
 const Grid *gks_solver_whole_grid(const GksSolver *s) {
     return comm_distributed(&s->comm) ? &s->whole : &s->grid;
 }
+/* Rank r's slab: rows [rows r / P, rows (r + 1) / P) of the whole grid. */
+int gks_solver_slab_first(const GksSolver *s, int rank) {
+    return (int)((int64_t)s->rows * rank / s->comm.size);
+}
 const NspdComm *gks_solver_comm(const GksSolver *s) {
     return &s->comm;
 }
@@ -347,7 +351,7 @@ static int take_rows(GksSolver *s, Grid *whole, const NspdComm *comm) {
         return NSPD_OK;
     }
     const int r = s->comm.rank, p = s->comm.size, ny = whole->ny;
-    const int first = (int)((int64_t)ny * r / p), last = (int)((int64_t)ny * (r + 1) / p);
+    const int first = gks_solver_slab_first(s, r), last = gks_solver_slab_first(s, r + 1);
     int status = NSPD_OK;
     if (ny / p < GRID_NG)
         status = NSPD_FAIL(NSPD_ERR_INPUT,

@@ -249,6 +249,9 @@ int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab
 /* The cell kinds (FLOW_CELL_*) of the whole grid as numbers, gathered
  * like gks_solver_primitive_whole. */
 int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);
+/* The first row of the whole grid that process `rank` holds (rank =
+ * size: the whole grid's rows). */
+int gks_solver_slab_first(const GksSolver *s, int rank);
 /* The process that holds row `row` of the whole grid (0 on one). */
 int gks_solver_row_owner(const GksSolver *s, int row);
 /* The area-weighted mean pressure of the whole grid's fluid cells into

@@ -1,0 +1,263 @@
+/* The immersed boundary on several processes (issue 28).
+ *
+ * The choice: every process holds the whole Ibm (markers, tags, ghost and
+ * probe stencils over the whole grid: a few bytes per cell and about 1 kB
+ * per marker, small beside the flow), and each fills the ghost cells of
+ * its own rows and the two halo rows on either side (the halo's ghosts are
+ * read by its own fluxes and must be as fresh as the serial run's), and
+ * evaluates the surface probes whose point lies in its rows. A stencil
+ * reads fluid cells up to the image point, 2 d beyond the wall plus a cell
+ * (d up to about 3 cells for the second ghost layer, more for an extended
+ * point), which is further than the two halo rows reach; instead of a
+ * halo as wide as the widest stencil on every step of every rank, each
+ * process fetches exactly the cells its stencils read from the processes
+ * that hold them, once per fill (a few per ghost cell near a slab's edge;
+ * none for a rank whose slab holds no wall). The lists are computed on
+ * every rank from the replicated stencils, so no negotiation is needed.
+ *
+ * The values are gathered into a shadow of the whole grid's conserved
+ * fields (indexed like the Ibm's cells), filled only where this process
+ * owns the rows or fetched the cells; the stencil evaluation then reads it
+ * exactly as it reads the solver's arrays on one process, so each ghost
+ * and probe value is the serial one, bit for bit. The shadow costs 32
+ * bytes per cell of the whole grid on every process (the limit this puts
+ * on a 2D grid: 60 MB for 1.9 million cells). Moving walls (ibm_update)
+ * run on one process only so far. */
+#include "couple/ghost/ibm_internal.h"
+
+#include "core/mem.h"
+#include "core/status.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+struct IbmShare {
+    NspdComm comm;
+    int stride, rows;       /* the whole grid's row length and interior rows */
+    int64_t own_lo, own_hi; /* whole padded cells this process owns, [lo, hi) */
+    int64_t local_lo;       /* the whole padded cell of its local index 0 */
+    double *w[4];           /* whole-grid shadow of the conserved fields */
+    int *ghosts, nghosts;   /* ghost entries this process fills */
+    int *probes, nprobes;   /* probe entries it evaluates */
+    int *probe_rank;        /* per probe entry: the process that evaluates it */
+    /* cells fetched from (recv) and sent to (send) each process, CSR by
+     * rank, whole padded indices in ascending order */
+    int *recv_first, *send_first;
+    int64_t *recv_cells, *send_cells;
+    double *send_buf, *recv_buf;
+    int *send_bytes, *send_at, *recv_bytes, *recv_at;
+    double *probe_mine, *probe_all; /* 4 values per probe entry */
+    int *probe_bytes, *probe_at;
+};
+
+/* The process that holds whole padded row R current: the slab of its
+ * interior row, the end slabs for the box's ghost rows. */
+static int row_rank(const GksSolver *s, int rows, int R) {
+    const int j = R - GRID_NG;
+    if (j < 0) return 0;
+    if (j >= rows) return gks_solver_comm(s)->size - 1;
+    return gks_solver_row_owner(s, j);
+}
+
+static int cell_rank(const GksSolver *s, const IbmShare *sh, int64_t k) {
+    return row_rank(s, sh->rows, (int)(k / sh->stride));
+}
+
+/* Whether ghost entry e is filled by rank r: its cell is in r's slab or
+ * the halo rows around it. */
+static bool fills(const GksSolver *s, const IbmShare *sh, int64_t cell, int r) {
+    const int R = (int)(cell / sh->stride), first = gks_solver_slab_first(s, r);
+    return R >= first && R < gks_solver_slab_first(s, r + 1) + 2 * GRID_NG;
+}
+
+static int cmp_i64(const void *a, const void *b) {
+    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The fluid cells that rank r's stencils read and r does not own, sorted
+ * and unique, into list (capacity: 4 per entry); their count. */
+static int64_t needed(const Ibm *ibm, const GksSolver *s, const IbmShare *sh, int r,
+                      int64_t *list) {
+    int64_t n = 0;
+    const IbmStencilSet *sets[2] = {&ibm->ghosts, &ibm->probes};
+    for (int q = 0; q < 2; q++) {
+        const IbmStencilSet *S = sets[q];
+        for (int e = 0; e < S->n; e++) {
+            const bool mine = q == 0 ? fills(s, sh, S->cell[e], r) : sh->probe_rank[e] == r;
+            if (!mine) continue;
+            for (int m = 0; m < 4; m++) {
+                if (S->rseg[4 * e + m] != IBM_NODE_FLUID) continue;
+                const int64_t k = S->node[4 * e + m];
+                if (cell_rank(s, sh, k) != r) list[n++] = k;
+            }
+        }
+    }
+    qsort(list, (size_t)n, sizeof *list, cmp_i64);
+    int64_t u = 0;
+    for (int64_t i = 0; i < n; i++)
+        if (u == 0 || list[i] != list[u - 1]) list[u++] = list[i];
+    return u;
+}
+
+/* Which process evaluates each probe: the one whose rows hold its point
+ * (rank 0 for a point off the grid). */
+static void assign_probes(const Ibm *ibm, const GksSolver *s, IbmShare *sh) {
+    const IbmStencilSet *P = &ibm->probes;
+    sh->nprobes = 0;
+    for (int e = 0; e < P->n; e++) {
+        const int64_t k = P->cell[e];
+        const int R = k >= 0 ? (int)(k / sh->stride) : GRID_NG;
+        sh->probe_rank[e] = row_rank(s, sh->rows, R);
+        if (sh->probe_rank[e] == sh->comm.rank) sh->probes[sh->nprobes++] = e;
+    }
+}
+
+static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
+    const int p = sh->comm.size, me = sh->comm.rank;
+    const IbmStencilSet *G = &ibm->ghosts, *P = &ibm->probes;
+    TRY(nspd_alloc(&sh->ghosts, (size_t)G->n + 1, sizeof(int)));
+    TRY(nspd_alloc(&sh->probes, (size_t)P->n + 1, sizeof(int)));
+    TRY(nspd_alloc(&sh->probe_rank, (size_t)P->n + 1, sizeof(int)));
+    for (int e = 0; e < G->n; e++)
+        if (fills(s, sh, G->cell[e], me)) sh->ghosts[sh->nghosts++] = e;
+    assign_probes(ibm, s, sh);
+    int64_t *list = NULL, *recv = NULL, *send = NULL;
+    const size_t cap = 4 * ((size_t)G->n + (size_t)P->n) + 1;
+    size_t send_cap = cap;
+    TRY(nspd_alloc(&list, cap, sizeof *list));
+    int status = nspd_alloc(&recv, cap, sizeof *recv);
+    if (status == NSPD_OK) status = nspd_alloc(&send, send_cap, sizeof *send);
+    if (status == NSPD_OK) status = nspd_alloc(&sh->recv_first, (size_t)p + 1, sizeof(int));
+    if (status == NSPD_OK) status = nspd_alloc(&sh->send_first, (size_t)p + 1, sizeof(int));
+    int64_t nrecv = 0, nsend = 0;
+    for (int r = 0; r < p && status == NSPD_OK; r++) {
+        const int64_t n = needed(ibm, s, sh, r, list);
+        sh->send_first[r] = (int)nsend;
+        if (r == me) { /* what this process fetches, grouped by owner in rank order */
+            for (int q = 0; q < p; q++) {
+                sh->recv_first[q] = (int)nrecv;
+                for (int64_t i = 0; i < n; i++)
+                    if (cell_rank(s, sh, list[i]) == q) recv[nrecv++] = list[i];
+            }
+            sh->recv_first[p] = (int)nrecv;
+        } else {
+            if ((size_t)(nsend + n) > send_cap) { /* grows by doubling: amortised */
+                const size_t grown = 2 * send_cap + (size_t)n;
+                status = nspd_realloc(&send, send_cap, grown, sizeof *send);
+                send_cap = grown;
+                if (status != NSPD_OK) break;
+            }
+            for (int64_t i = 0; i < n; i++)
+                if (cell_rank(s, sh, list[i]) == me) send[nsend++] = list[i];
+        }
+    }
+    sh->send_first[p] = (int)nsend;
+    sh->recv_cells = recv, sh->send_cells = send;
+    nspd_free(&list);
+    TRY(status);
+    TRY(nspd_alloc(&sh->send_buf, 4 * (size_t)nsend + 1, sizeof(double)));
+    TRY(nspd_alloc(&sh->recv_buf, 4 * (size_t)nrecv + 1, sizeof(double)));
+    int **counts[] = {&sh->send_bytes, &sh->send_at,     &sh->recv_bytes,
+                      &sh->recv_at,    &sh->probe_bytes, &sh->probe_at};
+    for (size_t q = 0; q < sizeof counts / sizeof counts[0]; q++)
+        TRY(nspd_alloc(counts[q], (size_t)p, sizeof(int)));
+    for (int r = 0; r < p; r++) {
+        const int unit = 4 * (int)sizeof(double);
+        sh->send_at[r] = sh->send_first[r] * unit;
+        sh->send_bytes[r] = (sh->send_first[r + 1] - sh->send_first[r]) * unit;
+        sh->recv_at[r] = sh->recv_first[r] * unit;
+        sh->recv_bytes[r] = (sh->recv_first[r + 1] - sh->recv_first[r]) * unit;
+    }
+    TRY(nspd_alloc(&sh->probe_mine, 4 * (size_t)P->n + 1, sizeof(double)));
+    return nspd_alloc(&sh->probe_all, 4 * (size_t)P->n + 1, sizeof(double));
+}
+
+int ibm_share_create(Ibm *ibm, const GksSolver *s) {
+    IbmShare *sh;
+    TRY(nspd_alloc(&sh, 1, sizeof *sh));
+    ibm->share = sh;
+    sh->comm = *gks_solver_comm(s);
+    const Grid *whole = gks_solver_whole_grid(s);
+    sh->stride = whole->stride;
+    sh->rows = whole->ny;
+    const int me = sh->comm.rank, p = sh->comm.size;
+    const int first = gks_solver_slab_first(s, me), next = gks_solver_slab_first(s, me + 1);
+    sh->local_lo = (int64_t)first * sh->stride;
+    /* owned: the interior rows, and the box's ghost rows at the whole grid's ends */
+    sh->own_lo = (int64_t)(me == 0 ? 0 : first + GRID_NG) * sh->stride;
+    sh->own_hi = (int64_t)(me == p - 1 ? next + 2 * GRID_NG : next + GRID_NG) * sh->stride;
+    for (int v = 0; v < 4; v++) TRY(nspd_alloc(&sh->w[v], (size_t)whole->size, sizeof(double)));
+    return plan(ibm, s, sh);
+}
+
+void ibm_share_free(IbmShare **p) {
+    IbmShare *sh = *p;
+    if (!sh) return;
+    for (int v = 0; v < 4; v++) nspd_free(&sh->w[v]);
+    int **ints[] = {&sh->ghosts,     &sh->probes,      &sh->probe_rank, &sh->recv_first,
+                    &sh->send_first, &sh->send_bytes,  &sh->send_at,    &sh->recv_bytes,
+                    &sh->recv_at,    &sh->probe_bytes, &sh->probe_at};
+    for (size_t q = 0; q < sizeof ints / sizeof ints[0]; q++) nspd_free(ints[q]);
+    nspd_free(&sh->recv_cells);
+    nspd_free(&sh->send_cells);
+    nspd_free(&sh->send_buf);
+    nspd_free(&sh->recv_buf);
+    nspd_free(&sh->probe_mine);
+    nspd_free(&sh->probe_all);
+    nspd_free(p);
+}
+
+double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
+    IbmShare *sh = ibm->share;
+    const GksFields f = gks_solver_fields(s);
+    const int p = sh->comm.size;
+    for (int r = 0; r < p; r++)
+        for (int i = sh->send_first[r]; i < sh->send_first[r + 1]; i++) {
+            const int64_t k = sh->send_cells[i] - sh->local_lo;
+            for (int v = 0; v < 4; v++) sh->send_buf[4 * i + v] = f.w[v][k];
+        }
+    /* MPI's default handler stops the job on a failed exchange */
+    (void)comm_alltoallv_bytes(&sh->comm, sh->send_buf, sh->send_bytes, sh->send_at, sh->recv_buf,
+                               sh->recv_bytes, sh->recv_at);
+    const size_t owned = (size_t)(sh->own_hi - sh->own_lo);
+    for (int v = 0; v < 4; v++)
+        memcpy(sh->w[v] + sh->own_lo, f.w[v] + (sh->own_lo - sh->local_lo), owned * sizeof(double));
+    for (int i = 0; i < sh->recv_first[p]; i++)
+        for (int v = 0; v < 4; v++) sh->w[v][sh->recv_cells[i]] = sh->recv_buf[4 * i + v];
+    return sh->w;
+}
+
+const int *ibm_share_ghosts(const Ibm *ibm, int *count) {
+    *count = ibm->share->nghosts;
+    return ibm->share->ghosts;
+}
+
+int64_t ibm_share_local_lo(const Ibm *ibm) {
+    return ibm->share ? ibm->share->local_lo : 0;
+}
+
+/* Each probe's (u, v, p, T) from the process that evaluated it, in entry
+ * order, into q[4 e ..]: the allgather in rank order, then each rank's
+ * entries (known everywhere) put back in place. */
+int ibm_share_probe_values(const Ibm *ibm, const double *mine, double *q) {
+    IbmShare *sh = ibm->share;
+    const int p = sh->comm.size, n = ibm->probes.n;
+    for (int r = 0; r < p; r++) sh->probe_bytes[r] = 0;
+    for (int e = 0; e < n; e++) sh->probe_bytes[sh->probe_rank[e]] += 4 * (int)sizeof(double);
+    for (int i = 0; i < sh->nprobes; i++)
+        memcpy(sh->probe_mine + 4 * i, mine + 4 * sh->probes[i], 4 * sizeof(double));
+    TRY(comm_allgatherv(&sh->comm, sh->probe_mine, 4 * sh->nprobes, sh->probe_all));
+    for (int r = 0, at = 0; r < p; r++) sh->probe_at[r] = at, at += sh->probe_bytes[r] / 8;
+    for (int e = 0; e < n; e++) {
+        const int r = sh->probe_rank[e];
+        memcpy(q + 4 * e, sh->probe_all + sh->probe_at[r], 4 * sizeof(double));
+        sh->probe_at[r] += 4;
+    }
+    return NSPD_OK;
+}
+
+const int *ibm_share_probes(const Ibm *ibm, int *count) {
+    *count = ibm->share->nprobes;
+    return ibm->share->probes;
+}
