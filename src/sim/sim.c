@@ -333,7 +333,9 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
         }
         const bool last = status == NSPD_OK && finished(sim);
         int64_t asks[2] = {interrupt_requested() && !last, wall_checkpoint_due(sim)};
+        const double t0 = nspd_wall_time();
         status = comm_agree(comm, status, asks, 2);
+        sim->agree_s += nspd_wall_time() - t0;
         if (status != NSPD_OK) break;
         sim->interrupted = asks[0] != 0;
         sim->wall_checkpoint = asks[1] != 0;

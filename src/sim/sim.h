@@ -60,6 +60,7 @@ typedef struct {
     double wall_s;                 /* wall time of the run, resumed parts included */
     double wall_start;             /* when the run would have started, had it never stopped */
     double part_s[SIM_PART_COUNT]; /* wall time in the flow, the solid, the coupling */
+    double agree_s; /* several processes: wall time agreeing on each step's outcome */
     bool interrupted;
 
     /* checkpoints (sim_checkpoint.c) */

@@ -102,6 +102,10 @@ int sim_output_summary(Sim *sim, int run_status, const char *reason) {
     for (int k = 0; k < SIM_PART_COUNT; k++)
         if (part_present[k]) report_real(r, PART_KEYS[k], sim->part_s[k]);
     report_int(r, "threads", omp_get_max_threads());
+    if (comm_distributed(&sim->cfg.comm)) {
+        report_int(r, "processes", sim->cfg.comm.size);
+        report_real(r, "agree_s", sim->agree_s);
+    }
     report_bool(r, "completed", run_status == NSPD_OK && !sim->interrupted);
     report_bool(r, "interrupted", sim->interrupted);
     if (run_status != NSPD_OK && run_status != NSPD_ERR_INTERRUPTED)

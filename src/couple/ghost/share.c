@@ -27,6 +27,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "core/timer.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -218,8 +219,10 @@ double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
             for (int v = 0; v < 4; v++) sh->send_buf[4 * i + v] = f.w[v][k];
         }
     /* MPI's default handler stops the job on a failed exchange */
+    const double t0 = nspd_wall_time();
     (void)comm_alltoallv_bytes(&sh->comm, sh->send_buf, sh->send_bytes, sh->send_at, sh->recv_buf,
                                sh->recv_bytes, sh->recv_at);
+    gks_solver_add_comm_seconds(s, nspd_wall_time() - t0);
     const size_t owned = (size_t)(sh->own_hi - sh->own_lo);
     for (int v = 0; v < 4; v++)
         memcpy(sh->w[v] + sh->own_lo, f.w[v] + (sh->own_lo - sh->local_lo), owned * sizeof(double));

@@ -389,6 +389,10 @@ static void gks_summary(const void *impl, const RunStats *run, Report *out) {
     double mean = NAN;
     (void)gks_solver_mean_pressure(g->solver, g->slab, g->cells[6], &mean);
     report_real(out, "mean_pressure_pa", mean);
+    /* several processes: this one's wall time in exchanges and reductions
+     * (halo rows, the stable step, counts, a coupling's cells) */
+    if (comm_distributed(gks_solver_comm(g->solver)))
+        report_real(out, "exchange_s", gks_solver_comm_seconds(g->solver));
 }
 
 static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {

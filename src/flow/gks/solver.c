@@ -85,6 +85,10 @@ double gks_solver_comm_seconds(const GksSolver *s) {
     return s->comm_seconds;
 }
 
+void gks_solver_add_comm_seconds(GksSolver *s, double seconds) {
+    s->comm_seconds += seconds;
+}
+
 const GksConfig *gks_solver_config(const GksSolver *s) {
     return &s->cfg;
 }

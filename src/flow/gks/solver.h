@@ -150,6 +150,8 @@ int gks_solver_rows(const GksSolver *s);
  * reductions of the stable step and the counts, since creation (0 on one
  * process). */
 double gks_solver_comm_seconds(const GksSolver *s);
+/* Counts a coupling's exchanges of the solver's cells in it too. */
+void gks_solver_add_comm_seconds(GksSolver *s, double seconds);
 
 void gks_solver_set_ghost_hook(GksSolver *s, FlowGhostHook hook, void *ctx);
 
