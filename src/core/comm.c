@@ -116,6 +116,21 @@ int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *
     return status;
 }
 
+int comm_gatherv(const NspdComm *c, const double *mine, int count, double *all) {
+    if (!comm_distributed(c)) return gather_alone(mine, count * (int)sizeof(double), all);
+    int *counts = NULL, *offsets = NULL;
+    int status = nspd_alloc(&counts, (size_t)c->size, sizeof(int));
+    if (status == NSPD_OK) status = nspd_alloc(&offsets, (size_t)c->size, sizeof(int));
+    if (status == NSPD_OK) {
+        MPI_Gather(&count, 1, MPI_INT, counts, 1, MPI_INT, 0, mpi_of(c));
+        for (int r = 0, at = 0; r < c->size; r++) offsets[r] = at, at += counts[r];
+        MPI_Gatherv(mine, count, MPI_DOUBLE, all, counts, offsets, MPI_DOUBLE, 0, mpi_of(c));
+    }
+    nspd_free(&counts);
+    nspd_free(&offsets);
+    return status;
+}
+
 int comm_bcast(const NspdComm *c, void *data, int bytes, int root) {
     if (!comm_distributed(c)) return NSPD_OK;
     MPI_Bcast(data, bytes, MPI_BYTE, root, mpi_of(c));
@@ -176,6 +191,11 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all) {
     (void)c;
     return gather_alone(mine, bytes, all);
+}
+
+int comm_gatherv(const NspdComm *c, const double *mine, int count, double *all) {
+    (void)c;
+    return gather_alone(mine, count * (int)sizeof(double), all);
 }
 
 int comm_bcast(const NspdComm *c, void *data, int bytes, int root) {

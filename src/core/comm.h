@@ -49,6 +49,11 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value);
  * every rank (counts may differ between ranks; all holds their sum). */
 int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all);
 
+/* Every rank's `count` doubles, concatenated in rank order into all[] on
+ * rank 0 only (all is not read elsewhere and may be NULL there): what a
+ * writer on rank 0 gathers without the whole on every rank. */
+int comm_gatherv(const NspdComm *c, const double *mine, int count, double *all);
+
 /* The same for bytes (each rank's count in bytes). */
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all);
 

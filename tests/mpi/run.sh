@@ -163,6 +163,24 @@ refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/b
 refused "a solid on 2 ranks" "runs on one process only so far, not on 2" 2 \
     "$src/cases/plate_crack.yaml" -o "$work/bad"
 refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
+refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
+    "$src/cases/cavity_re1.yaml" -o "$work/bad"
 [ -e "$work/bad" ] && fail "a refused run wrote $work/bad"
+
+# A run that fails (the gas leaves the physical range: a given time step
+# 34 times the stable one) stops all ranks at the same step: exit status
+# 1, the message once and the serial run's (the first bad cell of the
+# whole grid), summary.json written by rank 0 saying why.
+"$nspd" run "$src/cases/vortex.yaml" -o "$work/blowup.1" --quiet --set time.dt=0.5 2>/dev/null
+on 3 "$src/cases/vortex.yaml" -o "$work/blowup" --quiet --set time.dt=0.5 >"$work/out" 2>&1
+status=$?
+lines=$(grep -c "nspd: error: .*in step" "$work/out")
+if [ "$status" -eq 1 ] && [ "$lines" -eq 1 ] && grep -q '"completed": false' "$work/blowup/summary.json" &&
+    [ "$(grep stopped_by "$work/blowup/summary.json")" = "$(grep stopped_by "$work/blowup.1/summary.json")" ]; then
+    ok
+else
+    fail "a blow-up on 3 ranks: exit status $status, the message $lines times (expected 1, once, as one process's):"
+    cat "$work/out"
+fi
 
 finish

@@ -50,7 +50,7 @@ int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab
         return NSPD_OK;
     }
     gks_solver_primitive(s, field, slab);
-    return comm_allgatherv(&s->comm, slab, s->grid.nx * s->grid.ny, out);
+    return comm_gatherv(&s->comm, slab, s->grid.nx * s->grid.ny, out);
 }
 
 int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
@@ -59,7 +59,7 @@ int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = s->kind[grid_index(g, i, j)];
     if (mine == out) return NSPD_OK;
-    return comm_allgatherv(&s->comm, slab, g->nx * g->ny, out);
+    return comm_gatherv(&s->comm, slab, g->nx * g->ny, out);
 }
 
 int gks_solver_row_owner(const GksSolver *s, int row) {
@@ -69,8 +69,9 @@ int gks_solver_row_owner(const GksSolver *s, int row) {
 }
 
 /* Each fluid cell's pressure times its area (NaN marks the others), then
- * the sums in cell order over the whole grid: the same additions in the
- * same order on any number of processes. */
+ * the sums in cell order over the whole grid on rank 0, which sends the
+ * mean to the others: the same additions in the same order on any number
+ * of processes. */
 int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, double *mean) {
     const Grid *g = &s->grid;
     const double gm1 = s->gas.gamma - 1.0;
@@ -84,7 +85,10 @@ int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, doub
             mine[(int64_t)j * g->nx + i] =
                 s->kind[k] == FLOW_CELL_FLUID ? gm1 * (s->w[3][k] - ke) * a : (double)NAN;
         }
-    if (mine != all) TRY(comm_allgatherv(&s->comm, slab, g->nx * g->ny, all));
+    if (mine != all) {
+        TRY(comm_gatherv(&s->comm, slab, g->nx * g->ny, all));
+        if (s->comm.rank != 0) return comm_bcast(&s->comm, mean, (int)sizeof *mean, 0);
+    }
     const Grid *w = gks_solver_whole_grid(s);
     double sum = 0.0, area = 0.0;
     for (int j = 0; j < w->ny; j++)
@@ -95,7 +99,7 @@ int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, doub
             area += w->ax[0].width[i] * w->ax[1].width[j];
         }
     *mean = area > 0 ? sum / area : (double)NAN;
-    return NSPD_OK;
+    return comm_bcast(&s->comm, mean, (int)sizeof *mean, 0);
 }
 
 /* Deterministic at any thread count: each row is summed in index order by one

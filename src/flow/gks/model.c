@@ -23,7 +23,8 @@ enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
 /* The model: the solver, its case and the output scratch (allocated once).
  * On several processes the model shows the whole grid: its cells are
  * numbered as the whole grid's padded arrays, and the output scratch holds
- * the whole grid's fields (gathered); `slab` is this process's part. */
+ * the whole grid's fields, gathered on rank 0 (the writer) and absent on
+ * the others (NULL); `slab` is this process's part. */
 typedef struct {
     GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
     GksSolver *solver;
@@ -123,11 +124,12 @@ static int gks_create(void **impl, FlowConfig *mc) {
         const Grid *grid = gks_solver_whole_grid(g->solver), *slab = gks_solver_grid(g->solver);
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
         status = nspd_alloc(&g->slab, (size_t)slab->nx * (size_t)slab->ny, sizeof(double));
-        for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK; k++)
+        const bool writer = gks_solver_comm(g->solver)->rank == 0;
+        for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK && writer; k++)
             status = nspd_alloc(&g->cells[k], n, sizeof(double));
-        if (status == NSPD_OK) status = nspd_alloc(&g->kind, n, sizeof(double));
-        if (status == NSPD_OK) status = nspd_alloc(&g->blank, n, 1);
-        if (status == NSPD_OK) status = nspd_alloc(&g->valid, n, 1);
+        if (status == NSPD_OK && writer) status = nspd_alloc(&g->kind, n, sizeof(double));
+        if (status == NSPD_OK && writer) status = nspd_alloc(&g->blank, n, 1);
+        if (status == NSPD_OK && writer) status = nspd_alloc(&g->valid, n, 1);
     }
     if (status != NSPD_OK) {
         gks_destroy(g);
@@ -244,8 +246,8 @@ static FlowReference gks_reference(const void *impl) {
 }
 
 /* The primitive fields of the whole grid's interior cells and their
- * kinds, into the output scratch (cells[0..5], blank, kind); every rank
- * calls, every rank gets the whole grid's. */
+ * kinds, into the output scratch (cells[0..5], blank, kind) of rank 0;
+ * every rank calls. */
 static void primitives(GksFlow *gf) {
     const Grid *g = gks_solver_whole_grid(gf->solver);
     static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
@@ -254,6 +256,7 @@ static void primitives(GksFlow *gf) {
     for (int k = 0; k < 6; k++)
         (void)gks_solver_primitive_whole(gf->solver, order[k], gf->slab, gf->cells[k]);
     (void)gks_solver_kinds_whole(gf->solver, gf->slab, gf->kind);
+    if (!gf->blank) return; /* not the writer */
     for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++)
         gf->blank[c] = gf->kind[c] != FLOW_CELL_FLUID;
 }
@@ -263,6 +266,10 @@ static void primitives(GksFlow *gf) {
  * (field_sample.h), over the current state. */
 static int gks_sample(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out) {
     GksFlow *gf = impl;
+    if (comm_distributed(gks_solver_comm(gf->solver)))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "sampling the GKS flow at points (a volumetric coupling) runs on one "
+                         "process only so far");
     const Grid *g = gks_solver_whole_grid(gf->solver);
     primitives(gf);
     for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++) gf->valid[c] = !gf->blank[c];
@@ -485,9 +492,10 @@ static void gks_fields(void *impl, FieldSet *out) {
     const Grid *g = gks_solver_whole_grid(gf->solver);
     const int64_t ncell = (int64_t)g->nx * g->ny;
     primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
+    memset(out, 0, sizeof *out);
+    if (!gf->blank) return; /* not the writer: its part is gathered, nothing to write */
     if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
     schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
-    memset(out, 0, sizeof *out);
     out->series = "flow";
     out->mesh = MESH_GRID;
     out->nx = g->nx;

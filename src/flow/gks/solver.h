@@ -243,13 +243,13 @@ typedef enum {
  * fastest, no ghosts (non-fluid cells included as stored). */
 void gks_solver_primitive(const GksSolver *s, FlowField field, double *out);
 /* The same over the whole grid on several processes (every rank calls):
- * out[nx * rows] on every rank, the slabs in row order, for the writers
- * of rank 0; `slab` (nx * ny of this rank) is scratch. On one process
- * gks_solver_primitive. */
+ * out[nx * rows] on rank 0, the slabs in row order, for its writers (out
+ * is not written elsewhere and may be NULL there); `slab` (nx * ny of
+ * this rank) is scratch. On one process gks_solver_primitive. */
 int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out);
 
-/* The cell kinds (FLOW_CELL_*) of the whole grid as numbers, gathered
- * like gks_solver_primitive_whole. */
+/* The cell kinds (FLOW_CELL_*) of the whole grid as numbers, gathered to
+ * rank 0 like gks_solver_primitive_whole. */
 int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);
 /* The first row of the whole grid that process `rank` holds (rank =
  * size: the whole grid's rows). */
@@ -257,8 +257,8 @@ int gks_solver_slab_first(const GksSolver *s, int rank);
 /* The process that holds row `row` of the whole grid (0 on one). */
 int gks_solver_row_owner(const GksSolver *s, int row);
 /* The area-weighted mean pressure of the whole grid's fluid cells into
- * *mean (every rank calls; NaN without fluid); slab (this slab's cells)
- * and all (the whole grid's) are scratch. */
+ * *mean on every rank (every rank calls; NaN without fluid); slab (this
+ * slab's cells) and, on rank 0, all (the whole grid's) are scratch. */
 int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, double *mean);
 
 /* Integrals over the fluid cells: mass (kg/m), x and y momentum, energy (J/m). */
