@@ -108,14 +108,18 @@ static int check_unbuilt(Sim *sim) {
     return plan_steps(sim);
 }
 
-/* What runs on several processes so far: a flow, with the fixed bodies
- * of a coupling that distributes (its ops say so; coupling_create checks);
- * a solid does not yet (issue 28's next step). */
+/* What runs on several processes so far: a flow, divided between them,
+ * with the bodies of a coupling that distributes (its ops say so;
+ * coupling_create checks); a solid coupled to it is replicated, every
+ * rank advancing the whole solid alike (tens of thousands of points, a
+ * fraction of the flow's work). A solid alone is not divided yet. */
 static int check_distributed(const SimConfig *c) {
-    if (!comm_distributed(&c->comm) || c->solid.kind == SOLID_NONE) return NSPD_OK;
+    if (!comm_distributed(&c->comm) || c->solid.kind == SOLID_NONE ||
+        c->flow.method != FLOW_METHOD_NONE)
+        return NSPD_OK;
     return NSPD_FAIL(NSPD_ERR_INPUT,
-                     "case '%s' has a solid, which runs on one process only so far, not on %d; "
-                     "expected a run without mpirun (or mpirun -n 1), or a flow with fixed bodies",
+                     "case '%s' is a solid alone, which runs on one process only so far, not on "
+                     "%d; expected a run without mpirun (or mpirun -n 1), or a flow",
                      c->name, c->comm.size);
 }
 

@@ -5,9 +5,10 @@
 # 4 ranks: a shock tube (extrapolated ends, periodic y), the isentropic
 # vortex (periodic box), Couette flow (moving isothermal walls), the
 # Blasius plate (stretched rows, inflow, outflow, a no-slip plate, point
-# probes), and fixed bodies in a stream (the Mach 2 cylinder with sealed and
+# probes), fixed bodies in a stream (the Mach 2 cylinder with sealed and
 # with reflected ghost faces, the NACA 0012: ghost cells, surface loads and
-# forces). Then the state moves between process counts: a checkpoint
+# forces), and solids coupled to the flow (the panel in a shock, the
+# cracking cylinder: the solid replicated, the walls moving). Then the state moves between process counts: a checkpoint
 # written on 3 ranks resumes on 2 and on 1, and a field written on 3 ranks
 # starts a run on 1 (and one written by 1 a run on 3), all with the same
 # bits. Then the refusals: a bad case, a solid, and more ranks than rows,
@@ -101,6 +102,11 @@ check_body() {
 check_body cylinder_ma2_re300 cylinder_sealed
 check_body cylinder_ma2_re300 cylinder_reflected --set flow.ghost_faces=reflected
 check_body naca0012_ma05_re5000 naca
+# A solid coupled to the flow (ghost-cell FSI, moving walls): replicated
+# on every rank; the coarse panel in a shock and the coarse cracking
+# cylinder.
+check_body panel_shock panel
+check_body cylinder_crack_ma17 crack
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of
@@ -131,6 +137,29 @@ else
     fail "the checkpointed run on 3 ranks failed"
 fi
 
+# The coupled cylinder's checkpoint (the solid, the moving interface, the
+# flow) written on 3 ranks resumes on 2 with the same bits.
+set -f
+IFS='
+'
+crack_args=$(golden_overrides cylinder_crack_ma17 | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
+crack="$src/cases/cylinder_crack_ma17.yaml"
+"$nspd" run "$crack" -o "$work/cck.ref" --quiet $crack_args --set output.checkpoint_interval=1e-3 ||
+    fail "the checkpointed coupled run of one process failed"
+if on 3 "$crack" -o "$work/cck.3" --quiet $crack_args --set output.checkpoint_interval=1e-3; then
+    last=$(ls "$work/cck.3"/flow_*.vtr | tail -n 1)
+    rm -f "$work/cck.3/summary.json" "$last"
+    if on 2 "$crack" -o "$work/cck.3" --quiet --resume $crack_args --set output.checkpoint_interval=1e-3; then
+        same_results "$work/cck.ref" "$work/cck.3" "the coupled checkpoint of 3 ranks resumed on 2"
+    else
+        fail "the coupled checkpoint of 3 ranks resumed on 2: exit status $?"
+    fi
+else
+    fail "the checkpointed coupled run on 3 ranks failed"
+fi
+unset IFS
+set +f
+
 # Fields: the last field of the Blasius plate on 3 ranks starts a run of
 # one process, and the one process's a run on 3; each ends as the other.
 blasius="$src/cases/blasius.yaml"
@@ -160,7 +189,7 @@ refused() {
 }
 sod="$src/cases/sod.yaml"
 refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
-refused "a solid on 2 ranks" "runs on one process only so far, not on 2" 2 \
+refused "a solid alone on 2 ranks" "a solid alone, which runs on one process only so far" 2 \
     "$src/cases/plate_crack.yaml" -o "$work/bad"
 refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
 refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \

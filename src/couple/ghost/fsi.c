@@ -83,7 +83,7 @@ int fsi_create(Fsi *f, const FsiConfig *cfg, const Solid *solid, GksSolver *flow
         p->leading_edge = p->trailing_edge = -1;
     }
     markers_from_points(f, solid);
-    status = ibm_create(&f->ibm, gks_solver_grid(flow), f->polylines, f->loop_count);
+    status = ibm_create(&f->ibm, gks_solver_whole_grid(flow), f->polylines, f->loop_count);
     if (status == NSPD_OK) ibm_set_ghost_faces(f->ibm, (IbmGhostFaces)cfg->ghost_faces);
     if (status == NSPD_OK) status = ibm_attach(f->ibm, flow);
     if (status == NSPD_OK && cfg->soft_start > 0) ibm_soft_start(f->ibm, flow, cfg->soft_start);
@@ -116,7 +116,7 @@ int fsi_apply_loads(Fsi *f, Solid *solid, GksSolver *flow) {
     TRY(ibm_surface_compute(f->ibm, flow, &f->cfg.reference, &f->loads));
     /* Parts of the solid outside the flow's box (the panel's clamp below the
      * floor) have no fluid on them: no load. */
-    const Grid *g = gks_solver_grid(flow);
+    const Grid *g = gks_solver_whole_grid(flow);
     for (int k = 0; k < f->loads.n; k++)
         if (f->loads.x[k] < g->ax[0].lo || f->loads.x[k] > g->ax[0].hi ||
             f->loads.y[k] < g->ax[1].lo || f->loads.y[k] > g->ax[1].hi)

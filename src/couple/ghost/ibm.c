@@ -533,20 +533,43 @@ static int cmp_i64(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
-/* Fills the fresh cells listed in list_a[0..n) (flagged in mark, bit 2). */
-static void fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
+/* Several processes: the cells the n fresh stencils read, fetched into
+ * the shadow (every rank builds every fresh stencil: they are few). */
+static int fetch_fresh_nodes(Ibm *ibm, int n, const IbmStencilSet *tmp) {
+    int64_t *cells = NULL;
+    TRY(nspd_alloc(&cells, 4 * (size_t)n + 1, sizeof *cells));
+    int m = 0;
+    for (int q = 0; q < 4 * n; q++)
+        if (tmp->rseg[q] == IBM_NODE_FLUID) cells[m++] = tmp->node[q];
+    qsort(cells, (size_t)m, sizeof *cells, cmp_i64);
+    int u = 0;
+    for (int q = 0; q < m; q++)
+        if (u == 0 || cells[q] != cells[u - 1]) cells[u++] = cells[q];
+    const int status = ibm_share_fetch(ibm, u, cells);
+    nspd_free(&cells);
+    return status;
+}
+
+/* Fills the fresh cells listed in list_a[0..n) (flagged in mark, bit 2);
+ * on several processes, those of this process's rows and halo. */
+static int fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
     const Grid *g = ibm->grid;
     GksFields f = gks_solver_fields(s);
     const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
-    double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
+    double *const local[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
     /* first all stencils (they read only non-fresh fluid cells), then all values */
     for (int q = 0; q < n; q++) {
         int i, j;
         cell_ij(g, ibm->list_a[q], &i, &j);
         ibm_build_point(ibm, g->ax[0].center[i], g->ax[1].center[j], 0.0, ibm->mark, tmp, q);
     }
+    if (ibm->share) TRY(fetch_fresh_nodes(ibm, n, tmp));
+    double *const *w = ibm->share ? ibm_share_shadow(ibm) : local;
+    const int64_t lo = ibm_share_local_lo(ibm), hi = lo + gks_solver_grid(s)->size;
     for (int q = 0; q < n; q++) {
+        const int64_t cell = ibm->list_a[q];
+        if (cell < lo || cell >= hi) continue;             /* another process's */
         if (tmp->rseg[4 * q] == IBM_NODE_UNUSED) continue; /* nothing usable: keep the old value */
         /* the wall that uncovered the cell decides the thermal rows */
         int i, j;
@@ -555,8 +578,9 @@ static void fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
         const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
         const IbmPrim p = ibm_stencil_eval(ibm, tmp, q, w, gm1, R, iso, ibm->wall_t[b]);
         const double T = iso ? fmax(p.T, 0.25 * ibm->wall_t[b]) : p.T;
-        set_cons(w, ibm->list_a[q], p.p / (R * T), p.u, p.v, p.p, gm1);
+        set_cons(local, cell - lo, p.p / (R * T), p.u, p.v, p.p, gm1);
     }
+    return NSPD_OK;
 }
 
 /* The steps of ibm_update, in order. Each is a pass over the work of the
@@ -711,7 +735,10 @@ static void update_kinds(Ibm *ibm, GksSolver *s, int64_t nq, int *nfresh, int *n
             ibm->mark[k] |= 2;
             ibm->list_a[(*nfresh)++] = k; /* nfresh <= nchanged: list_a holds it */
         }
-        if (s) gks_solver_fields(s).kind[k] = now;
+        if (!s) continue;
+        /* the solver's cells start at the Ibm's cell lo (0 on one process) */
+        const int64_t lo = ibm_share_local_lo(ibm), local = k - lo;
+        if (local >= 0 && local < gks_solver_grid(s)->size) gks_solver_fields(s).kind[local] = now;
     }
     st->fresh = *nfresh;
 }
@@ -779,7 +806,7 @@ static int rebuild_ghost_list(Ibm *ibm, int64_t nq, int nadd) {
 static int fill_fresh_cells(Ibm *ibm, GksSolver *s, int nfresh) {
     if (s && nfresh > 0) {
         TRY(ibm_stencils_reserve(&ibm->spare, nfresh));
-        fill_fresh(ibm, s, nfresh, &ibm->spare);
+        TRY(fill_fresh(ibm, s, nfresh, &ibm->spare));
     }
     for (int q = 0; q < nfresh; q++) ibm->mark[ibm->list_a[q]] &= (uint8_t)~2u;
     return NSPD_OK;
@@ -792,11 +819,8 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, GksSolver *s) {
                          "same bodies (build a new one with ibm_create)",
                          count, ibm->body_count);
     TRY(check_bodies(bodies, count));
-    if (ibm->share)
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "immersed boundary: moving walls run on one process only so far");
     if (s) {
-        const Grid *sg = gks_solver_grid(s);
+        const Grid *sg = gks_solver_whole_grid(s);
         if (sg->nx != ibm->nx || sg->ny != ibm->ny)
             return NSPD_FAIL(NSPD_ERR_INPUT, "immersed boundary: update with another grid");
     }
@@ -813,9 +837,10 @@ int ibm_update(Ibm *ibm, const IbmPolyline *bodies, int count, GksSolver *s) {
     TRY(retag_swept(ibm, nbox, &nchanged)); /* 4 */
     TRY(queue_reach(ibm, nchanged, &nq));   /* 5 */
     update_kinds(ibm, s, nq, &nfresh, &nadd);
-    TRY(rebuild_ghost_list(ibm, nq, nadd)); /* 6 */
-    TRY(build_probes(ibm));                 /* 7: every segment moves with a deforming body */
-    TRY(fill_fresh_cells(ibm, s, nfresh));  /* 8 */
+    TRY(rebuild_ghost_list(ibm, nq, nadd));     /* 6 */
+    TRY(build_probes(ibm));                     /* 7: every segment moves with a deforming body */
+    TRY(fill_fresh_cells(ibm, s, nfresh));      /* 8 */
+    if (ibm->share) TRY(ibm_share_replan(ibm)); /* 9: who fills and fetches what */
     count_stats(ibm);
     st->seconds = nspd_wall_time() - t0;
     return NSPD_OK;

@@ -152,7 +152,13 @@ void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const ui
 /* share.c: the plan of which ghosts and probes this process evaluates and
  * which cells it fetches, built by ibm_attach when the solver runs on
  * several processes. */
-int ibm_share_create(Ibm *ibm, const GksSolver *s);
+int ibm_share_create(Ibm *ibm, GksSolver *s);
+/* The plan again, for the ghosts and probes of moved walls (ibm_update). */
+int ibm_share_replan(Ibm *ibm);
+/* The current values of the n cells (the same list on every rank, each
+ * cell once) into the shadow, from the ranks that hold them; collective. */
+int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells);
+double *const *ibm_share_shadow(const Ibm *ibm);
 void ibm_share_free(IbmShare **sh);
 /* The whole-grid shadow of the conserved fields, current where this
  * process's stencils read (collective: every rank calls). */

@@ -264,7 +264,7 @@ static void ghost_config_free(void *model) {
 
 const CouplingOps GHOST_COUPLING_OPS = {
     .name = "ghost_cell",
-    .distributed = true, /* fixed bodies; a solid is refused on several (sim.c) */
+    .distributed = true, /* the solid coupled is replicated on every rank (sim.c) */
     .config_free = ghost_config_free,
     .estimate = ghost_estimate,
     .create = ghost_create,

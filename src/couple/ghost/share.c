@@ -33,6 +33,7 @@
 #include <string.h>
 
 struct IbmShare {
+    GksSolver *solver; /* the Ibm's (it outlives the Ibm) */
     NspdComm comm;
     int stride, rows;       /* the whole grid's row length and interior rows */
     int64_t own_lo, own_hi; /* whole padded cells this process owns, [lo, hi) */
@@ -174,10 +175,32 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     return nspd_alloc(&sh->probe_all, 4 * (size_t)P->n + 1, sizeof(double));
 }
 
-int ibm_share_create(Ibm *ibm, const GksSolver *s) {
+/* Frees the plan (not the shadow). */
+static void free_plan(IbmShare *sh) {
+    int **ints[] = {&sh->ghosts,     &sh->probes,      &sh->probe_rank, &sh->recv_first,
+                    &sh->send_first, &sh->send_bytes,  &sh->send_at,    &sh->recv_bytes,
+                    &sh->recv_at,    &sh->probe_bytes, &sh->probe_at};
+    for (size_t q = 0; q < sizeof ints / sizeof ints[0]; q++) nspd_free(ints[q]);
+    nspd_free(&sh->recv_cells);
+    nspd_free(&sh->send_cells);
+    nspd_free(&sh->send_buf);
+    nspd_free(&sh->recv_buf);
+    nspd_free(&sh->probe_mine);
+    nspd_free(&sh->probe_all);
+    sh->nghosts = sh->nprobes = 0;
+}
+
+int ibm_share_replan(Ibm *ibm) {
+    IbmShare *sh = ibm->share;
+    free_plan(sh);
+    return plan(ibm, sh->solver, sh);
+}
+
+int ibm_share_create(Ibm *ibm, GksSolver *s) {
     IbmShare *sh;
     TRY(nspd_alloc(&sh, 1, sizeof *sh));
     ibm->share = sh;
+    sh->solver = s;
     sh->comm = *gks_solver_comm(s);
     const Grid *whole = gks_solver_whole_grid(s);
     sh->stride = whole->stride;
@@ -196,16 +219,7 @@ void ibm_share_free(IbmShare **p) {
     IbmShare *sh = *p;
     if (!sh) return;
     for (int v = 0; v < 4; v++) nspd_free(&sh->w[v]);
-    int **ints[] = {&sh->ghosts,     &sh->probes,      &sh->probe_rank, &sh->recv_first,
-                    &sh->send_first, &sh->send_bytes,  &sh->send_at,    &sh->recv_bytes,
-                    &sh->recv_at,    &sh->probe_bytes, &sh->probe_at};
-    for (size_t q = 0; q < sizeof ints / sizeof ints[0]; q++) nspd_free(ints[q]);
-    nspd_free(&sh->recv_cells);
-    nspd_free(&sh->send_cells);
-    nspd_free(&sh->send_buf);
-    nspd_free(&sh->recv_buf);
-    nspd_free(&sh->probe_mine);
-    nspd_free(&sh->probe_all);
+    free_plan(sh);
     nspd_free(p);
 }
 
@@ -263,4 +277,40 @@ int ibm_share_probe_values(const Ibm *ibm, const double *mine, double *q) {
 const int *ibm_share_probes(const Ibm *ibm, int *count) {
     *count = ibm->share->nprobes;
     return ibm->share->probes;
+}
+
+int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells) {
+    IbmShare *sh = ibm->share;
+    const GksSolver *s = sh->solver;
+    const GksFields f = gks_solver_fields(sh->solver);
+    const int p = sh->comm.size, me = sh->comm.rank;
+    double *mine = NULL, *all = NULL;
+    int *at = NULL;
+    int status = nspd_alloc(&mine, 4 * (size_t)n + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&all, 4 * (size_t)n + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&at, (size_t)p + 1, sizeof(int));
+    if (status == NSPD_OK) {
+        int count = 0;
+        for (int i = 0; i < n; i++) {
+            const int r = cell_rank(s, sh, cells[i]);
+            at[r + 1] += 4;
+            if (r != me) continue;
+            for (int v = 0; v < 4; v++) mine[count++] = f.w[v][cells[i] - sh->local_lo];
+        }
+        status = comm_allgatherv(&sh->comm, mine, count, all);
+        for (int r = 0; r < p; r++) at[r + 1] += at[r]; /* each rank's first value */
+    }
+    if (status == NSPD_OK)
+        for (int i = 0; i < n; i++) {
+            const int r = cell_rank(s, sh, cells[i]);
+            for (int v = 0; v < 4; v++) sh->w[v][cells[i]] = all[at[r]++];
+        }
+    nspd_free(&mine);
+    nspd_free(&all);
+    nspd_free(&at);
+    return status;
+}
+
+double *const *ibm_share_shadow(const Ibm *ibm) {
+    return ibm->share->w;
 }
