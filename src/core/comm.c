@@ -143,8 +143,22 @@ int comm_alltoallv_bytes(const NspdComm *c, const void *send, const int *send_by
     if (!comm_distributed(c))
         return gather_alone((const char *)send + send_at[0], send_bytes[0],
                             (char *)recv + recv_at[0]);
-    MPI_Alltoallv(send, send_bytes, send_at, MPI_BYTE, recv, recv_bytes, recv_at, MPI_BYTE,
-                  mpi_of(c));
+    /* point to point with the ranks that have something to say: an
+     * MPI_Alltoallv visits every rank, P latencies a call where most
+     * counts are zero (a slab's neighbours are few) */
+    MPI_Request *req = NULL;
+    TRY(nspd_alloc(&req, 2 * (size_t)c->size, sizeof *req));
+    const MPI_Comm m = mpi_of(c);
+    int n = 0;
+    for (int q = 0; q < c->size; q++)
+        if (recv_bytes[q] > 0)
+            MPI_Irecv((char *)recv + recv_at[q], recv_bytes[q], MPI_BYTE, q, 1, m, &req[n++]);
+    for (int q = 0; q < c->size; q++)
+        if (send_bytes[q] > 0)
+            MPI_Isend((const char *)send + send_at[q], send_bytes[q], MPI_BYTE, q, 1, m,
+                      &req[n++]);
+    MPI_Waitall(n, req, MPI_STATUSES_IGNORE);
+    nspd_free(&req);
     return NSPD_OK;
 }
 

@@ -59,7 +59,9 @@ int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *
 
 /* Each rank sends send_bytes[q] bytes from send + send_at[q] to rank q
  * and receives recv_bytes[q] bytes from rank q at recv + recv_at[q]
- * (arrays of `size` entries; the counts must match pairwise). */
+ * (arrays of `size` entries; the counts must match pairwise). Messages
+ * go only where a count is not zero, so a call costs the latencies of
+ * the partners, not of every rank. */
 int comm_alltoallv_bytes(const NspdComm *c, const void *send, const int *send_bytes,
                          const int *send_at, void *recv, const int *recv_bytes, const int *recv_at);
 
