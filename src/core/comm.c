@@ -155,8 +155,7 @@ int comm_alltoallv_bytes(const NspdComm *c, const void *send, const int *send_by
             MPI_Irecv((char *)recv + recv_at[q], recv_bytes[q], MPI_BYTE, q, 1, m, &req[n++]);
     for (int q = 0; q < c->size; q++)
         if (send_bytes[q] > 0)
-            MPI_Isend((const char *)send + send_at[q], send_bytes[q], MPI_BYTE, q, 1, m,
-                      &req[n++]);
+            MPI_Isend((const char *)send + send_at[q], send_bytes[q], MPI_BYTE, q, 1, m, &req[n++]);
     MPI_Waitall(n, req, MPI_STATUSES_IGNORE);
     nspd_free(&req);
     return NSPD_OK;

@@ -7,8 +7,10 @@
 # Blasius plate (stretched rows, inflow, outflow, a no-slip plate, point
 # probes), fixed bodies in a stream (the Mach 2 cylinder with sealed and
 # with reflected ghost faces, the NACA 0012: ghost cells, surface loads and
-# forces), and solids coupled to the flow (the panel in a shock, the
-# cracking cylinder: the solid replicated, the walls moving). Then the state moves between process counts: a checkpoint
+# forces), and solids coupled to the flow, replicated on every rank: by
+# the ghost-cell boundary (the panel in a shock, the cracking cylinder:
+# moving walls) and by the volumetric penalty (the detonation chamber, the
+# hollow square in a blast with sealed faces). Then the state moves between process counts: a checkpoint
 # written on 3 ranks resumes on 2 and on 1, and a field written on 3 ranks
 # starts a run on 1 (and one written by 1 a run on 3), all with the same
 # bits. Then the refusals: a bad case, a solid, and more ranks than rows,
@@ -107,6 +109,12 @@ check_body naca0012_ma05_re5000 naca
 # cylinder.
 check_body panel_shock panel
 check_body cylinder_crack_ma17 crack
+# The volumetric penalty coupling (solid replicated, cells gathered and
+# scattered by the flow's ops): the coarse detonation chamber, and the
+# hollow square in a blast with sealed faces, shortened.
+check_body chamber_detonation chamber
+check_body blast_hollow_square blast_sealed --set time.end=2e-5 --set coupling.seal=true \
+    --set output.field_interval=1e-5
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of

@@ -421,6 +421,9 @@ static void penalty_config_free(void *model) {
 
 const CouplingOps PENALTY_COUPLING_OPS = {
     .name = "penalty",
+    /* the solid replicated on every rank; the flow's ops gather and
+     * scatter the cells (flow/gks/model.c) */
+    .distributed = true,
     .config_free = penalty_config_free,
     .estimate = penalty_estimate,
     .create = penalty_create,

@@ -35,6 +35,9 @@ typedef struct {
     uint8_t *blank; /* 1: not a fluid cell */
     uint8_t *valid; /* 1: a fluid cell (sampling) */
     double *slab;   /* this process's interior cells (several processes) */
+    /* several processes, a volumetric coupling: the whole grid's kinds
+     * (padded, as grid_index) and their interior rows as gathered */
+    uint8_t *whole_kind, *kind_rows;
 } GksFlow;
 
 /* The vortex on a periodic box takes its nearest image: its periods are the
@@ -98,6 +101,8 @@ static void gks_destroy(void *impl) {
     nspd_free(&g->blank);
     nspd_free(&g->valid);
     nspd_free(&g->slab);
+    nspd_free(&g->whole_kind);
+    nspd_free(&g->kind_rows);
     nspd_free(&g);
 }
 
@@ -327,29 +332,142 @@ static int gks_set_sources(void *impl, FlowSources *src) {
     return NSPD_OK;
 }
 
+/* A volumetric coupling's side (FlowOps.transfer, lumped, add_lumped,
+ * seal). On several processes the coupling (and its solid) is replicated:
+ * it passes every rank the same cells of the whole grid; the weights need
+ * the whole grid's kinds (gathered at each call: a byte a cell), the
+ * lumped values come from the ranks that hold the cells (gathered in the
+ * list's order), and each rank adds to and seals only the cells it holds,
+ * so every value is the one-process one. */
+
+/* The whole grid's kinds on every rank (padded; ghost layers SOLID, never
+ * read by the weights). */
+static int whole_kinds(GksFlow *gf) {
+    GksSolver *s = gf->solver;
+    const Grid *w = gks_solver_whole_grid(s), *g = gks_solver_grid(s);
+    if (!gf->whole_kind) {
+        TRY(nspd_alloc(&gf->whole_kind, (size_t)w->size, 1));
+        TRY(nspd_alloc(&gf->kind_rows, (size_t)w->nx * (size_t)w->ny + 1, 1));
+        memset(gf->whole_kind, FLOW_CELL_SOLID, (size_t)w->size);
+    }
+    uint8_t *mine = (uint8_t *)gf->slab; /* nx * ny bytes fit in the doubles */
+    const uint8_t *kind = gks_solver_fields(s).kind;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = kind[grid_index(g, i, j)];
+    TRY(comm_allgatherv_bytes(gks_solver_comm(s), mine, g->nx * g->ny, gf->kind_rows));
+    for (int j = 0; j < w->ny; j++)
+        memcpy(gf->whole_kind + grid_index(w, 0, j), gf->kind_rows + (int64_t)j * w->nx,
+               (size_t)w->nx);
+    return NSPD_OK;
+}
+
 static void gks_flow_transfer(const void *impl, FlowTransferKind kind, int64_t n, const double *x,
                               const double *y, int64_t *cell, double *w) {
-    GksSolver *s = ((const GksFlow *)impl)->solver;
-    gks_transfer(gks_solver_grid(s), gks_solver_fields(s).kind, kind, n, x, y, cell, w);
+    GksFlow *gf = (GksFlow *)impl; /* the kinds' scratch only */
+    GksSolver *s = gf->solver;
+    const uint8_t *kinds = gks_solver_fields(s).kind;
+    if (comm_distributed(gks_solver_comm(s))) {
+        if (whole_kinds(gf) != NSPD_OK) { /* no memory: no weights, the coupling refuses */
+            for (int64_t k = 0; k < n * flow_transfer_width(kind); k++) cell[k] = -1, w[k] = 0.0;
+            return;
+        }
+        kinds = gf->whole_kind;
+    }
+    gks_transfer(gks_solver_whole_grid(s), kinds, kind, n, x, y, cell, w);
+}
+
+/* The process that holds whole-grid cell c's row, and c's index there. */
+static int cell_owner(const GksSolver *s, int64_t c, int64_t *local) {
+    const Grid *w = gks_solver_whole_grid(s);
+    const int j = (int)(c / w->stride) - GRID_NG;
+    const int owner = gks_solver_row_owner(s, j);
+    *local = c - (int64_t)gks_solver_slab_first(s, owner) * w->stride;
+    return owner;
 }
 
 static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
                             double *momentum_x, double *momentum_y) {
-    GksSolver *s = ((const GksFlow *)impl)->solver;
+    const GksFlow *gf = impl;
+    GksSolver *s = gf->solver;
     const GksFields f = gks_solver_fields(s);
-    gks_lumped(gks_solver_grid(s), &f, n, cells, mass, momentum_x, momentum_y);
+    const NspdComm *comm = gks_solver_comm(s);
+    if (!comm_distributed(comm)) {
+        gks_lumped(gks_solver_grid(s), &f, n, cells, mass, momentum_x, momentum_y);
+        return;
+    }
+    const int p = comm->size;
+    double *mine = NULL, *all = NULL;
+    int64_t *at = NULL;
+    int status = nspd_alloc(&mine, 3 * (size_t)n + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&all, 3 * (size_t)n + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&at, (size_t)p + 1, sizeof(int64_t));
+    int count = 0;
+    for (int64_t k = 0; k < n && status == NSPD_OK; k++) {
+        int64_t local;
+        const int r = cell_owner(s, cells[k], &local);
+        at[r + 1] += 3;
+        if (r != comm->rank) continue;
+        gks_lumped(gks_solver_grid(s), &f, 1, &local, &mine[count], &mine[count + 1],
+                   &mine[count + 2]);
+        count += 3;
+    }
+    if (status == NSPD_OK) status = comm_allgatherv(comm, mine, count, all);
+    for (int r = 0; r < p && status == NSPD_OK; r++) at[r + 1] += at[r];
+    for (int64_t k = 0; k < n; k++) {
+        int64_t local;
+        const int r = cell_owner(s, cells[k], &local);
+        /* an allocation failure leaves NaN, which the coupling's next step refuses */
+        const double *v = status == NSPD_OK ? &all[at[r]] : (const double[3]){NAN, NAN, NAN};
+        if (status == NSPD_OK) at[r] += 3;
+        mass[k] = v[0], momentum_x[k] = v[1], momentum_y[k] = v[2];
+    }
+    nspd_free(&mine);
+    nspd_free(&all);
+    nspd_free(&at);
 }
 
 static void gks_flow_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
                                 const double *dmy, const double *de) {
     GksSolver *s = ((GksFlow *)impl)->solver;
     GksFields f = gks_solver_fields(s);
-    gks_add_lumped(gks_solver_grid(s), &f, n, cells, dmx, dmy, de);
+    const NspdComm *comm = gks_solver_comm(s);
+    if (!comm_distributed(comm)) {
+        gks_add_lumped(gks_solver_grid(s), &f, n, cells, dmx, dmy, de);
+        return;
+    }
+    for (int64_t k = 0; k < n; k++) {
+        int64_t local;
+        if (cell_owner(s, cells[k], &local) != comm->rank) continue;
+        gks_add_lumped(gks_solver_grid(s), &f, 1, &local, dmx ? &dmx[k] : NULL,
+                       dmy ? &dmy[k] : NULL, de ? &de[k] : NULL);
+    }
 }
 
 static int gks_flow_seal(void *impl, int64_t n, const int64_t *cells, const double *area,
                          const double *u, const double *v, double fraction) {
-    return gks_solver_set_seals(((GksFlow *)impl)->solver, n, cells, area, u, v, fraction);
+    GksSolver *s = ((GksFlow *)impl)->solver;
+    if (!comm_distributed(gks_solver_comm(s)))
+        return gks_solver_set_seals(s, n, cells, area, u, v, fraction);
+    /* this slab's cells and its halo's: a face between the two is this
+     * rank's to seal too */
+    const int64_t lo = (int64_t)gks_solver_first_row(s) * gks_solver_grid(s)->stride;
+    const int64_t hi = lo + gks_solver_grid(s)->size;
+    int64_t *mine = NULL;
+    double *val = NULL;
+    int status = nspd_alloc(&mine, (size_t)n + 1, sizeof *mine);
+    if (status == NSPD_OK) status = nspd_alloc(&val, 3 * (size_t)n + 3, sizeof *val);
+    int64_t m = 0;
+    for (int64_t k = 0; k < n && status == NSPD_OK; k++) {
+        if (cells[k] < lo || cells[k] >= hi) continue;
+        mine[m] = cells[k] - lo;
+        val[m] = area[k], val[n + 1 + m] = u[k], val[2 * n + 2 + m] = v[k];
+        m++;
+    }
+    if (status == NSPD_OK)
+        status = gks_solver_set_seals(s, m, mine, val, val + n + 1, val + 2 * n + 2, fraction);
+    nspd_free(&mine);
+    nspd_free(&val);
+    return status;
 }
 
 static void gks_totals(const void *impl, double totals[4]) {
