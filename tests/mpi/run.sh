@@ -145,6 +145,35 @@ else
     fail "the checkpointed run on 3 ranks failed"
 fi
 
+# A signal to mpirun (SIGUSR1, which it forwards): the ranks agree to stop
+# at the same step with a checkpoint and the outputs (exit status 130);
+# resumed on 2 ranks, the run ends as the one of one process that never
+# stopped.
+set -f
+IFS='
+'
+sig=$(printf '%s\n' --set "flow.grid.x.segments=[{length: 10.0, cells: 24}]" --set "flow.grid.y.segments=[{length: 10.0, cells: 24}]" --set time.end=300)
+"$nspd" run "$vortex" -o "$work/sig.ref" --quiet $sig || fail "the run to be signalled, on one process, failed"
+"$mpiexec" -n 3 "$nspd" run "$vortex" -o "$work/sig.3" --quiet $sig >/dev/null 2>&1 &
+pid=$!
+# once the run is stepping (its log says so), the signal
+while kill -0 "$pid" 2>/dev/null && ! grep -q processes "$work/sig.3/log.txt" 2>/dev/null; do sleep 0.05; done
+sleep 0.2
+kill -s USR1 "$pid"
+wait "$pid"
+status=$?
+if [ "$status" -eq 130 ] && ls "$work/sig.3" | grep -q "^checkpoint_"; then
+    if on 2 "$vortex" -o "$work/sig.3" --quiet --resume $sig; then
+        same_results "$work/sig.ref" "$work/sig.3" "stopped by a signal on 3 ranks, resumed on 2"
+    else
+        fail "the signalled run resumed on 2 ranks: exit status $?"
+    fi
+else
+    fail "SIGUSR1 to mpirun on 3 ranks: exit status $status (expected 130 and a checkpoint)"
+fi
+unset IFS
+set +f
+
 # The coupled cylinder's checkpoint (the solid, the moving interface, the
 # flow) written on 3 ranks resumes on 2 with the same bits.
 set -f
