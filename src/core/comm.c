@@ -267,8 +267,9 @@ int comm_agree(const NspdComm *c, int status, int64_t *flags, int n) {
     } said = {status, ""};
     if (c->rank == failed) snprintf(said.message, sizeof said.message, "%s", nspd_error_message());
     comm_bcast(c, &said, (int)sizeof said, failed);
-    if (c->rank == failed) return status;
+    /* the same words on every rank, the failed one included */
     if (failed > 0)
         return nspd_error(said.status, __FILE__, __LINE__, "on rank %d: %s", failed, said.message);
+    if (c->rank == failed) return status;
     return nspd_error(said.status, __FILE__, __LINE__, "%s", said.message);
 }

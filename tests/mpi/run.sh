@@ -24,7 +24,7 @@ mpiexec=$3
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 # a hung rank must fail the test, not the suite's time limit
-on() { n=$1; shift; timeout 300 "$mpiexec" -n "$n" "$nspd" run "$@"; }
+on() { n=$1; shift; timeout -k 10 300 "$mpiexec" -n "$n" "$nspd" run "$@"; }
 
 # Every file of the run in $1 is in $2 with the same bytes (summary.json
 # but for the machine's keys), and $2 has no other files than its log
