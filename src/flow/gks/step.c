@@ -25,6 +25,7 @@
 
 #include <math.h>
 #include <omp.h>
+#include <stdio.h>
 
 /* The neighbours' rows into a slab's ghost rows (solver.h): the first
  * GRID_NG rows go down into the ghost rows above the slab below, the last
@@ -343,27 +344,28 @@ static int64_t first_bad_cell(const GksSolver *s) {
     return INT64_MAX;
 }
 
-/* The message names the first bad cell of the whole grid; every process
- * fails with it, the one that holds the cell with the numbers. */
+/* The message names the first bad cell of the whole grid; the process
+ * that holds it writes it with the cell's numbers and sends it to the
+ * others, so every process fails with the same words as one process. */
 static int report_bad_cell(const GksSolver *s, int64_t first) {
     const Grid *g = &s->grid;
-    const int i = (int)(first % g->nx), j = (int)(first / g->nx) - s->row0;
     if (first == INT64_MAX)
         return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: non-physical state at step %lld",
                          (long long)s->steps);
-    if (j < 0 || j >= g->ny)
-        return NSPD_FAIL(NSPD_ERR_NUMERIC,
-                         "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, %d) "
-                         "(held by another process)",
-                         (long long)s->steps, s->time, i, j + s->row0);
-    const int64_t k = grid_index(g, i, j);
-    const double gm1 = s->gas.gamma - 1.0, r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k];
-    const double p = gm1 * (s->w[3][k] - 0.5 * (mx * mx + my * my) / r);
-    return NSPD_FAIL(NSPD_ERR_NUMERIC,
-                     "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, %d) at "
-                     "(%.6g, %.6g) m: rho = %.6g kg/m^3, p = %.6g Pa",
-                     (long long)s->steps, s->time, i, j + s->row0, g->ax[0].center[i],
-                     g->ax[1].center[j], r, p);
+    const int i = (int)(first % g->nx), row = (int)(first / g->nx), j = row - s->row0;
+    char text[512] = "";
+    if (j >= 0 && j < g->ny) {
+        const int64_t k = grid_index(g, i, j);
+        const double gm1 = s->gas.gamma - 1.0, r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k];
+        const double p = gm1 * (s->w[3][k] - 0.5 * (mx * mx + my * my) / r);
+        snprintf(text, sizeof text,
+                 "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, %d) at "
+                 "(%.6g, %.6g) m: rho = %.6g kg/m^3, p = %.6g Pa",
+                 (long long)s->steps, s->time, i, row, g->ax[0].center[i], g->ax[1].center[j], r,
+                 p);
+    }
+    (void)comm_bcast(&s->comm, text, (int)sizeof text, gks_solver_row_owner(s, row));
+    return NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
 }
 
 /* dt times the volume sources into the new state of the fluid cells: each
