@@ -175,6 +175,34 @@ int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *
                              : NSPD_FAIL(NSPD_ERR_IO, "MPI_Sendrecv failed on rank %d", c->rank);
 }
 
+int comm_begin_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv,
+                        int from, int tag, CommPending *pending) {
+    if (!comm_distributed(c)) return sendrecv_alone(send, bytes, to, recv, from);
+    if (pending->count + 2 > COMM_MAX_PENDING)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "more than %d exchanges pending", COMM_MAX_PENDING);
+    const MPI_Comm m = mpi_of(c);
+    MPI_Request r;
+    if (from >= 0) {
+        MPI_Irecv(recv, bytes, MPI_BYTE, from, tag, m, &r);
+        pending->handle[pending->count++] = (int)MPI_Request_c2f(r);
+    }
+    if (to >= 0) {
+        MPI_Isend(send, bytes, MPI_BYTE, to, tag, m, &r);
+        pending->handle[pending->count++] = (int)MPI_Request_c2f(r);
+    }
+    return NSPD_OK;
+}
+
+int comm_finish(const NspdComm *c, CommPending *pending) {
+    (void)c;
+    for (int k = 0; k < pending->count; k++) {
+        MPI_Request r = MPI_Request_f2c((MPI_Fint)pending->handle[k]);
+        MPI_Wait(&r, MPI_STATUS_IGNORE);
+    }
+    pending->count = 0;
+    return NSPD_OK;
+}
+
 #else /* one process */
 
 bool comm_enabled(void) {
@@ -230,6 +258,18 @@ static void max_i64_n(const NspdComm *c, int64_t *values, int n) {
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from) {
     (void)c;
     return sendrecv_alone(send, bytes, to, recv, from);
+}
+
+int comm_begin_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv,
+                        int from, int tag, CommPending *pending) {
+    (void)c, (void)tag, (void)pending;
+    return sendrecv_alone(send, bytes, to, recv, from);
+}
+
+int comm_finish(const NspdComm *c, CommPending *pending) {
+    (void)c;
+    pending->count = 0;
+    return NSPD_OK;
 }
 
 #endif

@@ -81,4 +81,20 @@ int comm_agree(const NspdComm *c, int status, int64_t *flags, int n);
  * nothing that way), as one exchange that cannot deadlock. */
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from);
 
+/* Exchanges begun and not yet finished: MPI's requests as portable
+ * integers (MPI_Request_c2f). */
+enum { COMM_MAX_PENDING = 32 };
+typedef struct {
+    int count;
+    int handle[COMM_MAX_PENDING];
+} CommPending;
+
+/* comm_sendrecv begun (tag: which of a caller's exchanges this is, the
+ * same on both sides): the buffers must not be touched until comm_finish.
+ * At most COMM_MAX_PENDING / 2 at once. */
+int comm_begin_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv,
+                        int from, int tag, CommPending *pending);
+/* Waits for every exchange begun into `pending`, and empties it. */
+int comm_finish(const NspdComm *c, CommPending *pending);
+
 #endif
