@@ -1,8 +1,9 @@
 # `mpirun -n N nspd run` (issue 28): the flow cases that run on several
 # processes end with every file bit for bit as the run of one process
 # without mpirun (history.csv, every .vtr, .pvd, picture and line table,
-# and summary.json but for the keys that measure the machine), on 2, 3 and
-# 4 ranks: a shock tube (extrapolated ends, periodic y), the isentropic
+# and summary.json but for the keys that measure the machine), each on
+# some of 2, 3 and 4 ranks (all three counts are covered; the suite's time
+# allows no more): a shock tube (extrapolated ends, periodic y), the isentropic
 # vortex (periodic box), Couette flow (moving isothermal walls), the
 # Blasius plate (stretched rows, inflow, outflow, a no-slip plate, point
 # probes), fixed bodies in a stream (the Mach 2 cylinder with sealed and
@@ -74,8 +75,8 @@ check_case() {
 
 check_case sod 0.2 2
 check_case vortex 1.0 2 3 4
-check_case couette 2.0 2 3 4
-check_case blasius 0.3 2 3 4
+check_case couette 2.0 3
+check_case blasius 0.3 2 3
 
 # Fixed bodies (the ghost-cell immersed boundary, couple/ghost/share.c):
 # the coarse golden runs of the Mach 2 cylinder (sealed ghost faces, soft
@@ -102,7 +103,7 @@ check_body() {
     unset IFS
     set +f
 }
-check_body cylinder_ma2_re300 cylinder_sealed "2 3 4"
+check_body cylinder_ma2_re300 cylinder_sealed "2 4"
 check_body cylinder_ma2_re300 cylinder_reflected 3 --set flow.ghost_faces=reflected
 check_body naca0012_ma05_re5000 naca "2 4"
 # A solid coupled to the flow (ghost-cell FSI, moving walls): replicated
