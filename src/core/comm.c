@@ -318,3 +318,25 @@ int comm_agree(const NspdComm *c, int status, int64_t *flags, int n) {
     if (c->rank == failed) return status;
     return nspd_error(said.status, __FILE__, __LINE__, "%s", said.message);
 }
+
+int comm_share_items(const NspdComm *c, int64_t n, const int *owner, int width, const double *mine,
+                     double *all) {
+    const int p = comm_distributed(c) ? c->size : 1, me = comm_distributed(c) ? c->rank : 0;
+    int64_t *at = NULL;
+    double *gathered = NULL;
+    int status = nspd_alloc(&at, (size_t)p + 1, sizeof *at);
+    if (status == NSPD_OK) status = nspd_alloc(&gathered, (size_t)(n * width) + 1, sizeof(double));
+    if (status == NSPD_OK) {
+        for (int64_t k = 0; k < n; k++) at[owner[k] + 1] += width;
+        status = comm_allgatherv(c, mine, (int)at[me + 1], gathered);
+        for (int r = 0; r < p; r++) at[r + 1] += at[r]; /* each rank's first value */
+    }
+    if (status == NSPD_OK)
+        for (int64_t k = 0; k < n; k++) {
+            memcpy(all + k * width, gathered + at[owner[k]], (size_t)width * sizeof(double));
+            at[owner[k]] += width;
+        }
+    nspd_free(&at);
+    nspd_free(&gathered);
+    return status;
+}

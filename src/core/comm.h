@@ -54,6 +54,14 @@ int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *al
  * writer on rank 0 gathers without the whole on every rank. */
 int comm_gatherv(const NspdComm *c, const double *mine, int count, double *all);
 
+/* Items 0..n-1, item k held by rank owner[k]: each rank passes the
+ * `width` values of each item it holds, in item order (mine), and every
+ * rank gets every item's values in item order in all[n * width]. One
+ * gather; what a replicated model asks of a divided one (a cell's state,
+ * a probe's value) answered alike everywhere. */
+int comm_share_items(const NspdComm *c, int64_t n, const int *owner, int width, const double *mine,
+                     double *all);
+
 /* The same for bytes (each rank's count in bytes). */
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all);
 

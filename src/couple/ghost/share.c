@@ -48,8 +48,7 @@ struct IbmShare {
     int64_t *recv_cells, *send_cells;
     double *send_buf, *recv_buf;
     int *send_bytes, *send_at, *recv_bytes, *recv_at;
-    double *probe_mine, *probe_all; /* 4 values per probe entry */
-    int *probe_bytes, *probe_at;
+    double *probe_mine; /* 4 values per probe entry */
 };
 
 /* The process that holds whole padded row R current: the slab of its
@@ -160,8 +159,7 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     TRY(status);
     TRY(nspd_alloc(&sh->send_buf, 4 * (size_t)nsend + 1, sizeof(double)));
     TRY(nspd_alloc(&sh->recv_buf, 4 * (size_t)nrecv + 1, sizeof(double)));
-    int **counts[] = {&sh->send_bytes, &sh->send_at,     &sh->recv_bytes,
-                      &sh->recv_at,    &sh->probe_bytes, &sh->probe_at};
+    int **counts[] = {&sh->send_bytes, &sh->send_at, &sh->recv_bytes, &sh->recv_at};
     for (size_t q = 0; q < sizeof counts / sizeof counts[0]; q++)
         TRY(nspd_alloc(counts[q], (size_t)p, sizeof(int)));
     for (int r = 0; r < p; r++) {
@@ -171,22 +169,20 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
         sh->recv_at[r] = sh->recv_first[r] * unit;
         sh->recv_bytes[r] = (sh->recv_first[r + 1] - sh->recv_first[r]) * unit;
     }
-    TRY(nspd_alloc(&sh->probe_mine, 4 * (size_t)P->n + 1, sizeof(double)));
-    return nspd_alloc(&sh->probe_all, 4 * (size_t)P->n + 1, sizeof(double));
+    return nspd_alloc(&sh->probe_mine, 4 * (size_t)P->n + 1, sizeof(double));
 }
 
 /* Frees the plan (not the shadow). */
 static void free_plan(IbmShare *sh) {
-    int **ints[] = {&sh->ghosts,     &sh->probes,      &sh->probe_rank, &sh->recv_first,
-                    &sh->send_first, &sh->send_bytes,  &sh->send_at,    &sh->recv_bytes,
-                    &sh->recv_at,    &sh->probe_bytes, &sh->probe_at};
+    int **ints[] = {&sh->ghosts,     &sh->probes,     &sh->probe_rank,
+                    &sh->recv_first, &sh->send_first, &sh->send_bytes,
+                    &sh->send_at,    &sh->recv_bytes, &sh->recv_at};
     for (size_t q = 0; q < sizeof ints / sizeof ints[0]; q++) nspd_free(ints[q]);
     nspd_free(&sh->recv_cells);
     nspd_free(&sh->send_cells);
     nspd_free(&sh->send_buf);
     nspd_free(&sh->recv_buf);
     nspd_free(&sh->probe_mine);
-    nspd_free(&sh->probe_all);
     sh->nghosts = sh->nprobes = 0;
 }
 
@@ -255,23 +251,12 @@ int64_t ibm_share_local_lo(const Ibm *ibm) {
 }
 
 /* Each probe's (u, v, p, T) from the process that evaluated it, in entry
- * order, into q[4 e ..]: the allgather in rank order, then each rank's
- * entries (known everywhere) put back in place. */
+ * order, into q[4 e ..]. */
 int ibm_share_probe_values(const Ibm *ibm, const double *mine, double *q) {
     IbmShare *sh = ibm->share;
-    const int p = sh->comm.size, n = ibm->probes.n;
-    for (int r = 0; r < p; r++) sh->probe_bytes[r] = 0;
-    for (int e = 0; e < n; e++) sh->probe_bytes[sh->probe_rank[e]] += 4 * (int)sizeof(double);
-    for (int i = 0; i < sh->nprobes; i++)
+    for (int i = 0; i < sh->nprobes; i++) /* packed first: mine may be q */
         memcpy(sh->probe_mine + 4 * i, mine + 4 * sh->probes[i], 4 * sizeof(double));
-    TRY(comm_allgatherv(&sh->comm, sh->probe_mine, 4 * sh->nprobes, sh->probe_all));
-    for (int r = 0, at = 0; r < p; r++) sh->probe_at[r] = at, at += sh->probe_bytes[r] / 8;
-    for (int e = 0; e < n; e++) {
-        const int r = sh->probe_rank[e];
-        memcpy(q + 4 * e, sh->probe_all + sh->probe_at[r], 4 * sizeof(double));
-        sh->probe_at[r] += 4;
-    }
-    return NSPD_OK;
+    return comm_share_items(&sh->comm, ibm->probes.n, sh->probe_rank, 4, sh->probe_mine, q);
 }
 
 const int *ibm_share_probes(const Ibm *ibm, int *count) {
@@ -283,31 +268,26 @@ int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells) {
     IbmShare *sh = ibm->share;
     const GksSolver *s = sh->solver;
     const GksFields f = gks_solver_fields(sh->solver);
-    const int p = sh->comm.size, me = sh->comm.rank;
     double *mine = NULL, *all = NULL;
-    int *at = NULL;
+    int *owner = NULL;
     int status = nspd_alloc(&mine, 4 * (size_t)n + 1, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&all, 4 * (size_t)n + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&at, (size_t)p + 1, sizeof(int));
+    if (status == NSPD_OK) status = nspd_alloc(&owner, (size_t)n + 1, sizeof(int));
     if (status == NSPD_OK) {
         int count = 0;
         for (int i = 0; i < n; i++) {
-            const int r = cell_rank(s, sh, cells[i]);
-            at[r + 1] += 4;
-            if (r != me) continue;
+            owner[i] = cell_rank(s, sh, cells[i]);
+            if (owner[i] != sh->comm.rank) continue;
             for (int v = 0; v < 4; v++) mine[count++] = f.w[v][cells[i] - sh->local_lo];
         }
-        status = comm_allgatherv(&sh->comm, mine, count, all);
-        for (int r = 0; r < p; r++) at[r + 1] += at[r]; /* each rank's first value */
+        status = comm_share_items(&sh->comm, n, owner, 4, mine, all);
     }
     if (status == NSPD_OK)
-        for (int i = 0; i < n; i++) {
-            const int r = cell_rank(s, sh, cells[i]);
-            for (int v = 0; v < 4; v++) sh->w[v][cells[i]] = all[at[r]++];
-        }
+        for (int i = 0; i < n; i++)
+            for (int v = 0; v < 4; v++) sh->w[v][cells[i]] = all[4 * i + v];
     nspd_free(&mine);
     nspd_free(&all);
-    nspd_free(&at);
+    nspd_free(&owner);
     return status;
 }
 

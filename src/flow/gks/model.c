@@ -395,35 +395,29 @@ static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, d
         gks_lumped(gks_solver_grid(s), &f, n, cells, mass, momentum_x, momentum_y);
         return;
     }
-    const int p = comm->size;
     double *mine = NULL, *all = NULL;
-    int64_t *at = NULL;
+    int *owner = NULL;
     int status = nspd_alloc(&mine, 3 * (size_t)n + 1, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&all, 3 * (size_t)n + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&at, (size_t)p + 1, sizeof(int64_t));
+    if (status == NSPD_OK) status = nspd_alloc(&owner, (size_t)n + 1, sizeof(int));
     int count = 0;
     for (int64_t k = 0; k < n && status == NSPD_OK; k++) {
         int64_t local;
-        const int r = cell_owner(s, cells[k], &local);
-        at[r + 1] += 3;
-        if (r != comm->rank) continue;
+        owner[k] = cell_owner(s, cells[k], &local);
+        if (owner[k] != comm->rank) continue;
         gks_lumped(gks_solver_grid(s), &f, 1, &local, &mine[count], &mine[count + 1],
                    &mine[count + 2]);
         count += 3;
     }
-    if (status == NSPD_OK) status = comm_allgatherv(comm, mine, count, all);
-    for (int r = 0; r < p && status == NSPD_OK; r++) at[r + 1] += at[r];
+    if (status == NSPD_OK) status = comm_share_items(comm, n, owner, 3, mine, all);
     for (int64_t k = 0; k < n; k++) {
-        int64_t local;
-        const int r = cell_owner(s, cells[k], &local);
         /* an allocation failure leaves NaN, which the coupling's next step refuses */
-        const double *v = status == NSPD_OK ? &all[at[r]] : (const double[3]){NAN, NAN, NAN};
-        if (status == NSPD_OK) at[r] += 3;
+        const double *v = status == NSPD_OK ? &all[3 * k] : (const double[3]){NAN, NAN, NAN};
         mass[k] = v[0], momentum_x[k] = v[1], momentum_y[k] = v[2];
     }
     nspd_free(&mine);
     nspd_free(&all);
-    nspd_free(&at);
+    nspd_free(&owner);
 }
 
 static void gks_flow_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
