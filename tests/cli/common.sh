@@ -1,8 +1,9 @@
 # What the end-to-end tests share (sourced by tests/cli/test_*.sh after they
 # set $src): a scratch directory removed at exit (kept, and its path
 # printed, when NSPD_KEEP_WORK is set), the check counters with ok / fail,
-# the closing line and exit status (finish), and the coarse golden runs'
-# overrides (golden_overrides CASE: one per line, from tests/golden/runs.txt).
+# the closing line and exit status (finish), the coarse golden runs'
+# overrides (golden_overrides CASE: one per line, from tests/golden/runs.txt)
+# and the comparison of two runs' files (same_results).
 work=$(mktemp -d)
 trap '[ -n "${NSPD_KEEP_WORK:-}" ] && echo "kept $work" || rm -rf "$work"' EXIT
 failures=0
@@ -15,4 +16,34 @@ finish() {
 }
 golden_overrides() {
     sed -n "s/^$1|//p" "$src/tests/golden/runs.txt" | tr ';' '\n'
+}
+
+# Every file of the run in $1 is in $2 with the same bytes (summary.json
+# but for the keys that measure the machine and the process layout), and
+# $2 has no other files than checkpoints and its log; $4 = paths: the two
+# runs' cases name different files (case.yaml left out). A check named $3.
+same_results() {
+    a=$1 b=$2 what=$3 skip=${4:-}
+    bad=""
+    for f in $(ls "$a"); do
+        case "$f" in checkpoint_* | log.txt) continue ;; esac
+        [ "$f" = case.yaml ] && [ "$skip" = paths ] && continue
+        if [ "$f" = summary.json ]; then
+            for d in "$a" "$b"; do
+                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|threads|processes|exchange_s|agree_s|peak_rss_mb|[a-z_]+_per_s)":' \
+                    "$d/summary.json" >"$d.summary"
+            done
+            cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
+        else
+            cmp -s "$a/$f" "$b/$f" || bad="$bad $f"
+        fi
+    done
+    extra=$(ls "$b" | grep -v -e '^checkpoint_' -e '^log.txt$' | while read -r f; do
+        [ -e "$a/$f" ] || echo "$f"
+    done)
+    if [ -z "$bad$extra" ]; then
+        ok
+    else
+        fail "$what: differs from $a in:$bad${extra:+; extra files: $extra}"
+    fi
 }

@@ -58,34 +58,6 @@ wait_checkpoints() {
     return 1
 }
 
-# Every file of the uninterrupted run ($1) is in $2, the same bytes;
-# summary.json the same but for the machine's keys; nothing else but
-# checkpoints and the log in $2.
-same_results() {
-    a=$1 b=$2 what=$3
-    bad=""
-    for f in $(ls "$a"); do
-        case "$f" in checkpoint_* | log.txt) continue ;; esac
-        if [ "$f" = summary.json ]; then
-            for d in "$a" "$b"; do
-                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|threads|peak_rss_mb|[a-z_]+_per_s)":' \
-                    "$d/summary.json" >"$d.summary"
-            done
-            cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
-        else
-            cmp -s "$a/$f" "$b/$f" || bad="$bad $f"
-        fi
-    done
-    extra=$(ls "$b" | grep -v -e '^checkpoint_' -e '^log.txt$' | while read -r f; do
-        [ -e "$a/$f" ] || echo "$f"
-    done)
-    if [ -z "$bad$extra" ]; then
-        ok
-    else
-        fail "$what: differs from the uninterrupted run in:$bad${extra:+; extra files: $extra}"
-    fi
-}
-
 # One kind of run: uninterrupted (1 thread), stopped by $signal after the
 # first checkpoint and resumed (2 threads, then 1), killed by SIGKILL at a
 # random moment after a random checkpoint and resumed (1 thread, then 2).

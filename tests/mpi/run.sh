@@ -27,36 +27,6 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 # a hung rank must fail the test, not the suite's time limit
 on() { n=$1; shift; timeout -k 10 300 "$mpiexec" -n "$n" "$nspd" run "$@"; }
 
-# Every file of the run in $1 is in $2 with the same bytes (summary.json
-# but for the machine's keys), and $2 has no other files than its log
-# and checkpoints; $4 = paths: the cases name other files (case.yaml
-# left out).
-same_results() {
-    a=$1 b=$2 what=$3 skip=${4:-}
-    bad=""
-    for f in $(ls "$a"); do
-        case "$f" in checkpoint_* | log.txt) continue ;; esac
-        [ "$f" = case.yaml ] && [ "$skip" = paths ] && continue
-        if [ "$f" = summary.json ]; then
-            for d in "$a" "$b"; do
-                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|threads|processes|exchange_s|agree_s|peak_rss_mb|[a-z_]+_per_s)":' \
-                    "$d/summary.json" >"$d.summary"
-            done
-            cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
-        else
-            cmp -s "$a/$f" "$b/$f" || bad="$bad $f"
-        fi
-    done
-    extra=$(ls "$b" | grep -v -e '^checkpoint_' -e '^log.txt$' | while read -r f; do
-        [ -e "$a/$f" ] || echo "$f"
-    done)
-    if [ -z "$bad$extra" ]; then
-        ok
-    else
-        fail "$what: differs from one process in:$bad${extra:+; extra files: $extra}"
-    fi
-}
-
 # name, end time, the process counts; one process without mpirun first
 check_case() {
     name=$1 end=$2
