@@ -35,7 +35,7 @@
 struct IbmShare {
     GksSolver *solver; /* the Ibm's (it outlives the Ibm) */
     NspdComm comm;
-    int stride, rows;       /* the whole grid's row length and interior rows */
+    int stride;             /* the whole grid's row length */
     int64_t own_lo, own_hi; /* whole padded cells this process owns, [lo, hi) */
     int64_t local_lo;       /* the whole padded cell of its local index 0 */
     double *w[4];           /* whole-grid shadow of the conserved fields */
@@ -51,17 +51,10 @@ struct IbmShare {
     double *probe_mine; /* 4 values per probe entry */
 };
 
-/* The process that holds whole padded row R current: the slab of its
- * interior row, the end slabs for the box's ghost rows. */
-static int row_rank(const GksSolver *s, int rows, int R) {
-    const int j = R - GRID_NG;
-    if (j < 0) return 0;
-    if (j >= rows) return gks_solver_comm(s)->size - 1;
-    return gks_solver_row_owner(s, j);
-}
-
+/* The process that holds whole padded cell k current: the slab of its
+ * row (the end slabs for the box's ghost rows: gks_solver_row_owner). */
 static int cell_rank(const GksSolver *s, const IbmShare *sh, int64_t k) {
-    return row_rank(s, sh->rows, (int)(k / sh->stride));
+    return gks_solver_row_owner(s, (int)(k / sh->stride) - GRID_NG);
 }
 
 /* Whether ghost entry e is filled by rank r: its cell is in r's slab or
@@ -109,7 +102,7 @@ static void assign_probes(const Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     for (int e = 0; e < P->n; e++) {
         const int64_t k = P->cell[e];
         const int R = k >= 0 ? (int)(k / sh->stride) : GRID_NG;
-        sh->probe_rank[e] = row_rank(s, sh->rows, R);
+        sh->probe_rank[e] = gks_solver_row_owner(s, R - GRID_NG);
         if (sh->probe_rank[e] == sh->comm.rank) sh->probes[sh->nprobes++] = e;
     }
 }
@@ -200,7 +193,6 @@ int ibm_share_create(Ibm *ibm, GksSolver *s) {
     sh->comm = *gks_solver_comm(s);
     const Grid *whole = gks_solver_whole_grid(s);
     sh->stride = whole->stride;
-    sh->rows = whole->ny;
     const int me = sh->comm.rank, p = sh->comm.size;
     const int first = gks_solver_slab_first(s, me), next = gks_solver_slab_first(s, me + 1);
     sh->local_lo = (int64_t)first * sh->stride;

@@ -254,7 +254,8 @@ int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);
 /* The first row of the whole grid that process `rank` holds (rank =
  * size: the whole grid's rows). */
 int gks_solver_slab_first(const GksSolver *s, int rank);
-/* The process that holds row `row` of the whole grid (0 on one). */
+/* The process that holds row `row` of the whole grid (0 on one); a row
+ * of the box's ghost layers, below or above, the first or the last. */
 int gks_solver_row_owner(const GksSolver *s, int row);
 /* The area-weighted mean pressure of the whole grid's fluid cells into
  * *mean on every rank (every rank calls; NaN without fluid); slab (this
