@@ -340,3 +340,12 @@ int comm_share_items(const NspdComm *c, int64_t n, const int *owner, int width, 
     nspd_free(&gathered);
     return status;
 }
+
+int64_t comm_first_failure(const NspdComm *c, int64_t mine, char *text, int size) {
+    if (!comm_distributed(c)) return mine;
+    const int64_t first = comm_min_i64(c, mine);
+    if (first == INT64_MAX) return first;
+    const int64_t root = comm_min_i64(c, mine == first ? c->rank : INT64_MAX);
+    (void)comm_bcast(c, text, size, (int)root); /* a failed broadcast is MPI's abort */
+    return first;
+}

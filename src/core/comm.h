@@ -85,6 +85,14 @@ int comm_bcast(const NspdComm *c, void *data, int bytes, int root);
  * left. */
 int comm_agree(const NspdComm *c, int status, int64_t *flags, int n);
 
+/* The first failure of a loop divided between the ranks: every rank
+ * passes the whole run's index of its first failing item (INT64_MAX:
+ * none) and, where it has one, its message in text[size]; every rank gets
+ * the lowest index back and, where there is one, the message of the rank
+ * that holds that item in text. So every rank fails with the words one
+ * process would print. */
+int64_t comm_first_failure(const NspdComm *c, int64_t mine, char *text, int size);
+
 /* Sends `bytes` to rank `to` and receives `bytes` from rank `from` (-1:
  * nothing that way), as one exchange that cannot deadlock. */
 int comm_sendrecv(const NspdComm *c, const void *send, int bytes, int to, void *recv, int from);

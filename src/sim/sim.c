@@ -108,21 +108,6 @@ static int check_unbuilt(Sim *sim) {
     return plan_steps(sim);
 }
 
-/* What runs on several processes so far: a flow, divided between them,
- * with the bodies of a coupling that distributes (its ops say so;
- * coupling_create checks); a solid coupled to it is replicated, every
- * rank advancing the whole solid alike (tens of thousands of points, a
- * fraction of the flow's work). A solid alone is not divided yet. */
-static int check_distributed(const SimConfig *c) {
-    if (!comm_distributed(&c->comm) || c->solid.kind == SOLID_NONE ||
-        c->flow.method != FLOW_METHOD_NONE)
-        return NSPD_OK;
-    return NSPD_FAIL(NSPD_ERR_INPUT,
-                     "case '%s' is a solid alone, which runs on one process only so far, not on "
-                     "%d; expected a run without mpirun (or mpirun -n 1), or a flow",
-                     c->name, c->comm.size);
-}
-
 bool sim_check_builds(const Sim *sim) {
     return sim->solid_estimate.check_s + sim->flow_estimate.check_s <= SIM_CHECK_BUILD_S;
 }
@@ -143,8 +128,14 @@ int sim_create(Sim *sim, SimConfig *cfg) {
         return status;
     }
     sim->built = true;
-    if (status == NSPD_OK) status = check_distributed(c);
+    /* On several processes the flow is divided (a coupling that
+     * distributes takes the whole grid's cells; coupling_create checks),
+     * and so is a solid alone; a solid coupled to a flow is replicated,
+     * every rank advancing the whole solid alike (tens of thousands of
+     * points, a fraction of the flow's work). Each model refuses a group
+     * its ops do not divide. */
     c->flow.comm = c->coupling.comm = &c->comm;
+    c->solid.comm = c->flow.method == FLOW_METHOD_NONE ? &c->comm : NULL;
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
         /* a refusal found while the model is built, said at its section */
         status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);

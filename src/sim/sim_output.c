@@ -26,6 +26,7 @@ static const double *damage_if(Sim *sim, bool needed) {
 }
 
 int sim_output_history(Sim *sim) {
+    if (sim->solid) TRY(solid_sync(sim->solid));
     const bool need_damage = probes_need_damage(&sim->cfg.output);
     const double *damage = damage_if(sim, need_damage);
     Report *row = sim->report;
@@ -52,6 +53,7 @@ static bool takes_part(const Sim *sim) {
 int sim_output_fields(Sim *sim) {
     if (!takes_part(sim)) return NSPD_OK;
     const bool writes = sim->dir != NULL;
+    if (sim->solid) TRY(solid_sync(sim->solid));
     const OutputConfig *out = &sim->cfg.output;
     const FieldOutputOptions opt = {out->vtk, out->png, out->png_max_pixels, sim->cfg.name};
     FieldSet solid_set, flow_set, coupling_set;
@@ -93,6 +95,7 @@ int sim_output_summary(Sim *sim, int run_status, const char *reason) {
     const bool part_present[SIM_PART_COUNT] = {sim->flow != NULL, sim->solid != NULL,
                                                sim->coupling != NULL};
     const RunStats run = {sim->step, sim->wall_s};
+    if (sim->solid) TRY(solid_sync(sim->solid));
     Report *r = sim->report;
     report_clear(r);
     report_text(r, "case", sim->cfg.name);

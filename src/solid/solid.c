@@ -34,11 +34,85 @@ struct Solid {
     const SolidOps *ops;
     SolidKind kind;
     void *impl;
-    PdPoints points;
+    PdPoints points; /* the model's: on several processes this one's part */
+    /* several processes: the group, the whole body's view (solid_sync)
+     * and the whole body's index of points' point 0 */
+    NspdComm comm;
+    PdPoints whole;
+    int64_t first;
     int64_t last_substeps;
-    double *damage;      /* scratch for solid_damage */
-    double *position[3]; /* scratch for solid_current_positions */
+    double *damage;       /* scratch for solid_damage (the model's points) */
+    double *damage_whole; /* several processes: the whole body's damage */
+    double *position[3];  /* scratch for solid_current_positions */
 };
+
+/* What the driver, the outputs and the probes see: the whole body. */
+static const PdPoints *view(const Solid *s) {
+    return comm_distributed(&s->comm) ? &s->whole : &s->points;
+}
+
+/* The whole body's view on every rank (solid.h): the ranks' runs
+ * gathered in rank order, which is the whole body's order. */
+static int build_whole(Solid *s) {
+    const PdPoints *p = &s->points;
+    PdPoints *w = &s->whole;
+    const int ranks = s->comm.size;
+    int64_t *runs = NULL;
+    TRY(nspd_alloc(&runs, (size_t)ranks, sizeof *runs));
+    int status = comm_allgatherv_bytes(&s->comm, &p->n, (int)sizeof p->n, runs);
+    int64_t total = 0;
+    for (int q = 0; q < ranks; q++) {
+        if (q == s->comm.rank) s->first = total;
+        total += runs[q];
+    }
+    nspd_free(&runs);
+    TRY(status);
+    *w = (PdPoints){.dim = p->dim, .n = total, .spacing = p->spacing, .thickness = p->thickness};
+    const size_t n = (size_t)total;
+    const int count = (int)p->n;
+    /* all three components where the model has them (a 2D body's third
+     * is zero, and the probes read it); the motion's beyond dim never
+     * change */
+    for (int d = 0; d < 3; d++) {
+        if (p->x[d]) {
+            TRY(nspd_alloc(&w->x[d], n, sizeof(double)));
+            TRY(comm_allgatherv(&s->comm, p->x[d], count, w->x[d]));
+        }
+        if (p->u[d]) TRY(nspd_alloc(&w->u[d], n, sizeof(double)));
+        if (p->v[d]) TRY(nspd_alloc(&w->v[d], n, sizeof(double)));
+        if (p->lattice[d]) {
+            TRY(nspd_alloc(&w->lattice[d], n, sizeof(int32_t)));
+            TRY(comm_allgatherv_bytes(&s->comm, p->lattice[d], count * (int)sizeof(int32_t),
+                                      w->lattice[d]));
+        }
+    }
+    TRY(nspd_alloc(&w->volume, n, sizeof(double)));
+    TRY(comm_allgatherv(&s->comm, p->volume, count, w->volume));
+    TRY(nspd_alloc(&s->damage_whole, n, sizeof(double)));
+    return solid_sync(s);
+}
+
+static void free_whole(Solid *s) {
+    PdPoints *w = &s->whole;
+    for (int d = 0; d < 3; d++) {
+        nspd_free(&w->x[d]);
+        nspd_free(&w->u[d]);
+        nspd_free(&w->v[d]);
+        nspd_free(&w->lattice[d]);
+    }
+    nspd_free(&w->volume);
+    nspd_free(&s->damage_whole);
+}
+
+int solid_sync(Solid *s) {
+    if (!comm_distributed(&s->comm)) return NSPD_OK;
+    const PdPoints *p = &s->points;
+    for (int d = 0; d < p->dim; d++) {
+        TRY(comm_allgatherv(&s->comm, p->u[d], (int)p->n, s->whole.u[d]));
+        TRY(comm_allgatherv(&s->comm, p->v[d], (int)p->n, s->whole.v[d]));
+    }
+    return NSPD_OK;
+}
 
 /* The ops table of a kind, or NULL for none or an unknown one. */
 static const SolidOps *kind_ops(SolidKind kind) {
@@ -90,14 +164,23 @@ int solid_create(Solid **out, SolidConfig *cfg) {
     *out = NULL;
     if (!kind_ops(cfg->kind))
         return NSPD_FAIL(NSPD_ERR_INPUT, "unknown solid model %d", (int)cfg->kind);
+    const SolidOps *ops = kind_ops(cfg->kind);
+    const NspdComm comm = cfg->comm ? *cfg->comm : comm_self();
+    if (comm_distributed(&comm) && !ops->distributed)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "solid: the %s model runs on one process only, not on %d; expected a run "
+                         "without mpirun (or mpirun -n 1)",
+                         ops->name, comm.size);
     Solid *s;
     TRY(nspd_alloc(&s, 1, sizeof *s));
     s->kind = cfg->kind;
-    s->ops = kind_ops(cfg->kind);
+    s->ops = ops;
+    s->comm = comm;
     int status = s->ops->create(&s->impl, &s->points, cfg);
-    if (status == NSPD_OK) status = nspd_alloc(&s->damage, (size_t)s->points.n, sizeof(double));
+    if (status == NSPD_OK && comm_distributed(&comm)) status = build_whole(s);
+    if (status == NSPD_OK) status = nspd_alloc(&s->damage, (size_t)s->points.n + 1, sizeof(double));
     for (int d = 0; d < s->points.dim && status == NSPD_OK; d++)
-        status = nspd_alloc(&s->position[d], (size_t)s->points.n, sizeof(double));
+        status = nspd_alloc(&s->position[d], (size_t)view(s)->n, sizeof(double));
     if (status != NSPD_OK) {
         solid_destroy(&s);
         return status;
@@ -110,6 +193,7 @@ void solid_destroy(Solid **sp) {
     Solid *s = *sp;
     if (!s) return;
     if (s->impl) s->ops->destroy(s->impl);
+    free_whole(s);
     nspd_free(&s->damage);
     for (int d = 0; d < 3; d++) nspd_free(&s->position[d]);
     nspd_free(sp);
@@ -124,11 +208,11 @@ const char *solid_name(const Solid *s) {
 }
 
 PdPoints *solid_points(Solid *s) {
-    return &s->points;
+    return comm_distributed(&s->comm) ? &s->whole : &s->points;
 }
 
 const PdPoints *solid_points_const(const Solid *s) {
-    return &s->points;
+    return view(s);
 }
 
 double solid_stable_dt(const Solid *s) {
@@ -143,8 +227,9 @@ void solid_set_time(Solid *s, double t) {
     s->ops->set_time(s->impl, t);
 }
 
-/* The first point (lowest index: the same on any thread count) whose
- * displacement or velocity is not finite or whose speed is a runaway's. */
+/* The first point (the whole body's lowest index: the same on any thread
+ * or process count) whose displacement or velocity is not finite or whose
+ * speed is a runaway's. */
 static int check_points(const Solid *s) {
     const PdPoints *p = &s->points;
     const double limit2 = SOLID_RUNAWAY_SPEED * SOLID_RUNAWAY_SPEED;
@@ -159,24 +244,29 @@ static int check_points(const Solid *s) {
         /* NaN fails every comparison: !(x <= limit) catches it */
         if (!(u2 <= DBL_MAX) || !(v2 <= limit2)) first = i < first ? i : first;
     }
-    if (first == p->n) return NSPD_OK;
-    const int64_t i = first;
-    double speed = 0.0, disp = 0.0;
-    for (int d = 0; d < p->dim; d++) {
-        speed += p->v[d][i] * p->v[d][i];
-        disp += p->u[d][i] * p->u[d][i];
+    char text[512] = "";
+    int64_t bad = first < p->n ? s->first + first : INT64_MAX;
+    if (bad != INT64_MAX) {
+        const int64_t i = first;
+        double speed = 0.0, disp = 0.0;
+        for (int d = 0; d < p->dim; d++) {
+            speed += p->v[d][i] * p->v[d][i];
+            disp += p->u[d][i] * p->u[d][i];
+        }
+        char where[128];
+        if (p->dim == 3)
+            snprintf(where, sizeof where, "(%g, %g, %g)", p->x[0][i], p->x[1][i], p->x[2][i]);
+        else
+            snprintf(where, sizeof where, "(%g, %g)", p->x[0][i], p->x[1][i]);
+        snprintf(text, sizeof text,
+                 "the solid blew up by t = %g s: point %lld at %s m has displacement %g m and "
+                 "speed %g m/s (limit %g m/s); expected a smaller time step (time.dt, "
+                 "time.safety_factor)",
+                 solid_time(s), (long long)bad, where, sqrt(disp), sqrt(speed),
+                 SOLID_RUNAWAY_SPEED);
     }
-    char where[128];
-    if (p->dim == 3)
-        snprintf(where, sizeof where, "(%g, %g, %g)", p->x[0][i], p->x[1][i], p->x[2][i]);
-    else
-        snprintf(where, sizeof where, "(%g, %g)", p->x[0][i], p->x[1][i]);
-    return NSPD_FAIL(NSPD_ERR_NUMERIC,
-                     "the solid blew up by t = %g s: point %lld at %s m has displacement %g m "
-                     "and speed %g m/s (limit %g m/s); expected a smaller time step (time.dt, "
-                     "time.safety_factor)",
-                     solid_time(s), (long long)i, where, sqrt(disp), sqrt(speed),
-                     SOLID_RUNAWAY_SPEED);
+    bad = comm_first_failure(&s->comm, bad, text, (int)sizeof text);
+    return bad == INT64_MAX ? NSPD_OK : NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
 }
 
 int solid_advance(Solid *s, double dt, double max_substep) {
@@ -194,11 +284,14 @@ int64_t solid_last_substeps(const Solid *s) {
 
 const double *solid_damage(Solid *s) {
     s->ops->damage(s->impl, s->damage);
-    return s->damage;
+    if (!comm_distributed(&s->comm)) return s->damage;
+    /* a failed gather is MPI's abort */
+    (void)comm_allgatherv(&s->comm, s->damage, (int)s->points.n, s->damage_whole);
+    return s->damage_whole;
 }
 
 void solid_current_positions(Solid *s, const double *out[3]) {
-    const PdPoints *p = &s->points;
+    const PdPoints *p = view(s);
     for (int d = 0; d < 3; d++) out[d] = NULL;
     for (int d = 0; d < p->dim; d++) {
         for (int64_t i = 0; i < p->n; i++) s->position[d][i] = p->x[d][i] + p->u[d][i];
@@ -235,7 +328,7 @@ void solid_brief(const Solid *s, char *buf, size_t size) {
 }
 
 void solid_fields(Solid *s, const double *damage, FieldSet *out) {
-    const PdPoints *p = &s->points;
+    const PdPoints *p = view(s);
     memset(out, 0, sizeof *out);
     out->series = "solid";
     out->mesh = MESH_POINTS;

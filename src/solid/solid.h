@@ -19,6 +19,7 @@
 #define NSPD_SOLID_SOLID_H
 
 #include "core/checkpoint.h"
+#include "core/comm.h"
 #include "core/fields.h"
 #include "core/report.h"
 
@@ -47,6 +48,10 @@ typedef struct {
      * create takes it (and sets this NULL), else solid_config_free frees it; otherwise
      * borrowed (a registered model's configuration, never freed) */
     void *model;
+    /* the processes the solid runs on (borrowed during create): NULL or a
+     * group of one, the whole body here; several (a model whose ops are
+     * `distributed`), each process holds a part (below) */
+    const NspdComm *comm;
 } SolidConfig;
 
 void solid_config_free(SolidConfig *cfg);
@@ -86,6 +91,12 @@ typedef struct {
 
 typedef struct {
     const char *name;
+    /* runs on several processes (SolidConfig.comm): create then gives
+     * `pts` this process's points, a run of the whole body's order
+     * (rank r's after rank r - 1's), and its ops are collective (sums and
+     * counts of the whole body, in its order); the rest of its arrays (the
+     * ghosts a step reads) follow the run, beyond pts.n */
+    bool distributed;
     /* frees what a configuration of this model owns, not the struct
      * itself (one that no create took); NULL: configurations are borrowed,
      * and create leaves them */
@@ -152,8 +163,15 @@ void solid_destroy(Solid **s);
 
 SolidKind solid_kind(const Solid *s);
 const char *solid_name(const Solid *s);
+/* The points of the whole body. On several processes the whole body's
+ * view, the same on every rank: positions, volumes and lattice indices
+ * from create, displacements and velocities as of the last solid_sync;
+ * no external force density and no family (those stay with each part). */
 PdPoints *solid_points(Solid *s);
 const PdPoints *solid_points_const(const Solid *s);
+/* Brings the whole body's view up to date (collective; nothing on one
+ * process): before anything reads the points between steps. */
+int solid_sync(Solid *s);
 double solid_stable_dt(const Solid *s);
 double solid_time(const Solid *s);
 void solid_set_time(Solid *s, double t);
@@ -167,8 +185,9 @@ int solid_advance(Solid *s, double dt, double max_substep);
 #define SOLID_RUNAWAY_SPEED 1e6
 int64_t solid_last_substeps(const Solid *s);
 
-/* The damage field (0..1 per point), computed into the handle's scratch
- * array on each call; valid until the next call. */
+/* The damage field (0..1 per point of the whole body), computed into the
+ * handle's scratch array on each call (collective); valid until the next
+ * call. */
 const double *solid_damage(Solid *s);
 /* Current positions x + u (for outputs and pictures), into the handle's
  * scratch; valid until the next call. */

@@ -11,11 +11,15 @@
 # forces), and solids coupled to the flow, replicated on every rank: by
 # the ghost-cell boundary (the panel in a shock, the cracking cylinder:
 # moving walls) and by the volumetric penalty (the detonation chamber, the
-# hollow square in a blast with sealed faces). Then the state moves between process counts: a checkpoint
-# written on 3 ranks resumes on 2 and on 1, and a field written on 3 ranks
-# starts a run on 1 (and one written by 1 a run on 3), all with the same
-# bits. Then the refusals: a bad case, a solid, and more ranks than rows,
-# each exit status 2 with its message printed once.
+# hollow square in a blast with sealed faces), and a solid alone divided
+# between the ranks (the pre-cracked plate). Then the state moves between
+# process counts: a checkpoint written on 3 ranks resumes on 2 and on 1
+# (the flow, the coupled cylinder, the plate), and a field written on 3
+# ranks starts a run on 1 (and one written by 1 a run on 3), all with the
+# same bits. Then the refusals: a bad case, the correspondence solid, more
+# ranks than rows and the PDDO flow, each exit status 2 with its message
+# printed once; and runs that blow up (the flow, the solid), stopped on
+# every rank with the message of one process.
 #   usage: run.sh NSPD SOURCE_DIR MPIEXEC
 set -u
 nspd=$1
@@ -87,6 +91,10 @@ check_body cylinder_crack_ma17 crack "2 4"
 check_body chamber_detonation chamber "2 4"
 check_body blast_hollow_square blast_sealed 3 --set time.end=2e-5 --set coupling.seal=true \
     --set output.field_interval=1e-5
+# A solid alone, divided between the ranks (solid/bond/halo.h): the coarse
+# pre-cracked plate (bonds break across the ranks' runs; energies, the
+# crack-tip and line probes, damage pictures).
+check_body plate_crack plate "2 3 4"
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of
@@ -156,15 +164,57 @@ crack="$src/cases/cylinder_crack_ma17.yaml"
 "$nspd" run "$crack" -o "$work/cck.ref" --quiet $crack_args --set output.checkpoint_interval=1e-3 ||
     fail "the checkpointed coupled run of one process failed"
 if on 3 "$crack" -o "$work/cck.3" --quiet $crack_args --set output.checkpoint_interval=1e-3; then
+    set +f # the glob (globbing is off for the arguments' lists)
     last=$(ls "$work/cck.3"/flow_*.vtr | tail -n 1)
+    set -f
     rm -f "$work/cck.3/summary.json" "$last"
     if on 2 "$crack" -o "$work/cck.3" --quiet --resume $crack_args --set output.checkpoint_interval=1e-3; then
+        [ -e "$last" ] || fail "coupled resume on 2: $last not written again"
         same_results "$work/cck.ref" "$work/cck.3" "the coupled checkpoint of 3 ranks resumed on 2"
     else
         fail "the coupled checkpoint of 3 ranks resumed on 2: exit status $?"
     fi
 else
     fail "the checkpointed coupled run on 3 ranks failed"
+fi
+unset IFS
+set +f
+
+# The divided solid's checkpoint (displacements, velocities, forces and
+# the broken bonds, in the whole body's order) written on 3 ranks resumes
+# on 2 with the same bits.
+set -f
+IFS='
+'
+plate_args=$(golden_overrides plate_crack | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
+plate="$src/cases/plate_crack.yaml"
+"$nspd" run "$plate" -o "$work/pck.ref" --quiet $plate_args --set output.checkpoint_interval=2e-6 ||
+    fail "the checkpointed solid of one process failed"
+if on 3 "$plate" -o "$work/pck.3" --quiet $plate_args --set output.checkpoint_interval=2e-6; then
+    set +f
+    last=$(ls "$work/pck.3"/solid_*.vtu | tail -n 1)
+    set -f
+    rm -f "$work/pck.3/summary.json" "$last"
+    if on 2 "$plate" -o "$work/pck.3" --quiet --resume $plate_args --set output.checkpoint_interval=2e-6; then
+        [ -e "$last" ] || fail "the solid's resume on 2: $last not written again"
+        same_results "$work/pck.ref" "$work/pck.3" "the solid's checkpoint of 3 ranks resumed on 2"
+    else
+        fail "the solid's checkpoint of 3 ranks resumed on 2: exit status $?"
+    fi
+else
+    fail "the checkpointed solid on 3 ranks failed"
+fi
+# A solid that blows up (a given step 4 times the stable one) stops all
+# ranks with the message of one process.
+"$nspd" run "$plate" -o "$work/pblow.1" --quiet $plate_args --set time.dt=4e-7 2>/dev/null
+on 3 "$plate" -o "$work/pblow.3" --quiet $plate_args --set time.dt=4e-7 >"$work/out" 2>&1
+status=$?
+if [ "$status" -eq 1 ] && [ "$(grep -c "nspd: error: the solid blew up" "$work/out")" -eq 1 ] &&
+    [ "$(grep stopped_by "$work/pblow.3/summary.json")" = "$(grep stopped_by "$work/pblow.1/summary.json")" ]; then
+    ok
+else
+    fail "a solid blowing up on 3 ranks: exit status $status (expected 1, the message of one process, once):"
+    cat "$work/out"
 fi
 unset IFS
 set +f
@@ -198,8 +248,8 @@ refused() {
 }
 sod="$src/cases/sod.yaml"
 refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
-refused "a solid alone on 2 ranks" "a solid alone, which runs on one process only so far" 2 \
-    "$src/cases/plate_crack.yaml" -o "$work/bad"
+refused "the correspondence solid on 2 ranks" "the correspondence model runs on one process only, not on 2" 2 \
+    "$src/cases/hollow_square_pressure.yaml" -o "$work/bad"
 refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
 refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
     "$src/cases/cavity_re1.yaml" -o "$work/bad"

@@ -24,6 +24,7 @@
 #include "core/status.h"
 #include "core/neighbours.h"
 #include "solid/bond/corrections.h"
+#include "solid/bond/halo.h"
 #include "solid/pd/lattice.h"
 #include "solid/pd/precrack.h"
 
@@ -163,5 +164,6 @@ void bond_body_destroy(BondBody *body) {
     nspd_free(&body->bond_nbr);
     nspd_free(&body->bond_coef);
     pd_config_free(&body->cfg);
+    bond_halo_free(&body->halo);
     memset(body, 0, sizeof *body);
 }

@@ -34,6 +34,8 @@
 
 #include <stdint.h>
 
+struct BondHalo;
+
 typedef struct {
     PdConfig cfg; /* owned copy of the configuration (shapes included) */
     int dim;
@@ -65,6 +67,12 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
+
+    /* On several processes (halo.h): the ghosts after the n points this
+     * process holds (their displacements from their owners, no bonds of
+     * their own), and the exchange; 0 and NULL on one process. */
+    int64_t ghosts;
+    struct BondHalo *halo;
 } BondBody;
 
 /* Builds the body: lattice points inside the geometry, Morton ordering,

@@ -1,7 +1,10 @@
 #include "solid/bond/diagnostics.h"
 #include "core/parallel.h"
 
+#include "core/mem.h"
 #include "core/reduce.h"
+#include "core/status.h"
+#include "solid/bond/halo.h"
 
 #include <math.h>
 
@@ -31,55 +34,74 @@ int64_t pd_broken_bonds(const BondBody *body) {
     int64_t broken = 0;
 #pragma omp parallel for schedule(static) reduction(+ : broken) if (body->n >= PARALLEL_MIN_ITEMS)
     for (int64_t b = 0; b < body->bond_count; b++) broken += body->bond_coef[b] == 0.0f;
+    /* on several processes each end of a crossing bond is on its own
+     * rank, and the sum of integers is exact */
+    if (body->halo) broken = comm_sum_i64(&body->halo->comm, broken);
     return broken / 2;
 }
 
-double pd_kinetic_energy(const BondBody *body) {
-    double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
-    for (int c = 0; c < REDUCE_CHUNKS; c++) {
-        int64_t lo, hi;
-        reduce_chunk(body->n, c, &lo, &hi);
-        double s = 0.0;
-        for (int64_t i = lo; i < hi; i++) {
-            double v2 = 0.0;
-            for (int d = 0; d < body->dim; d++) v2 += body->v[d][i] * body->v[d][i];
-            s += 0.5 * body->cfg.density * body->volume[i] * v2;
+/* The energies' terms of point i. */
+static double kinetic_term(const BondBody *body, int64_t i) {
+    double v2 = 0.0;
+    for (int d = 0; d < body->dim; d++) v2 += body->v[d][i] * body->v[d][i];
+    return 0.5 * body->cfg.density * body->volume[i] * v2;
+}
+
+static double elastic_term(const BondBody *body, int64_t i) {
+    double w = 0.0;
+    for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++) {
+        double k = fabs((double)body->bond_coef[b]);
+        if (k == 0.0) continue;
+        int32_t j = body->bond_nbr[b];
+        double e2 = 0.0, r2 = 0.0;
+        for (int d = 0; d < body->dim; d++) {
+            double e = body->x[d][j] - body->x[d][i];
+            double r = e + body->u[d][j] - body->u[d][i];
+            e2 += e * e;
+            r2 += r * r;
         }
-        partial[c] = s;
+        double stretch = sqrt(r2) - sqrt(e2);
+        w += k * stretch * stretch;
     }
-    return reduce_combine(partial);
+    return 0.25 * body->coef_scale * w * body->volume[i];
+}
+
+/* The sum of a per-point term over the whole body in reduce.h's order.
+ * On several processes each rank's terms are gathered in the whole
+ * body's order and summed alike on every rank: the additions of one
+ * process, whatever the number (a failed gather is MPI's abort). */
+static double body_sum(const BondBody *body, double (*term)(const BondBody *, int64_t)) {
+    if (!body->halo) {
+        double partial[REDUCE_CHUNKS];
+#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
+        for (int c = 0; c < REDUCE_CHUNKS; c++) {
+            int64_t lo, hi;
+            reduce_chunk(body->n, c, &lo, &hi);
+            double s = 0.0;
+            for (int64_t i = lo; i < hi; i++) s += term(body, i);
+            partial[c] = s;
+        }
+        return reduce_combine(partial);
+    }
+    const int64_t total = body->halo->total;
+    double *mine = NULL, *all = NULL, sum = (double)NAN;
+    if (nspd_alloc(&mine, (size_t)body->n + 1, sizeof *mine) == NSPD_OK &&
+        nspd_alloc(&all, (size_t)total, sizeof *all) == NSPD_OK) {
+        for (int64_t i = 0; i < body->n; i++) mine[i] = term(body, i);
+        (void)comm_allgatherv(&body->halo->comm, mine, (int)body->n, all);
+        sum = reduce_sum(all, total);
+    }
+    nspd_free(&mine);
+    nspd_free(&all);
+    return sum;
+}
+
+double pd_kinetic_energy(const BondBody *body) {
+    return body_sum(body, kinetic_term);
 }
 
 double pd_elastic_energy(const BondBody *body) {
-    const int dim = body->dim;
-    double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
-    for (int c = 0; c < REDUCE_CHUNKS; c++) {
-        int64_t lo, hi;
-        reduce_chunk(body->n, c, &lo, &hi);
-        double s = 0.0;
-        for (int64_t i = lo; i < hi; i++) {
-            double w = 0.0;
-            for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++) {
-                double k = fabs((double)body->bond_coef[b]);
-                if (k == 0.0) continue;
-                int32_t j = body->bond_nbr[b];
-                double e2 = 0.0, r2 = 0.0;
-                for (int d = 0; d < dim; d++) {
-                    double e = body->x[d][j] - body->x[d][i];
-                    double r = e + body->u[d][j] - body->u[d][i];
-                    e2 += e * e;
-                    r2 += r * r;
-                }
-                double stretch = sqrt(r2) - sqrt(e2);
-                w += k * stretch * stretch;
-            }
-            s += 0.25 * body->coef_scale * w * body->volume[i];
-        }
-        partial[c] = s;
-    }
-    return reduce_combine(partial);
+    return body_sum(body, elastic_term);
 }
 
 void pd_momentum(const BondBody *body, double p[3]) {

@@ -2,10 +2,13 @@
 #include "core/parallel.h"
 
 #include "core/status.h"
+#include "core/timer.h"
 #include "solid/bond/force.h"
+#include "solid/bond/halo.h"
 
 #include <math.h>
 #include <stdbool.h>
+#include <stdio.h>
 
 /* The body's arrays as the shared kick and drift read them. */
 static PdMotion motion_of(BondBody *body) {
@@ -24,17 +27,27 @@ static PdMotion motion_of(BondBody *body) {
     return m;
 }
 
+/* The first point (the whole body's lowest index, on any number of
+ * processes) whose displacement or velocity is not finite. */
 static int report_non_finite(const BondBody *body) {
-    for (int64_t i = 0; i < body->n; i++)
+    char text[400] = "";
+    int64_t first = INT64_MAX;
+    for (int64_t i = 0; i < body->n && first == INT64_MAX; i++)
         for (int d = 0; d < body->dim; d++)
-            if (!isfinite(body->u[d][i]) || !isfinite(body->v[d][i]))
-                return NSPD_FAIL(NSPD_ERR_NUMERIC,
-                                 "solid point %lld at (%g, %g, %g) m has a non-finite "
-                                 "displacement or velocity at step %lld (t = %g s); the time "
-                                 "step is probably above the stable limit",
-                                 (long long)i, body->x[0][i], body->x[1][i], body->x[2][i],
-                                 (long long)body->step + 1, body->time);
-    return NSPD_FAIL(NSPD_ERR_INTERNAL, "non-finite value reported but not found");
+            if (!isfinite(body->u[d][i]) || !isfinite(body->v[d][i])) {
+                first = bond_halo_global(body, i);
+                snprintf(text, sizeof text,
+                         "solid point %lld at (%g, %g, %g) m has a non-finite displacement or "
+                         "velocity at step %lld (t = %g s); the time step is probably above the "
+                         "stable limit",
+                         (long long)first, body->x[0][i], body->x[1][i], body->x[2][i],
+                         (long long)body->step + 1, body->time);
+                break;
+            }
+    if (body->halo) first = comm_first_failure(&body->halo->comm, first, text, (int)sizeof text);
+    if (first == INT64_MAX)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "non-finite value reported but not found");
+    return NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
 }
 
 int pd_step(BondBody *body, double dt) {
@@ -44,6 +57,7 @@ int pd_step(BondBody *body, double dt) {
         if (!body->force_valid) pd_force_compute(body);
         pd_kick(&m, 0.5 * dt);
         bad = pd_drift(&m, dt);
+        bond_halo_exchange(body);
         pd_force_compute(body);
         pd_kick(&m, 0.5 * dt);
         body->force_valid = true;
@@ -51,7 +65,14 @@ int pd_step(BondBody *body, double dt) {
         pd_force_compute(body);
         pd_kick(&m, dt);
         bad = pd_drift(&m, dt);
+        bond_halo_exchange(body);
         body->force_valid = false;
+    }
+    /* on several processes all fail together (integers: exact) */
+    if (body->halo) {
+        const double t0 = nspd_wall_time();
+        bad = comm_max_i64(&body->halo->comm, bad) != 0;
+        body->halo->seconds += nspd_wall_time() - t0;
     }
     if (bad) return report_non_finite(body);
     body->step++;
@@ -72,6 +93,8 @@ double pd_stable_time_step(const BondBody *body) {
             if (dt2 < min_dt2) min_dt2 = dt2;
         }
     }
+    /* on several processes the least over all (-max(-x): exact) */
+    if (body->halo) min_dt2 = -comm_max(&body->halo->comm, -min_dt2);
     return sqrt(min_dt2);
 }
 

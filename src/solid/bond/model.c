@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "solid/bond/body.h"
+#include "solid/bond/halo.h"
 #include "solid/pd/lattice.h"
 #include "solid/bond/diagnostics.h"
 #include "solid/bond/integrate.h"
@@ -27,6 +28,12 @@ static int bond_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     int status = bond_body_create(b, &pd);
     if (status != NSPD_OK) {
         pd_config_free(&pd);
+        nspd_free(&bs);
+        return status;
+    }
+    /* on several processes each keeps its part (halo.h) */
+    if ((status = bond_body_divide(b, cfg->comm)) != NSPD_OK) {
+        bond_body_destroy(b);
         nspd_free(&bs);
         return status;
     }
@@ -130,29 +137,64 @@ static bool bond_attached(const void *impl, int64_t i) {
     return false;
 }
 
+/* One per-point array (`size`-byte elements) or the bonds' coefficients
+ * as the whole body's: on several processes the runs of the ranks are
+ * gathered in rank order (the whole body's order: halo.h), and on
+ * reading each rank cuts out its run, and its ghosts' values. So a
+ * checkpoint is the same on any number of processes and any other reads
+ * it. */
+static int io_whole(BondBody *b, Checkpoint *ck, const char *name, void *mine, size_t size,
+                    bool bonds) {
+    const BondHalo *h = b->halo;
+    const int64_t n = bonds ? b->bond_count : b->n;
+    if (!h) return checkpoint_io(ck, name, mine, (size_t)n * size);
+    const int64_t total = bonds ? h->bonds : h->total, first = bonds ? h->bond_first : h->first;
+    unsigned char *all = NULL, *own = mine;
+    TRY(nspd_alloc(&all, (size_t)total, size));
+    int status = NSPD_OK;
+    if (!checkpoint_reading(ck))
+        status = comm_allgatherv_bytes(&h->comm, own, (int)((size_t)n * size), all);
+    if (status == NSPD_OK) status = checkpoint_io(ck, name, all, (size_t)total * size);
+    if (status == NSPD_OK && checkpoint_reading(ck)) {
+        memcpy(own, all + (size_t)first * size, (size_t)n * size);
+        for (int64_t g = 0; !bonds && g < b->ghosts; g++)
+            memcpy(own + (size_t)(b->n + g) * size, all + (size_t)h->ghost[g] * size, size);
+    }
+    nspd_free(&all);
+    return status;
+}
+
 /* The state a step changes: displacements, velocities, forces (velocity
  * Verlet reuses the last one), the external loads a coupling holds over
  * the sub-steps, the bonds (0: broken), the clock and step count. */
 static int bond_checkpoint(void *impl, Checkpoint *ck) {
     BondBody *b = &((BondSolid *)impl)->body;
-    const size_t n = (size_t)b->n * sizeof(double);
     static const char *const NAMES[4][3] = {{"bond.u0", "bond.u1", "bond.u2"},
                                             {"bond.v0", "bond.v1", "bond.v2"},
                                             {"bond.force0", "bond.force1", "bond.force2"},
                                             {"bond.external0", "bond.external1", "bond.external2"}};
     for (int d = 0; d < b->dim && d < 3; d++) { /* dim is 2 or 3 */
-        TRY(checkpoint_io(ck, NAMES[0][d], b->u[d], n));
-        TRY(checkpoint_io(ck, NAMES[1][d], b->v[d], n));
-        TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
-        TRY(checkpoint_io(ck, NAMES[3][d], b->external[d], n));
+        TRY(io_whole(b, ck, NAMES[0][d], b->u[d], sizeof(double), false));
+        TRY(io_whole(b, ck, NAMES[1][d], b->v[d], sizeof(double), false));
+        TRY(io_whole(b, ck, NAMES[2][d], b->force[d], sizeof(double), false));
+        TRY(io_whole(b, ck, NAMES[3][d], b->external[d], sizeof(double), false));
     }
-    TRY(checkpoint_io(ck, "bond.coef", b->bond_coef, (size_t)b->bond_count * sizeof(float)));
+    TRY(io_whole(b, ck, "bond.coef", b->bond_coef, sizeof(float), true));
     TRY(checkpoint_io_int64(ck, "bond.step", &b->step));
     TRY(checkpoint_io_double(ck, "bond.time", &b->time));
     int valid = b->force_valid;
     TRY(checkpoint_io_int(ck, "bond.force_valid", &valid));
     b->force_valid = valid != 0;
     return NSPD_OK;
+}
+
+/* The whole body's points and stored bonds (this process's on one). */
+static int64_t whole_points(const BondBody *b) {
+    return b->halo ? b->halo->total : b->n;
+}
+
+static int64_t whole_bonds(const BondBody *b) {
+    return b->halo ? b->halo->bonds : b->bond_count;
 }
 
 static void bond_history(const void *impl, Report *row) {
@@ -166,17 +208,18 @@ static void bond_history(const void *impl, Report *row) {
 
 static void bond_summary(const void *impl, const RunStats *run, Report *out) {
     const BondBody *b = &((const BondSolid *)impl)->body;
-    report_int(out, "points", b->n);
-    report_int(out, "bonds", b->bond_count / 2);
+    const int64_t points = whole_points(b), bonds = whole_bonds(b);
+    report_int(out, "points", points);
+    report_int(out, "bonds", bonds / 2);
     const int64_t broken = pd_broken_bonds(b);
     report_int(out, "broken_bonds", broken);
-    report_real(out, "broken_bond_fraction",
-                b->bond_count ? 2.0 * (double)broken / (double)b->bond_count : 0.0);
+    report_real(out, "broken_bond_fraction", bonds ? 2.0 * (double)broken / (double)bonds : 0.0);
     double max_damage = 0.0, *damage;
     if (nspd_alloc(&damage, (size_t)b->n, sizeof(double)) == NSPD_OK) { /* once, at the end */
         pd_damage(b, damage);
         for (int64_t i = 0; i < b->n; i++) max_damage = fmax(max_damage, damage[i]);
         nspd_free(&damage);
+        if (b->halo) max_damage = comm_max(&b->halo->comm, max_damage); /* exact */
     } else {
         max_damage = (double)NAN;
     }
@@ -184,7 +227,10 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "kinetic_energy_J", pd_kinetic_energy(b));
     report_real(out, "elastic_energy_J", pd_elastic_energy(b));
     report_real(out, "bond_updates_per_s",
-                run->wall_s > 0 ? (double)b->bond_count * (double)run->steps / run->wall_s : 0.0);
+                run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);
+    /* several processes: this one's wall time in the ghosts' exchanges
+     * and the step's reductions */
+    if (b->halo) report_real(out, "exchange_s", b->halo->seconds);
 }
 
 static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
@@ -193,9 +239,9 @@ static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
 #define APPEND(...)                                                                                \
     len += snprintf(buf + len, size > (size_t)len ? size - (size_t)len : 0, __VA_ARGS__)
     APPEND("model                %s, %dD\n", PD_MODEL_NAMES[b->cfg.model], b->dim);
-    APPEND("points               %lld\n", (long long)b->n);
+    APPEND("points               %lld\n", (long long)whole_points(b));
     APPEND("bonds                %lld (%.1f per point; %lld broken at start)\n",
-           (long long)b->bond_count / 2, (double)b->bond_count / (double)b->n,
+           (long long)whole_bonds(b) / 2, (double)whole_bonds(b) / (double)whole_points(b),
            (long long)pd_broken_bonds(b));
     APPEND("spacing              %.6g m\n", b->spacing);
     APPEND("horizon              %.6g m (%.4g x spacing)\n", b->horizon, b->cfg.horizon_factor);
@@ -215,7 +261,8 @@ static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
 
 static void bond_brief(const void *impl, char *buf, size_t size) {
     const BondBody *b = &((const BondSolid *)impl)->body;
-    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n, (long long)b->bond_count / 2);
+    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)whole_points(b),
+             (long long)whole_bonds(b) / 2);
 }
 
 static void bond_config_free(void *model) {
@@ -228,6 +275,7 @@ static int bond_config_dim(const void *model) {
 
 const SolidOps BOND_SOLID_OPS = {
     .name = "bond",
+    .distributed = true,
     .config_free = bond_config_free,
     .config_dim = bond_config_dim,
     .estimate = bond_estimate,

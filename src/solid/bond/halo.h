@@ -1,0 +1,61 @@
+/* A bond-based body divided between processes (issue 28: a solid alone on
+ * several ranks).
+ *
+ * Every rank builds the whole body (body.c), then keeps a contiguous run
+ * of its points in the Morton order, rank r of P the points
+ * [N r / P, N (r + 1) / P): Morton runs are compact patches of the body,
+ * so few bonds cross. Its points come first (BondBody.n of them, in the
+ * whole body's order), then the ghosts: every point a bond of its own
+ * reaches that another rank holds, in the whole body's order
+ * (BondBody.ghosts of them). Ghosts keep positions, volumes and a
+ * displacement that the owner sends after every drift; they have no bonds
+ * of their own (empty rows), so the force kernel, the integrator and the
+ * diagnostics, which loop over the first n points, run unchanged.
+ *
+ * Bitwise the one-process run: a point's bonds keep their order (only the
+ * neighbour indices are renumbered), the kernel's SIMD lanes group the
+ * bonds by their position in the row, not by address (checked with
+ * -fopt-info-vec: no peeling), and each point reads the same neighbour
+ * values. Both ends of a crossing bond break together, as they do on one
+ * process, because both evaluate the same stretch.
+ *
+ * The whole body's build runs on every rank (its memory is the one-process
+ * peak); what a step holds afterwards is the rank's part. */
+#ifndef NSPD_SOLID_BOND_HALO_H
+#define NSPD_SOLID_BOND_HALO_H
+
+#include "core/comm.h"
+#include "solid/bond/body.h"
+
+#include <stdint.h>
+
+typedef struct BondHalo {
+    NspdComm comm;
+    int64_t first;      /* the whole body's index of point 0 */
+    int64_t total;      /* points of the whole body */
+    int64_t bond_first; /* the whole body's index of bond 0 */
+    int64_t bonds;      /* bonds of the whole body (each stored from both ends) */
+    int64_t *ghost;     /* per ghost, its index in the whole body */
+    /* the exchange: per rank q, the points sent to q (their local
+     * indices, grouped by q) and the ghosts received from q (a run of the
+     * ghosts: they are sorted by owner), in bytes and offsets */
+    int64_t sends;
+    int64_t *send_point;
+    int *send_bytes, *send_at, *recv_bytes, *recv_at;
+    double *send_buf, *recv_buf;
+    double seconds; /* wall time in the exchanges and the step's reductions so far */
+} BondHalo;
+
+/* Keeps this rank's part of the whole body `b` (see above) and its halo.
+ * Nothing on one process. NSPD_ERR_NOMEM; NSPD_ERR_INPUT when there are
+ * fewer points than processes. */
+int bond_body_divide(BondBody *b, const NspdComm *comm);
+void bond_halo_free(BondHalo **h);
+
+/* The ghosts' displacements from their owners (collective). */
+void bond_halo_exchange(BondBody *b);
+
+/* The whole body's index of local point i (owned or ghost). */
+int64_t bond_halo_global(const BondBody *b, int64_t i);
+
+#endif
