@@ -28,7 +28,8 @@ run() { # ranks threads dir
     fi
 }
 
-key() { sed -n "s/.*\"$1\": \([^,]*\),*/\1/p" "$2"; }
+# a summary key's value, 0 where the run has none (one process: no exchanges)
+key() { v=$(sed -n "s/.*\"$1\": \([^,]*\),*/\1/p" "$2"); echo "${v:-0}"; }
 
 for r in $(seq "$rounds"); do
     for layout in "1 1" "1 2" "2 1"; do
@@ -38,14 +39,14 @@ for r in $(seq "$rounds"); do
         s="$dir/summary.json"
         echo "$1 $2 $(key steps "$s") $(key wall_s "$s") $(key solid_s "$s") $(key exchange_s "$s") $(key peak_rss_mb "$s")" |
             awk -v round="$r" '{ printf "round %d: %d rank x %d thread: %d steps, %.2f ms/step, solid %.2f ms/step, exchange %.3f ms/step, rss %.0f MB\n",
-                round, $1, $2, $3, 1e3 * $4 / $3, 1e3 * $5 / $3, 1e3 * ($6 == "" ? 0 : $6) / $3, $7 }' |
+                round, $1, $2, $3, 1e3 * $4 / $3, 1e3 * $5 / $3, 1e3 * $6 / $3, $7 }' |
             tee -a "$work/lines"
     done
 done
 echo "medians over $rounds rounds:"
 for layout in "1 rank x 1 thread" "1 rank x 2 thread" "2 rank x 1 thread"; do
     grep "$layout" "$work/lines" | awk -v what="$layout" '
-        { w[NR] = $(NF - 11); f[NR] = $(NF - 8); e[NR] = $(NF - 5); m[NR] = $(NF - 1) }
+        { w[NR] = $(NF - 10); f[NR] = $(NF - 7); e[NR] = $(NF - 4); m[NR] = $(NF - 1) }
         function med(x, n,   i, j, t) { for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
             return n % 2 ? x[(n + 1) / 2] : (x[n / 2] + x[n / 2 + 1]) / 2 }
         END { printf "%s: %.2f ms/step (solid %.2f), exchange %.3f ms/step, rss %.0f MB\n", what, med(w, NR), med(f, NR), med(e, NR), med(m, NR) }'
