@@ -1,12 +1,13 @@
 #!/bin/sh
-# The replicated solid of a coupled case on several processes (issue 28;
+# The divided solid of a coupled case on several processes (issue 28;
 # docs/PERFORMANCE.md "GKS on several processes"): the panel in a shock
 # (3,224 points, 59,540 cells) to t = 1e-4 and the cracking cylinder
 # (31,428 points, 66,750 cells) to t = 1e-3, each on 1 rank x 1 thread and
 # 2 ranks x 1 thread, alternated, ROUNDS rounds. Prints per run and as
 # medians the ms per step of the flow, the solid and the coupling: the
-# flow's share is divided between the ranks, the solid's is not (every
-# rank advances the whole solid).
+# flow and the bond solid are divided between the ranks (solid/bond/halo.h),
+# the coupling's interface is not (every rank moves the whole immersed
+# boundary and gathers the whole body's view of the solid).
 #   usage: bench/mpi_coupled.sh [NSPD] [ROUNDS]
 set -eu
 nspd=${1:-build/nspd}

@@ -39,6 +39,11 @@ static const CouplingOps *kind_ops(CouplingKind kind) {
     return kind > COUPLING_NONE && kind < COUPLING_KIND_MAX ? COUPLING_MODELS[kind] : NULL;
 }
 
+bool coupling_divides_solid(CouplingKind kind) {
+    const CouplingOps *ops = kind_ops(kind);
+    return ops && ops->divided_solid;
+}
+
 void coupling_config_free(CouplingConfig *cfg) {
     const CouplingOps *ops = kind_ops(cfg->kind);
     if (cfg->model && ops && ops->config_free) {

@@ -73,6 +73,11 @@ typedef struct CouplingOps {
     /* runs on several processes (CouplingConfig.comm); its ops are then
      * collective, as the flow's */
     bool distributed;
+    /* on several processes it takes a solid divided between them (the
+     * whole body's view of solid.h: it writes the loads whole and reads
+     * points after solid_sync); otherwise every rank advances the whole
+     * solid */
+    bool divided_solid;
     /* frees what a configuration of this coupling owns, not the struct
      * itself (one that no create took); NULL: configurations are borrowed,
      * and create leaves them */
@@ -104,6 +109,9 @@ typedef struct CouplingOps {
 /* Adds a coupling to the registry (before any is created; not thread safe):
  * its kind, or COUPLING_NONE when the registry is full. */
 CouplingKind coupling_register(const CouplingOps *ops);
+
+/* Whether a coupling of `kind` takes a divided solid (CouplingOps). */
+bool coupling_divides_solid(CouplingKind kind);
 
 /* The estimate of *cfg by its coupling (zero for an unknown kind). */
 CouplingEstimate coupling_estimate(const CouplingConfig *cfg, const FlowEstimate *flow);

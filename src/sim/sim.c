@@ -130,12 +130,15 @@ int sim_create(Sim *sim, SimConfig *cfg) {
     sim->built = true;
     /* On several processes the flow is divided (a coupling that
      * distributes takes the whole grid's cells; coupling_create checks),
-     * and so is a solid alone; a solid coupled to a flow is replicated,
-     * every rank advancing the whole solid alike (tens of thousands of
-     * points, a fraction of the flow's work). Each model refuses a group
-     * its ops do not divide. */
+     * and so is a solid alone, or a solid that divides (the bond model)
+     * coupled by a coupling that takes a divided solid (the ghost-cell
+     * FSI); any other coupled solid is advanced whole by every rank alike.
+     * A solid alone that does not divide is refused. */
     c->flow.comm = c->coupling.comm = &c->comm;
-    c->solid.comm = c->flow.method == FLOW_METHOD_NONE ? &c->comm : NULL;
+    const bool divided =
+        c->flow.method == FLOW_METHOD_NONE ||
+        (coupling_divides_solid(c->coupling.kind) && solid_config_divides(&c->solid));
+    c->solid.comm = divided ? &c->comm : NULL;
     if (status == NSPD_OK && c->solid.kind != SOLID_NONE)
         /* a refusal found while the model is built, said at its section */
         status = nspd_error_at(solid_create(&sim->solid, &c->solid), c->solid.where);

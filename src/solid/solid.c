@@ -40,6 +40,10 @@ struct Solid {
     NspdComm comm;
     PdPoints whole;
     int64_t first;
+    uint8_t *attached;      /* the whole body's solid_attached, as of the last sync */
+    uint8_t *attached_mine; /* this process's points' (scratch) */
+    int64_t advances;       /* solid_advance calls so far */
+    int64_t synced_at;      /* `advances` at the last solid_sync (-1: never) */
     int64_t last_substeps;
     double *damage;       /* scratch for solid_damage (the model's points) */
     double *damage_whole; /* several processes: the whole body's damage */
@@ -86,9 +90,15 @@ static int build_whole(Solid *s) {
                                       w->lattice[d]));
         }
     }
+    /* the couplings' loads, written whole (the same bits on every rank),
+     * each rank's run handed to its model before each advance */
+    for (int d = 0; d < p->dim; d++) TRY(nspd_alloc(&w->external[d], n, sizeof(double)));
     TRY(nspd_alloc(&w->volume, n, sizeof(double)));
     TRY(comm_allgatherv(&s->comm, p->volume, count, w->volume));
     TRY(nspd_alloc(&s->damage_whole, n, sizeof(double)));
+    TRY(nspd_alloc(&s->attached, n, 1));
+    TRY(nspd_alloc(&s->attached_mine, (size_t)p->n + 1, 1));
+    s->synced_at = -1;
     return solid_sync(s);
 }
 
@@ -99,19 +109,27 @@ static void free_whole(Solid *s) {
         nspd_free(&w->u[d]);
         nspd_free(&w->v[d]);
         nspd_free(&w->lattice[d]);
+        nspd_free(&w->external[d]);
     }
     nspd_free(&w->volume);
     nspd_free(&s->damage_whole);
+    nspd_free(&s->attached);
+    nspd_free(&s->attached_mine);
 }
 
 int solid_sync(Solid *s) {
-    if (!comm_distributed(&s->comm)) return NSPD_OK;
+    if (!comm_distributed(&s->comm) || s->synced_at == s->advances) return NSPD_OK;
     const PdPoints *p = &s->points;
     for (int d = 0; d < p->dim; d++) {
         TRY(comm_allgatherv(&s->comm, p->u[d], (int)p->n, s->whole.u[d]));
         TRY(comm_allgatherv(&s->comm, p->v[d], (int)p->n, s->whole.v[d]));
     }
-    return NSPD_OK;
+    /* this rank's points' attachment, then every rank's run in rank order */
+    for (int64_t i = 0; i < p->n; i++)
+        s->attached_mine[i] = s->ops->attached ? s->ops->attached(s->impl, i) : 1;
+    const int status = comm_allgatherv_bytes(&s->comm, s->attached_mine, (int)p->n, s->attached);
+    if (status == NSPD_OK) s->synced_at = s->advances;
+    return status;
 }
 
 /* The ops table of a kind, or NULL for none or an unknown one. */
@@ -126,6 +144,11 @@ void solid_config_free(SolidConfig *cfg) {
         nspd_free(&cfg->model);
     }
     memset(cfg, 0, sizeof *cfg);
+}
+
+bool solid_config_divides(const SolidConfig *cfg) {
+    const SolidOps *ops = kind_ops(cfg->kind);
+    return ops && ops->distributed;
 }
 
 int solid_config_dim(const SolidConfig *cfg) {
@@ -270,6 +293,12 @@ static int check_points(const Solid *s) {
 }
 
 int solid_advance(Solid *s, double dt, double max_substep) {
+    if (comm_distributed(&s->comm)) { /* the couplings' loads on this process's points */
+        const PdPoints *p = &s->points;
+        for (int d = 0; d < p->dim; d++)
+            memcpy(p->external[d], s->whole.external[d] + s->first, (size_t)p->n * sizeof(double));
+    }
+    s->advances++;
     int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
     if (n < 1) n = 1;
     double h = dt / (double)n;
@@ -308,6 +337,7 @@ double solid_density(const Solid *s, int64_t i) {
 }
 
 bool solid_attached(const Solid *s, int64_t i) {
+    if (comm_distributed(&s->comm)) return s->attached[i] != 0;
     return s->ops->attached ? s->ops->attached(s->impl, i) : true;
 }
 
@@ -360,7 +390,15 @@ int solid_checkpoint(Solid *s, Checkpoint *ck) {
         return NSPD_FAIL(NSPD_ERR_INPUT, "the solid model '%s' cannot be checkpointed",
                          s->ops->name);
     TRY(checkpoint_io_int64(ck, "solid.last_substeps", &s->last_substeps));
-    return s->ops->checkpoint(s->impl, ck);
+    TRY(s->ops->checkpoint(s->impl, ck));
+    if (!checkpoint_reading(ck) || !comm_distributed(&s->comm)) return NSPD_OK;
+    /* read back: the whole body's view, and the loads the model holds
+     * (a coupling may advance on them before it writes new ones) */
+    s->synced_at = -1;
+    const PdPoints *p = &s->points;
+    for (int d = 0; d < p->dim; d++)
+        TRY(comm_allgatherv(&s->comm, p->external[d], (int)p->n, s->whole.external[d]));
+    return solid_sync(s);
 }
 
 void *solid_impl(Solid *s, SolidKind kind) {

@@ -57,6 +57,9 @@ typedef struct {
 void solid_config_free(SolidConfig *cfg);
 /* The body's dimension (2 or 3) of a configuration; 0 for none. */
 int solid_config_dim(const SolidConfig *cfg);
+/* Whether the configuration's model divides itself between processes
+ * (its ops say `distributed`). */
+bool solid_config_divides(const SolidConfig *cfg);
 
 /* The points every PD model has (struct of arrays, owned by the model,
  * never reallocated after create). Couplings write `external`; everything
@@ -95,7 +98,9 @@ typedef struct {
      * `pts` this process's points, a run of the whole body's order
      * (rank r's after rank r - 1's), and its ops are collective (sums and
      * counts of the whole body, in its order); the rest of its arrays (the
-     * ghosts a step reads) follow the run, beyond pts.n */
+     * ghosts a step reads) follow the run, beyond pts.n; `attached`
+     * is asked of this process's points, `modulus` and `density` with
+     * whole-body indices (a model with one material ignores them) */
     bool distributed;
     /* frees what a configuration of this model owns, not the struct
      * itself (one that no create took); NULL: configurations are borrowed,
@@ -165,12 +170,15 @@ SolidKind solid_kind(const Solid *s);
 const char *solid_name(const Solid *s);
 /* The points of the whole body. On several processes the whole body's
  * view, the same on every rank: positions, volumes and lattice indices
- * from create, displacements and velocities as of the last solid_sync;
- * no external force density and no family (those stay with each part). */
+ * from create, displacements and velocities as of the last solid_sync,
+ * and the external force density a coupling writes whole (alike on every
+ * rank), which solid_advance hands to each process's points; no family
+ * (the bonds stay with each part). */
 PdPoints *solid_points(Solid *s);
 const PdPoints *solid_points_const(const Solid *s);
 /* Brings the whole body's view up to date (collective; nothing on one
- * process): before anything reads the points between steps. */
+ * process, or when nothing advanced since the last): before anything
+ * reads the points or asks solid_attached between steps. */
 int solid_sync(Solid *s);
 double solid_stable_dt(const Solid *s);
 double solid_time(const Solid *s);

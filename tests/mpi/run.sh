@@ -8,8 +8,8 @@
 # Blasius plate (stretched rows, inflow, outflow, a no-slip plate, point
 # probes), fixed bodies in a stream (the Mach 2 cylinder with sealed and
 # with reflected ghost faces, the NACA 0012: ghost cells, surface loads and
-# forces), and solids coupled to the flow, replicated on every rank: by
-# the ghost-cell boundary (the panel in a shock, the cracking cylinder:
+# forces), and solids coupled to the flow: by the ghost-cell boundary
+# (the bond solid divided between the ranks) (the panel in a shock, the cracking cylinder:
 # moving walls) and by the volumetric penalty (the detonation chamber, the
 # hollow square in a blast with sealed faces), and a solid alone divided
 # between the ranks (the pre-cracked plate). Then the state moves between
@@ -80,8 +80,8 @@ check_body() {
 check_body cylinder_ma2_re300 cylinder_sealed "2 4"
 check_body cylinder_ma2_re300 cylinder_reflected 3 --set flow.ghost_faces=reflected
 check_body naca0012_ma05_re5000 naca "2 4"
-# A solid coupled to the flow (ghost-cell FSI, moving walls): replicated
-# on every rank; the coarse panel in a shock and the coarse cracking
+# A solid coupled to the flow (ghost-cell FSI, moving walls): divided
+# between the ranks as a solid alone; the coarse panel in a shock and the coarse cracking
 # cylinder.
 check_body panel_shock panel 3
 check_body cylinder_crack_ma17 crack "2 4"

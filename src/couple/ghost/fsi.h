@@ -90,7 +90,7 @@ int fsi_create(Fsi *fsi, const FsiConfig *cfg, const Solid *solid, GksSolver *fl
 void fsi_destroy(Fsi *fsi);
 
 /* Step 1 above. */
-int fsi_move_interface(Fsi *fsi, const Solid *solid, GksSolver *flow);
+int fsi_move_interface(Fsi *fsi, Solid *solid, GksSolver *flow);
 
 /* Step 3 above: replaces the solid's external force density with the
  * fluid's tractions. */

@@ -264,7 +264,8 @@ static void ghost_config_free(void *model) {
 
 const CouplingOps GHOST_COUPLING_OPS = {
     .name = "ghost_cell",
-    .distributed = true, /* the solid coupled is replicated on every rank (sim.c) */
+    .distributed = true,
+    .divided_solid = true, /* fsi.c reads the whole body's view after solid_sync */
     .config_free = ghost_config_free,
     .estimate = ghost_estimate,
     .create = ghost_create,
