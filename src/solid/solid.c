@@ -40,6 +40,7 @@ struct Solid {
     NspdComm comm;
     PdPoints whole;
     int64_t first;
+    int64_t *run_first;     /* per rank, its run's first point; the whole count last */
     uint8_t *attached;      /* the whole body's solid_attached, as of the last sync */
     uint8_t *attached_mine; /* this process's points' (scratch) */
     int64_t advances;       /* solid_advance calls so far */
@@ -62,13 +63,16 @@ static int build_whole(Solid *s) {
     PdPoints *w = &s->whole;
     const int ranks = s->comm.size;
     int64_t *runs = NULL;
+    TRY(nspd_alloc(&s->run_first, (size_t)ranks + 1, sizeof *s->run_first));
     TRY(nspd_alloc(&runs, (size_t)ranks, sizeof *runs));
     int status = comm_allgatherv_bytes(&s->comm, &p->n, (int)sizeof p->n, runs);
     int64_t total = 0;
     for (int q = 0; q < ranks; q++) {
-        if (q == s->comm.rank) s->first = total;
+        s->run_first[q] = total;
         total += runs[q];
     }
+    s->run_first[ranks] = total;
+    s->first = s->run_first[s->comm.rank];
     nspd_free(&runs);
     TRY(status);
     *w = (PdPoints){.dim = p->dim, .n = total, .spacing = p->spacing, .thickness = p->thickness};
@@ -115,6 +119,7 @@ static void free_whole(Solid *s) {
     nspd_free(&s->damage_whole);
     nspd_free(&s->attached);
     nspd_free(&s->attached_mine);
+    nspd_free(&s->run_first);
 }
 
 int solid_sync(Solid *s) {
@@ -181,6 +186,51 @@ int solid_bench(const char *name, long size, long steps, Report *out, bool *foun
         }
     }
     return NSPD_OK;
+}
+
+/* The rank whose run holds whole-body point g. */
+static int run_owner(const Solid *s, int64_t g) {
+    int lo = 0, hi = s->comm.size - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (s->run_first[mid] <= g)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
+int solid_sync_points(Solid *s, int64_t n, const int32_t *points) {
+    if (!comm_distributed(&s->comm) || s->synced_at == s->advances) return NSPD_OK;
+    const PdPoints *p = &s->points;
+    const int width = 2 * p->dim + 1; /* u, v, attached */
+    int *owner = NULL;
+    double *mine = NULL, *all = NULL;
+    int status = nspd_alloc(&owner, (size_t)n + 1, sizeof *owner);
+    if (status == NSPD_OK) status = nspd_alloc(&mine, (size_t)(n * width) + 1, sizeof *mine);
+    if (status == NSPD_OK) status = nspd_alloc(&all, (size_t)(n * width) + 1, sizeof *all);
+    if (status == NSPD_OK) {
+        double *m = mine;
+        for (int64_t k = 0; k < n; k++) {
+            owner[k] = run_owner(s, points[k]);
+            if (owner[k] != s->comm.rank) continue;
+            const int64_t i = points[k] - s->first;
+            for (int d = 0; d < p->dim; d++) *m++ = p->u[d][i], *m++ = p->v[d][i];
+            *m++ = s->ops->attached ? (double)s->ops->attached(s->impl, i) : 1.0;
+        }
+        status = comm_share_items(&s->comm, n, owner, width, mine, all);
+    }
+    for (int64_t k = 0; k < n && status == NSPD_OK; k++) {
+        const double *a = all + k * width;
+        for (int d = 0; d < p->dim; d++)
+            s->whole.u[d][points[k]] = a[2 * d], s->whole.v[d][points[k]] = a[2 * d + 1];
+        s->attached[points[k]] = a[2 * p->dim] != 0.0;
+    }
+    nspd_free(&owner);
+    nspd_free(&mine);
+    nspd_free(&all);
+    return status;
 }
 
 int solid_create(Solid **out, SolidConfig *cfg) {

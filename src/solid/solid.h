@@ -180,6 +180,10 @@ const PdPoints *solid_points_const(const Solid *s);
  * process, or when nothing advanced since the last): before anything
  * reads the points or asks solid_attached between steps. */
 int solid_sync(Solid *s);
+/* The same for points[0..n) of the whole body only (collective; every
+ * rank passes the same list): what a coupling that reads a few points (a
+ * surface) gathers instead of the whole body. */
+int solid_sync_points(Solid *s, int64_t n, const int32_t *points);
 double solid_stable_dt(const Solid *s);
 double solid_time(const Solid *s);
 void solid_set_time(Solid *s, double t);

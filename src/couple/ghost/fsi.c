@@ -106,14 +106,16 @@ void fsi_destroy(Fsi *f) {
 }
 
 int fsi_move_interface(Fsi *f, Solid *solid, GksSolver *flow) {
-    TRY(solid_sync(solid)); /* a divided solid's whole view (solid.h) */
+    /* a divided solid's view of the surface points (solid.h), which is all
+     * this coupling reads of its motion */
+    TRY(solid_sync_points(solid, f->surface.length, f->surface.point));
     markers_from_points(f, solid);
     TRY(ibm_update(f->ibm, f->polylines, f->loop_count, flow));
     return ibm_surface_reserve(f->ibm, &f->loads); /* the marker count may change */
 }
 
 int fsi_apply_loads(Fsi *f, Solid *solid, GksSolver *flow) {
-    TRY(solid_sync(solid));
+    TRY(solid_sync_points(solid, f->surface.length, f->surface.point));
     PdPoints *body = solid_points(solid);
     TRY(ibm_surface_compute(f->ibm, flow, &f->cfg.reference, &f->loads));
     /* Parts of the solid outside the flow's box (the panel's clamp below the
