@@ -7,7 +7,7 @@
 # medians the ms per step of the flow, the solid and the coupling: the
 # flow and the bond solid are divided between the ranks (solid/bond/halo.h),
 # the coupling's interface is not (every rank moves the whole immersed
-# boundary and gathers the whole body's view of the solid).
+# boundary and gathers the surface points' view of the solid).
 #   usage: bench/mpi_coupled.sh [NSPD] [ROUNDS]
 set -eu
 nspd=${1:-build/nspd}
