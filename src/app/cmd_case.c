@@ -60,6 +60,8 @@ static int load(const CaseOptions *opt, bool check_only, CfgDoc *doc, Sim *sim) 
     cfg.max_memory_bytes = opt->max_memory_mb * 1e6;
     cfg.check_only = check_only;
     cfg.comm = comm_world(); /* the processes of `mpirun nspd run` (this one alone otherwise) */
+    cfg.processes[0] = opt->processes[0];
+    cfg.processes[1] = opt->processes[1];
     status = sim_create(sim, &cfg);
     if (status != NSPD_OK) {
         sim_config_free(&cfg);

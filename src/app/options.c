@@ -44,6 +44,19 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
                 return false;
             }
             opt->threads = atoi(argv[++i]);
+        } else if (strcmp(a, "--processes") == 0) {
+            int px = 0, py = 0, used = 0;
+            if (i + 1 >= argc || sscanf(argv[i + 1], "%dx%d%n", &px, &py, &used) != 2 ||
+                argv[i + 1][used] != '\0' || px < 1 || py < 1) {
+                fprintf(stderr,
+                        "nspd %s: --processes needs the flow's process grid as PXxPY (blocks "
+                        "along x and along y, e.g. 4x2)\n",
+                        command);
+                return false;
+            }
+            opt->processes[0] = px;
+            opt->processes[1] = py;
+            i++;
         } else if (strcmp(a, "--max-memory") == 0) {
             char *end = NULL;
             const double mb = i + 1 < argc ? strtod(argv[i + 1], &end) : 0.0;

@@ -10,8 +10,9 @@ typedef struct {
     const char *case_path;
     const char *out_dir; /* -o */
     bool force, quiet;
-    bool resume; /* --resume: continue the run in the output directory from its checkpoint */
-    int threads; /* --threads, 0 = OpenMP default */
+    bool resume;      /* --resume: continue the run in the output directory from its checkpoint */
+    int threads;      /* --threads, 0 = OpenMP default */
+    int processes[2]; /* --processes PXxPY: the flow's process grid; 0: its own */
     double
         max_memory_mb; /* --max-memory: the case's estimate may not exceed it; 0: the machine's */
     char *overrides[MAX_OVERRIDES];

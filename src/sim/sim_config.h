@@ -86,6 +86,8 @@ typedef struct {
      * rank builds and steps the same case; the flow is divided between
      * them, rank 0 writes the outputs (sim.h) */
     NspdComm comm;
+    /* `--processes PXxPY`: the flow's process grid (flow.h); 0: its own */
+    int processes[2];
 } SimConfig;
 
 void sim_config_free(SimConfig *cfg);

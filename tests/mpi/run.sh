@@ -52,6 +52,27 @@ check_case vortex 1.0 2 3 4
 check_case couette 2.0 3
 check_case blasius 0.3 2 3
 
+# 2D process grids (--processes PXxPY: blocks along x and along y), against
+# the one-process runs above: the x halo, the corners, the blocks' edge
+# columns, the totals passed along x.
+check_grid() {
+    name=$1 end=$2
+    shift 2
+    for g in "$@"; do
+        n=$((${g%x*} * ${g#*x}))
+        if on "$n" "$src/cases/$name.yaml" -o "$work/$name.$g" --quiet --set "time.end=$end" \
+            --processes "$g"; then
+            same_results "$work/$name.1" "$work/$name.$g" "$name on $g blocks"
+        else
+            fail "$name on $g blocks: exit status $?"
+        fi
+    done
+}
+check_grid sod 0.2 2x1 3x1
+check_grid vortex 1.0 2x2 4x1
+check_grid couette 2.0 2x1
+check_grid blasius 0.3 2x2 3x1
+
 # Fixed bodies (the ghost-cell immersed boundary, couple/ghost/share.c):
 # the coarse golden runs of the Mach 2 cylinder (sealed ghost faces, soft
 # start, forces) and of it with reflected faces, and of the NACA 0012
@@ -123,6 +144,24 @@ if on 3 "$vortex" -o "$work/ck.3" --quiet $ck; then
     done
 else
     fail "the checkpointed run on 3 ranks failed"
+fi
+
+# A checkpoint of a 2 x 2 process grid resumes on 3 slabs and on one
+# process with the same bits.
+if on 4 "$vortex" -o "$work/ck.2x2" --quiet $ck --processes 2x2; then
+    for n in 3 1; do
+        cp -r "$work/ck.2x2" "$work/ck.2x2to$n"
+        last=$(ls "$work/ck.2x2to$n"/flow_*.vtr | tail -n 1)
+        rm -f "$work/ck.2x2to$n/summary.json" "$last"
+        if runs "$n" "$vortex" -o "$work/ck.2x2to$n" --quiet --resume $ck; then
+            [ -e "$last" ] || fail "resume of 2 x 2 on $n: $last not written again"
+            same_results "$work/ck.ref" "$work/ck.2x2to$n" "checkpoint of 2 x 2 blocks resumed on $n"
+        else
+            fail "checkpoint of 2 x 2 blocks resumed on $n: exit status $?"
+        fi
+    done
+else
+    fail "the checkpointed run on 2 x 2 blocks failed"
 fi
 
 # A signal to mpirun (SIGUSR1, which it forwards): the ranks agree to stop
@@ -251,6 +290,10 @@ refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/b
 refused "the correspondence solid on 2 ranks" "the correspondence model runs on one process only, not on 2" 2 \
     "$src/cases/hollow_square_pressure.yaml" -o "$work/bad"
 refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
+refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 "$sod" \
+    -o "$work/bad" --processes 3x1
+refused "bodies on 2 x 1 blocks" "a coupled flow .bodies, a solid. runs on slabs of rows only" 2 \
+    "$src/cases/cylinder_ma2_re300.yaml" -o "$work/bad" --processes 2x1
 refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
     "$src/cases/cavity_re1.yaml" -o "$work/bad"
 [ -e "$work/bad" ] && fail "a refused run wrote $work/bad"

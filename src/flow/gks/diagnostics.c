@@ -5,6 +5,7 @@
 #include "flow/gks/solver_internal.h"
 
 #include <math.h>
+#include <string.h>
 
 void gks_solver_primitive(const GksSolver *s, FlowField field, double *out) {
     const Grid *g = &s->grid;
@@ -44,13 +45,32 @@ void gks_solver_primitive(const GksSolver *s, FlowField field, double *out) {
         }
 }
 
+/* Each rank's nx * ny values of its block (x fastest) into the whole
+ * grid's out[] (x fastest) on rank 0: gathered in rank order, which on
+ * slabs is the row order; on a 2D process grid each block then placed. */
+static int gather_blocks(const GksSolver *s, const double *mine, double *out) {
+    const Grid *g = &s->grid;
+    if (s->dims[0] == 1) return comm_gatherv(&s->comm, mine, g->nx * g->ny, out);
+    TRY(comm_gatherv(&s->comm, mine, g->nx * g->ny, s->gather));
+    if (s->comm.rank != 0) return NSPD_OK;
+    const double *at = s->gather;
+    const int64_t width = s->whole.nx;
+    for (int r = 0; r < s->comm.size; r++) {
+        int first[2], count[2];
+        gks_solver_block(s, r, first, count);
+        for (int j = 0; j < count[1]; j++, at += count[0])
+            memcpy(out + (first[1] + j) * width + first[0], at, (size_t)count[0] * sizeof *at);
+    }
+    return NSPD_OK;
+}
+
 int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out) {
     if (!comm_distributed(&s->comm)) {
         gks_solver_primitive(s, field, out);
         return NSPD_OK;
     }
     gks_solver_primitive(s, field, slab);
-    return comm_gatherv(&s->comm, slab, s->grid.nx * s->grid.ny, out);
+    return gather_blocks(s, slab, out);
 }
 
 int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
@@ -59,13 +79,27 @@ int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = s->kind[grid_index(g, i, j)];
     if (mine == out) return NSPD_OK;
-    return comm_gatherv(&s->comm, slab, g->nx * g->ny, out);
+    return gather_blocks(s, slab, out);
+}
+
+/* The block along an axis of n cells in p blocks that holds cell i (the
+ * ghost layers beyond the ends: the end blocks). */
+static int axis_owner(int n, int p, int i) {
+    i = i < 0 ? 0 : i >= n ? n - 1 : i;
+    int c = (int)((int64_t)i * p / n);
+    while (c + 1 < p && (int64_t)n * (c + 1) / p <= i) c++;
+    while (c > 0 && (int64_t)n * c / p > i) c--;
+    return c;
+}
+
+int gks_solver_cell_owner(const GksSolver *s, int i, int j) {
+    if (!comm_distributed(&s->comm)) return 0;
+    return axis_owner(s->whole.ny, s->dims[1], j) * s->dims[0] +
+           axis_owner(s->whole.nx, s->dims[0], i);
 }
 
 int gks_solver_row_owner(const GksSolver *s, int row) {
-    int r = 0;
-    while (r + 1 < s->comm.size && gks_solver_slab_first(s, r + 1) <= row) r++;
-    return r;
+    return gks_solver_cell_owner(s, 0, row);
 }
 
 /* Each fluid cell's pressure times its area (NaN marks the others), then
@@ -86,7 +120,7 @@ int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, doub
                 s->kind[k] == FLOW_CELL_FLUID ? gm1 * (s->w[3][k] - ke) * a : (double)NAN;
         }
     if (mine != all) {
-        TRY(comm_gatherv(&s->comm, slab, g->nx * g->ny, all));
+        TRY(gather_blocks(s, slab, all));
         if (s->comm.rank != 0) return comm_bcast(&s->comm, mean, (int)sizeof *mean, 0);
     }
     const Grid *w = gks_solver_whole_grid(s);
@@ -103,14 +137,24 @@ int gks_solver_mean_pressure(const GksSolver *s, double *slab, double *all, doub
 }
 
 /* Deterministic at any thread count: each row is summed in index order by one
- * thread, then the row sums in row order. */
+ * thread, then the row sums in row order. On a 2D process grid a row's sum
+ * passes along x from block to block, each adding its cells to its left
+ * neighbour's partial sums (the one-process order of additions), and the
+ * last block of each row of blocks gives the row sums. */
 void gks_solver_totals(const GksSolver *s, double totals[4]) {
     const Grid *g = &s->grid;
     double *rs = s->row_sums;
+    const int bytes = 4 * g->ny * (int)sizeof *rs;
+    const int left = s->coord[0] > 0 ? s->comm.rank - 1 : -1;
+    const int right = s->coord[0] < s->dims[0] - 1 ? s->comm.rank + 1 : -1;
+    if (s->dims[0] > 1) /* a failed exchange is MPI's abort */
+        (void)comm_sendrecv(&s->comm, rs, bytes, -1, rs, left);
+    if (left < 0)
+        for (int k = 0; k < 4 * g->ny; k++) rs[k] = 0.0;
     const int big = (int64_t)g->nx * g->ny >= PARALLEL_MIN_CELLS;
 #pragma omp parallel for schedule(static) if (big)
     for (int j = 0; j < g->ny; j++) {
-        double acc[4] = {0.0, 0.0, 0.0, 0.0};
+        double acc[4] = {rs[4 * j], rs[4 * j + 1], rs[4 * j + 2], rs[4 * j + 3]};
         for (int i = 0; i < g->nx; i++) {
             const int64_t k = grid_index(g, i, j);
             if (s->kind[k] != FLOW_CELL_FLUID) continue;
@@ -120,8 +164,9 @@ void gks_solver_totals(const GksSolver *s, double totals[4]) {
         for (int v = 0; v < 4; v++) rs[4 * j + v] = acc[v];
     }
     int rows = g->ny;
+    if (s->dims[0] > 1) (void)comm_sendrecv(&s->comm, rs, bytes, right, rs, -1);
     if (s->row_sums_all) { /* several processes: every row's sums, in row order */
-        (void)comm_allgatherv(&s->comm, rs, 4 * g->ny, s->row_sums_all);
+        (void)comm_allgatherv(&s->comm, rs, right < 0 ? 4 * g->ny : 0, s->row_sums_all);
         rs = s->row_sums_all, rows = s->rows;
     }
     for (int v = 0; v < 4; v++) totals[v] = 0.0;

@@ -203,21 +203,24 @@ int grid_create(Grid *g, double x0, int nsx, const GridSegment *sx, bool periodi
     return NSPD_OK;
 }
 
-int grid_slice_rows(Grid *out, const Grid *g, int first, int rows) {
+int grid_slice(Grid *out, const Grid *g, const int first[2], const int count[2]) {
     memset(out, 0, sizeof *out);
-    if (first < 0 || rows < GRID_NG || first + rows > g->ny)
-        return NSPD_FAIL(NSPD_ERR_INTERNAL, "grid: rows %d..%d are not a slab of %d rows", first,
-                         first + rows - 1, g->ny);
-    TRY(axis_slice(&out->ax[0], &g->ax[0], 0, g->nx));
-    const int st = axis_slice(&out->ax[1], &g->ax[1], first, rows);
+    const int n[2] = {g->nx, g->ny};
+    for (int a = 0; a < 2; a++)
+        if (first[a] < 0 || count[a] < GRID_NG || first[a] + count[a] > n[a])
+            return NSPD_FAIL(NSPD_ERR_INTERNAL,
+                             "grid: cells %d..%d of the %s axis are not a block of %d", first[a],
+                             first[a] + count[a] - 1, a == 0 ? "x" : "y", n[a]);
+    TRY(axis_slice(&out->ax[0], &g->ax[0], first[0], count[0]));
+    const int st = axis_slice(&out->ax[1], &g->ax[1], first[1], count[1]);
     if (st < 0) {
         grid_axis_destroy(&out->ax[0]);
         return st;
     }
-    out->nx = g->nx;
-    out->ny = rows;
-    out->stride = g->stride;
-    out->size = (int64_t)out->stride * (rows + 2 * GRID_NG);
+    out->nx = count[0];
+    out->ny = count[1];
+    out->stride = (out->nx + 2 * GRID_NG + 7) / 8 * 8;
+    out->size = (int64_t)out->stride * (out->ny + 2 * GRID_NG);
     return NSPD_OK;
 }
 

@@ -86,12 +86,14 @@ double grid_segments_min_spacing(int count, const GridSegment *segments);
 /* Builds a grid from segment lists per axis. */
 int grid_create(Grid *g, double x0, int nsx, const GridSegment *sx, bool periodic_x, double y0,
                 int nsy, const GridSegment *sy, bool periodic_y);
-/* The rows first .. first + rows - 1 of grid g as a grid of their own (one
- * process's slab, core/comm.h): the x axis whole, the y axis a slice of
- * g's, its ghost layers the neighbouring rows' true widths inside g and
- * g's own ghosts at g's ends, so that every stretched-grid weight of the
- * slab is the whole grid's. `periodic` stays the whole axis' property. */
-int grid_slice_rows(Grid *out, const Grid *g, int first, int rows);
+/* The cells first[a] .. first[a] + count[a] - 1 along each axis of grid g
+ * as a grid of their own (one process's block, core/comm.h): each axis a
+ * slice of g's, its ghost layers the neighbouring cells' true widths
+ * inside g and g's own ghosts at g's ends, so that every stretched-grid
+ * weight of the block is the whole grid's; rows padded as grid_create
+ * pads them (a block of the whole width has g's stride). `periodic` stays
+ * the whole axis' property. */
+int grid_slice(Grid *out, const Grid *g, const int first[2], const int count[2]);
 /* Uniform grid of nx x ny cells on [x0, x1] x [y0, y1]. */
 int grid_create_uniform(Grid *g, double x0, double x1, int nx, double y0, double y1, int ny,
                         bool periodic_x, bool periodic_y);

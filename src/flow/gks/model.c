@@ -124,7 +124,15 @@ static int gks_create(void **impl, FlowConfig *mc) {
         c->init_ctx = &fc->field;
     }
     c->comm = mc->comm; /* borrowed during create */
-    int status = gks_solver_create(&g->solver, c);
+    c->processes[0] = mc->processes[0];
+    c->processes[1] = mc->processes[1];
+    int status = NSPD_OK;
+    if (mc->coupled && c->processes[0] > 1 && comm_distributed(mc->comm))
+        status = NSPD_FAIL(NSPD_ERR_INPUT,
+                           "--processes %dx%d: a coupled flow (bodies, a solid) runs on "
+                           "slabs of rows only so far; expected --processes 1x%d",
+                           c->processes[0], c->processes[1], mc->comm->size);
+    if (status == NSPD_OK) status = gks_solver_create(&g->solver, c);
     if (status == NSPD_OK) {
         const Grid *grid = gks_solver_whole_grid(g->solver), *slab = gks_solver_grid(g->solver);
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
@@ -210,18 +218,20 @@ static void gks_cell_centre(const void *impl, int64_t cell, double xy[2]) {
     xy[1] = g->ax[1].center[j];
 }
 
-/* A cell of the whole grid: read on the process that holds its row, then
- * sent to the others (every rank calls). */
+/* A cell of the whole grid: read on the process that holds it, then sent
+ * to the others (every rank calls). */
 static void gks_cell_state(const void *impl, int64_t cell, double out[5]) {
     /* the fields are read only here; the accessor is not const-qualified */
     GksSolver *solver = ((const GksFlow *)impl)->solver;
     const Grid *whole = gks_solver_whole_grid(solver);
     int i, j;
     cell_ij(whole, cell, &i, &j);
-    const int owner = gks_solver_row_owner(solver, j);
+    const int owner = gks_solver_cell_owner(solver, i, j);
     const NspdComm *comm = gks_solver_comm(solver);
     if (comm->rank == owner) {
-        const int64_t k = grid_index(gks_solver_grid(solver), i, j - gks_solver_first_row(solver));
+        int first[2], count[2];
+        gks_solver_block(solver, owner, first, count);
+        const int64_t k = grid_index(gks_solver_grid(solver), i - first[0], j - first[1]);
         GksFields f = gks_solver_fields(solver);
         const GksParams *gas = gks_solver_gas(solver);
         double w[4] = {f.w[0][k], f.w[1][k], f.w[2][k], f.w[3][k]};

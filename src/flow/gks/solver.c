@@ -66,9 +66,13 @@ const GksParams *gks_solver_gas(const GksSolver *s) {
 const Grid *gks_solver_whole_grid(const GksSolver *s) {
     return comm_distributed(&s->comm) ? &s->whole : &s->grid;
 }
-/* Rank r's slab: rows [rows r / P, rows (r + 1) / P) of the whole grid. */
+/* Rank r's slab (a process grid of one column): rows [rows r / P,
+ * rows (r + 1) / P) of the whole grid. */
 int gks_solver_slab_first(const GksSolver *s, int rank) {
     return (int)((int64_t)s->rows * rank / s->comm.size);
+}
+int gks_solver_process_columns(const GksSolver *s) {
+    return s->dims[0];
 }
 const NspdComm *gks_solver_comm(const GksSolver *s) {
     return &s->comm;
@@ -171,9 +175,67 @@ int64_t gks_solver_fallbacks_total(const GksSolver *s) {
  * row order, and on reading each slab's rows with their ghost rows cut
  * from the whole. So a checkpoint is the same for any number of
  * processes and is read back by any other. */
+/* The padded cells rank r holds as the whole grid's, per axis [lo, hi)
+ * in the whole grid's padded indices: its interior, and the box's ghost
+ * layers where it ends the whole grid. */
+static void owned_padded(const GksSolver *s, int r, int lo[2], int hi[2]) {
+    int first[2], count[2];
+    gks_solver_block(s, r, first, count);
+    const int c[2] = {r % s->dims[0], r / s->dims[0]};
+    for (int a = 0; a < 2; a++) {
+        lo[a] = c[a] == 0 ? 0 : first[a] + GRID_NG;
+        hi[a] = first[a] + count[a] + (c[a] == s->dims[a] - 1 ? 2 : 1) * GRID_NG;
+    }
+}
+
+/* io_cells on a 2D process grid: each rank's owned padded cells packed,
+ * gathered, and placed in the whole padded array; on reading each rank
+ * cuts its padded block (its halo too) out of the whole. */
+static int io_blocks(GksSolver *s, Checkpoint *ck, const char *name, void *cells, size_t elem) {
+    const Grid *g = &s->grid, *w = &s->whole;
+    unsigned char *whole = NULL, *mine = NULL, *all = NULL, *local = cells;
+    int lo[2], hi[2];
+    owned_padded(s, s->comm.rank, lo, hi);
+    const size_t run = (size_t)(hi[0] - lo[0]) * elem;
+    int status = nspd_alloc(&whole, (size_t)w->size, elem);
+    if (status == NSPD_OK && !checkpoint_reading(ck)) {
+        status = nspd_alloc(&mine, (size_t)(hi[1] - lo[1]) * run + 1, 1);
+        if (status == NSPD_OK) status = nspd_alloc(&all, (size_t)w->size, elem);
+        for (int R = lo[1]; R < hi[1] && status == NSPD_OK; R++)
+            memcpy(mine + (size_t)(R - lo[1]) * run,
+                   local + ((size_t)(R - s->first[1]) * (size_t)g->stride +
+                            (size_t)(lo[0] - s->first[0])) *
+                               elem,
+                   run);
+        if (status == NSPD_OK)
+            status =
+                comm_allgatherv_bytes(&s->comm, mine, (int)((size_t)(hi[1] - lo[1]) * run), all);
+        const unsigned char *at = all;
+        for (int r = 0; r < s->comm.size && status == NSPD_OK; r++) {
+            int l[2], h[2];
+            owned_padded(s, r, l, h);
+            const size_t n = (size_t)(h[0] - l[0]) * elem;
+            for (int R = l[1]; R < h[1]; R++, at += n)
+                memcpy(whole + ((size_t)R * (size_t)w->stride + (size_t)l[0]) * elem, at, n);
+        }
+    }
+    if (status == NSPD_OK) status = checkpoint_io(ck, name, whole, (size_t)w->size * elem);
+    if (status == NSPD_OK && checkpoint_reading(ck))
+        for (int r = 0; r < g->ny + 2 * GRID_NG; r++)
+            memcpy(local + (size_t)r * (size_t)g->stride * elem,
+                   whole +
+                       ((size_t)(s->first[1] + r) * (size_t)w->stride + (size_t)s->first[0]) * elem,
+                   (size_t)(g->nx + 2 * GRID_NG) * elem);
+    nspd_free(&whole);
+    nspd_free(&mine);
+    nspd_free(&all);
+    return status;
+}
+
 static int io_cells(GksSolver *s, Checkpoint *ck, const char *name, void *cells, size_t elem) {
     const Grid *g = &s->grid;
     if (!comm_distributed(&s->comm)) return checkpoint_io(ck, name, cells, (size_t)g->size * elem);
+    if (s->dims[0] > 1) return io_blocks(s, ck, name, cells, elem);
     const size_t row = (size_t)g->stride * elem;
     const size_t whole_rows = (size_t)s->rows + 2 * GRID_NG;
     unsigned char *whole = NULL;
@@ -343,39 +405,81 @@ double gks_solver_config_stable_dt(const GksConfig *cfg, const FlowRegion *regio
     return rate > 0.0 ? cfg->cfl / rate : 0.0;
 }
 
-/* This process's slab of the whole grid `whole` (solver.h), into
+void gks_solver_block(const GksSolver *s, int rank, int first[2], int count[2]) {
+    const Grid *w = gks_solver_whole_grid(s);
+    const int n[2] = {w->nx, w->ny}, c[2] = {rank % s->dims[0], rank / s->dims[0]};
+    for (int a = 0; a < 2; a++) {
+        first[a] = (int)((int64_t)n[a] * c[a] / s->dims[a]);
+        count[a] = (int)((int64_t)n[a] * (c[a] + 1) / s->dims[a]) - first[a];
+    }
+}
+
+/* The process grid of a group of p: the configuration's, or one slab of
+ * rows a process. */
+static int process_grid(const GksConfig *cfg, const Grid *whole, int p, int dims[2]) {
+    dims[0] = cfg->processes[0] > 0 ? cfg->processes[0] : 1;
+    dims[1] = cfg->processes[1] > 0 ? cfg->processes[1] : p;
+    if ((int64_t)dims[0] * dims[1] != p)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "--processes %dx%d makes %lld blocks for %d process%s; expected PXxPY "
+                         "with PX times PY = %d",
+                         dims[0], dims[1], (long long)dims[0] * dims[1], p, p == 1 ? "" : "es", p);
+    const int n[2] = {whole->nx, whole->ny};
+    static const char *const WHAT[2] = {"columns", "rows"};
+    for (int a = 1; a >= 0 && p > 1; a--)
+        if (n[a] / dims[a] < GRID_NG)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "flow: %d %s over %d processes leave fewer than %d on one; expected "
+                             "at most %d processes",
+                             n[a], WHAT[a], dims[a], GRID_NG, n[a] / GRID_NG);
+    return NSPD_OK;
+}
+
+/* This process's block of the whole grid `whole` (solver.h), into
  * s->grid; the whole grid itself on one process. */
-static int take_rows(GksSolver *s, Grid *whole, const NspdComm *comm) {
-    s->comm = comm ? *comm : comm_self();
+static int take_block(GksSolver *s, Grid *whole, const GksConfig *cfg) {
+    s->comm = cfg->comm ? *cfg->comm : comm_self();
     s->rows = whole->ny;
-    s->below = s->above = -1;
+    s->dims[0] = s->dims[1] = 1;
+    for (int face = 0; face < 4; face++) s->nbr[face] = -1;
     s->bc_faces = 15u;
-    if (!comm_distributed(&s->comm)) {
+    const bool alone = !comm_distributed(&s->comm);
+    int status = process_grid(cfg, whole, alone ? 1 : s->comm.size, s->dims);
+    if (status == NSPD_OK && alone) {
         s->grid = *whole;
         return NSPD_OK;
     }
-    const int r = s->comm.rank, p = s->comm.size, ny = whole->ny;
-    const int first = gks_solver_slab_first(s, r), last = gks_solver_slab_first(s, r + 1);
-    int status = NSPD_OK;
-    if (ny / p < GRID_NG)
-        status = NSPD_FAIL(NSPD_ERR_INPUT,
-                           "flow: %d rows over %d processes leave fewer than %d on one; expected "
-                           "at most %d processes",
-                           ny, p, GRID_NG, ny / GRID_NG);
-    else
-        status = grid_slice_rows(&s->grid, whole, first, last - first);
+    const int r = s->comm.rank;
+    int count[2];
+    if (status == NSPD_OK) {
+        s->whole = *whole; /* kept: the probes and writers see the whole grid */
+        gks_solver_block(s, r, s->first, count);
+        status = grid_slice(&s->grid, whole, s->first, count);
+    }
     if (status != NSPD_OK) {
         grid_destroy(whole);
+        memset(&s->whole, 0, sizeof s->whole);
         return status;
     }
-    s->whole = *whole; /* kept: the probes and writers see the whole grid */
-    s->row0 = first;
-    const bool wrap = s->grid.ax[1].periodic;
-    s->below = r > 0 ? r - 1 : (wrap ? p - 1 : -1);
-    s->above = r < p - 1 ? r + 1 : (wrap ? 0 : -1);
-    s->bc_faces = 1u << FLOW_FACE_XLO | 1u << FLOW_FACE_XHI;
-    if (r == 0 && !wrap) s->bc_faces |= 1u << FLOW_FACE_YLO;
-    if (r == p - 1 && !wrap) s->bc_faces |= 1u << FLOW_FACE_YHI;
+    s->row0 = s->first[1];
+    s->coord[0] = r % s->dims[0];
+    s->coord[1] = r / s->dims[0];
+    /* per axis: the neighbours (wrapped on a periodic axis), or, on an
+     * axis of one block, the box faces from their boundary conditions */
+    s->bc_faces = 0u;
+    const int step[2] = {1, s->dims[0]};
+    for (int a = 0; a < 2; a++) {
+        const int lo = 2 * a, hi = 2 * a + 1, c = s->coord[a], last = s->dims[a] - 1;
+        if (s->dims[a] == 1) {
+            s->bc_faces |= 1u << lo | 1u << hi;
+            continue;
+        }
+        const bool wrap = s->grid.ax[a].periodic;
+        s->nbr[lo] = c > 0 ? r - step[a] : (wrap ? r + last * step[a] : -1);
+        s->nbr[hi] = c < last ? r + step[a] : (wrap ? r - last * step[a] : -1);
+        if (s->nbr[lo] < 0) s->bc_faces |= 1u << lo;
+        if (s->nbr[hi] < 0) s->bc_faces |= 1u << hi;
+    }
     return NSPD_OK;
 }
 
@@ -385,11 +489,19 @@ static int build(GksSolver *s, const GksConfig *cfg) {
     set_gas(&s->gas, cfg);
     TRY(alloc_state(s));
     TRY(build_walls(s, cfg));
-    /* a slab's inner y faces are no walls */
-    for (int face = FLOW_FACE_YLO; face <= FLOW_FACE_YHI; face++)
-        if (!(s->bc_faces >> face & 1u)) memset(s->wall[face], 0, (size_t)s->grid.nx);
+    /* a block's inner faces are no walls */
+    for (int face = 0; face < 4; face++)
+        if (!(s->bc_faces >> face & 1u))
+            memset(s->wall[face], 0, (size_t)(face < 2 ? s->grid.ny : s->grid.nx));
     if (comm_distributed(&s->comm))
         TRY(alloc_counted(s, &s->row_sums_all, (size_t)4 * (size_t)s->rows, sizeof(double)));
+    if (s->dims[0] > 1) { /* 2D process grids: the x halo's buffers, rank 0's gather */
+        TRY(alloc_counted(s, &s->halo_x, (size_t)20 * GRID_NG * (size_t)s->grid.ny,
+                          sizeof(double)));
+        if (s->comm.rank == 0)
+            TRY(alloc_counted(s, &s->gather, (size_t)s->whole.nx * (size_t)s->whole.ny,
+                              sizeof(double)));
+    }
     TRY(alloc_work(s));
     gks_solver_apply_initial(s, cfg);
     return NSPD_OK;
@@ -409,7 +521,7 @@ int gks_solver_create(GksSolver **out, const GksConfig *cfg) {
     Grid whole;
     int st = grid_create(&whole, cfg->x0, cfg->segment_count[0], cfg->segments[0], per_x, cfg->y0,
                          cfg->segment_count[1], cfg->segments[1], per_y);
-    if (st >= 0) st = take_rows(s, &whole, cfg->comm);
+    if (st >= 0) st = take_block(s, &whole, cfg);
     if (st < 0) {
         nspd_free(&s);
         return st;
@@ -434,6 +546,8 @@ void gks_solver_destroy(GksSolver **sp) {
     nspd_free(&s->half_w[1]);
     nspd_free(&s->row_sums);
     nspd_free(&s->row_sums_all);
+    nspd_free(&s->gather);
+    nspd_free(&s->halo_x);
     for (int k = 0; k < 3; k++) nspd_free(&s->source[k]);
     nspd_free(&s->seal_slot);
     nspd_free(&s->seal_cell);

@@ -91,23 +91,32 @@ typedef struct {
      * the same energy on every mesh) instead of the quadrature */
     bool init_area_fractions;
     /* processes (borrowed during create; copied): NULL or a group of one,
-     * the whole grid; more, each process holds a slab of rows (below) */
+     * the whole grid; more, each process holds a block (below) */
     const NspdComm *comm;
+    /* the process grid on several processes: processes[0] blocks along x
+     * times processes[1] along y, their product the group's size; {0, 0}:
+     * one slab of rows a process ({1, P}) */
+    int processes[2];
 } GksConfig;
 
-/* Several processes (issue 28; first step: flows without a coupling).
- * Process r of P holds the rows ny r / P .. ny (r + 1) / P - 1 with the
- * whole x extent (grid_slice_rows: the same stretched-grid weights), at
- * least GRID_NG of them. Its box ghost layers come from the boundary
- * conditions on the whole grid's faces it holds and, on the others (and
- * on a periodic y axis), from its neighbours' rows: two rows of the four
- * fields and of the kinds, exchanged after every fill, so each rank's
- * cells see the values the one-process run gives. The stable step is the
- * maximum rate over all ranks, the fallback counts integer sums, the
- * totals the row sums gathered and added in global row order: every
- * number is the one-process run's, bit for bit, at any process count
- * (tests/mpi). The immersed boundary, seals, sources and checkpoints are
- * one-process only for now. */
+/* Several processes (issue 28). The group is a process grid of px x py
+ * blocks (GksConfig.processes; one slab of rows a process by default),
+ * rank r at (r % px, r / px); along each axis a block holds the cells
+ * n c / p .. n (c + 1) / p - 1, at least GRID_NG of them (grid_slice: the
+ * same stretched-grid weights). Its box ghost layers come from the
+ * boundary conditions on the whole grid's faces it holds (an axis of one
+ * block fills both, a periodic one too) and, on the others, from its
+ * neighbours: after the x faces' conditions, two columns of the four
+ * fields and the kinds each way (interior rows); after the y faces'
+ * conditions (over every column, the x halo's too), two whole rows each
+ * way, corners included. So each rank's cells see the values the
+ * one-process run gives. The stable step is the maximum rate over all
+ * ranks, the fallback counts integer sums (a block's edge columns and
+ * rows count only at the whole grid's ends), the totals each row summed
+ * along x block after block (each continues its left neighbour's sum) and
+ * the rows added in order: every number is the one-process run's, bit for
+ * bit, at any process grid (tests/mpi). The immersed boundary and the
+ * penalty coupling take slabs (px = 1) only so far. */
 
 /* Defaults: air (gamma 1.4, R 287, Pr 0.72), inviscid, van Leer, CFL 0.5,
  * C = 1, eps = 0, extrapolation on all faces, no grid segments. */
@@ -251,8 +260,16 @@ int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab
 /* The cell kinds (FLOW_CELL_*) of the whole grid as numbers, gathered to
  * rank 0 like gks_solver_primitive_whole. */
 int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);
+/* Rank `rank`'s block: its first cell of the whole grid and its cells per
+ * axis (the whole grid on one process). */
+void gks_solver_block(const GksSolver *s, int rank, int first[2], int count[2]);
+/* The blocks along x of the process grid (1: slabs of rows). */
+int gks_solver_process_columns(const GksSolver *s);
+/* The process that holds cell (i, j) of the whole grid, its box ghost
+ * layers included (those of the blocks at the ends); 0 on one. */
+int gks_solver_cell_owner(const GksSolver *s, int i, int j);
 /* The first row of the whole grid that process `rank` holds (rank =
- * size: the whole grid's rows). */
+ * size: the whole grid's rows), on slabs (one block along x). */
 int gks_solver_slab_first(const GksSolver *s, int rank);
 /* The process that holds row `row` of the whole grid (0 on one); a row
  * of the box's ghost layers, below or above, the first or the last. */

@@ -74,15 +74,21 @@ struct GksSolver {
     int64_t steps;
     int64_t fallbacks_last, fallbacks_total;
     size_t bytes; /* allocated by create (state + work), for the benchmark */
-    /* processes (solver.h): the group, this slab's first row and the whole
-     * grid's rows, the neighbours below and above (-1: none), the box
-     * faces this slab fills from boundary conditions (bit 1 << face) */
+    /* processes (solver.h): the group; the process grid, dims[0] x
+     * dims[1] blocks, this one at coord (rank = coord[1] dims[0] +
+     * coord[0]); its first cell of the whole grid per axis (row0 =
+     * first[1]) and the whole grid's rows; the neighbours across each of
+     * its faces (FLOW_FACE_* order, -1: none); the box faces it fills from
+     * boundary conditions (bit 1 << face) */
     NspdComm comm;
+    int dims[2], coord[2], first[2];
     int row0, rows;
-    int below, above;
+    int nbr[4];
     unsigned bc_faces;
     double *row_sums_all; /* 4 * rows, the gathered row sums (several processes) */
-    double comm_seconds;  /* wall time in exchanges and reductions so far */
+    double *gather; /* rank 0, 2D process grids: nx * ny of the whole grid, blocks in rank order */
+    double *halo_x; /* 2D process grids: the x halo's columns, packed (4 buffers) */
+    double comm_seconds; /* wall time in exchanges and reductions so far */
 };
 
 /* The viscous factor of the stable step: 2 max(4/3, gamma/Pr), 0 inviscid. */

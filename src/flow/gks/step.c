@@ -41,10 +41,11 @@ static int exchange_rows_begin(GksSolver *s, CommPending *pending) {
         const int bytes = (int)(count * (int64_t)size);
         /* tags by field and direction: two ranks on a periodic axis are
          * each other's neighbour both ways */
-        TRY(comm_begin_sendrecv(&s->comm, base + low * (int64_t)size, bytes, s->below,
-                                base + over * (int64_t)size, s->above, 2 * v, pending));
-        TRY(comm_begin_sendrecv(&s->comm, base + high * (int64_t)size, bytes, s->above,
-                                base + under * (int64_t)size, s->below, 2 * v + 1, pending));
+        const int below = s->nbr[FLOW_FACE_YLO], above = s->nbr[FLOW_FACE_YHI];
+        TRY(comm_begin_sendrecv(&s->comm, base + low * (int64_t)size, bytes, below,
+                                base + over * (int64_t)size, above, 2 * v, pending));
+        TRY(comm_begin_sendrecv(&s->comm, base + high * (int64_t)size, bytes, above,
+                                base + under * (int64_t)size, below, 2 * v + 1, pending));
     }
     return NSPD_OK;
 }
@@ -55,8 +56,67 @@ static int exchange_rows(GksSolver *s) {
     return comm_finish(&s->comm, &pending);
 }
 
+/* The x halo (2D process grids): the first GRID_NG columns of the
+ * interior rows go to the left neighbour's ghost columns, the last to the
+ * right's; the four fields and the kinds packed into one message each way. */
+static void exchange_columns(GksSolver *s) {
+    const Grid *g = &s->grid;
+    const int ny = g->ny, per = 5 * GRID_NG * ny; /* values a message */
+    double *send_lo = s->halo_x, *send_hi = send_lo + per, *recv_lo = send_hi + per,
+           *recv_hi = recv_lo + per;
+    /* side 0: columns 0 .. NG-1 out, -NG .. -1 in; side 1: nx-NG .. nx-1
+     * out, nx .. nx+NG-1 in */
+    for (int side = 0; side < 2; side++) {
+        double *out = side ? send_hi : send_lo;
+        const int i0 = side ? g->nx - GRID_NG : 0;
+        for (int j = 0; j < ny; j++)
+            for (int c = 0; c < GRID_NG; c++) {
+                const int64_t k = grid_index(g, i0 + c, j);
+                double *o = out + 5 * (j * GRID_NG + c);
+                for (int v = 0; v < 4; v++) o[v] = s->w[v][k];
+                o[4] = s->kind[k];
+            }
+    }
+    const int left = s->nbr[FLOW_FACE_XLO], right = s->nbr[FLOW_FACE_XHI];
+    const int bytes = per * (int)sizeof(double);
+    CommPending pending = {0};
+    /* tags after the rows' (0 .. 9); a failed exchange is MPI's abort */
+    (void)comm_begin_sendrecv(&s->comm, send_lo, bytes, left, recv_hi, right, 10, &pending);
+    (void)comm_begin_sendrecv(&s->comm, send_hi, bytes, right, recv_lo, left, 11, &pending);
+    (void)comm_finish(&s->comm, &pending);
+    for (int side = 0; side < 2; side++) {
+        if (s->nbr[side ? FLOW_FACE_XHI : FLOW_FACE_XLO] < 0) continue;
+        const double *in = side ? recv_hi : recv_lo;
+        const int i0 = side ? g->nx : -GRID_NG;
+        for (int j = 0; j < ny; j++)
+            for (int c = 0; c < GRID_NG; c++) {
+                const int64_t k = grid_index(g, i0 + c, j);
+                const double *o = in + 5 * (j * GRID_NG + c);
+                for (int v = 0; v < 4; v++) s->w[v][k] = o[v];
+                s->kind[k] = (uint8_t)o[4];
+            }
+    }
+}
+
+/* The box faces' conditions this block fills; on a 2D process grid the x
+ * faces first, then the x halo, then the y faces over every column (the
+ * order of one process's fill: x faces for the interior rows, then y faces
+ * over every column, so the corners see the x halo). */
+static void fill_box(GksSolver *s) {
+    if (s->dims[0] == 1) {
+        bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces);
+        return;
+    }
+    const unsigned x_faces = 1u << FLOW_FACE_XLO | 1u << FLOW_FACE_XHI;
+    bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces & x_faces);
+    const double t0 = nspd_wall_time();
+    exchange_columns(s);
+    s->comm_seconds += nspd_wall_time() - t0;
+    bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces & ~x_faces);
+}
+
 void gks_solver_fill_boundaries(GksSolver *s) {
-    bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces);
+    fill_box(s);
     /* a failed exchange is MPI's abort, not a recoverable status */
     if (comm_distributed(&s->comm)) {
         const double t0 = nspd_wall_time();
@@ -160,12 +220,12 @@ static void row_ptrs(const Grid *g, double *const w[4], const int perm[4], int i
     for (int v = 0; v < 4; v++) out[v] = w[perm[v]] + k;
 }
 
-/* Slopes along x and y of the cells -1 .. nx of row j into sx[v], sy[v]
- * (cell i at offset GRID_NG + i). */
-static int64_t row_slopes(const GksSolver *s, int j, double *const sx[4], double *const sy[4]) {
+/* Slopes along x and y of the cells i0 .. i0 + n - 1 of row j into sx[v],
+ * sy[v] (cell i at offset GRID_NG + i); the fallbacks among them. */
+static int64_t slopes_of(const GksSolver *s, int j, int i0, int n, double *const sx[4],
+                         double *const sy[4]) {
     const Grid *g = &s->grid;
     static const int id[4] = {0, 1, 2, 3};
-    const int n = g->nx + 2, i0 = -1;
     const double *wc[4], *wm[4], *wp[4];
     row_ptrs(g, s->w, id, i0, j, wc);
     row_ptrs(g, s->w, id, i0, j - 1, wm);
@@ -183,6 +243,18 @@ static int64_t row_slopes(const GksSolver *s, int j, double *const sx[4], double
                                 s->half_w[0] + GRID_NG + i0, ox);
     nb += recon_slopes_y(n, s->cfg.limiter, wm, wc, wp, km, kc, kp, ay->inv_dl[j], ay->inv_dr[j],
                          0.5 * ay->width[j], oy);
+    return nb;
+}
+
+/* Slopes of the cells -1 .. nx of row j; the fallbacks counted in the
+ * block's own cells and in the whole grid's ghost columns (a block's edge
+ * columns inside the whole grid are its neighbours' to count: recomputed
+ * alone, the same values, for their count). */
+static int64_t row_slopes(const GksSolver *s, int j, double *const sx[4], double *const sy[4]) {
+    const int nx = s->grid.nx;
+    int64_t nb = slopes_of(s, j, -1, nx + 2, sx, sy);
+    if (s->coord[0] > 0) nb -= slopes_of(s, j, -1, 1, sx, sy);
+    if (s->coord[0] < s->dims[0] - 1) nb -= slopes_of(s, j, nx, 1, sx, sy);
     return nb;
 }
 
@@ -316,7 +388,7 @@ static void step_block(GksSolver *s, FlowWork *wk, int j0, int j1, double dt) {
     int64_t nb = 0;
     /* slopes of rows j0-1 and j0; fallbacks counted for owned rows only,
      * and the whole grid's ghost rows by the block at its end */
-    const bool first_slab = s->row0 == 0, last_slab = s->row0 + ny == s->rows;
+    const bool first_slab = s->coord[1] == 0, last_slab = s->coord[1] == s->dims[1] - 1;
     int64_t c = row_slopes(s, j0 - 1, wk->sx[1], wk->sy[1]);
     if (j0 == 0 && first_slab) nb += c;
     nb += row_slopes(s, j0, wk->sx[0], wk->sy[0]);
@@ -335,7 +407,7 @@ static void step_block(GksSolver *s, FlowWork *wk, int j0, int j1, double dt) {
     wk->fallbacks = nb;
 }
 
-/* The first non-physical fluid cell of the slab in row-major order, as
+/* The first non-physical fluid cell of the block in row-major order, as
  * its index in the whole grid (j nx + i), or INT64_MAX. */
 static int64_t first_bad_cell(const GksSolver *s) {
     const Grid *g = &s->grid;
@@ -347,7 +419,7 @@ static int64_t first_bad_cell(const GksSolver *s) {
             const double r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k], e = s->w[3][k];
             const double p = gm1 * (e - 0.5 * (mx * mx + my * my) / r);
             if (!(r > 0.0) || !(p > 0.0) || !(2.0 * r * e - mx * mx - my * my > 0.0))
-                return (int64_t)(s->row0 + j) * g->nx + i;
+                return (int64_t)(s->first[1] + j) * gks_solver_whole_grid(s)->nx + s->first[0] + i;
         }
     return INT64_MAX;
 }
@@ -360,19 +432,22 @@ static int report_bad_cell(const GksSolver *s, int64_t first) {
     if (first == INT64_MAX)
         return NSPD_FAIL(NSPD_ERR_NUMERIC, "flow: non-physical state at step %lld",
                          (long long)s->steps);
-    const int i = (int)(first % g->nx), row = (int)(first / g->nx), j = row - s->row0;
+    const int64_t nx = gks_solver_whole_grid(s)->nx;
+    const int col = (int)(first % nx), row = (int)(first / nx);
+    const int i = col - s->first[0], j = row - s->first[1];
+    const int owner = gks_solver_cell_owner(s, col, row);
     char text[512] = "";
-    if (j >= 0 && j < g->ny) {
+    if (owner == s->comm.rank) {
         const int64_t k = grid_index(g, i, j);
         const double gm1 = s->gas.gamma - 1.0, r = s->w[0][k], mx = s->w[1][k], my = s->w[2][k];
         const double p = gm1 * (s->w[3][k] - 0.5 * (mx * mx + my * my) / r);
         snprintf(text, sizeof text,
                  "flow: non-physical state at step %lld, t = %.6g s, in cell (%d, %d) at "
                  "(%.6g, %.6g) m: rho = %.6g kg/m^3, p = %.6g Pa",
-                 (long long)s->steps, s->time, i, row, g->ax[0].center[i], g->ax[1].center[j], r,
+                 (long long)s->steps, s->time, col, row, g->ax[0].center[i], g->ax[1].center[j], r,
                  p);
     }
-    (void)comm_bcast(&s->comm, text, (int)sizeof text, gks_solver_row_owner(s, row));
+    (void)comm_bcast(&s->comm, text, (int)sizeof text, owner);
     return NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
 }
 
@@ -436,7 +511,7 @@ int gks_solver_step(GksSolver *s, double dt) {
          * ghosts as they will arrive), then the halo rows begun, the rows
          * that do not read them stepped, the halo awaited, the edge rows
          * stepped */
-        bc_fill_faces(&s->grid, s->cfg.bc, &s->gas, s->w, s->kind, s->bc_faces);
+        fill_box(s);
         if (s->hook) s->hook(s->hook_ctx, s);
         CommPending pending = {0};
         double t0 = nspd_wall_time();
