@@ -16,7 +16,7 @@ static void usage(FILE *out) {
           "  mpirun -n P nspd run CASE.yaml [--processes PXxPY] ...\n"
           "                         the same run shared by P processes (GKS flows, their\n"
           "                         bodies and coupled solids, a bond solid alone; the same\n"
-          "                         results); a flow alone on PX x PY blocks (default 1xP)\n"
+          "                         results); the flow on PX x PY blocks (default 1xP)\n"
           "  (run, check, info also take --threads T and --max-memory MB: refuse a case\n"
           "   whose memory estimate exceeds MB; default this machine's memory)\n"
           "  check CASE.yaml [--set key=value ...]\n"

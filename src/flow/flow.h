@@ -62,10 +62,6 @@ typedef struct {
      * flow: one slab of rows a process). A layout, not the case: results
      * are the same bits on any. */
     int processes[2];
-    /* a coupling (fixed bodies, a solid) will take the flow: on several
-     * processes the GKS flow then runs on slabs of rows only (its 2D
-     * process grids are for flows alone so far) */
-    bool coupled;
     /* owned (nspd_alloc) when the method's ops have config_free: the solver's
      * create takes it (and sets this NULL), else flow_config_free frees it; otherwise
      * borrowed (a registered solver's configuration, never freed) */

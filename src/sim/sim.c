@@ -135,7 +135,6 @@ int sim_create(Sim *sim, SimConfig *cfg) {
      * FSI); any other coupled solid is advanced whole by every rank alike.
      * A solid alone that does not divide is refused. */
     c->flow.comm = c->coupling.comm = &c->comm;
-    c->flow.coupled = c->coupling.kind != COUPLING_NONE;
     c->flow.processes[0] = c->processes[0];
     c->flow.processes[1] = c->processes[1];
     const bool divided =

@@ -112,6 +112,33 @@ check_body cylinder_crack_ma17 crack "2 4"
 check_body chamber_detonation chamber "2 4"
 check_body blast_hollow_square blast_sealed 3 --set time.end=2e-5 --set coupling.seal=true \
     --set output.field_interval=1e-5
+# The same on 2D process grids (--processes PXxPY), against the runs of one
+# process above: the immersed boundary's blocks (ghost cells, fetched
+# stencils, sealed faces, probes), moving walls across blocks, the
+# penalty's cells.
+check_body_grid() {
+    name=$1 tag=$2 grid=$3
+    shift 3
+    set -f
+    IFS='
+'
+    args=$(golden_overrides "$name" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
+    n=$((${grid%x*} * ${grid#*x}))
+    if on "$n" "$src/cases/$name.yaml" -o "$work/$tag.$grid" --quiet $args "$@" --processes "$grid"; then
+        same_results "$work/$tag.1" "$work/$tag.$grid" "$tag on $grid blocks"
+    else
+        fail "$tag on $grid blocks: exit status $?"
+    fi
+    unset IFS
+    set +f
+}
+check_body_grid cylinder_ma2_re300 cylinder_sealed 2x2
+check_body_grid cylinder_ma2_re300 cylinder_reflected 2x1 --set flow.ghost_faces=reflected
+check_body_grid naca0012_ma05_re5000 naca 3x1
+check_body_grid cylinder_crack_ma17 crack 2x2
+check_body_grid chamber_detonation chamber 2x2
+check_body_grid blast_hollow_square blast_sealed 2x1 --set time.end=2e-5 --set coupling.seal=true \
+    --set output.field_interval=1e-5
 # A solid alone, divided between the ranks (solid/bond/halo.h): the coarse
 # pre-cracked plate (bonds break across the ranks' runs; energies, the
 # crack-tip and line probes, damage pictures).
@@ -194,7 +221,7 @@ unset IFS
 set +f
 
 # The coupled cylinder's checkpoint (the solid, the moving interface, the
-# flow) written on 3 ranks resumes on 2 with the same bits.
+# flow) written on 2 x 2 blocks resumes on 2 slabs with the same bits.
 set -f
 IFS='
 '
@@ -202,19 +229,20 @@ crack_args=$(golden_overrides cylinder_crack_ma17 | while IFS= read -r o; do pri
 crack="$src/cases/cylinder_crack_ma17.yaml"
 "$nspd" run "$crack" -o "$work/cck.ref" --quiet $crack_args --set output.checkpoint_interval=1e-3 ||
     fail "the checkpointed coupled run of one process failed"
-if on 3 "$crack" -o "$work/cck.3" --quiet $crack_args --set output.checkpoint_interval=1e-3; then
+if on 4 "$crack" -o "$work/cck.2x2" --quiet $crack_args --set output.checkpoint_interval=1e-3 \
+    --processes 2x2; then
     set +f # the glob (globbing is off for the arguments' lists)
-    last=$(ls "$work/cck.3"/flow_*.vtr | tail -n 1)
+    last=$(ls "$work/cck.2x2"/flow_*.vtr | tail -n 1)
     set -f
-    rm -f "$work/cck.3/summary.json" "$last"
-    if on 2 "$crack" -o "$work/cck.3" --quiet --resume $crack_args --set output.checkpoint_interval=1e-3; then
+    rm -f "$work/cck.2x2/summary.json" "$last"
+    if on 2 "$crack" -o "$work/cck.2x2" --quiet --resume $crack_args --set output.checkpoint_interval=1e-3; then
         [ -e "$last" ] || fail "coupled resume on 2: $last not written again"
-        same_results "$work/cck.ref" "$work/cck.3" "the coupled checkpoint of 3 ranks resumed on 2"
+        same_results "$work/cck.ref" "$work/cck.2x2" "the coupled checkpoint of 2 x 2 blocks resumed on 2"
     else
-        fail "the coupled checkpoint of 3 ranks resumed on 2: exit status $?"
+        fail "the coupled checkpoint of 2 x 2 blocks resumed on 2: exit status $?"
     fi
 else
-    fail "the checkpointed coupled run on 3 ranks failed"
+    fail "the checkpointed coupled run on 2 x 2 blocks failed"
 fi
 unset IFS
 set +f
@@ -292,8 +320,6 @@ refused "the correspondence solid on 2 ranks" "the correspondence model runs on 
 refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
 refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 "$sod" \
     -o "$work/bad" --processes 3x1
-refused "bodies on 2 x 1 blocks" "a coupled flow .bodies, a solid. runs on slabs of rows only" 2 \
-    "$src/cases/cylinder_ma2_re300.yaml" -o "$work/bad" --processes 2x1
 refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
     "$src/cases/cavity_re1.yaml" -o "$work/bad"
 [ -e "$work/bad" ] && fail "a refused run wrote $work/bad"

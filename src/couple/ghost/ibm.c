@@ -341,9 +341,9 @@ static inline void set_cons(double *const w[4], int64_t k, double rho, double u,
 }
 
 /* Ghost entry e from the fluid state w (indexed like the Ibm's cells),
- * into out (the solver's arrays, whose cell 0 is the Ibm's cell `lo`). */
-static inline void fill_one(Ibm *ibm, int e, double *const w[4], double *const out[4], int64_t lo,
-                            double gm1, double R) {
+ * into out (the solver's arrays: its cells ibm_share_local's). */
+static inline void fill_one(Ibm *ibm, const GksSolver *s, int e, double *const w[4],
+                            double *const out[4], double gm1, double R) {
     IbmStencilSet *G = &ibm->ghosts;
     const int b = G->body[e];
     const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
@@ -355,7 +355,7 @@ static inline void fill_one(Ibm *ibm, int e, double *const w[4], double *const o
     G->wv[e] = vw;
     const double u = uw + r * (uw - q.u), v = vw + r * (vw - q.v); /* Eq. 39 */
     const double T = iso ? fmax(Tw + r * (Tw - q.T), 0.25 * Tw) : q.T;
-    set_cons(out, G->cell[e] - lo, q.p / (R * T), u, v, q.p, gm1);
+    set_cons(out, ibm_share_local(ibm, s, G->cell[e]), q.p / (R * T), u, v, q.p, gm1);
 }
 
 void ibm_fill_ghosts(void *ctx, GksSolver *s) {
@@ -364,22 +364,20 @@ void ibm_fill_ghosts(void *ctx, GksSolver *s) {
     const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
     double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
-    if (ibm->share) { /* several processes: this slab's ghosts, from the shadow */
+    if (ibm->share) { /* several processes: this block's ghosts, from the shadow */
         int n;
         const int *mine = ibm_share_ghosts(ibm, &n);
         double *const *shadow = ibm_share_refresh(ibm, s);
-        const int64_t lo = ibm_share_local_lo(ibm);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-        for (int i = 0; i < n; i++) fill_one(ibm, mine[i], shadow, w, lo, gm1, R);
+        for (int i = 0; i < n; i++) fill_one(ibm, s, mine[i], shadow, w, gm1, R);
     } else {
         const int n = ibm->ghosts.n;
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-        for (int e = 0; e < n; e++) fill_one(ibm, e, w, w, 0, gm1, R);
+        for (int e = 0; e < n; e++) fill_one(ibm, s, e, w, w, gm1, R);
     }
-    /* the solver reads the slot of its cells: the Ibm's from its cell 0 on */
+    /* the solver reads the slot of its own cells */
     if (ibm->faces == IBM_FACES_SEALED)
-        gks_solver_set_ghost_walls(s, ibm->slot + ibm_share_local_lo(ibm), ibm->ghosts.wu,
-                                   ibm->ghosts.wv);
+        gks_solver_set_ghost_walls(s, ibm_share_slots(ibm), ibm->ghosts.wu, ibm->ghosts.wv);
     else
         gks_solver_set_ghost_walls(s, NULL, NULL, NULL);
 }
@@ -397,14 +395,14 @@ int ibm_attach(Ibm *ibm, GksSolver *s) {
                          "immersed boundary: built for a %d x %d grid, attached to %d x %d",
                          ibm->nx, ibm->ny, g->nx, g->ny);
     if (comm_distributed(gks_solver_comm(s)) && !ibm->share) TRY(ibm_share_create(ibm, s));
-    /* the kinds of this process's rows (all of them on one) */
+    /* the kinds of this process's block (the whole grid on one) */
     GksFields f = gks_solver_fields(s);
-    const int64_t lo = ibm_share_local_lo(ibm);
-    const int j0 = gks_solver_first_row(s), j1 = j0 + gks_solver_grid(s)->ny;
-    for (int j = j0; j < j1; j++)
-        for (int i = 0; i < g->nx; i++) {
+    int first[2], count[2];
+    gks_solver_block(s, gks_solver_comm(s)->rank, first, count);
+    for (int j = first[1]; j < first[1] + count[1]; j++)
+        for (int i = first[0]; i < first[0] + count[0]; i++) {
             const int64_t k = grid_index(g, i, j);
-            f.kind[k - lo] = ibm->kind[k];
+            f.kind[ibm_share_local(ibm, s, k)] = ibm->kind[k];
         }
     gks_solver_set_ghost_hook(s, ibm_fill_ghosts, ibm);
     gks_solver_fill_boundaries(s);
@@ -420,19 +418,22 @@ static void soft_start(Ibm *ibm, GksSolver *s, double length, bool keep_total) {
     const double cp = gamma * gks_solver_gas(s)->R / gm1;
     double box[4];
     walls_box(ibm, box);
-    const int i0 = lower_bound(&g->ax[0], box[0] - length);
-    const int i1 = upper_last(&g->ax[0], box[1] + length);
-    /* this process's rows (all on one); the cells are the Ibm's, the
-     * solver's arrays start at its cell lo */
-    const int row0 = gks_solver_first_row(s), rows = gks_solver_grid(s)->ny;
+    /* this process's block (the whole grid on one); the cells are the
+     * Ibm's, the solver's ibm_share_local's */
+    int first[2], count[2];
+    gks_solver_block(s, gks_solver_comm(s)->rank, first, count);
+    const int il = lower_bound(&g->ax[0], box[0] - length);
+    const int ih = upper_last(&g->ax[0], box[1] + length);
     const int jl = lower_bound(&g->ax[1], box[2] - length);
     const int jh = upper_last(&g->ax[1], box[3] + length);
-    const int j0 = jl > row0 ? jl : row0, j1 = jh < row0 + rows - 1 ? jh : row0 + rows - 1;
-    const int64_t lo = ibm_share_local_lo(ibm);
+    const int i0 = il > first[0] ? il : first[0];
+    const int i1 = ih < first[0] + count[0] - 1 ? ih : first[0] + count[0] - 1;
+    const int j0 = jl > first[1] ? jl : first[1];
+    const int j1 = jh < first[1] + count[1] - 1 ? jh : first[1] + count[1] - 1;
     double *const *w = f.w;
     for (int j = j0; j <= j1; j++)
         for (int i = i0; i <= i1; i++) {
-            const int64_t cell = grid_index(g, i, j), k = cell - lo;
+            const int64_t cell = grid_index(g, i, j), k = ibm_share_local(ibm, s, cell);
             if (ibm->kind[cell] != FLOW_CELL_FLUID) continue;
             const IbmWallPoint wp = ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j]);
             if (wp.d >= length) continue;
@@ -566,10 +567,9 @@ static int fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
     }
     if (ibm->share) TRY(fetch_fresh_nodes(ibm, n, tmp));
     double *const *w = ibm->share ? ibm_share_shadow(ibm) : local;
-    const int64_t lo = ibm_share_local_lo(ibm), hi = lo + gks_solver_grid(s)->size;
     for (int q = 0; q < n; q++) {
-        const int64_t cell = ibm->list_a[q];
-        if (cell < lo || cell >= hi) continue;             /* another process's */
+        const int64_t cell = ibm->list_a[q], k = ibm_share_local(ibm, s, cell);
+        if (k < 0) continue;                               /* another process's */
         if (tmp->rseg[4 * q] == IBM_NODE_UNUSED) continue; /* nothing usable: keep the old value */
         /* the wall that uncovered the cell decides the thermal rows */
         int i, j;
@@ -578,7 +578,7 @@ static int fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
         const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
         const IbmPrim p = ibm_stencil_eval(ibm, tmp, q, w, gm1, R, iso, ibm->wall_t[b]);
         const double T = iso ? fmax(p.T, 0.25 * ibm->wall_t[b]) : p.T;
-        set_cons(local, cell - lo, p.p / (R * T), p.u, p.v, p.p, gm1);
+        set_cons(local, k, p.p / (R * T), p.u, p.v, p.p, gm1);
     }
     return NSPD_OK;
 }
@@ -736,9 +736,9 @@ static void update_kinds(Ibm *ibm, GksSolver *s, int64_t nq, int *nfresh, int *n
             ibm->list_a[(*nfresh)++] = k; /* nfresh <= nchanged: list_a holds it */
         }
         if (!s) continue;
-        /* the solver's cells start at the Ibm's cell lo (0 on one process) */
-        const int64_t lo = ibm_share_local_lo(ibm), local = k - lo;
-        if (local >= 0 && local < gks_solver_grid(s)->size) gks_solver_fields(s).kind[local] = now;
+        /* the solver's cells: ibm_share_local's (-1: another process's) */
+        const int64_t local = ibm_share_local(ibm, s, k);
+        if (local >= 0) gks_solver_fields(s).kind[local] = now;
     }
     st->fresh = *nfresh;
 }

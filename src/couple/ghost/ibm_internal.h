@@ -166,8 +166,13 @@ double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s);
 /* The ghost entries this process fills, the probe entries it evaluates. */
 const int *ibm_share_ghosts(const Ibm *ibm, int *count);
 const int *ibm_share_probes(const Ibm *ibm, int *count);
-/* The whole padded cell of the solver's local cell 0 (0 on one process). */
-int64_t ibm_share_local_lo(const Ibm *ibm);
+/* The solver's index of the Ibm's cell `cell` (the whole grid's padded
+ * numbering) on this process, -1 outside its block and ghost layers;
+ * `cell` itself on one process. */
+int64_t ibm_share_local(const Ibm *ibm, const GksSolver *s, int64_t cell);
+/* The ghost slots (-1: none) of the solver's cells on this process, as
+ * gks_solver_set_ghost_walls reads them. */
+const int32_t *ibm_share_slots(const Ibm *ibm);
 /* Every probe's 4 values (u, v, p, T at entry e: q[4 e ..]) from the 4
  * values of this process's probes (mine[4 e ..] for its entries e);
  * collective. */

@@ -3,17 +3,19 @@
  * The choice: every process holds the whole Ibm (markers, tags, ghost and
  * probe stencils over the whole grid: a few bytes per cell and about 1 kB
  * per marker, small beside the flow), and each fills the ghost cells of
- * its own rows and the two halo rows on either side (the halo's ghosts are
- * read by its own fluxes and must be as fresh as the serial run's), and
- * evaluates the surface probes whose point lies in its rows. A stencil
- * reads fluid cells up to the image point, 2 d beyond the wall plus a cell
- * (d up to about 3 cells for the second ghost layer, more for an extended
- * point), which is further than the two halo rows reach; instead of a
- * halo as wide as the widest stencil on every step of every rank, each
- * process fetches exactly the cells its stencils read from the processes
- * that hold them, once per fill (a few per ghost cell near a slab's edge;
- * none for a rank whose slab holds no wall). The lists are computed on
- * every rank from the replicated stencils, so no negotiation is needed.
+ * its own block of the process grid and of the two-cell halo around it
+ * (the halo's ghosts are read by its own fluxes and must be as fresh as
+ * the serial run's), and evaluates the surface probes whose point lies in
+ * its block. A stencil reads fluid cells up to the image point, 2 d beyond
+ * the wall plus a cell (d up to about 3 cells for the second ghost layer,
+ * more for an extended point), which is further than the halo reaches;
+ * instead of a halo as wide as the widest stencil on every step of every
+ * rank, each process fetches exactly the cells its stencils read from the
+ * processes that hold them, once per fill (a few per ghost cell near a
+ * block's edge; none for a rank whose block holds no wall). The lists are
+ * computed on every rank from the replicated stencils, so no negotiation
+ * is needed. A cell's owner and its index on a rank are the solver's
+ * (gks_solver_cell_owner, gks_solver_local_cell).
  *
  * The values are gathered into a shadow of the whole grid's conserved
  * fields (indexed like the Ibm's cells), filled only where this process
@@ -22,7 +24,8 @@
  * and probe value is the serial one, bit for bit. The shadow costs 32
  * bytes per cell of the whole grid on every process (the limit this puts
  * on a 2D grid: 60 MB for 1.9 million cells). Moving walls (ibm_update)
- * run on one process only so far. */
+ * update the replicated Ibm alike on every rank, write the kinds and fresh
+ * cells of this block, and rebuild the plan (ibm_share_replan). */
 #include "couple/ghost/ibm_internal.h"
 
 #include "core/mem.h"
@@ -35,13 +38,14 @@
 struct IbmShare {
     GksSolver *solver; /* the Ibm's (it outlives the Ibm) */
     NspdComm comm;
-    int stride;             /* the whole grid's row length */
-    int64_t own_lo, own_hi; /* whole padded cells this process owns, [lo, hi) */
-    int64_t local_lo;       /* the whole padded cell of its local index 0 */
-    double *w[4];           /* whole-grid shadow of the conserved fields */
-    int *ghosts, nghosts;   /* ghost entries this process fills */
-    int *probes, nprobes;   /* probe entries it evaluates */
-    int *probe_rank;        /* per probe entry: the process that evaluates it */
+    int stride;           /* the whole grid's row length */
+    int own_lo[2];        /* whole padded cells this process owns: per axis */
+    int own_hi[2];        /* [lo, hi) (its block and the box's ghosts at its ends) */
+    int32_t *slot;        /* the Ibm's ghost slots of this process's cells */
+    double *w[4];         /* whole-grid shadow of the conserved fields */
+    int *ghosts, nghosts; /* ghost entries this process fills */
+    int *probes, nprobes; /* probe entries it evaluates */
+    int *probe_rank;      /* per probe entry: the process that evaluates it */
     /* cells fetched from (recv) and sent to (send) each process, CSR by
      * rank, whole padded indices in ascending order */
     int *recv_first, *send_first;
@@ -51,17 +55,21 @@ struct IbmShare {
     double *probe_mine; /* 4 values per probe entry */
 };
 
-/* The process that holds whole padded cell k current: the slab of its
- * row (the end slabs for the box's ghost rows: gks_solver_row_owner). */
+/* The process that holds whole padded cell k current: the block of its
+ * cell (the end blocks for the box's ghost layers: gks_solver_cell_owner). */
 static int cell_rank(const GksSolver *s, const IbmShare *sh, int64_t k) {
-    return gks_solver_row_owner(s, (int)(k / sh->stride) - GRID_NG);
+    return gks_solver_cell_owner(s, (int)(k % sh->stride) - GRID_NG,
+                                 (int)(k / sh->stride) - GRID_NG);
 }
 
-/* Whether ghost entry e is filled by rank r: its cell is in r's slab or
- * the halo rows around it. */
+/* Whether ghost entry e is filled by rank r: its cell is in r's block or
+ * the halo around it. */
 static bool fills(const GksSolver *s, const IbmShare *sh, int64_t cell, int r) {
-    const int R = (int)(cell / sh->stride), first = gks_solver_slab_first(s, r);
-    return R >= first && R < gks_solver_slab_first(s, r + 1) + 2 * GRID_NG;
+    int first[2], count[2];
+    gks_solver_block(s, r, first, count);
+    const int I = (int)(cell % sh->stride), J = (int)(cell / sh->stride); /* padded */
+    return I >= first[0] && I < first[0] + count[0] + 2 * GRID_NG && J >= first[1] &&
+           J < first[1] + count[1] + 2 * GRID_NG;
 }
 
 static int cmp_i64(const void *a, const void *b) {
@@ -101,8 +109,7 @@ static void assign_probes(const Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     sh->nprobes = 0;
     for (int e = 0; e < P->n; e++) {
         const int64_t k = P->cell[e];
-        const int R = k >= 0 ? (int)(k / sh->stride) : GRID_NG;
-        sh->probe_rank[e] = gks_solver_row_owner(s, R - GRID_NG);
+        sh->probe_rank[e] = k >= 0 ? cell_rank(s, sh, k) : 0;
         if (sh->probe_rank[e] == sh->comm.rank) sh->probes[sh->nprobes++] = e;
     }
 }
@@ -162,7 +169,18 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
         sh->recv_at[r] = sh->recv_first[r] * unit;
         sh->recv_bytes[r] = (sh->recv_first[r + 1] - sh->recv_first[r]) * unit;
     }
-    return nspd_alloc(&sh->probe_mine, 4 * (size_t)P->n + 1, sizeof(double));
+    TRY(nspd_alloc(&sh->probe_mine, 4 * (size_t)P->n + 1, sizeof(double)));
+    /* the ghost slots of this process's cells, as the solver reads them */
+    const Grid *g = gks_solver_grid(s);
+    TRY(nspd_alloc(&sh->slot, (size_t)g->size, sizeof(int32_t)));
+    int first[2], count[2];
+    gks_solver_block(s, me, first, count);
+    for (int64_t k = 0; k < g->size; k++) sh->slot[k] = -1; /* the rows' padding too */
+    for (int J = 0; J < g->ny + 2 * GRID_NG; J++)           /* padded indices */
+        for (int I = 0; I < g->nx + 2 * GRID_NG; I++)
+            sh->slot[(int64_t)J * g->stride + I] =
+                ibm->slot[(int64_t)(first[1] + J) * sh->stride + first[0] + I];
+    return NSPD_OK;
 }
 
 /* Frees the plan (not the shadow). */
@@ -176,6 +194,7 @@ static void free_plan(IbmShare *sh) {
     nspd_free(&sh->send_buf);
     nspd_free(&sh->recv_buf);
     nspd_free(&sh->probe_mine);
+    nspd_free(&sh->slot);
     sh->nghosts = sh->nprobes = 0;
 }
 
@@ -193,12 +212,15 @@ int ibm_share_create(Ibm *ibm, GksSolver *s) {
     sh->comm = *gks_solver_comm(s);
     const Grid *whole = gks_solver_whole_grid(s);
     sh->stride = whole->stride;
-    const int me = sh->comm.rank, p = sh->comm.size;
-    const int first = gks_solver_slab_first(s, me), next = gks_solver_slab_first(s, me + 1);
-    sh->local_lo = (int64_t)first * sh->stride;
-    /* owned: the interior rows, and the box's ghost rows at the whole grid's ends */
-    sh->own_lo = (int64_t)(me == 0 ? 0 : first + GRID_NG) * sh->stride;
-    sh->own_hi = (int64_t)(me == p - 1 ? next + 2 * GRID_NG : next + GRID_NG) * sh->stride;
+    /* owned: the block's cells, and the box's ghost layers where it ends
+     * the whole grid (the padded indices of the whole grid) */
+    int first[2], count[2];
+    gks_solver_block(s, sh->comm.rank, first, count);
+    const int n[2] = {whole->nx, whole->ny};
+    for (int a = 0; a < 2; a++) {
+        sh->own_lo[a] = first[a] == 0 ? 0 : first[a] + GRID_NG;
+        sh->own_hi[a] = first[a] + count[a] + (first[a] + count[a] == n[a] ? 2 : 1) * GRID_NG;
+    }
     for (int v = 0; v < 4; v++) TRY(nspd_alloc(&sh->w[v], (size_t)whole->size, sizeof(double)));
     return plan(ibm, s, sh);
 }
@@ -217,7 +239,7 @@ double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
     const int p = sh->comm.size;
     for (int r = 0; r < p; r++)
         for (int i = sh->send_first[r]; i < sh->send_first[r + 1]; i++) {
-            const int64_t k = sh->send_cells[i] - sh->local_lo;
+            const int64_t k = gks_solver_local_cell(s, sh->send_cells[i]);
             for (int v = 0; v < 4; v++) sh->send_buf[4 * i + v] = f.w[v][k];
         }
     /* MPI's default handler stops the job on a failed exchange */
@@ -225,9 +247,13 @@ double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
     (void)comm_alltoallv_bytes(&sh->comm, sh->send_buf, sh->send_bytes, sh->send_at, sh->recv_buf,
                                sh->recv_bytes, sh->recv_at);
     gks_solver_add_comm_seconds(s, nspd_wall_time() - t0);
-    const size_t owned = (size_t)(sh->own_hi - sh->own_lo);
-    for (int v = 0; v < 4; v++)
-        memcpy(sh->w[v] + sh->own_lo, f.w[v] + (sh->own_lo - sh->local_lo), owned * sizeof(double));
+    /* the owned cells, row by row */
+    const size_t run = (size_t)(sh->own_hi[0] - sh->own_lo[0]) * sizeof(double);
+    for (int J = sh->own_lo[1]; J < sh->own_hi[1]; J++) {
+        const int64_t k = (int64_t)J * sh->stride + sh->own_lo[0];
+        const int64_t local = gks_solver_local_cell(s, k);
+        for (int v = 0; v < 4; v++) memcpy(sh->w[v] + k, f.w[v] + local, run);
+    }
     for (int i = 0; i < sh->recv_first[p]; i++)
         for (int v = 0; v < 4; v++) sh->w[v][sh->recv_cells[i]] = sh->recv_buf[4 * i + v];
     return sh->w;
@@ -238,8 +264,12 @@ const int *ibm_share_ghosts(const Ibm *ibm, int *count) {
     return ibm->share->ghosts;
 }
 
-int64_t ibm_share_local_lo(const Ibm *ibm) {
-    return ibm->share ? ibm->share->local_lo : 0;
+int64_t ibm_share_local(const Ibm *ibm, const GksSolver *s, int64_t cell) {
+    return ibm->share ? gks_solver_local_cell(s, cell) : cell;
+}
+
+const int32_t *ibm_share_slots(const Ibm *ibm) {
+    return ibm->share ? ibm->share->slot : ibm->slot;
 }
 
 /* Each probe's (u, v, p, T) from the process that evaluated it, in entry
@@ -270,7 +300,8 @@ int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells) {
         for (int i = 0; i < n; i++) {
             owner[i] = cell_rank(s, sh, cells[i]);
             if (owner[i] != sh->comm.rank) continue;
-            for (int v = 0; v < 4; v++) mine[count++] = f.w[v][cells[i] - sh->local_lo];
+            const int64_t local = gks_solver_local_cell(s, cells[i]);
+            for (int v = 0; v < 4; v++) mine[count++] = f.w[v][local];
         }
         status = comm_share_items(&sh->comm, n, owner, 4, mine, all);
     }

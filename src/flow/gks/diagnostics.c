@@ -98,6 +98,16 @@ int gks_solver_cell_owner(const GksSolver *s, int i, int j) {
            axis_owner(s->whole.nx, s->dims[0], i);
 }
 
+int64_t gks_solver_local_cell(const GksSolver *s, int64_t cell) {
+    if (!comm_distributed(&s->comm)) return cell;
+    const Grid *g = &s->grid;
+    const int64_t stride = s->whole.stride;
+    const int i = (int)(cell % stride) - s->first[0], j = (int)(cell / stride) - s->first[1];
+    /* (i, j): padded indices of this block's arrays */
+    if (i < 0 || i >= g->nx + 2 * GRID_NG || j < 0 || j >= g->ny + 2 * GRID_NG) return -1;
+    return (int64_t)j * g->stride + i;
+}
+
 int gks_solver_row_owner(const GksSolver *s, int row) {
     return gks_solver_cell_owner(s, 0, row);
 }

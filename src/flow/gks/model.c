@@ -126,13 +126,7 @@ static int gks_create(void **impl, FlowConfig *mc) {
     c->comm = mc->comm; /* borrowed during create */
     c->processes[0] = mc->processes[0];
     c->processes[1] = mc->processes[1];
-    int status = NSPD_OK;
-    if (mc->coupled && c->processes[0] > 1 && comm_distributed(mc->comm))
-        status = NSPD_FAIL(NSPD_ERR_INPUT,
-                           "--processes %dx%d: a coupled flow (bodies, a solid) runs on "
-                           "slabs of rows only so far; expected --processes 1x%d",
-                           c->processes[0], c->processes[1], mc->comm->size);
-    if (status == NSPD_OK) status = gks_solver_create(&g->solver, c);
+    int status = gks_solver_create(&g->solver, c);
     if (status == NSPD_OK) {
         const Grid *grid = gks_solver_whole_grid(g->solver), *slab = gks_solver_grid(g->solver);
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
@@ -364,10 +358,16 @@ static int whole_kinds(GksFlow *gf) {
     const uint8_t *kind = gks_solver_fields(s).kind;
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = kind[grid_index(g, i, j)];
-    TRY(comm_allgatherv_bytes(gks_solver_comm(s), mine, g->nx * g->ny, gf->kind_rows));
-    for (int j = 0; j < w->ny; j++)
-        memcpy(gf->whole_kind + grid_index(w, 0, j), gf->kind_rows + (int64_t)j * w->nx,
-               (size_t)w->nx);
+    const NspdComm *comm = gks_solver_comm(s);
+    TRY(comm_allgatherv_bytes(comm, mine, g->nx * g->ny, gf->kind_rows));
+    /* each rank's block, in rank order, into its place */
+    const uint8_t *at = gf->kind_rows;
+    for (int r = 0; r < comm->size; r++) {
+        int first[2], count[2];
+        gks_solver_block(s, r, first, count);
+        for (int j = 0; j < count[1]; j++, at += count[0])
+            memcpy(gf->whole_kind + grid_index(w, first[0], first[1] + j), at, (size_t)count[0]);
+    }
     return NSPD_OK;
 }
 
@@ -386,13 +386,12 @@ static void gks_flow_transfer(const void *impl, FlowTransferKind kind, int64_t n
     gks_transfer(gks_solver_whole_grid(s), kinds, kind, n, x, y, cell, w);
 }
 
-/* The process that holds whole-grid cell c's row, and c's index there. */
+/* The process that holds whole-grid cell c, and c's index here (where
+ * this process holds it). */
 static int cell_owner(const GksSolver *s, int64_t c, int64_t *local) {
     const Grid *w = gks_solver_whole_grid(s);
-    const int j = (int)(c / w->stride) - GRID_NG;
-    const int owner = gks_solver_row_owner(s, j);
-    *local = c - (int64_t)gks_solver_slab_first(s, owner) * w->stride;
-    return owner;
+    *local = gks_solver_local_cell(s, c);
+    return gks_solver_cell_owner(s, (int)(c % w->stride) - GRID_NG, (int)(c / w->stride) - GRID_NG);
 }
 
 static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
@@ -452,18 +451,17 @@ static int gks_flow_seal(void *impl, int64_t n, const int64_t *cells, const doub
     GksSolver *s = ((GksFlow *)impl)->solver;
     if (!comm_distributed(gks_solver_comm(s)))
         return gks_solver_set_seals(s, n, cells, area, u, v, fraction);
-    /* this slab's cells and its halo's: a face between the two is this
+    /* this block's cells and its halo's: a face between the two is this
      * rank's to seal too */
-    const int64_t lo = (int64_t)gks_solver_first_row(s) * gks_solver_grid(s)->stride;
-    const int64_t hi = lo + gks_solver_grid(s)->size;
     int64_t *mine = NULL;
     double *val = NULL;
     int status = nspd_alloc(&mine, (size_t)n + 1, sizeof *mine);
     if (status == NSPD_OK) status = nspd_alloc(&val, 3 * (size_t)n + 3, sizeof *val);
     int64_t m = 0;
     for (int64_t k = 0; k < n && status == NSPD_OK; k++) {
-        if (cells[k] < lo || cells[k] >= hi) continue;
-        mine[m] = cells[k] - lo;
+        const int64_t local = gks_solver_local_cell(s, cells[k]);
+        if (local < 0) continue;
+        mine[m] = local;
         val[m] = area[k], val[n + 1 + m] = u[k], val[2 * n + 2 + m] = v[k];
         m++;
     }
@@ -520,8 +518,14 @@ static void gks_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "mean_pressure_pa", mean);
     /* several processes: this one's wall time in exchanges and reductions
      * (halo rows, the stable step, counts, a coupling's cells) */
-    if (comm_distributed(gks_solver_comm(g->solver)))
+    if (comm_distributed(gks_solver_comm(g->solver))) {
         report_real(out, "exchange_s", gks_solver_comm_seconds(g->solver));
+        /* the layout: PX x PY blocks */
+        const int px = gks_solver_process_columns(g->solver);
+        char grid_text[32];
+        snprintf(grid_text, sizeof grid_text, "%dx%d", px, gks_solver_comm(g->solver)->size / px);
+        report_text(out, "process_grid", grid_text);
+    }
 }
 
 static void gks_info(const void *impl, size_t memory, char *buf, size_t size) {

@@ -115,8 +115,7 @@ typedef struct {
  * rows count only at the whole grid's ends), the totals each row summed
  * along x block after block (each continues its left neighbour's sum) and
  * the rows added in order: every number is the one-process run's, bit for
- * bit, at any process grid (tests/mpi). The immersed boundary and the
- * penalty coupling take slabs (px = 1) only so far. */
+ * bit, at any process grid (tests/mpi). */
 
 /* Defaults: air (gamma 1.4, R 287, Pr 0.72), inviscid, van Leer, CFL 0.5,
  * C = 1, eps = 0, extrapolation on all faces, no grid segments. */
@@ -268,6 +267,10 @@ int gks_solver_process_columns(const GksSolver *s);
 /* The process that holds cell (i, j) of the whole grid, its box ghost
  * layers included (those of the blocks at the ends); 0 on one. */
 int gks_solver_cell_owner(const GksSolver *s, int i, int j);
+/* The index in this process's arrays of the whole grid's padded cell
+ * `cell` (numbered as the whole grid's arrays), or -1 where it lies
+ * outside this block and its ghost layers; `cell` itself on one process. */
+int64_t gks_solver_local_cell(const GksSolver *s, int64_t cell);
 /* The first row of the whole grid that process `rank` holds (rank =
  * size: the whole grid's rows), on slabs (one block along x). */
 int gks_solver_slab_first(const GksSolver *s, int rank);
