@@ -30,7 +30,7 @@ for r in $(seq "$rounds"); do
             if [ "$ranks" -eq 1 ]; then
                 "$nspd" run "$@"
             else
-                mpiexec -n 2 --bind-to none "$nspd" run "$@"
+                mpiexec -n 2 --bind-to none "$nspd" run "$@" --processes 1x2 # slabs
             fi
             s="$dir/summary.json"
             echo "$name $ranks $(key steps "$s") $(key wall_s "$s") $(key flow_s "$s") $(key solid_s "$s") $(key coupling_s "$s")" |

@@ -30,7 +30,8 @@ run() { # ranks threads dir
     if [ "$ranks" -eq 1 ]; then
         OMP_NUM_THREADS=$threads "$nspd" run "$@" -o "$dir"
     else
-        OMP_NUM_THREADS=$threads mpiexec -n "$ranks" --bind-to none "$nspd" run "$@" -o "$dir"
+        OMP_NUM_THREADS=$threads mpiexec -n "$ranks" --bind-to none "$nspd" run "$@" -o "$dir" \
+            --processes "1x$ranks" # slabs of rows: the layout of the figures
     fi
 }
 

@@ -59,8 +59,8 @@ typedef struct {
     /* the process grid asked for on several processes (`nspd run
      * --processes PXxPY`): PX blocks along x times PY along y, their
      * product the group's size; {0, 0}: the solver's own choice (the GKS
-     * flow: one slab of rows a process). A layout, not the case: results
-     * are the same bits on any. */
+     * flow: the grid of the fewest halo cells). A layout, not the case:
+     * results are the same bits on any. */
     int processes[2];
     /* owned (nspd_alloc) when the method's ops have config_free: the solver's
      * create takes it (and sets this NULL), else flow_config_free frees it; otherwise

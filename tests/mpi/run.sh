@@ -317,7 +317,7 @@ sod="$src/cases/sod.yaml"
 refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
 refused "the correspondence solid on 2 ranks" "the correspondence model runs on one process only, not on 2" 2 \
     "$src/cases/hollow_square_pressure.yaml" -o "$work/bad"
-refused "4 rows on 3 ranks" "4 rows over 3 processes" 3 "$sod" -o "$work/bad"
+refused "4 rows on 3 slabs" "4 rows over 3 processes" 3 "$sod" -o "$work/bad" --processes 1x3
 refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 "$sod" \
     -o "$work/bad" --processes 3x1
 refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
@@ -330,7 +330,7 @@ refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 
 # whole grid), summary.json written by rank 0 saying why.
 "$nspd" run "$src/cases/vortex.yaml" -o "$work/blowup.1" --quiet --set time.dt=0.5 2>/dev/null
 # on 4 ranks the first bad cell, (25, 20), is on rank 1, which words it
-on 4 "$src/cases/vortex.yaml" -o "$work/blowup" --quiet --set time.dt=0.5 >"$work/out" 2>&1
+on 4 "$src/cases/vortex.yaml" -o "$work/blowup" --quiet --set time.dt=0.5 --processes 1x4 >"$work/out" 2>&1
 status=$?
 lines=$(grep -c "nspd: error: .*in step" "$work/out")
 if [ "$status" -eq 1 ] && [ "$lines" -eq 1 ] && grep -q '"completed": false' "$work/blowup/summary.json" &&

@@ -232,6 +232,8 @@ static void too_many_ranks(void) {
     config_tube(&c);
     c.segments[1][0] = (GridSegment){.length = 0.08, .cells = 2 * world.size - 1};
     c.comm = &world;
+    c.processes[0] = 1; /* slabs: the rows are too few */
+    c.processes[1] = world.size;
     GksSolver *s = NULL;
     const int status = gks_solver_create(&s, &c);
     check(world.size == 1 ? status == NSPD_OK : status == NSPD_ERR_INPUT, "too few rows refused",

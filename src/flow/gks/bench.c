@@ -30,6 +30,9 @@ int gks_bench(int cells, int threads, int steps, const NspdComm *comm, GksBenchR
     c.init_fn = NULL;
     c.initial = (FlowPrim){1.2, 0.0, 0.0, 1.0e5};
     c.comm = comm;
+    /* slabs of rows, the layout docs/PERFORMANCE.md's figures measured */
+    c.processes[0] = 1;
+    c.processes[1] = comm ? comm->size : 1;
     GksSolver *s = NULL;
     int st = gks_solver_create(&s, &c);
     if (st < 0) {

@@ -28,8 +28,9 @@ enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
 typedef struct {
     GksCaseConfig cfg; /* owned; the vortex and field the initial condition reads live here */
     GksSolver *solver;
-    double last_dt;    /* s, of the last step; 0 before the first */
-    double mach_scale; /* the top of the Mach pictures' colour bar, fixed at the first */
+    double last_dt;        /* s, of the last step; 0 before the first */
+    char process_grid[32]; /* "PXxPY" for the summary (it borrows the text) */
+    double mach_scale;     /* the top of the Mach pictures' colour bar, fixed at the first */
     double *cells[GKS_SCRATCH];
     double *kind;   /* cell kinds as a field */
     uint8_t *blank; /* 1: not a fluid cell */
@@ -128,6 +129,9 @@ static int gks_create(void **impl, FlowConfig *mc) {
     c->processes[1] = mc->processes[1];
     int status = gks_solver_create(&g->solver, c);
     if (status == NSPD_OK) {
+        const int px = gks_solver_process_columns(g->solver);
+        snprintf(g->process_grid, sizeof g->process_grid, "%dx%d", px,
+                 gks_solver_comm(g->solver)->size / px);
         const Grid *grid = gks_solver_whole_grid(g->solver), *slab = gks_solver_grid(g->solver);
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
         status = nspd_alloc(&g->slab, (size_t)slab->nx * (size_t)slab->ny, sizeof(double));
@@ -520,11 +524,7 @@ static void gks_summary(const void *impl, const RunStats *run, Report *out) {
      * (halo rows, the stable step, counts, a coupling's cells) */
     if (comm_distributed(gks_solver_comm(g->solver))) {
         report_real(out, "exchange_s", gks_solver_comm_seconds(g->solver));
-        /* the layout: PX x PY blocks */
-        const int px = gks_solver_process_columns(g->solver);
-        char grid_text[32];
-        snprintf(grid_text, sizeof grid_text, "%dx%d", px, gks_solver_comm(g->solver)->size / px);
-        report_text(out, "process_grid", grid_text);
+        report_text(out, "process_grid", g->process_grid); /* the layout: PX x PY blocks */
     }
 }
 

@@ -414,11 +414,35 @@ void gks_solver_block(const GksSolver *s, int rank, int first[2], int count[2]) 
     }
 }
 
-/* The process grid of a group of p: the configuration's, or one slab of
- * rows a process. */
+/* The inner faces of a block in a row of p blocks: none alone, one at
+ * each end of two (two around a periodic axis), two in the middle. */
+static int inner_faces(int p, bool periodic) {
+    return p == 1 ? 0 : (p == 2 && !periodic ? 1 : 2);
+}
+
+/* The process grid of p blocks whose largest block exchanges the fewest
+ * halo cells a fill (a face's cells each), each block at least GRID_NG
+ * cells along each axis; of equals the one with fewer blocks along x. 1 x
+ * p where none fits (which process_grid then refuses). What
+ * MPI_Dims_create does, weighed by the grid's shape. */
+static void fewest_halo_cells(const Grid *g, int p, int dims[2]) {
+    dims[0] = 1, dims[1] = p;
+    int64_t best = INT64_MAX;
+    for (int px = 1; px <= p; px++) {
+        const int py = p / px;
+        if (px * py != p || g->nx / px < GRID_NG || g->ny / py < GRID_NG) continue;
+        const int64_t w = (g->nx + px - 1) / px, h = (g->ny + py - 1) / py;
+        const int64_t halo =
+            inner_faces(px, g->ax[0].periodic) * h + inner_faces(py, g->ax[1].periodic) * w;
+        if (halo < best) best = halo, dims[0] = px, dims[1] = py;
+    }
+}
+
+/* The process grid of a group of p: the configuration's, or the one of
+ * the fewest halo cells. */
 static int process_grid(const GksConfig *cfg, const Grid *whole, int p, int dims[2]) {
-    dims[0] = cfg->processes[0] > 0 ? cfg->processes[0] : 1;
-    dims[1] = cfg->processes[1] > 0 ? cfg->processes[1] : p;
+    fewest_halo_cells(whole, p, dims);
+    if (cfg->processes[0] > 0) dims[0] = cfg->processes[0], dims[1] = cfg->processes[1];
     if ((int64_t)dims[0] * dims[1] != p)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "--processes %dx%d makes %lld blocks for %d process%s; expected PXxPY "

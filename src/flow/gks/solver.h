@@ -95,12 +95,14 @@ typedef struct {
     const NspdComm *comm;
     /* the process grid on several processes: processes[0] blocks along x
      * times processes[1] along y, their product the group's size; {0, 0}:
-     * one slab of rows a process ({1, P}) */
+     * the grid whose largest block exchanges the fewest halo cells (of
+     * equals, fewer blocks along x: slabs of rows on a square grid's 2 or
+     * 3 ranks, 2 x 2 on its 4) */
     int processes[2];
 } GksConfig;
 
 /* Several processes (issue 28). The group is a process grid of px x py
- * blocks (GksConfig.processes; one slab of rows a process by default),
+ * blocks (GksConfig.processes; by default the one of the fewest halo cells),
  * rank r at (r % px, r / px); along each axis a block holds the cells
  * n c / p .. n (c + 1) / p - 1, at least GRID_NG of them (grid_slice: the
  * same stretched-grid weights). Its box ghost layers come from the
