@@ -143,6 +143,9 @@ check_body_grid blast_hollow_square blast_sealed 2x1 --set time.end=2e-5 --set c
 # pre-cracked plate (bonds break across the ranks' runs; energies, the
 # crack-tip and line probes, damage pictures).
 check_body plate_crack plate "2 3 4"
+# ... and a 3D block under velocity Verlet (the ghosts' displacements
+# exchanged between the drift and the second force), bonds breaking.
+check_body block_3d block3d "2 3"
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of
