@@ -39,6 +39,7 @@ typedef struct {
     /* several processes, a volumetric coupling: the whole grid's kinds
      * (padded, as grid_index) and their interior rows as gathered */
     uint8_t *whole_kind, *kind_rows;
+    uint8_t *kind_last; /* this block's kinds at the last gather (whole_kinds) */
 } GksFlow;
 
 /* The vortex on a periodic box takes its nearest image: its periods are the
@@ -104,6 +105,7 @@ static void gks_destroy(void *impl) {
     nspd_free(&g->slab);
     nspd_free(&g->whole_kind);
     nspd_free(&g->kind_rows);
+    nspd_free(&g->kind_last);
     nspd_free(&g);
 }
 
@@ -343,26 +345,35 @@ static int gks_set_sources(void *impl, FlowSources *src) {
 /* A volumetric coupling's side (FlowOps.transfer, lumped, add_lumped,
  * seal). On several processes the coupling (and its solid) is replicated:
  * it passes every rank the same cells of the whole grid; the weights need
- * the whole grid's kinds (gathered at each call: a byte a cell), the
+ * the whole grid's kinds (gathered again when a block's changed), the
  * lumped values come from the ranks that hold the cells (gathered in the
  * list's order), and each rank adds to and seals only the cells it holds,
  * so every value is the one-process one. */
 
 /* The whole grid's kinds on every rank (padded; ghost layers SOLID, never
- * read by the weights). */
+ * read by the weights). Gathered again only when some block's kinds
+ * changed since the last gather (one integer reduction a call otherwise,
+ * not a byte a cell of the whole grid). */
 static int whole_kinds(GksFlow *gf) {
     GksSolver *s = gf->solver;
     const Grid *w = gks_solver_whole_grid(s), *g = gks_solver_grid(s);
+    const size_t local = (size_t)g->nx * (size_t)g->ny;
+    bool fresh = false;
     if (!gf->whole_kind) {
         TRY(nspd_alloc(&gf->whole_kind, (size_t)w->size, 1));
         TRY(nspd_alloc(&gf->kind_rows, (size_t)w->nx * (size_t)w->ny + 1, 1));
+        TRY(nspd_alloc(&gf->kind_last, local + 1, 1));
         memset(gf->whole_kind, FLOW_CELL_SOLID, (size_t)w->size);
+        fresh = true;
     }
     uint8_t *mine = (uint8_t *)gf->slab; /* nx * ny bytes fit in the doubles */
     const uint8_t *kind = gks_solver_fields(s).kind;
     for (int j = 0; j < g->ny; j++)
         for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = kind[grid_index(g, i, j)];
     const NspdComm *comm = gks_solver_comm(s);
+    const int64_t changed = fresh || memcmp(mine, gf->kind_last, local) != 0;
+    if (comm_max_i64(comm, changed) == 0) return NSPD_OK;
+    memcpy(gf->kind_last, mine, local);
     TRY(comm_allgatherv_bytes(comm, mine, g->nx * g->ny, gf->kind_rows));
     /* each rank's block, in rank order, into its place */
     const uint8_t *at = gf->kind_rows;
