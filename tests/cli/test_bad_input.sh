@@ -57,6 +57,11 @@ check "unknown option" "unknown option '--fast'" "$nspd" run x.yaml --fast
 check "bad --set syntax" "--set solid: expected dotted.key=value" \
     "$nspd" check "$src/cases/plate_crack.yaml" --set solid
 check "unknown command" "unknown command 'walk'" "$nspd" walk
+# the flow's process grid: PXxPY, and as many blocks as processes
+check "bad --processes" "--processes needs the flow's process grid as PXxPY" \
+    "$nspd" run "$src/cases/sod.yaml" -o "$work/result" --processes 2
+check "a process grid without mpirun" "--processes 2x2 makes 4 blocks for 1 process;" \
+    "$nspd" run "$src/cases/sod.yaml" -o "$work/result" --processes 2x2
 # the correspondence solid's own keys
 hs="$src/cases/hollow_square_pressure.yaml"
 check "correspondence: Poisson's ratio" "poisson_ratio: 0.5; expected a Poisson's ratio in \\(-1, 0.5\\)" \
