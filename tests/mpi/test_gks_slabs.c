@@ -162,7 +162,8 @@ static void run(const char *name, void (*configure)(GksConfig *), int steps, int
     const Grid *g = gks_solver_grid(slab), *wg = gks_solver_whole_grid(slab);
     int first[2], count[2];
     gks_solver_block(slab, world.rank, first, count);
-    check(first[1] == gks_solver_first_row(slab) && count[0] == g->nx && count[1] == g->ny,
+    check(count[0] == g->nx && count[1] == g->ny && g->ax[0].lo == wg->ax[0].face[first[0]] &&
+              g->ax[1].lo == wg->ax[1].face[first[1]],
           "block extents", name);
     const int64_t cells = (int64_t)wg->nx * wg->ny;
     double *mine = malloc((size_t)g->nx * (size_t)g->ny * 4 * sizeof(double));

@@ -108,10 +108,6 @@ int64_t gks_solver_local_cell(const GksSolver *s, int64_t cell) {
     return (int64_t)j * g->stride + i;
 }
 
-int gks_solver_row_owner(const GksSolver *s, int row) {
-    return gks_solver_cell_owner(s, 0, row);
-}
-
 /* Each fluid cell's pressure times its area (NaN marks the others), then
  * the sums in cell order over the whole grid on rank 0, which sends the
  * mean to the others: the same additions in the same order on any number

@@ -66,23 +66,11 @@ const GksParams *gks_solver_gas(const GksSolver *s) {
 const Grid *gks_solver_whole_grid(const GksSolver *s) {
     return comm_distributed(&s->comm) ? &s->whole : &s->grid;
 }
-/* Rank r's slab (a process grid of one column): rows [rows r / P,
- * rows (r + 1) / P) of the whole grid. */
-int gks_solver_slab_first(const GksSolver *s, int rank) {
-    return (int)((int64_t)s->rows * rank / s->comm.size);
-}
 int gks_solver_process_columns(const GksSolver *s) {
     return s->dims[0];
 }
 const NspdComm *gks_solver_comm(const GksSolver *s) {
     return &s->comm;
-}
-int gks_solver_first_row(const GksSolver *s) {
-    return s->row0;
-}
-
-int gks_solver_rows(const GksSolver *s) {
-    return s->rows;
 }
 
 double gks_solver_comm_seconds(const GksSolver *s) {
@@ -169,12 +157,12 @@ int64_t gks_solver_fallbacks_total(const GksSolver *s) {
 /* The state a step changes: the conservative fields (ghost layers too),
  * the cell kinds (an immersed boundary changes them), the sources a
  * coupling holds over the steps, the clock and the counters. */
-/* One per-cell array of `elem`-byte values as the whole grid's padded
- * array: one process's as it is; on several, each slab's own padded rows
- * (its interior, and the ghost rows at the whole grid's ends) gathered in
- * row order, and on reading each slab's rows with their ghost rows cut
- * from the whole. So a checkpoint is the same for any number of
- * processes and is read back by any other. */
+/* A per-cell array of `elem`-byte values is checkpointed as the whole
+ * grid's padded array (io_cells): one process's as it is; on several, each
+ * block's own cells gathered and placed (io_blocks), and on reading each
+ * block's cut from the whole. So a checkpoint is the same for any number
+ * of processes and process grid, and is read back by any other. */
+
 /* The padded cells rank r holds as the whole grid's, per axis [lo, hi)
  * in the whole grid's padded indices: its interior, and the box's ghost
  * layers where it ends the whole grid. */
@@ -188,9 +176,10 @@ static void owned_padded(const GksSolver *s, int r, int lo[2], int hi[2]) {
     }
 }
 
-/* io_cells on a 2D process grid: each rank's owned padded cells packed,
- * gathered, and placed in the whole padded array; on reading each rank
- * cuts its padded block (its halo too) out of the whole. */
+/* io_cells on several processes: each rank's owned padded cells packed,
+ * gathered, and placed in the whole padded array (its padding zeros); on
+ * reading each rank cuts its padded block (its halo too) out of the
+ * whole. */
 static int io_blocks(GksSolver *s, Checkpoint *ck, const char *name, void *cells, size_t elem) {
     const Grid *g = &s->grid, *w = &s->whole;
     unsigned char *whole = NULL, *mine = NULL, *all = NULL, *local = cells;
@@ -233,25 +222,9 @@ static int io_blocks(GksSolver *s, Checkpoint *ck, const char *name, void *cells
 }
 
 static int io_cells(GksSolver *s, Checkpoint *ck, const char *name, void *cells, size_t elem) {
-    const Grid *g = &s->grid;
-    if (!comm_distributed(&s->comm)) return checkpoint_io(ck, name, cells, (size_t)g->size * elem);
-    if (s->dims[0] > 1) return io_blocks(s, ck, name, cells, elem);
-    const size_t row = (size_t)g->stride * elem;
-    const size_t whole_rows = (size_t)s->rows + 2 * GRID_NG;
-    unsigned char *whole = NULL;
-    TRY(nspd_alloc(&whole, whole_rows * row, 1));
-    int status = NSPD_OK;
-    if (!checkpoint_reading(ck)) {
-        const int lo = s->row0 > 0 ? GRID_NG : 0;
-        const int hi = g->ny + (s->row0 + g->ny < s->rows ? GRID_NG : 2 * GRID_NG);
-        status = comm_allgatherv_bytes(&s->comm, (unsigned char *)cells + (size_t)lo * row,
-                                       (int)((size_t)(hi - lo) * row), whole);
-    }
-    if (status == NSPD_OK) status = checkpoint_io(ck, name, whole, whole_rows * row);
-    if (status == NSPD_OK && checkpoint_reading(ck))
-        memcpy(cells, whole + (size_t)s->row0 * row, (size_t)g->size * elem);
-    nspd_free(&whole);
-    return status;
+    if (!comm_distributed(&s->comm))
+        return checkpoint_io(ck, name, cells, (size_t)s->grid.size * elem);
+    return io_blocks(s, ck, name, cells, elem);
 }
 
 int gks_solver_checkpoint(GksSolver *s, Checkpoint *ck) {
@@ -485,7 +458,6 @@ static int take_block(GksSolver *s, Grid *whole, const GksConfig *cfg) {
         memset(&s->whole, 0, sizeof s->whole);
         return status;
     }
-    s->row0 = s->first[1];
     s->coord[0] = r % s->dims[0];
     s->coord[1] = r / s->dims[0];
     /* per axis: the neighbours (wrapped on a periodic axis), or, on an

@@ -152,10 +152,6 @@ const GksConfig *gks_solver_config(const GksSolver *s);
 const Grid *gks_solver_whole_grid(const GksSolver *s);
 /* The processes the solver runs on (the one-process group alone). */
 const NspdComm *gks_solver_comm(const GksSolver *s);
-/* The first row this process holds, and the whole grid's row count (0 and
- * ny on one process). */
-int gks_solver_first_row(const GksSolver *s);
-int gks_solver_rows(const GksSolver *s);
 /* Wall time (s) this process spent in the exchanges of ghost rows and the
  * reductions of the stable step and the counts, since creation (0 on one
  * process). */
@@ -273,12 +269,6 @@ int gks_solver_cell_owner(const GksSolver *s, int i, int j);
  * `cell` (numbered as the whole grid's arrays), or -1 where it lies
  * outside this block and its ghost layers; `cell` itself on one process. */
 int64_t gks_solver_local_cell(const GksSolver *s, int64_t cell);
-/* The first row of the whole grid that process `rank` holds (rank =
- * size: the whole grid's rows), on slabs (one block along x). */
-int gks_solver_slab_first(const GksSolver *s, int rank);
-/* The process that holds row `row` of the whole grid (0 on one); a row
- * of the box's ghost layers, below or above, the first or the last. */
-int gks_solver_row_owner(const GksSolver *s, int row);
 /* The area-weighted mean pressure of the whole grid's fluid cells into
  * *mean on every rank (every rank calls; NaN without fluid); slab (this
  * slab's cells) and, on rank 0, all (the whole grid's) are scratch. */

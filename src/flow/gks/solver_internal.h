@@ -76,13 +76,13 @@ struct GksSolver {
     size_t bytes; /* allocated by create (state + work), for the benchmark */
     /* processes (solver.h): the group; the process grid, dims[0] x
      * dims[1] blocks, this one at coord (rank = coord[1] dims[0] +
-     * coord[0]); its first cell of the whole grid per axis (row0 =
-     * first[1]) and the whole grid's rows; the neighbours across each of
+     * coord[0]); its first cell of the whole grid per axis and the whole
+     * grid's rows; the neighbours across each of
      * its faces (FLOW_FACE_* order, -1: none); the box faces it fills from
      * boundary conditions (bit 1 << face) */
     NspdComm comm;
     int dims[2], coord[2], first[2];
-    int row0, rows;
+    int rows;
     int nbr[4];
     unsigned bc_faces;
     double *row_sums_all; /* 4 * rows, the gathered row sums (several processes) */
