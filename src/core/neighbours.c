@@ -130,6 +130,11 @@ static int64_t visit(const CellList *cl, const double *const x[3], int64_t i, do
 
 int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
                     int32_t **nbr) {
+    return neighbours_find_rows(n, dim, x, horizon, NULL, first, nbr);
+}
+
+int neighbours_find_rows(int64_t n, int dim, const double *const x[3], double horizon,
+                         const uint8_t *rows, int64_t **first, int32_t **nbr) {
     CellList cl = {0};
     TRY(cells_build(&cl, n, dim, x, horizon));
     double r2 = horizon * horizon * (1.0 + 1e-12);
@@ -137,7 +142,8 @@ int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon
     if (status == NSPD_OK) {
         int64_t *f = *first;
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-        for (int64_t i = 0; i < n; i++) f[i + 1] = visit(&cl, x, i, r2, NULL);
+        for (int64_t i = 0; i < n; i++)
+            f[i + 1] = !rows || rows[i] ? visit(&cl, x, i, r2, NULL) : 0;
         for (int64_t i = 0; i < n; i++) f[i + 1] += f[i];
         /* at least one entry: a body without bonds still gets an array,
          * so that b + f[i] below is never an offset from NULL */
@@ -148,6 +154,7 @@ int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon
         int32_t *b = *nbr;
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < n; i++) {
+            if (rows && !rows[i]) continue;
             visit(&cl, x, i, r2, b + f[i]);
             qsort(b + f[i], (size_t)(f[i + 1] - f[i]), sizeof(int32_t), compare_int32);
         }

@@ -14,6 +14,10 @@
  * result does not depend on the thread count. */
 int neighbours_find(int64_t n, int dim, const double *const x[3], double horizon, int64_t **first,
                     int32_t **nbr);
+/* The same for the points i with rows[i] != 0 only (rows NULL: all); the
+ * others' rows are empty. A point's row is the one neighbours_find gives. */
+int neighbours_find_rows(int64_t n, int dim, const double *const x[3], double horizon,
+                         const uint8_t *rows, int64_t **first, int32_t **nbr);
 
 /* The same for m query points q (not among the n points): for each, all
  * points j with |x_j - q| <= horizon, ascending, into *first (m + 1

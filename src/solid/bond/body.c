@@ -90,7 +90,34 @@ static void assign_coefficients(BondBody *body, double *const g[3]) {
     }
 }
 
-static int build(BondBody *body, PdConfig *cfg) {
+/* The bonds of the points this process will keep (the run [lo, hi) of
+ * `part`, halo.h) and of their ghosts, whose surface factors the kept
+ * points' bonds read; every other row empty. NULL part: every row. */
+static int find_bonds(BondBody *body, const NspdComm *part) {
+    const double *const *x = (const double *const *)body->x;
+    if (!comm_distributed(part))
+        return neighbours_find(body->n, body->dim, x, body->horizon, &body->bond_first,
+                               &body->bond_nbr);
+    const int64_t n = body->n, lo = n * part->rank / part->size;
+    const int64_t hi = n * (part->rank + 1) / part->size;
+    uint8_t *rows = NULL;
+    TRY(nspd_alloc(&rows, (size_t)n, 1));
+    for (int64_t i = lo; i < hi; i++) rows[i] = 1;
+    int status = neighbours_find_rows(n, body->dim, x, body->horizon, rows, &body->bond_first,
+                                      &body->bond_nbr);
+    if (status == NSPD_OK) { /* the kept points' neighbours too, then all their rows */
+        for (int64_t k = body->bond_first[lo]; k < body->bond_first[hi]; k++)
+            rows[body->bond_nbr[k]] = 1;
+        nspd_free(&body->bond_first);
+        nspd_free(&body->bond_nbr);
+        status = neighbours_find_rows(n, body->dim, x, body->horizon, rows, &body->bond_first,
+                                      &body->bond_nbr);
+    }
+    nspd_free(&rows);
+    return status;
+}
+
+static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     memset(body, 0, sizeof *body);
     body->cfg = *cfg;
     memset(cfg, 0, sizeof *cfg);
@@ -117,8 +144,7 @@ static int build(BondBody *body, PdConfig *cfg) {
     pd_regions_assign(cfg, body->n, (const double *const *)body->x, body->region, body->v);
     TRY(pd_boundary_table_build(&body->boundary, cfg));
 
-    TRY(neighbours_find(body->n, body->dim, (const double *const *)body->x, body->horizon,
-                        &body->bond_first, &body->bond_nbr));
+    TRY(find_bonds(body, part));
     body->bond_count = body->bond_first[body->n];
     TRY(nspd_alloc(&body->bond_coef, (size_t)body->bond_count, sizeof(float)));
 
@@ -142,7 +168,14 @@ static int build(BondBody *body, PdConfig *cfg) {
 }
 
 int bond_body_create(BondBody *body, PdConfig *cfg) {
-    int status = build(body, cfg);
+    int status = build(body, cfg, NULL);
+    if (status != NSPD_OK) bond_body_destroy(body);
+    return status;
+}
+
+int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm) {
+    int status = build(body, cfg, comm);
+    if (status == NSPD_OK) status = bond_body_divide(body, comm);
     if (status != NSPD_OK) bond_body_destroy(body);
     return status;
 }

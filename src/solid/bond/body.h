@@ -29,6 +29,7 @@
 #ifndef NSPD_SOLID_BOND_BODY_H
 #define NSPD_SOLID_BOND_BODY_H
 
+#include "core/comm.h"
 #include "solid/pd/config.h"
 #include "solid/pd/regions.h"
 
@@ -81,6 +82,11 @@ typedef struct {
  * shapes and arrays) and zeroes it. NSPD_ERR_INPUT if the geometry holds
  * no point; NSPD_ERR_NOMEM. */
 int bond_body_create(BondBody *body, PdConfig *cfg);
+/* The same on several processes (comm; one process: bond_body_create):
+ * this process's part of the body (halo.h), whose build finds only the
+ * bonds of its points and of their ghosts (the surface factors of a
+ * ghost need its own bonds), so that its bonds' memory is its part's. */
+int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm);
 void bond_body_destroy(BondBody *body);
 
 /* Bytes of bond storage per bond (neighbour index + coefficient), and of

@@ -143,8 +143,18 @@ int bond_body_divide(BondBody *b, const NspdComm *comm) {
     h->comm = *comm;
     h->first = lo;
     h->total = total;
-    h->bond_first = b->bond_first[lo];
-    h->bonds = b->bond_count;
+    /* the whole body's bonds: the runs' own rows, in rank order (a build
+     * of this part alone holds no other rows) */
+    int64_t *counts = NULL;
+    TRY(nspd_alloc(&counts, (size_t)p, sizeof *counts));
+    const int64_t own_bonds = b->bond_first[hi] - b->bond_first[lo];
+    const int st = comm_allgatherv_bytes(comm, &own_bonds, (int)sizeof own_bonds, counts);
+    for (int q = 0; q < p; q++) {
+        if (q == r) h->bond_first = h->bonds;
+        h->bonds += counts[q];
+    }
+    nspd_free(&counts);
+    TRY(st);
     /* the local index of each point of the whole body (-1: not kept;
      * -2: a ghost, numbered below in the whole body's order) */
     int64_t *local = NULL, *from = NULL;

@@ -1,8 +1,9 @@
 /* A bond-based body divided between processes (issue 28: a solid alone on
  * several ranks).
  *
- * Every rank builds the whole body (body.c), then keeps a contiguous run
- * of its points in the Morton order, rank r of P the points
+ * Every rank places the whole body's points and finds the bonds of its
+ * part (bond_body_create_divided), then keeps a contiguous run of its
+ * points in the Morton order, rank r of P the points
  * [N r / P, N (r + 1) / P): Morton runs are compact patches of the body,
  * so few bonds cross. Its points come first (BondBody.n of them, in the
  * whole body's order), then the ghosts: every point a bond of its own
@@ -19,8 +20,11 @@
  * values. Both ends of a crossing bond break together, as they do on one
  * process, because both evaluate the same stretch.
  *
- * The whole body's build runs on every rank (its memory is the one-process
- * peak); what a step holds afterwards is the rank's part. */
+ * Every rank places the whole body's points (lattice, order, regions:
+ * some 150 bytes a point) but finds the bonds only of its run and of its
+ * ghosts (bond_body_create_divided), so the bonds' memory, the most of a
+ * body, is the part's from the start; what a step holds afterwards is the
+ * rank's part. */
 #ifndef NSPD_SOLID_BOND_HALO_H
 #define NSPD_SOLID_BOND_HALO_H
 

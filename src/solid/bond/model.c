@@ -25,15 +25,10 @@ static int bond_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     /* the body takes its own copy of the configuration */
     PdConfig pd = *(PdConfig *)cfg->model;
     nspd_free(&cfg->model); /* taken */
-    int status = bond_body_create(b, &pd);
+    /* on several processes each builds and keeps its part (halo.h) */
+    int status = bond_body_create_divided(b, &pd, cfg->comm);
     if (status != NSPD_OK) {
         pd_config_free(&pd);
-        nspd_free(&bs);
-        return status;
-    }
-    /* on several processes each keeps its part (halo.h) */
-    if ((status = bond_body_divide(b, cfg->comm)) != NSPD_OK) {
-        bond_body_destroy(b);
         nspd_free(&bs);
         return status;
     }
