@@ -52,16 +52,22 @@ static int gather_blocks(const GksSolver *s, const double *mine, double *out) {
     const Grid *g = &s->grid;
     if (s->dims[0] == 1) return comm_gatherv(&s->comm, mine, g->nx * g->ny, out);
     TRY(comm_gatherv(&s->comm, mine, g->nx * g->ny, s->gather));
-    if (s->comm.rank != 0) return NSPD_OK;
-    const double *at = s->gather;
-    const int64_t width = s->whole.nx;
+    if (s->comm.rank == 0) gks_solver_place_blocks(s, s->gather, sizeof *out, out, s->whole.nx, 0);
+    return NSPD_OK;
+}
+
+void gks_solver_place_blocks(const GksSolver *s, const void *blocks, size_t elem, void *out,
+                             int64_t stride, int pad) {
+    const unsigned char *at = blocks;
+    unsigned char *to = out;
     for (int r = 0; r < s->comm.size; r++) {
         int first[2], count[2];
         gks_solver_block(s, r, first, count);
-        for (int j = 0; j < count[1]; j++, at += count[0])
-            memcpy(out + (first[1] + j) * width + first[0], at, (size_t)count[0] * sizeof *at);
+        const size_t run = (size_t)count[0] * elem;
+        for (int j = 0; j < count[1]; j++, at += run)
+            memcpy(to + ((int64_t)(first[1] + j + pad) * stride + first[0] + pad) * (int64_t)elem,
+                   at, run);
     }
-    return NSPD_OK;
 }
 
 int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out) {

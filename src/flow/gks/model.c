@@ -375,14 +375,7 @@ static int whole_kinds(GksFlow *gf) {
     if (comm_max_i64(comm, changed) == 0) return NSPD_OK;
     memcpy(gf->kind_last, mine, local);
     TRY(comm_allgatherv_bytes(comm, mine, g->nx * g->ny, gf->kind_rows));
-    /* each rank's block, in rank order, into its place */
-    const uint8_t *at = gf->kind_rows;
-    for (int r = 0; r < comm->size; r++) {
-        int first[2], count[2];
-        gks_solver_block(s, r, first, count);
-        for (int j = 0; j < count[1]; j++, at += count[0])
-            memcpy(gf->whole_kind + grid_index(w, first[0], first[1] + j), at, (size_t)count[0]);
-    }
+    gks_solver_place_blocks(s, gf->kind_rows, 1, gf->whole_kind, w->stride, GRID_NG);
     return NSPD_OK;
 }
 

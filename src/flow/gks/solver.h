@@ -260,6 +260,13 @@ int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);
 /* Rank `rank`'s block: its first cell of the whole grid and its cells per
  * axis (the whole grid on one process). */
 void gks_solver_block(const GksSolver *s, int rank, int first[2], int count[2]);
+/* Every rank's block of interior cells (x fastest, `elem` bytes a cell),
+ * concatenated in rank order in blocks[] (what a gather of the blocks
+ * gives), placed into out[]: a grid of rows `stride` cells long whose cell
+ * (i, j) of the whole grid is at (j + pad) stride + i + pad (pad 0: the
+ * interior alone; GRID_NG: the padded arrays). */
+void gks_solver_place_blocks(const GksSolver *s, const void *blocks, size_t elem, void *out,
+                             int64_t stride, int pad);
 /* The blocks along x of the process grid (1: slabs of rows). */
 int gks_solver_process_columns(const GksSolver *s);
 /* The process that holds cell (i, j) of the whole grid, its box ghost
