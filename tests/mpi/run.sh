@@ -158,19 +158,29 @@ runs() {
     shift
     if [ "$n" -eq 1 ]; then "$nspd" run "$@"; else on "$n" "$@"; fi
 }
+# The run in $1 continued on $2 processes from its newest checkpoint, its
+# outputs after it removed first (the last file of the series $3, and
+# summary.json), ends as the run in $4 (a check named $5); the rest: the
+# case and its arguments.
+resume_check() {
+    dir=$1 n=$2 series=$3 ref=$4 what=$5
+    shift 5
+    last=$(find "$dir" -maxdepth 1 -name "${series}_*" | sort | tail -n 1)
+    rm -f "$dir/summary.json" "$last"
+    if runs "$n" "$@" -o "$dir" --quiet --resume; then
+        [ -e "$last" ] || fail "$what: $last not written again"
+        same_results "$ref" "$dir" "$what"
+    else
+        fail "$what: exit status $?"
+    fi
+}
 "$nspd" run "$vortex" -o "$work/ck.ref" --quiet $ck || fail "the checkpointed run of one process failed"
 if on 3 "$vortex" -o "$work/ck.3" --quiet $ck; then
     for n in 2 1; do
         cp -r "$work/ck.3" "$work/ck.3to$n"
         # the last field output (t = 1.0) and the summary come after the newest checkpoint
-        last=$(ls "$work/ck.3to$n"/flow_*.vtr | tail -n 1)
-        rm -f "$work/ck.3to$n/summary.json" "$last"
-        if runs "$n" "$vortex" -o "$work/ck.3to$n" --quiet --resume $ck; then
-            [ -e "$last" ] || fail "resume on $n: $last not written again"
-            same_results "$work/ck.ref" "$work/ck.3to$n" "checkpoint of 3 ranks resumed on $n"
-        else
-            fail "checkpoint of 3 ranks resumed on $n: exit status $?"
-        fi
+        resume_check "$work/ck.3to$n" "$n" flow "$work/ck.ref" \
+            "checkpoint of 3 ranks resumed on $n" "$vortex" $ck
     done
 else
     fail "the checkpointed run on 3 ranks failed"
@@ -181,14 +191,8 @@ fi
 if on 4 "$vortex" -o "$work/ck.2x2" --quiet $ck --processes 2x2; then
     for n in 3 1; do
         cp -r "$work/ck.2x2" "$work/ck.2x2to$n"
-        last=$(ls "$work/ck.2x2to$n"/flow_*.vtr | tail -n 1)
-        rm -f "$work/ck.2x2to$n/summary.json" "$last"
-        if runs "$n" "$vortex" -o "$work/ck.2x2to$n" --quiet --resume $ck; then
-            [ -e "$last" ] || fail "resume of 2 x 2 on $n: $last not written again"
-            same_results "$work/ck.ref" "$work/ck.2x2to$n" "checkpoint of 2 x 2 blocks resumed on $n"
-        else
-            fail "checkpoint of 2 x 2 blocks resumed on $n: exit status $?"
-        fi
+        resume_check "$work/ck.2x2to$n" "$n" flow "$work/ck.ref" \
+            "checkpoint of 2 x 2 blocks resumed on $n" "$vortex" $ck
     done
 else
     fail "the checkpointed run on 2 x 2 blocks failed"
@@ -234,16 +238,9 @@ crack="$src/cases/cylinder_crack_ma17.yaml"
     fail "the checkpointed coupled run of one process failed"
 if on 4 "$crack" -o "$work/cck.2x2" --quiet $crack_args --set output.checkpoint_interval=1e-3 \
     --processes 2x2; then
-    set +f # the glob (globbing is off for the arguments' lists)
-    last=$(ls "$work/cck.2x2"/flow_*.vtr | tail -n 1)
-    set -f
-    rm -f "$work/cck.2x2/summary.json" "$last"
-    if on 2 "$crack" -o "$work/cck.2x2" --quiet --resume $crack_args --set output.checkpoint_interval=1e-3; then
-        [ -e "$last" ] || fail "coupled resume on 2: $last not written again"
-        same_results "$work/cck.ref" "$work/cck.2x2" "the coupled checkpoint of 2 x 2 blocks resumed on 2"
-    else
-        fail "the coupled checkpoint of 2 x 2 blocks resumed on 2: exit status $?"
-    fi
+    resume_check "$work/cck.2x2" 2 flow "$work/cck.ref" \
+        "the coupled checkpoint of 2 x 2 blocks resumed on 2" "$crack" $crack_args \
+        --set output.checkpoint_interval=1e-3
 else
     fail "the checkpointed coupled run on 2 x 2 blocks failed"
 fi
@@ -261,16 +258,9 @@ plate="$src/cases/plate_crack.yaml"
 "$nspd" run "$plate" -o "$work/pck.ref" --quiet $plate_args --set output.checkpoint_interval=2e-6 ||
     fail "the checkpointed solid of one process failed"
 if on 3 "$plate" -o "$work/pck.3" --quiet $plate_args --set output.checkpoint_interval=2e-6; then
-    set +f
-    last=$(ls "$work/pck.3"/solid_*.vtu | tail -n 1)
-    set -f
-    rm -f "$work/pck.3/summary.json" "$last"
-    if on 2 "$plate" -o "$work/pck.3" --quiet --resume $plate_args --set output.checkpoint_interval=2e-6; then
-        [ -e "$last" ] || fail "the solid's resume on 2: $last not written again"
-        same_results "$work/pck.ref" "$work/pck.3" "the solid's checkpoint of 3 ranks resumed on 2"
-    else
-        fail "the solid's checkpoint of 3 ranks resumed on 2: exit status $?"
-    fi
+    resume_check "$work/pck.3" 2 solid "$work/pck.ref" \
+        "the solid's checkpoint of 3 ranks resumed on 2" "$plate" $plate_args \
+        --set output.checkpoint_interval=2e-6
 else
     fail "the checkpointed solid on 3 ranks failed"
 fi
