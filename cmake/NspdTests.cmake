@@ -94,9 +94,12 @@ if(NSPD_MPI)
     endforeach()
     # `mpirun nspd run`: flow cases bitwise on 1-4 ranks, checkpoints and
     # fields across process counts, the refusals (tests/mpi/run.sh)
+    # tests/mpi/vtk_same.c: a grid written in pieces against the whole one
+    add_executable(vtk_same ${PROJECT_SOURCE_DIR}/tests/mpi/vtk_same.c)
+    target_link_libraries(vtk_same PRIVATE nspdlib)
     add_test(NAME mpi.run
         COMMAND sh ${PROJECT_SOURCE_DIR}/tests/mpi/run.sh $<TARGET_FILE:nspd> ${PROJECT_SOURCE_DIR}
-            ${MPIEXEC_EXECUTABLE}
+            ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:vtk_same>
         WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
     # the longest test (about 2 minutes): started first, so that the others
     # run beside it instead of after it (a fresh build has no timings yet)

@@ -364,7 +364,8 @@ int cmd_run(int argc, char **argv) {
         else
             nspd_log(LOG_INFO, "%s, %d threads", what, omp_get_max_threads());
         interrupt_install();
-        SimRunOptions ro = {writer ? dir : NULL, !opt.quiet && writer};
+        SimRunOptions ro = {writer ? dir : NULL, !opt.quiet && writer,
+                            comm_distributed(&world) ? dir : NULL};
         status = sim_run(&sim, &ro);
         if (status == NSPD_OK || status == NSPD_ERR_INTERRUPTED) {
             if (sim.flow && flow_fallbacks_total(sim.flow) > 0)

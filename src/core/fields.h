@@ -56,6 +56,28 @@ typedef struct {
 
 enum { FIELDSET_MAX_FIELDS = 12, FIELDSET_MAX_PICTURES = 4, FIELDSET_MAX_TABLES = 2 };
 
+/* This process's part of a mesh that several processes share (issue 28).
+ * Each writes its piece as a file of its own (<series>_NNNNN_pPPPP.vtr or
+ * .vtu), and the writer (rank 0) a ParaView parallel file (.pvtr, .pvtu)
+ * that names them all; no process holds the whole mesh's fields for it.
+ * count 0: no pieces (one process, or a model that gathers its mesh). */
+typedef struct {
+    int index, count; /* this piece, of `count` */
+    /* MESH_GRID: every piece's cells of the whole grid, {i0, i1, j0, j1}
+     * for [i0, i1) x [j0, j1), `count` of them, in piece order */
+    const int (*cells)[4];
+    /* this piece's mesh: MESH_POINTS, n points at `position` (pieces in
+     * order make the whole set's points); MESH_GRID, the cells of
+     * cells[index], between the faces face[0][0..nx], face[1][0..ny] */
+    int64_t n;
+    const double *position[3];
+    int nx, ny;
+    const double *face[2];
+    /* its fields, the same names and components on every piece */
+    int field_count;
+    FieldRef field[FIELDSET_MAX_FIELDS];
+} FieldPiece;
+
 typedef struct {
     const char *series; /* the files' stem: "solid" -> solid_NNNNN.vtu and solid.pvd */
     MeshKind mesh;
@@ -81,6 +103,10 @@ typedef struct {
     PictureRef picture[FIELDSET_MAX_PICTURES];
     int table_count;
     TableRef table[FIELDSET_MAX_TABLES];
+    /* piece.count > 1: the VTK file is written in pieces from `piece` (on
+     * every process), and the mesh and fields above serve the pictures and
+     * tables only (on the writer) */
+    FieldPiece piece;
 } FieldSet;
 
 #endif

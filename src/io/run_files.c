@@ -1,5 +1,6 @@
 #include "io/run_files.h"
 
+#include "core/mem.h"
 #include "core/status.h"
 #include "io/json.h"
 #include "core/out_file.h"
@@ -132,12 +133,42 @@ int summary_write(const char *dir, const Report *summary) {
     return out_file_close(&out, 0);
 }
 
+/* A piece's file name: "flow_00003_p0001.vtr". */
+static void piece_name(const FieldSet *fs, int index, int piece, char *buf, size_t size) {
+    snprintf(buf, size, "%s_%05d_p%04d.%s", fs->series, index, piece,
+             fs->mesh == MESH_GRID ? "vtr" : "vtu");
+}
+
+/* The parallel file that names the pieces of output `index`. */
+static int write_parallel(const char *path, int index, const FieldSet *fs) {
+    const FieldPiece *pc = &fs->piece;
+    char(*names)[64];
+    const char **sources;
+    TRY(nspd_alloc(&names, (size_t)pc->count, sizeof *names));
+    int status = nspd_alloc(&sources, (size_t)pc->count, sizeof *sources);
+    for (int p = 0; p < pc->count && status == NSPD_OK; p++) {
+        piece_name(fs, index, p, names[p], sizeof names[p]);
+        sources[p] = names[p];
+    }
+    if (status == NSPD_OK)
+        status = fs->mesh == MESH_GRID
+                     ? vtk_write_pvtr(path, fs->nx, fs->ny, pc->count, pc->cells, sources,
+                                      pc->field, pc->field_count)
+                     : vtk_write_pvtu(path, pc->count, sources, pc->field, pc->field_count);
+    nspd_free(&sources);
+    nspd_free(&names);
+    return status;
+}
+
 static int write_vtk(const char *dir, int index, double t, const FieldSet *fs, PvdSeries *pvd) {
     char name[256], path[4096];
-    const char *ext = fs->mesh == MESH_GRID ? "vtr" : "vtu";
+    const bool pieces = fs->piece.count > 1;
+    const char *ext = fs->mesh == MESH_GRID ? (pieces ? "pvtr" : "vtr") : (pieces ? "pvtu" : "vtu");
     snprintf(name, sizeof name, "%s_%05d.%s", fs->series, index, ext);
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (fs->mesh == MESH_GRID) {
+    if (pieces) {
+        TRY(write_parallel(path, index, fs));
+    } else if (fs->mesh == MESH_GRID) {
         const double zf[2] = {0.0, 0.0};
         TRY(vtk_write_rectilinear(path, fs->nx, fs->ny, 1, fs->face[0], fs->face[1], zf, fs->field,
                                   fs->field_count, fs->point_field, fs->point_field_count));
@@ -147,6 +178,19 @@ static int write_vtk(const char *dir, int index, double t, const FieldSet *fs, P
     char pvd_path[4096];
     snprintf(pvd_path, sizeof pvd_path, "%s/%s.pvd", dir, fs->series);
     return pvd_add(pvd, pvd_path, t, name);
+}
+
+int field_set_write_piece(const char *dir, int index, const FieldSet *fs,
+                          const FieldOutputOptions *opt) {
+    const FieldPiece *pc = &fs->piece;
+    if (pc->count <= 1 || fs->mesh == MESH_NONE || !opt->vtk) return NSPD_OK;
+    char name[256], path[4096];
+    piece_name(fs, index, pc->index, name, sizeof name);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (fs->mesh == MESH_GRID)
+        return vtk_write_rectilinear_piece(path, pc->cells[pc->index], pc->face[0], pc->face[1],
+                                           pc->field, pc->field_count);
+    return vtk_write_points(path, pc->n, pc->position, pc->field, pc->field_count);
 }
 
 /* The overlay's window: the points' box, enlarged by its own size on each side. */

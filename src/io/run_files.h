@@ -42,11 +42,17 @@ typedef struct {
 } FieldOutputOptions;
 
 /* Writes the files of one output (index) of a field set at time t:
- * its VTK file (added to *pvd), its pictures (titled "case - field - t = ...")
+ * its VTK file (added to *pvd; of a set in pieces, the .pvtr or .pvtu
+ * that names them), its pictures (titled "case - field - t = ...")
  * and its tables. `overlay`
  * (NULL: none) is the points mesh drawn on the pictures that ask for it. */
 int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
                     const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd);
+/* A set in pieces (fs->piece.count > 1): this process's piece of output
+ * `index`, <series>_NNNNN_pPPPP.vtr or .vtu, which every process of the
+ * set writes (nothing otherwise, or without VTK output). */
+int field_set_write_piece(const char *dir, int index, const FieldSet *fs,
+                          const FieldOutputOptions *opt);
 
 /* Writes dir/<table.file>_NNNNN.csv (see TableRef). */
 int table_write(const char *dir, int index, double t, const TableRef *table);

@@ -108,21 +108,27 @@ int vtk_write_points(const char *path, int64_t n, const double *const pos[3],
     return out_file_close(&out, err);
 }
 
-int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
-                          const double *yf, const double *zf, const VtkField *fields,
-                          int field_count, const VtkField *point_fields, int point_count) {
+/* The cells [ext[0], ext[1]) x [ext[2], ext[3]) x [ext[4], ext[5]) of a
+ * grid, a file of their own: the whole grid (origin 0) or one piece of it. */
+static int write_rectilinear(const char *path, const int ext[6], const double *xf, const double *yf,
+                             const double *zf, const VtkField *fields, int field_count,
+                             const VtkField *point_fields, int point_count) {
     OutFile out;
     TRY(out_file_open(&out, path));
     FILE *f = out.f;
+    const int nx = ext[1] - ext[0], ny = ext[3] - ext[2], nz = ext[5] - ext[4];
     int64_t cells = (int64_t)nx * ny * nz, layer = (int64_t)(nx + 1) * (ny + 1),
             nodes = layer * (nz + 1);
     uint64_t offset = 0;
+    char extent[128];
+    snprintf(extent, sizeof extent, "%d %d %d %d %d %d", ext[0], ext[1], ext[2], ext[3], ext[4],
+             ext[5]);
     fprintf(f,
             "<?xml version=\"1.0\"?>\n<VTKFile type=\"RectilinearGrid\" version=\"1.0\" "
             "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-            "  <RectilinearGrid WholeExtent=\"0 %d 0 %d 0 %d\">\n"
-            "    <Piece Extent=\"0 %d 0 %d 0 %d\">\n",
-            nx, ny, nz, nx, ny, nz);
+            "  <RectilinearGrid WholeExtent=\"%s\">\n"
+            "    <Piece Extent=\"%s\">\n",
+            extent, extent);
     if (point_count > 0) {
         fprintf(f, "      <PointData>\n");
         for (int k = 0; k < point_count; k++) {
@@ -157,6 +163,66 @@ int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double
     }
     fprintf(f, "\n  </AppendedData>\n</VTKFile>\n");
     return out_file_close(&out, err);
+}
+
+int vtk_write_rectilinear(const char *path, int nx, int ny, int nz, const double *xf,
+                          const double *yf, const double *zf, const VtkField *fields,
+                          int field_count, const VtkField *point_fields, int point_count) {
+    const int ext[6] = {0, nx, 0, ny, 0, nz};
+    return write_rectilinear(path, ext, xf, yf, zf, fields, field_count, point_fields, point_count);
+}
+
+int vtk_write_rectilinear_piece(const char *path, const int cells[4], const double *xf,
+                                const double *yf, const VtkField *fields, int field_count) {
+    const int ext[6] = {cells[0], cells[1], cells[2], cells[3], 0, 1};
+    const double zf[2] = {0.0, 0.0};
+    return write_rectilinear(path, ext, xf, yf, zf, fields, field_count, NULL, 0);
+}
+
+/* The PDataArray declarations of a parallel file's fields. */
+static void declare_parallel(FILE *f, const char *element, const VtkField *fields,
+                             int field_count) {
+    fprintf(f, "    <%s>\n", element);
+    for (int k = 0; k < field_count; k++)
+        fprintf(f, "      <PDataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n",
+                fields[k].name, fields[k].components);
+    fprintf(f, "    </%s>\n", element);
+}
+
+int vtk_write_pvtr(const char *path, int nx, int ny, int piece_count, const int (*cells)[4],
+                   const char *const *sources, const VtkField *fields, int field_count) {
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
+    fprintf(f,
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"PRectilinearGrid\" version=\"1.0\" "
+            "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+            "  <PRectilinearGrid WholeExtent=\"0 %d 0 %d 0 1\" GhostLevel=\"0\">\n",
+            nx, ny);
+    declare_parallel(f, "PCellData", fields, field_count);
+    static const VtkField axes[3] = {{"x", 1, {0}}, {"y", 1, {0}}, {"z", 1, {0}}};
+    declare_parallel(f, "PCoordinates", axes, 3);
+    for (int p = 0; p < piece_count; p++)
+        fprintf(f, "    <Piece Extent=\"%d %d %d %d 0 1\" Source=\"%s\"/>\n", cells[p][0],
+                cells[p][1], cells[p][2], cells[p][3], sources[p]);
+    fprintf(f, "  </PRectilinearGrid>\n</VTKFile>\n");
+    return out_file_close(&out, 0);
+}
+
+int vtk_write_pvtu(const char *path, int piece_count, const char *const *sources,
+                   const VtkField *fields, int field_count) {
+    OutFile out;
+    TRY(out_file_open(&out, path));
+    FILE *f = out.f;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" "
+               "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+               "  <PUnstructuredGrid GhostLevel=\"0\">\n");
+    declare_parallel(f, "PPointData", fields, field_count);
+    static const VtkField points = {"Points", 3, {0}};
+    declare_parallel(f, "PPoints", &points, 1);
+    for (int p = 0; p < piece_count; p++) fprintf(f, "    <Piece Source=\"%s\"/>\n", sources[p]);
+    fprintf(f, "  </PUnstructuredGrid>\n</VTKFile>\n");
+    return out_file_close(&out, 0);
 }
 
 int pvd_append(PvdSeries *s, double time, const char *file_name) {

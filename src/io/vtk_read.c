@@ -16,6 +16,8 @@
 
 #include <errno.h>
 #include <inttypes.h>
+#include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -188,13 +190,166 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
     return NSPD_OK;
 }
 
-int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
+static int read_one(const char *path, VtkRectilinear *out) {
     memset(out, 0, sizeof *out);
     int open_error = 0;
     FILE *f = in_file_open(path, &open_error);
     if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
     int status = read_file(f, path, out);
     fclose(f);
+    return status;
+}
+
+/* Piece p of a .pvtr: its cells' extent and its file (relative to the
+ * .pvtr's directory, `dir`), from the <Piece> tag at `tag`. */
+static int piece_tag(const char *path, const char *dir, const char *tag, int ext[6],
+                     char *piece_path, size_t size) {
+    char buf[128], source[1024];
+    if (!attribute(tag, "Extent", buf, sizeof buf) ||
+        sscanf(buf, "%d %d %d %d %d %d", &ext[0], &ext[1], &ext[2], &ext[3], &ext[4], &ext[5]) !=
+            6 ||
+        !attribute(tag, "Source", source, sizeof source))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a <Piece> without Extent or Source", path);
+    if (source[0] == '/')
+        snprintf(piece_path, size, "%s", source);
+    else
+        snprintf(piece_path, size, "%s%s", dir, source);
+    return NSPD_OK;
+}
+
+/* Piece `pc` (read from its file) into the whole grid `out` at cells
+ * ext[]: its faces must be the whole axes' where they meet, its arrays the
+ * first piece's. */
+static int place_piece(const char *path, const VtkRectilinear *pc, const int ext[6],
+                       VtkRectilinear *out, int first, uint8_t *covered) {
+    for (int a = 0; a < 3; a++) {
+        const long long n = (long long)ext[2 * a + 1] - ext[2 * a];
+        if (ext[2 * a] < 0 || n != pc->n[a] || ext[2 * a + 1] > out->n[a])
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "'%s': a piece's extent %d..%d along %c is not its file's %d cells "
+                             "inside the whole grid's %d",
+                             path, ext[2 * a], ext[2 * a + 1], 'x' + a, pc->n[a], out->n[a]);
+        for (int i = 0; i <= pc->n[a]; i++) {
+            double *at = &out->face[a][ext[2 * a] + i];
+            if (!first && !isnan(*at) && memcmp(at, &pc->face[a][i], sizeof *at) != 0)
+                return NSPD_FAIL(NSPD_ERR_INPUT,
+                                 "'%s': two pieces disagree on the %c face %d (%.17g, %.17g)", path,
+                                 'x' + a, ext[2 * a] + i, *at, pc->face[a][i]);
+            *at = pc->face[a][i];
+        }
+    }
+    for (int z = 0; z < pc->n[2]; z++)
+        for (int j = 0; j < pc->n[1]; j++)
+            for (int i = 0; i < pc->n[0]; i++) {
+                uint8_t *c = &covered[(((int64_t)ext[4] + z) * out->n[1] + ext[2] + j) * out->n[0] +
+                                      ext[0] + i];
+                if (*c)
+                    return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': two pieces hold cell (%d, %d, %d)",
+                                     path, ext[0] + i, ext[2] + j, ext[4] + z);
+                *c = 1;
+            }
+    if (pc->array_count != out->array_count)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': its pieces hold %d and %d cell arrays", path,
+                         out->array_count, pc->array_count);
+    for (int k = 0; k < pc->array_count; k++) {
+        const VtkCellArray *from = &pc->arrays[k];
+        VtkCellArray *to = &out->arrays[k];
+        if (strcmp(from->name, to->name) != 0 || from->components != to->components)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': its pieces' array %d is '%s' and '%s'", path, k,
+                             to->name, from->name);
+        const size_t run = (size_t)pc->n[0] * (size_t)from->components * sizeof(double);
+        for (int z = 0; z < pc->n[2]; z++)
+            for (int j = 0; j < pc->n[1]; j++) {
+                const int64_t src = ((int64_t)z * pc->n[1] + j) * pc->n[0];
+                const int64_t dst =
+                    (((int64_t)ext[4] + z) * out->n[1] + ext[2] + j) * out->n[0] + ext[0];
+                memcpy(to->data + dst * from->components, from->data + src * from->components, run);
+            }
+    }
+    return NSPD_OK;
+}
+
+/* The whole grid of a .pvtr (ParaView's parallel rectilinear grid, what
+ * several processes write: io/vtk.h), its pieces read one at a time. Every
+ * cell must be covered by exactly one piece. */
+static int read_parallel(const char *path, const char *h, VtkRectilinear *out) {
+    const char *grid = strstr(h, "<PRectilinearGrid");
+    char buf[128];
+    int e[6];
+    if (!grid || !attribute(grid, "WholeExtent", buf, sizeof buf) ||
+        sscanf(buf, "%d %d %d %d %d %d", &e[0], &e[1], &e[2], &e[3], &e[4], &e[5]) != 6)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no WholeExtent in the header", path);
+    int64_t cells = 1;
+    for (int a = 0; a < 3; a++) {
+        const long long n = (long long)e[2 * a + 1] - (long long)e[2 * a];
+        if (e[2 * a] != 0 || n < 1 || n > (1 << 24))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': WholeExtent '%s' is not a grid of cells", path,
+                             buf);
+        out->n[a] = (int)n;
+        cells *= n;
+    }
+    char dir[4096];
+    const char *slash = strrchr(path, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path + 1) : 0, path);
+    int64_t covered = 0;
+    uint8_t *held; /* 1: a piece holds the cell */
+    TRY(nspd_alloc(&held, (size_t)cells, 1));
+    int status = NSPD_OK, pieces = 0;
+    for (const char *tag = strstr(grid, "<Piece"); tag && status == NSPD_OK;
+         tag = strstr(tag + 1, "<Piece"), pieces++) {
+        int ext[6];
+        char piece_path[5200];
+        VtkRectilinear pc;
+        memset(&pc, 0, sizeof pc);
+        status = piece_tag(path, dir, tag, ext, piece_path, sizeof piece_path);
+        if (status == NSPD_OK && (status = read_one(piece_path, &pc)) != NSPD_OK) {
+            char why[1024]; /* NSPD_FAIL replaces the message it is given */
+            snprintf(why, sizeof why, "%s", nspd_error_message());
+            status = NSPD_FAIL(status, "'%s': piece %d: %s", path, pieces, why);
+        }
+        if (status == NSPD_OK && pieces == 0) { /* the whole grid's arrays, as the first piece's */
+            for (int a = 0; a < 3 && status == NSPD_OK; a++) {
+                status = nspd_alloc(&out->face[a], (size_t)out->n[a] + 1, sizeof(double));
+                for (int i = 0; i <= out->n[a] && status == NSPD_OK; i++) out->face[a][i] = NAN;
+            }
+            for (int k = 0; k < pc.array_count && status == NSPD_OK; k++) {
+                VtkCellArray *to = &out->arrays[out->array_count++];
+                memcpy(to->name, pc.arrays[k].name, sizeof to->name);
+                to->components = pc.arrays[k].components;
+                status =
+                    nspd_alloc(&to->data, (size_t)cells * (size_t)to->components, sizeof(double));
+            }
+        }
+        if (status == NSPD_OK) status = place_piece(path, &pc, ext, out, pieces == 0, held);
+        covered += (int64_t)pc.n[0] * pc.n[1] * pc.n[2];
+        vtk_rectilinear_free(&pc);
+    }
+    nspd_free(&held);
+    TRY(status);
+    if (pieces == 0 || covered != cells)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "'%s': its %d pieces hold %lld cells; the whole grid has %lld", path,
+                         pieces, (long long)covered, (long long)cells);
+    return NSPD_OK;
+}
+
+int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
+    memset(out, 0, sizeof *out);
+    /* a .pvtr names its pieces in a short header, no appended data */
+    int open_error = 0;
+    FILE *f = in_file_open(path, &open_error);
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
+    char *header;
+    int status = nspd_alloc(&header, HEADER_MAX + 1, 1);
+    if (status == NSPD_OK) {
+        const size_t got = fread(header, 1, HEADER_MAX, f);
+        header[got] = '\0';
+    }
+    fclose(f);
+    TRY(status);
+    const bool parallel = strstr(header, "<VTKFile type=\"PRectilinearGrid\"") != NULL;
+    status = parallel ? read_parallel(path, header, out) : read_one(path, out);
+    nspd_free(&header);
     return status;
 }
 

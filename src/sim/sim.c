@@ -8,6 +8,7 @@
 #include "core/timer.h"
 #include "sim/sim_output.h"
 
+#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -249,13 +250,45 @@ static bool checkpoint_due(Sim *sim) {
     return due_now;
 }
 
+/* Whether `name` is a VTK file of output `from` or later of `series`:
+ * <series>_NNNNN.vtr, .pvtr, _pPPPP.vtr, ... (not a picture or table). */
+static bool later_vtk(const char *name, const char *series, int from) {
+    const size_t len = strlen(series);
+    if (strncmp(name, series, len) != 0 || name[len] != '_') return false;
+    int index = 0, digits = 0;
+    const char *p = name + len + 1;
+    for (; *p >= '0' && *p <= '9'; p++, digits++) index = index * 10 + (*p - '0');
+    const char *ext = strrchr(p, '.');
+    return digits == 5 && index >= from && ext &&
+           (strcmp(ext, ".vtr") == 0 || strcmp(ext, ".vtu") == 0 || strcmp(ext, ".pvtr") == 0 ||
+            strcmp(ext, ".pvtu") == 0);
+}
+
+/* The VTK files of the outputs the resumed run writes again, which a run
+ * stopped after its checkpoint left: gone first, so that no piece of
+ * another process count is left beside the new files. */
+static int remove_later_vtk(const char *dir, const char *series, int from) {
+    DIR *d = opendir(dir);
+    if (!d) return NSPD_FAIL(NSPD_ERR_IO, "cannot read directory '%s'", dir);
+    struct dirent *e;
+    char path[8192];
+    while ((e = readdir(d)))
+        if (later_vtk(e->d_name, series, from)) {
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            remove(path);
+        }
+    closedir(d);
+    return NSPD_OK;
+}
+
 /* A resumed run continues its files from where the checkpoint left them:
  * history.csv cut back to its length then, the .pvd series listing only
- * the files up to it. */
+ * the files up to it, the VTK files after it removed. */
 static int resume_outputs(Sim *sim) {
     if (!sim->dir) return NSPD_OK;
     TRY(history_resume(&sim->history, sim->dir, sim->history_bytes));
     static const char *const SERIES[2] = {"solid", "flow"};
+    for (int k = 0; k < 2; k++) TRY(remove_later_vtk(sim->dir, SERIES[k], sim->field_index));
     for (int k = 0; k < 2; k++) {
         if (sim->pvd[k].count == 0) continue;
         char path[4200];
@@ -305,6 +338,7 @@ int sim_run(Sim *sim, const SimRunOptions *opt) {
      * on one process), so none waits on a partner that stopped */
     const NspdComm *comm = &sim->cfg.comm;
     sim->dir = opt->dir;
+    sim->piece_dir = opt->piece_dir;
     /* a resumed run's wall time continues the time already spent */
     sim->wall_start = nspd_wall_time() - sim->wall_s;
     sim->checkpoint_wall = nspd_wall_time();

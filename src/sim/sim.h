@@ -25,6 +25,10 @@ typedef struct {
      * processes: the ranks other than the writer, rank 0) */
     const char *dir;
     bool progress; /* progress line on stderr */
+    /* on several processes, every rank: the output directory (made by the
+     * writer), where each writes its piece of the fields that models hand
+     * out in pieces (FieldPiece); NULL otherwise */
+    const char *piece_dir;
 } SimRunOptions;
 
 enum { SIM_CHECKPOINTS_KEPT = 2 };
@@ -53,6 +57,7 @@ typedef struct {
     /* output state */
     Report *report; /* the history row and the summary being assembled */
     const char *dir;
+    const char *piece_dir; /* SimRunOptions.piece_dir */
     HistoryFile history;
     PvdSeries pvd[2]; /* solid, flow */
     int field_index;

@@ -50,9 +50,21 @@ static bool takes_part(const Sim *sim) {
     return sim->dir || comm_distributed(&sim->cfg.comm);
 }
 
+/* One field set's files: this process's piece (every process of a set in
+ * pieces) and, on the writer, the rest. */
+static int write_set(Sim *sim, const FieldSet *set, const FieldSet *overlay,
+                     const FieldOutputOptions *opt, PvdSeries *pvd) {
+    if (sim->piece_dir) TRY(field_set_write_piece(sim->piece_dir, sim->field_index, set, opt));
+    if (!sim->dir) return NSPD_OK;
+    return field_set_write(sim->dir, sim->field_index, sim->time, set, overlay, opt, pvd);
+}
+
+/* Every rank makes every call, a failed write or not: the models' fields
+ * are collective (gathers), so a rank that stopped at its failure would
+ * leave the others waiting. The first failure is returned (and agreed by
+ * the caller). */
 int sim_output_fields(Sim *sim) {
     if (!takes_part(sim)) return NSPD_OK;
-    const bool writes = sim->dir != NULL;
     if (sim->solid) TRY(solid_sync(sim->solid));
     const OutputConfig *out = &sim->cfg.output;
     const FieldOutputOptions opt = {out->vtk, out->png, out->png_max_pixels, sim->cfg.name};
@@ -60,33 +72,31 @@ int sim_output_fields(Sim *sim) {
     const FieldSet *overlay = NULL;
     /* one damage field for the solid's files and the line probes */
     const double *damage = damage_if(sim, true);
+    int status = NSPD_OK;
     if (sim->solid) {
         solid_fields(sim->solid, damage, &solid_set);
-        if (writes)
-            TRY(field_set_write(sim->dir, sim->field_index, sim->time, &solid_set, NULL, &opt,
-                                &sim->pvd[0]));
+        status = write_set(sim, &solid_set, NULL, &opt, &sim->pvd[0]);
         overlay = &solid_set;
     }
     if (sim->flow) {
         flow_fields(sim->flow, &flow_set);
         /* the solid drawn over the flow where the two are coupled */
-        if (writes)
-            TRY(field_set_write(sim->dir, sim->field_index, sim->time, &flow_set,
-                                sim->coupling ? overlay : NULL, &opt, &sim->pvd[1]));
+        if (status == NSPD_OK)
+            status = write_set(sim, &flow_set, sim->coupling ? overlay : NULL, &opt, &sim->pvd[1]);
     }
     if (sim->coupling) {
-        TRY(coupling_fields(sim->coupling, sim->solid, sim->flow, &coupling_set));
-        if (writes)
-            TRY(field_set_write(sim->dir, sim->field_index, sim->time, &coupling_set, NULL, &opt,
-                                NULL));
+        const int got = coupling_fields(sim->coupling, sim->solid, sim->flow, &coupling_set);
+        if (status == NSPD_OK) status = got;
+        if (status == NSPD_OK) status = write_set(sim, &coupling_set, NULL, &opt, NULL);
     }
     for (int k = 0; k < sim->cfg.output.probe_count; k++) {
         const TableRef *t = probe_line_table(
             &sim->probes[k], sim->solid ? solid_points_const(sim->solid) : NULL, damage, sim->flow);
-        if (t && writes) TRY(table_write(sim->dir, sim->field_index, sim->time, t));
+        if (t && sim->dir && status == NSPD_OK)
+            status = table_write(sim->dir, sim->field_index, sim->time, t);
     }
     sim->field_index++;
-    return NSPD_OK;
+    return status;
 }
 
 int sim_output_summary(Sim *sim, int run_status, const char *reason) {

@@ -79,12 +79,18 @@ int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab
     return gather_blocks(s, slab, out);
 }
 
-int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
+void gks_solver_kinds(const GksSolver *s, double *out) {
     const Grid *g = &s->grid;
-    double *mine = comm_distributed(&s->comm) ? slab : out;
     for (int j = 0; j < g->ny; j++)
-        for (int i = 0; i < g->nx; i++) mine[(int64_t)j * g->nx + i] = s->kind[grid_index(g, i, j)];
-    if (mine == out) return NSPD_OK;
+        for (int i = 0; i < g->nx; i++) out[(int64_t)j * g->nx + i] = s->kind[grid_index(g, i, j)];
+}
+
+int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
+    if (!comm_distributed(&s->comm)) {
+        gks_solver_kinds(s, out);
+        return NSPD_OK;
+    }
+    gks_solver_kinds(s, slab);
     return gather_blocks(s, slab, out);
 }
 

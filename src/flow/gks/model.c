@@ -18,7 +18,8 @@ void gks_case_config_free(GksCaseConfig *c) {
     c->has_field = false;
 }
 
-enum { GKS_SCRATCH = 7 }; /* density, u, v, p, T, Mach, schlieren */
+enum { GKS_SCRATCH = 7 };      /* density, u, v, p, T, Mach, schlieren */
+enum { GKS_PIECE_FIELDS = 7 }; /* density, u, v, p, T, Mach, the kinds */
 
 /* The model: the solver, its case and the output scratch (allocated once).
  * On several processes the model shows the whole grid: its cells are
@@ -36,6 +37,10 @@ typedef struct {
     uint8_t *blank; /* 1: not a fluid cell */
     uint8_t *valid; /* 1: a fluid cell (sampling) */
     double *slab;   /* this process's interior cells (several processes) */
+    /* several processes: this block's fields for its piece of the .pvtr
+     * (density, u, v, p, T, Mach, the kinds) and every block's cells */
+    double *piece[GKS_PIECE_FIELDS];
+    int (*piece_cells)[4];
     /* several processes, a volumetric coupling: the whole grid's kinds
      * (padded, as grid_index) and their interior rows as gathered */
     uint8_t *whole_kind, *kind_rows;
@@ -103,10 +108,30 @@ static void gks_destroy(void *impl) {
     nspd_free(&g->blank);
     nspd_free(&g->valid);
     nspd_free(&g->slab);
+    for (int k = 0; k < GKS_PIECE_FIELDS; k++) nspd_free(&g->piece[k]);
+    nspd_free(&g->piece_cells);
     nspd_free(&g->whole_kind);
     nspd_free(&g->kind_rows);
     nspd_free(&g->kind_last);
     nspd_free(&g);
+}
+
+/* The piece's scratch and every block's cells (several processes). */
+static int alloc_piece(GksFlow *g) {
+    const Grid *slab = gks_solver_grid(g->solver);
+    const int size = gks_solver_comm(g->solver)->size;
+    for (int k = 0; k < GKS_PIECE_FIELDS; k++)
+        TRY(nspd_alloc(&g->piece[k], (size_t)slab->nx * (size_t)slab->ny, sizeof(double)));
+    TRY(nspd_alloc(&g->piece_cells, (size_t)size, sizeof *g->piece_cells));
+    for (int r = 0; r < size; r++) {
+        int first[2], count[2];
+        gks_solver_block(g->solver, r, first, count);
+        g->piece_cells[r][0] = first[0];
+        g->piece_cells[r][1] = first[0] + count[0];
+        g->piece_cells[r][2] = first[1];
+        g->piece_cells[r][3] = first[1] + count[1];
+    }
+    return NSPD_OK;
 }
 
 static int gks_create(void **impl, FlowConfig *mc) {
@@ -138,11 +163,15 @@ static int gks_create(void **impl, FlowConfig *mc) {
         const size_t n = (size_t)grid->nx * (size_t)grid->ny;
         status = nspd_alloc(&g->slab, (size_t)slab->nx * (size_t)slab->ny, sizeof(double));
         const bool writer = gks_solver_comm(g->solver)->rank == 0;
+        const bool pieces = comm_distributed(gks_solver_comm(g->solver));
+        /* in pieces the writer's whole grid holds what the pictures draw */
         for (int k = 0; k < GKS_SCRATCH && status == NSPD_OK && writer; k++)
-            status = nspd_alloc(&g->cells[k], n, sizeof(double));
+            if (!pieces || k == 0 || k >= 5) status = nspd_alloc(&g->cells[k], n, sizeof(double));
         if (status == NSPD_OK && writer) status = nspd_alloc(&g->kind, n, sizeof(double));
         if (status == NSPD_OK && writer) status = nspd_alloc(&g->blank, n, 1);
         if (status == NSPD_OK && writer) status = nspd_alloc(&g->valid, n, 1);
+        if (status == NSPD_OK && comm_distributed(gks_solver_comm(g->solver)))
+            status = alloc_piece(g);
     }
     if (status != NSPD_OK) {
         gks_destroy(g);
@@ -617,17 +646,65 @@ static double mach_scale(const GksFlow *gf, int64_t ncell) {
     return ceil(v / unit * (1.0 - 1e-12)) * unit;
 }
 
+/* This block's piece of the .pvtr (several processes): its own cells'
+ * fields, computed where they live; nothing is gathered for it. */
+static void piece_fields(GksFlow *gf, FieldPiece *pc) {
+    GksSolver *solver = gf->solver;
+    const Grid *g = gks_solver_grid(solver);
+    static const FlowField order[6] = {FLOW_DENSITY,  FLOW_VELOCITY_X,  FLOW_VELOCITY_Y,
+                                       FLOW_PRESSURE, FLOW_TEMPERATURE, FLOW_MACH};
+    for (int k = 0; k < 6; k++) gks_solver_primitive(solver, order[k], gf->piece[k]);
+    gks_solver_kinds(solver, gf->piece[6]);
+    const NspdComm *comm = gks_solver_comm(solver);
+    pc->index = comm->rank;
+    pc->count = comm->size;
+    pc->cells = (const int(*)[4])gf->piece_cells;
+    pc->nx = g->nx;
+    pc->ny = g->ny;
+    pc->face[0] = g->ax[0].face;
+    pc->face[1] = g->ax[1].face;
+    double *const *c = gf->piece;
+    const FieldRef fields[] = {
+        {"density", 1, {c[0], NULL, NULL}},  {"velocity", 3, {c[1], c[2], NULL}},
+        {"pressure", 1, {c[3], NULL, NULL}}, {"temperature", 1, {c[4], NULL, NULL}},
+        {"mach", 1, {c[5], NULL, NULL}},     {"cell_kind", 1, {c[6], NULL, NULL}},
+    };
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
+        pc->field[pc->field_count++] = fields[k];
+}
+
+/* What the pictures draw, of the whole grid on rank 0 (several
+ * processes): the density (schlieren), the Mach number and the kinds. */
+static void picture_fields(GksFlow *gf) {
+    const Grid *g = gks_solver_whole_grid(gf->solver);
+    /* a failed gather is MPI's (its default handler stops the job) */
+    (void)gks_solver_primitive_whole(gf->solver, FLOW_DENSITY, gf->slab, gf->cells[0]);
+    (void)gks_solver_primitive_whole(gf->solver, FLOW_MACH, gf->slab, gf->cells[5]);
+    (void)gks_solver_kinds_whole(gf->solver, gf->slab, gf->kind);
+    if (!gf->blank) return; /* not the writer */
+    for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++)
+        gf->blank[c] = gf->kind[c] != FLOW_CELL_FLUID;
+}
+
+/* One process: the whole grid's fields, pictures and .vtr. Several: each
+ * block's piece, and the pictures on rank 0 from what they draw only. */
 static void gks_fields(void *impl, FieldSet *out) {
     GksFlow *gf = impl;
     const Grid *g = gks_solver_whole_grid(gf->solver);
     const int64_t ncell = (int64_t)g->nx * g->ny;
-    primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
     memset(out, 0, sizeof *out);
-    if (!gf->blank) return; /* not the writer: its part is gathered, nothing to write */
-    if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
-    schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
     out->series = "flow";
     out->mesh = MESH_GRID;
+    const bool pieces = comm_distributed(gks_solver_comm(gf->solver));
+    if (pieces) {
+        piece_fields(gf, &out->piece);
+        picture_fields(gf);
+    } else {
+        primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
+    }
+    if (!gf->blank) return; /* not the writer: its piece only */
+    if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
+    schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
     out->nx = g->nx;
     out->ny = g->ny;
     out->face[0] = g->ax[0].face;
@@ -639,7 +716,7 @@ static void gks_fields(void *impl, FieldSet *out) {
         {"pressure", 1, {c[3], NULL, NULL}}, {"temperature", 1, {c[4], NULL, NULL}},
         {"mach", 1, {c[5], NULL, NULL}},     {"cell_kind", 1, {gf->kind, NULL, NULL}},
     };
-    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0] && !pieces; k++)
         out->field[out->field_count++] = fields[k];
     out->picture[out->picture_count++] = (PictureRef){.file = "mach",
                                                       .label = "Mach number",

@@ -254,6 +254,9 @@ void gks_solver_primitive(const GksSolver *s, FlowField field, double *out);
  * this rank) is scratch. On one process gks_solver_primitive. */
 int gks_solver_primitive_whole(const GksSolver *s, FlowField field, double *slab, double *out);
 
+/* The cell kinds (FLOW_CELL_*) of this process's interior cells as
+ * numbers, into out[nx * ny] like gks_solver_primitive. */
+void gks_solver_kinds(const GksSolver *s, double *out);
 /* The cell kinds (FLOW_CELL_*) of the whole grid as numbers, gathered to
  * rank 0 like gks_solver_primitive_whole. */
 int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out);

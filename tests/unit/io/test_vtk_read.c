@@ -3,6 +3,10 @@
  *  - round trip: every value and face coordinate comes back bit for bit;
  *  - bad files (missing, empty, truncated, foreign) fail with NSPD_ERR_IO /
  *    NSPD_ERR_INPUT and a message naming the file;
+ *  - pieces: the grid written by several processes (a .pvtr naming one
+ *    .vtr a block, io/vtk.h) reads back as the whole one, bit for bit; a
+ *    cell held twice, a cell held by none, a missing piece and pieces that
+ *    disagree on a face are refused;
  *  - sampling: exact at the stored centres, exact for a field linear in x
  *    and y between them on a stretched grid (bilinear interpolation), the
  *    nearest centre outside them, and cells inside a body left out. */
@@ -151,6 +155,85 @@ static void test_bad_files(void **state) {
     expect_failure(path, NSPD_ERR_INPUT, "truncated");
 }
 
+/* The field of write_field cut into three pieces, {i0, i1, j0, j1}: two
+ * blocks side by side below, one across the top; their .pvtr at `pvtr`
+ * naming `sources` (NULL: the pieces' own names). */
+static const int PIECES[3][4] = {{0, 3, 0, 2}, {3, NX, 0, 2}, {0, NX, 2, NY}};
+
+static void write_pieces(const char *dir, const char *pvtr, const int (*cells)[4], int count,
+                         const char *const *sources) {
+    double xf[NX + 1], yf[NY + 1];
+    faces(xf, yf);
+    static double rho[NX * NY], vel[NX * NY];
+    for (int p = 0; p < 3; p++) {
+        const int *c = PIECES[p];
+        int k = 0;
+        for (int j = c[2]; j < c[3]; j++)
+            for (int i = c[0]; i < c[1]; i++, k++) {
+                rho[k] = linear(i, j, 3.0);
+                vel[k] = linear(i, j, -1.0);
+            }
+        VtkField fields[] = {{"density", 1, {rho, NULL, NULL}}, {"velocity", 3, {NULL, vel, NULL}}};
+        char path[1300];
+        snprintf(path, sizeof path, "%s/piece_%d.vtr", dir, p);
+        assert_ok(vtk_write_rectilinear_piece(path, c, xf + c[0], yf + c[2], fields, 2));
+    }
+    static const char *const own[3] = {"piece_0.vtr", "piece_1.vtr", "piece_2.vtr"};
+    VtkField declared[] = {{"density", 1, {NULL}}, {"velocity", 3, {NULL}}};
+    char path[1300];
+    snprintf(path, sizeof path, "%s/%s", dir, pvtr);
+    assert_ok(vtk_write_pvtr(path, NX, NY, count, cells, sources ? sources : own, declared, 2));
+}
+
+static void test_pieces(void **state) {
+    (void)state;
+    const char *dir = test_scratch_dir("vtk_read_pieces");
+    write_pieces(dir, "whole.pvtr", PIECES, 3, NULL);
+    char path[1300];
+    snprintf(path, sizeof path, "%s/whole.pvtr", dir);
+    VtkRectilinear g;
+    assert_ok(vtk_read_rectilinear(path, &g));
+    assert_int_equal(g.n[0], NX);
+    assert_int_equal(g.n[1], NY);
+    assert_int_equal(g.n[2], 1);
+    double xf[NX + 1], yf[NY + 1];
+    faces(xf, yf);
+    assert_memory_equal(g.face[0], xf, sizeof xf);
+    assert_memory_equal(g.face[1], yf, sizeof yf);
+    const VtkCellArray *rho = vtk_find_cell_array(&g, "density", 1),
+                       *vel = vtk_find_cell_array(&g, "velocity", 3);
+    assert_non_null(rho);
+    assert_non_null(vel);
+    for (int j = 0; j < NY; j++)
+        for (int i = 0; i < NX; i++) {
+            const int k = j * NX + i;
+            assert_true(rho->data[k] == linear(i, j, 3.0));
+            assert_true(vel->data[3 * k] == 0.0 && vel->data[3 * k + 1] == linear(i, j, -1.0));
+        }
+    vtk_rectilinear_free(&g);
+
+    /* the first piece named twice, the second not at all */
+    static const int twice[3][4] = {{0, 3, 0, 2}, {0, 3, 0, 2}, {0, NX, 2, NY}};
+    static const char *const twice_src[3] = {"piece_0.vtr", "piece_0.vtr", "piece_2.vtr"};
+    write_pieces(dir, "twice.pvtr", twice, 3, twice_src);
+    snprintf(path, sizeof path, "%s/twice.pvtr", dir);
+    expect_failure(path, NSPD_ERR_INPUT, "two pieces hold cell (0, 0, 0)");
+    /* the top piece left out */
+    write_pieces(dir, "gap.pvtr", PIECES, 2, NULL);
+    snprintf(path, sizeof path, "%s/gap.pvtr", dir);
+    expect_failure(path, NSPD_ERR_INPUT, "its 2 pieces hold 14 cells; the whole grid has 35");
+    /* a piece's file missing */
+    static const char *const missing[3] = {"piece_0.vtr", "nowhere.vtr", "piece_2.vtr"};
+    write_pieces(dir, "missing.pvtr", PIECES, 3, missing);
+    snprintf(path, sizeof path, "%s/missing.pvtr", dir);
+    expect_failure(path, NSPD_ERR_IO, "nowhere.vtr");
+    /* the second piece's file placed where its faces are not */
+    static const int shifted[3][4] = {{0, 3, 0, 2}, {0, 4, 2, 4}, {0, NX, 2, NY}};
+    write_pieces(dir, "shifted.pvtr", shifted, 3, NULL);
+    snprintf(path, sizeof path, "%s/shifted.pvtr", dir);
+    expect_failure(path, NSPD_ERR_INPUT, "two pieces disagree on the x face");
+}
+
 static void load(FlowFieldSource *s) {
     char path[1200];
     snprintf(path, sizeof path, "%s/field.vtr", test_scratch_dir("vtk_read_sample"));
@@ -211,9 +294,8 @@ static void test_sampling(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_round_trip),
-        cmocka_unit_test(test_point_data_skipped),
-        cmocka_unit_test(test_bad_files),
+        cmocka_unit_test(test_round_trip), cmocka_unit_test(test_point_data_skipped),
+        cmocka_unit_test(test_bad_files),  cmocka_unit_test(test_pieces),
         cmocka_unit_test(test_sampling),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

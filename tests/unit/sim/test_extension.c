@@ -401,7 +401,7 @@ static void test_registered_models_run_unchanged(void **state) {
     assert_ok(sim_create(&sim, &c));
     assert_close(sim.solid_substep, 0.02, 0.0); /* the coupling's limit */
     const char *dir = test_scratch_dir("extension");
-    SimRunOptions opt = {dir, false};
+    SimRunOptions opt = {dir, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     assert_int_equal(sim.step, 10);
     assert_int_equal(solid_last_substeps(sim.solid), 5); /* 0.1 s in steps of 0.02 s */
@@ -455,7 +455,7 @@ static void test_non_finite_load_stops_the_run(void **state) {
     Sim sim;
     assert_ok(sim_create(&sim, &c));
     const char *dir = test_scratch_dir("extension_nan");
-    SimRunOptions opt = {dir, false};
+    SimRunOptions opt = {dir, false, NULL};
     assert_int_equal(sim_run(&sim, &opt), NSPD_ERR_NUMERIC);
     assert_int_equal(sim.step, 2); /* the third step failed */
     assert_non_null(strstr(nspd_error_message(),

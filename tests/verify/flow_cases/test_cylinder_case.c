@@ -65,7 +65,7 @@ static void test_cylinder_case(void **state) {
     Sim sim;
     fixture_sim("cylinder_ma2_re300.yaml", D16, sizeof D16 / sizeof D16[0], &sim);
     const char *dir = test_scratch_dir("cylinder_case");
-    SimRunOptions opt = {dir, false};
+    SimRunOptions opt = {dir, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     sim_destroy(&sim);
     double cd = summary_number(dir, "cd"), cp = summary_number(dir, "cp_stagnation");
@@ -95,7 +95,7 @@ static void run_d16(const char *const *extra, int extra_count, const char *dir) 
     for (int k = 0; k < extra_count; k++) set[n++] = extra[k];
     Sim sim;
     fixture_sim("cylinder_ma2_re300.yaml", set, n, &sim);
-    SimRunOptions opt = {dir, false};
+    SimRunOptions opt = {dir, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     sim_destroy(&sim);
 }

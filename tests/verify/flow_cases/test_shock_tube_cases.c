@@ -16,7 +16,7 @@
 static double l1_error(const char *case_file, RiemannState left, RiemannState right, double *t) {
     Sim sim;
     fixture_sim(case_file, NULL, 0, &sim);
-    SimRunOptions opt = {NULL, false};
+    SimRunOptions opt = {NULL, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     *t = sim.time;
     const Grid *g = gks_solver_grid(fixture_flow(&sim));

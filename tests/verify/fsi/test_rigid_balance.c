@@ -44,7 +44,7 @@ static const char *const SOLID[] = {
 
 /* Time-averaged C_D of the run (t >= 4). */
 static double average_cd(Sim *sim) {
-    SimRunOptions opt = {NULL, false};
+    SimRunOptions opt = {NULL, false, NULL};
     assert_ok(sim_run(sim, &opt));
     assert_true(fixture_coupling_summary(sim, "coefficient_samples") > 10);
     return fixture_coupling_summary(sim, "cd");

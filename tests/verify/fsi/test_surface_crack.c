@@ -45,7 +45,7 @@ static void test_crack_stays_closed(void **state) {
     (void)state;
     Sim sim;
     fixture_sim_text(CASE, &sim);
-    SimRunOptions opt = {NULL, false};
+    SimRunOptions opt = {NULL, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     const BondBody *b = fixture_body(&sim);
     /* the mouth's opening: the gap between the two points nearest to the

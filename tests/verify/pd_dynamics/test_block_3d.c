@@ -19,7 +19,7 @@ static void test_block_3d_conserves_momentum(void **state) {
     double p0[3], p1[3];
     pd_momentum(fixture_body(&sim), p0);
     int64_t broken0 = pd_broken_bonds(fixture_body(&sim));
-    SimRunOptions opt = {NULL, false};
+    SimRunOptions opt = {NULL, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     pd_momentum(fixture_body(&sim), p1);
     double scale = fabs(p0[0]);

@@ -34,7 +34,7 @@ enum { NCOARSE = sizeof COARSE / sizeof COARSE[0] };
 static void run_coarse(Sim *sim, int threads, const char *dir) {
     omp_set_num_threads(threads);
     fixture_sim("plate_crack.yaml", COARSE, NCOARSE, sim);
-    SimRunOptions opt = {dir, false};
+    SimRunOptions opt = {dir, false, NULL};
     assert_ok(sim_run(sim, &opt));
 }
 

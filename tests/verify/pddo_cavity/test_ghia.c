@@ -65,7 +65,7 @@ static void run(const char *walls, double u_bound, double v_bound, int64_t steps
                                "output.history_interval=0.01"};
     Sim sim;
     fixture_sim("cavity_re200.yaml", set, sizeof set / sizeof set[0], &sim);
-    SimRunOptions opt = {NULL, false};
+    SimRunOptions opt = {NULL, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     assert_true(flow_finished(sim.flow)); /* steady before time.end */
     FieldSet fs;

@@ -200,7 +200,7 @@ static void test_case_outputs(void **state) {
     Sim sim;
     fixture_sim(CASE, sets, sizeof sets / sizeof *sets, &sim);
     const char *dir = test_scratch_dir("pddo_bodies");
-    SimRunOptions opt = {dir, false};
+    SimRunOptions opt = {dir, false, NULL};
     assert_ok(sim_run(&sim, &opt));
     double gap[5];
     flow_probe_state(sim.flow, sim.probes[0].point, gap);
