@@ -130,40 +130,51 @@ static int read_block(FILE *f, const char *path, long base, uint64_t room, const
     return NSPD_OK;
 }
 
-static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
+/* The XML header of one of nspd's files with appended raw data, as text
+ * (*header, freed by the caller), the data's start in the file (*base)
+ * and the bytes from there to the end (*room). `what` names the kind of
+ * file expected, for the message. */
+static int read_header(FILE *f, const char *path, const char *what, char **header, long *base,
+                       uint64_t *room) {
     long size;
     if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0)
         return NSPD_FAIL(NSPD_ERR_IO, "cannot read '%s' (%s)", path, strerror(errno));
-    char *header;
-    TRY(nspd_alloc(&header, HEADER_MAX + 1, 1));
-    size_t got = fread(header, 1, HEADER_MAX, f);
-    const char *marker = strstr(header, "<AppendedData encoding=\"raw\">");
+    TRY(nspd_alloc(header, HEADER_MAX + 1, 1));
+    size_t got = fread(*header, 1, HEADER_MAX, f);
+    const char *marker = strstr(*header, "<AppendedData encoding=\"raw\">");
     const char *underscore = marker ? strchr(marker, '_') : NULL;
     if (!underscore) {
-        int status = got == 0 ? NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is empty", path)
-                              : NSPD_FAIL(NSPD_ERR_INPUT,
-                                          "'%s': no raw <AppendedData> block in the first %d "
-                                          "bytes; expected a .vtr written by nspd",
-                                          path, HEADER_MAX);
-        nspd_free(&header);
-        return status;
+        nspd_free(header);
+        return got == 0 ? NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is empty", path)
+                        : NSPD_FAIL(NSPD_ERR_INPUT,
+                                    "'%s': no raw <AppendedData> block in the first %d bytes; "
+                                    "expected a %s written by nspd",
+                                    path, HEADER_MAX, what);
     }
-    const long base = (long)(underscore + 1 - header);
-    header[marker - header] = '\0'; /* the binary data after it is not text */
+    *base = (long)(underscore + 1 - *header);
+    (*header)[marker - *header] = '\0'; /* the binary data after it is not text */
+    *room = size > *base ? (uint64_t)(size - *base) : 0;
+    return NSPD_OK;
+}
+
+static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
+    char *header = NULL;
+    long base = 0;
+    uint64_t room = 0;
+    TRY(read_header(f, path, ".vtr", &header, &base, &room));
     Declared decl[VTK_MAX_ARRAYS + 3];
     int decl_count = 0;
     int status = parse_header(path, header, out, decl, &decl_count);
     nspd_free(&header);
     TRY(status);
-    const uint64_t room = size > base ? (uint64_t)(size - base) : 0;
     /* each axis is at most 2^24 cells, so the product of all three could
      * wrap past 2^64 (and read as 0 cells); a grid whose cells need more
      * doubles than the file has bytes for is refused here */
     const uint64_t cells_xy = (uint64_t)out->n[0] * (uint64_t)out->n[1];
     if (cells_xy > room / sizeof(double) / (uint64_t)out->n[2])
         return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "'%s': %d x %d x %d cells; the file (%ld bytes) cannot hold their data",
-                         path, out->n[0], out->n[1], out->n[2], size);
+                         "'%s': %d x %d x %d cells; the file cannot hold their data", path,
+                         out->n[0], out->n[1], out->n[2]);
     const uint64_t cells = cells_xy * (uint64_t)out->n[2];
     for (int k = 0; k < decl_count; k++) {
         const Declared *d = &decl[k];
@@ -341,16 +352,191 @@ int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
     if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
     char *header;
     int status = nspd_alloc(&header, HEADER_MAX + 1, 1);
-    if (status == NSPD_OK) {
-        const size_t got = fread(header, 1, HEADER_MAX, f);
-        header[got] = '\0';
-    }
+    if (status == NSPD_OK) header[fread(header, 1, HEADER_MAX, f)] = '\0';
     fclose(f);
     TRY(status);
     const bool parallel = strstr(header, "<VTKFile type=\"PRectilinearGrid\"") != NULL;
     status = parallel ? read_parallel(path, header, out) : read_one(path, out);
     nspd_free(&header);
     return status;
+}
+
+/* A .vtu's header: its points' count, and its point data and points
+ * arrays into decl (the cells' arrays, vertex cells numbered in the file,
+ * are not read). */
+static int parse_points_header(const char *path, const char *h, VtkPointSet *out, Declared *decl,
+                               int *decl_count) {
+    if (!strstr(h, "<VTKFile type=\"UnstructuredGrid\""))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' is not a VTK point set (.vtu) file", path);
+    if (!strstr(h, "byte_order=\"LittleEndian\"") || !strstr(h, "header_type=\"UInt64\""))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "'%s': expected little-endian data with UInt64 block headers, as nspd "
+                         "writes them",
+                         path);
+    const char *piece = strstr(h, "<Piece");
+    char buf[64];
+    if (!piece || !attribute(piece, "NumberOfPoints", buf, sizeof buf))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no <Piece NumberOfPoints> in the header", path);
+    const long long n = atoll(buf);
+    if (n < 0) return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': %lld points", path, n);
+    out->n = n;
+    const char *data = strstr(h, "<PointData>"), *data_end = strstr(h, "</PointData>");
+    const char *points = strstr(h, "<Points>"), *points_end = strstr(h, "</Points>");
+    *decl_count = 0;
+    for (const char *p = strstr(h, "<DataArray"); p; p = strstr(p + 1, "<DataArray")) {
+        const bool in_data = data && data_end && p > data && p < data_end;
+        const bool in_points = points && points_end && p > points && p < points_end;
+        if (!in_data && !in_points) continue;
+        if (*decl_count == VTK_MAX_ARRAYS + 1)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d arrays", path, VTK_MAX_ARRAYS);
+        Declared *d = &decl[(*decl_count)++];
+        char type[32], format[32], comps[16], off[32];
+        if (!attribute(p, "Name", d->name, sizeof d->name) ||
+            !attribute(p, "type", type, sizeof type) ||
+            !attribute(p, "format", format, sizeof format) ||
+            !attribute(p, "offset", off, sizeof off))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a DataArray without Name, type or offset",
+                             path);
+        if (strcmp(type, "Float64") != 0 || strcmp(format, "appended") != 0)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "'%s': array '%s' is %s, %s; expected Float64, appended (as nspd "
+                             "writes it)",
+                             path, d->name, type, format);
+        d->components = attribute(p, "NumberOfComponents", comps, sizeof comps) ? atoi(comps) : 1;
+        if (d->components < 1 || d->components > 3 || (in_points && d->components != 3))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' has %d components", path, d->name,
+                             d->components);
+        d->offset = strtoull(off, NULL, 10);
+        d->is_coordinate = in_points;
+        d->is_point = in_data;
+    }
+    return NSPD_OK;
+}
+
+static int read_points_file(FILE *f, const char *path, VtkPointSet *out) {
+    char *header = NULL;
+    long base = 0;
+    uint64_t room = 0;
+    TRY(read_header(f, path, ".vtu", &header, &base, &room));
+    Declared decl[VTK_MAX_ARRAYS + 1];
+    int decl_count = 0;
+    const int status = parse_points_header(path, header, out, decl, &decl_count);
+    nspd_free(&header);
+    TRY(status);
+    /* three doubles a point at least (its position): more points than the
+     * file could hold are refused before anything is allocated */
+    if ((uint64_t)out->n > room / (3 * sizeof(double)))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': %lld points; the file cannot hold their data", path,
+                         (long long)out->n);
+    for (int k = 0; k < decl_count; k++) {
+        const Declared *d = &decl[k];
+        const uint64_t count = (uint64_t)out->n * (uint64_t)d->components;
+        if (d->is_coordinate) {
+            if (out->points) return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': two <Points> arrays", path);
+            TRY(read_block(f, path, base, room, d, count, &out->points));
+            continue;
+        }
+        if (out->array_count == VTK_MAX_ARRAYS)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d point arrays", path,
+                             VTK_MAX_ARRAYS);
+        VtkCellArray *a = &out->arrays[out->array_count++];
+        memcpy(a->name, d->name, sizeof a->name);
+        a->components = d->components;
+        TRY(read_block(f, path, base, room, d, count, &a->data));
+    }
+    if (!out->points) return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no <Points> array", path);
+    return NSPD_OK;
+}
+
+static int read_points_one(const char *path, VtkPointSet *out) {
+    memset(out, 0, sizeof *out);
+    int open_error = 0;
+    FILE *f = in_file_open(path, &open_error);
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
+    const int status = read_points_file(f, path, out);
+    fclose(f);
+    return status;
+}
+
+/* Appends piece `pc` to the whole set `out` (grown to hold it): its
+ * arrays must be the first piece's. */
+static int append_piece(const char *path, int index, VtkPointSet *pc, VtkPointSet *out) {
+    if (index == 0) {
+        out->array_count = pc->array_count;
+        for (int k = 0; k < pc->array_count; k++) {
+            memcpy(out->arrays[k].name, pc->arrays[k].name, sizeof out->arrays[k].name);
+            out->arrays[k].components = pc->arrays[k].components;
+        }
+    }
+    if (pc->array_count != out->array_count)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': its pieces hold %d and %d point arrays", path,
+                         out->array_count, pc->array_count);
+    const size_t n0 = (size_t)out->n, n1 = n0 + (size_t)pc->n;
+    TRY(nspd_realloc(&out->points, 3 * n0, 3 * n1, sizeof(double)));
+    memcpy(out->points + 3 * n0, pc->points, 3 * (size_t)pc->n * sizeof(double));
+    for (int k = 0; k < pc->array_count; k++) {
+        VtkCellArray *to = &out->arrays[k];
+        const VtkCellArray *from = &pc->arrays[k];
+        if (strcmp(from->name, to->name) != 0 || from->components != to->components)
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': its pieces' array %d is '%s' and '%s'", path, k,
+                             to->name, from->name);
+        const size_t c = (size_t)to->components;
+        TRY(nspd_realloc(&to->data, c * n0, c * n1, sizeof(double)));
+        memcpy(to->data + c * n0, from->data, c * (size_t)pc->n * sizeof(double));
+    }
+    out->n = (int64_t)n1;
+    return NSPD_OK;
+}
+
+/* The whole set of a .pvtu: its pieces' points in piece order. */
+static int read_points_parallel(const char *path, const char *h, VtkPointSet *out) {
+    const char *grid = strstr(h, "<PUnstructuredGrid");
+    if (!grid) return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no <PUnstructuredGrid> element", path);
+    char dir[4096];
+    const char *slash = strrchr(path, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path + 1) : 0, path);
+    int status = NSPD_OK, pieces = 0;
+    for (const char *tag = strstr(grid, "<Piece"); tag && status == NSPD_OK;
+         tag = strstr(tag + 1, "<Piece"), pieces++) {
+        char source[1024], piece_path[5200];
+        if (!attribute(tag, "Source", source, sizeof source))
+            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a <Piece> without Source", path);
+        snprintf(piece_path, sizeof piece_path, "%s%s", source[0] == '/' ? "" : dir, source);
+        VtkPointSet pc;
+        status = read_points_one(piece_path, &pc);
+        if (status != NSPD_OK) {
+            char why[1024]; /* NSPD_FAIL replaces the message it is given */
+            snprintf(why, sizeof why, "%s", nspd_error_message());
+            status = NSPD_FAIL(status, "'%s': piece %d: %s", path, pieces, why);
+        }
+        if (status == NSPD_OK) status = append_piece(path, pieces, &pc, out);
+        vtk_point_set_free(&pc);
+    }
+    TRY(status);
+    if (pieces == 0) return NSPD_FAIL(NSPD_ERR_INPUT, "'%s' names no pieces", path);
+    return NSPD_OK;
+}
+
+int vtk_read_points(const char *path, VtkPointSet *out) {
+    memset(out, 0, sizeof *out);
+    int open_error = 0;
+    FILE *f = in_file_open(path, &open_error);
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
+    char *header;
+    int status = nspd_alloc(&header, HEADER_MAX + 1, 1);
+    if (status == NSPD_OK) header[fread(header, 1, HEADER_MAX, f)] = '\0';
+    fclose(f);
+    TRY(status);
+    const bool parallel = strstr(header, "<VTKFile type=\"PUnstructuredGrid\"") != NULL;
+    status = parallel ? read_points_parallel(path, header, out) : read_points_one(path, out);
+    nspd_free(&header);
+    return status;
+}
+
+void vtk_point_set_free(VtkPointSet *set) {
+    nspd_free(&set->points);
+    for (int k = 0; k < set->array_count; k++) nspd_free(&set->arrays[k].data);
+    memset(set, 0, sizeof *set);
 }
 
 const VtkCellArray *vtk_find_cell_array(const VtkRectilinear *grid, const char *name,

@@ -1,4 +1,5 @@
-/* Reads back the rectilinear-grid files nspd writes (io/vtk.h): the XML
+/* Reads back the rectilinear-grid files nspd writes (io/vtk.h), whole or
+ * in pieces (.pvtr), and its point sets (.vtu, .pvtu): the XML
  * header, then the raw appended block of Float64 arrays, each behind a
  * UInt64 byte count. Only that form is accepted (what vtk_write_rectilinear
  * produces: little-endian, header_type UInt64, encoding raw, Float64 cell
@@ -6,6 +7,8 @@
  * what was found. Used to start a flow from an earlier run's field. */
 #ifndef NSPD_IO_VTK_READ_H
 #define NSPD_IO_VTK_READ_H
+
+#include <stdint.h>
 
 enum { VTK_MAX_ARRAYS = 16, VTK_MAX_NAME = 64 };
 
@@ -32,5 +35,20 @@ const VtkCellArray *vtk_find_cell_array(const VtkRectilinear *grid, const char *
                                         int components);
 
 void vtk_rectilinear_free(VtkRectilinear *grid);
+
+/* The point sets nspd writes (.vtu: a solid's material points), or the
+ * .pvtu of the pieces several processes wrote, read back whole: the
+ * pieces' points in piece order (for a divided solid, the whole body's
+ * order). The vertex cells are not read (they number the points of their
+ * own file). */
+typedef struct {
+    int64_t n;
+    double *points; /* 3 n coordinates, components interleaved */
+    int array_count;
+    VtkCellArray arrays[VTK_MAX_ARRAYS]; /* the point data: n * components values */
+} VtkPointSet;
+
+int vtk_read_points(const char *path, VtkPointSet *out);
+void vtk_point_set_free(VtkPointSet *set);
 
 #endif

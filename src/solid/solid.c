@@ -407,6 +407,24 @@ void solid_brief(const Solid *s, char *buf, size_t size) {
     s->ops->brief(s->impl, buf, size);
 }
 
+/* A divided solid's piece of the .pvtu: this rank's run of the whole
+ * view's fields, which every rank holds (a distributed model's own fields
+ * are whole views too), so each writes its own points, in the whole
+ * body's order. */
+static void piece_of(const Solid *s, FieldSet *out) {
+    FieldPiece *pc = &out->piece;
+    const int64_t lo = s->run_first[s->comm.rank];
+    pc->index = s->comm.rank;
+    pc->count = s->comm.size;
+    pc->n = s->run_first[s->comm.rank + 1] - lo;
+    for (int d = 0; d < 3; d++) pc->position[d] = out->position[d] ? out->position[d] + lo : NULL;
+    for (int k = 0; k < out->field_count; k++) {
+        FieldRef f = out->field[k];
+        for (int c = 0; c < 3; c++) f.data[c] = f.data[c] ? f.data[c] + lo : NULL;
+        pc->field[pc->field_count++] = f;
+    }
+}
+
 void solid_fields(Solid *s, const double *damage, FieldSet *out) {
     const PdPoints *p = view(s);
     memset(out, 0, sizeof *out);
@@ -425,6 +443,7 @@ void solid_fields(Solid *s, const double *damage, FieldSet *out) {
     out->field[out->field_count++] = (FieldRef){"damage", 1, {damage, NULL, NULL}};
     out->field[out->field_count++] = (FieldRef){"volume", 1, {p->volume, NULL, NULL}};
     if (s->ops->fields) s->ops->fields(s->impl, out);
+    if (comm_distributed(&s->comm)) piece_of(s, out);
     out->picture[out->picture_count++] = (PictureRef){.file = "damage",
                                                       .label = "damage",
                                                       .units = "-",

@@ -22,10 +22,11 @@ golden_overrides() {
 # but for the keys that measure the machine and the process layout), and
 # $2 has no other files than checkpoints and its log; $4 = paths: the two
 # runs' cases name different files (case.yaml left out). A check named $3.
-# Where $2 holds a grid in pieces (X.pvtr and its X_pNNNN.vtr, written by
-# several processes) for $1's X.vtr, the two are held array by array by
-# $vtk_same (tests/mpi/vtk_same.c; set by tests/mpi/run.sh), and the .pvd
-# series must name the .pvtr where $1's names the .vtr.
+# Where $2 holds a grid or a point set in pieces (X.pvtr and its
+# X_pNNNN.vtr, or X.pvtu and its .vtu, written by several processes) for
+# $1's X.vtr or X.vtu, the two are held array by array by $vtk_same
+# (tests/mpi/vtk_same.c; set by tests/mpi/run.sh), and the .pvd series
+# must name the parallel file where $1's names the whole one.
 same_results() {
     a=$1 b=$2 what=$3 skip=${4:-}
     bad=""
@@ -38,11 +39,10 @@ same_results() {
                     "$d/summary.json" >"$d.summary"
             done
             cmp -s "$a.summary" "$b.summary" || bad="$bad $f"
-        elif [ "${f%.vtr}.vtr" = "$f" ] && [ ! -e "$b/$f" ] && [ -e "$b/${f%.vtr}.pvtr" ] &&
-            [ -n "${vtk_same:-}" ]; then
-            "$vtk_same" "$a/$f" "$b/${f%.vtr}.pvtr" >/dev/null || bad="$bad $f"
-        elif [ "${f%.pvd}.pvd" = "$f" ] && grep -q '\.pvtr"' "$b/$f" 2>/dev/null; then
-            sed 's/\.pvtr"/.vtr"/' "$b/$f" | cmp -s "$a/$f" - || bad="$bad $f"
+        elif [ ! -e "$b/$f" ] && [ -e "$b/${f%.vt?}.pvt${f##*.vt}" ] && [ -n "${vtk_same:-}" ]; then
+            "$vtk_same" "$a/$f" "$b/${f%.vt?}.pvt${f##*.vt}" >/dev/null || bad="$bad $f"
+        elif [ "${f%.pvd}.pvd" = "$f" ] && grep -q '\.pvt[ru]"' "$b/$f" 2>/dev/null; then
+            sed 's/\.pvt\([ru]\)"/.vt\1"/' "$b/$f" | cmp -s "$a/$f" - || bad="$bad $f"
         else
             cmp -s "$a/$f" "$b/$f" || bad="$bad $f"
         fi
@@ -50,8 +50,11 @@ same_results() {
     extra=$(ls "$b" | grep -v -e '^checkpoint_' -e '^log.txt$' | while read -r f; do
         # a piece its .pvtr names; a .pvtr for a .vtr, alone
         case "$f" in
-        *_p[0-9][0-9][0-9][0-9].vtr) grep -q "Source=\"$f\"" "$b/${f%_p*}.pvtr" 2>/dev/null && continue ;;
-        *.pvtr) [ -e "$a/${f%.pvtr}.vtr" ] && [ ! -e "$b/${f%.pvtr}.vtr" ] && continue ;;
+        *_p[0-9][0-9][0-9][0-9].vt[ru])
+            grep -q "Source=\"$f\"" "$b/${f%_p*}.pvt${f##*.vt}" 2>/dev/null && continue ;;
+        *.pvt[ru])
+            whole=${f%.pvt?}.vt${f##*.pvt}
+            [ -e "$a/$whole" ] && [ ! -e "$b/$whole" ] && continue ;;
         esac
         [ -e "$a/$f" ] || echo "$f"
     done)

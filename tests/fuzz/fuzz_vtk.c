@@ -1,10 +1,14 @@
-/* fuzz_vtk: the reader of nspd's .vtr files, as flow.initial.from uses it.
+/* fuzz_vtk: the readers of nspd's VTK files: the .vtr (or the .pvtr of
+ * its pieces) as flow.initial.from uses it, and the .vtu point sets (or
+ * their .pvtu).
  *
  * The input is written to SCRATCH/input.vtr and read with
  * vtk_read_rectilinear; when it is accepted, the arrays a flow starts from
  * are looked up (vtk_find_cell_array) and every value of them and of the
  * face coordinates is read, so an array shorter than its grid is an
- * AddressSanitizer report. Then the same file goes through the case
+ * AddressSanitizer report. The same bytes are read as a point set
+ * (vtk_read_points), every point and value of it touched. Then the same
+ * file goes through the case
  * reader's path (a small flow case with `initial: {from: input.vtr}`),
  * which checks the arrays and builds the flow's field source from them.
  * Everything is freed, so a leak is a finding.
@@ -94,6 +98,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (verbose)
         fprintf(stderr, "fuzz_vtk: %s\n", status == NSPD_OK ? "read" : nspd_error_message());
     vtk_rectilinear_free(&grid);
+
+    VtkPointSet set;
+    status = vtk_read_points(vtr_path, &set);
+    if (status == NSPD_OK) {
+        volatile double sink = touch(set.points, 3 * (size_t)set.n); /* keeps the reads */
+        for (int k = 0; k < set.array_count; k++)
+            sink += touch(set.arrays[k].data, (size_t)set.n * (size_t)set.arrays[k].components);
+        (void)sink;
+    }
+    if (status != NSPD_OK && ((status != NSPD_ERR_INPUT && status != NSPD_ERR_IO) ||
+                              !strstr(nspd_error_message(), vtr_path)))
+        broken("the .vtu reader", status);
+    vtk_point_set_free(&set);
 
     CfgDoc doc;
     SimConfig cfg;

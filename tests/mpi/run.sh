@@ -300,6 +300,25 @@ else
     fail "a run on 3 ranks from the field of one process: exit status $?"
 fi
 
+# The pieces open in VTK's own parallel readers (ParaView's): the shock
+# tube's .pvtr series of 2 ranks, the plate's .pvtu series of 3, every
+# file whole (python3-vtk9, installed by scripts/deps.sh).
+if /usr/bin/python3 -c "import vtk" 2>/dev/null; then
+    cells=$(sed -n 's/.*"cells": \([0-9]*\).*/\1/p' "$work/sod.2/summary.json")
+    points=$(sed -n 's/.*"points": \([0-9]*\).*/\1/p' "$work/plate.3/summary.json")
+    if /usr/bin/python3 "$src/tests/cli/tools/read_vtk.py" "$work/sod.2/flow.pvd" "$cells" \
+        density velocity:3 pressure temperature mach cell_kind >"$work/out" 2>&1 &&
+        grep -q pvtr "$work/sod.2/flow.pvd" &&
+        /usr/bin/python3 "$src/tests/cli/tools/read_vtk.py" "$work/plate.3/solid.pvd" "$points" \
+            displacement:3 velocity:3 damage volume >>"$work/out" 2>&1 &&
+        grep -q pvtu "$work/plate.3/solid.pvd"; then
+        ok
+    else
+        fail "VTK's parallel readers on the pieces:"
+        cat "$work/out"
+    fi
+fi
+
 # Refusals: exit status 2, the message once, nothing written.
 refused() {
     what=$1 pattern=$2 n=$3

@@ -2,7 +2,9 @@
 that each has the expected arrays, a consistent size and finite values.
 
 usage: read_vtk.py SERIES.pvd EXPECTED_COUNT ARRAY[:COMPONENTS] ...
-EXPECTED_COUNT is the number of points (.vtu) or cells (.vtr) per file."""
+EXPECTED_COUNT is the number of points (.vtu) or cells (.vtr) per file.
+The parallel files of a run on several processes (.pvtu, .pvtr) are read
+whole through VTK's parallel readers, as ParaView reads them."""
 import math
 import os
 import sys
@@ -21,10 +23,15 @@ def main():
     assert times == sorted(times), "time steps out of order"
     for d in datasets:
         path = os.path.join(base, d.get("file"))
-        if path.endswith(".vtu"):
-            reader = vtk.vtkXMLUnstructuredGridReader()
-        elif path.endswith(".vtr"):
-            reader = vtk.vtkXMLRectilinearGridReader()
+        readers = {
+            ".vtu": vtk.vtkXMLUnstructuredGridReader,
+            ".vtr": vtk.vtkXMLRectilinearGridReader,
+            ".pvtu": vtk.vtkXMLPUnstructuredGridReader,
+            ".pvtr": vtk.vtkXMLPRectilinearGridReader,
+        }
+        kind = os.path.splitext(path)[1]
+        if kind in readers:
+            reader = readers[kind]()
         else:
             raise SystemExit("unknown file type " + path)
         reader.SetFileName(path)
@@ -32,7 +39,7 @@ def main():
         if reader.GetErrorCode() != 0:
             raise SystemExit("VTK could not read " + path)
         out = reader.GetOutput()
-        if path.endswith(".vtu"):
+        if kind.endswith("vtu"):
             count, data = out.GetNumberOfPoints(), out.GetPointData()
             assert out.GetNumberOfCells() == count, "one vertex cell per point"
         else:

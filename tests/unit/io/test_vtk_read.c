@@ -7,6 +7,8 @@
  *    .vtr a block, io/vtk.h) reads back as the whole one, bit for bit; a
  *    cell held twice, a cell held by none, a missing piece and pieces that
  *    disagree on a face are refused;
+ *  - point sets: a .vtu and the .pvtu of its pieces read back as the
+ *    points written, in piece order, bit for bit;
  *  - sampling: exact at the stored centres, exact for a field linear in x
  *    and y between them on a stretched grid (bilinear interpolation), the
  *    nearest centre outside them, and cells inside a body left out. */
@@ -234,6 +236,62 @@ static void test_pieces(void **state) {
     expect_failure(path, NSPD_ERR_INPUT, "two pieces disagree on the x face");
 }
 
+/* Five points with a scalar and a 2D vector, whole and in two pieces
+ * (the first two points, the last three). */
+static void test_point_sets(void **state) {
+    (void)state;
+    const char *dir = test_scratch_dir("vtk_read_points_sets");
+    enum { N = 5 };
+    double x[N], y[N], damage[N], u[N], v[N];
+    for (int i = 0; i < N; i++) {
+        x[i] = 0.1 * i + 1.0 / 3.0;
+        y[i] = -0.7 * i;
+        damage[i] = i / 7.0;
+        u[i] = 1e-3 * i * i;
+        v[i] = -u[i] / 3.0;
+    }
+    char whole[1300], pvtu[1300], path[1300];
+    snprintf(whole, sizeof whole, "%s/whole.vtu", dir);
+    const double *pos[3] = {x, y, NULL};
+    VtkField fields[] = {{"displacement", 3, {u, v, NULL}}, {"damage", 1, {damage, NULL, NULL}}};
+    assert_ok(vtk_write_points(whole, N, pos, fields, 2));
+    static const int lo[3] = {0, 2, N};
+    static const char *const sources[2] = {"part_0.vtu", "part_1.vtu"};
+    for (int p = 0; p < 2; p++) {
+        const int a = lo[p];
+        const double *ppos[3] = {x + a, y + a, NULL};
+        VtkField pf[] = {{"displacement", 3, {u + a, v + a, NULL}},
+                         {"damage", 1, {damage + a, NULL, NULL}}};
+        snprintf(path, sizeof path, "%s/%s", dir, sources[p]);
+        assert_ok(vtk_write_points(path, lo[p + 1] - a, ppos, pf, 2));
+    }
+    snprintf(pvtu, sizeof pvtu, "%s/whole.pvtu", dir);
+    assert_ok(vtk_write_pvtu(pvtu, 2, sources, fields, 2));
+    for (int k = 0; k < 2; k++) {
+        VtkPointSet set;
+        assert_ok(vtk_read_points(k ? pvtu : whole, &set));
+        assert_int_equal(set.n, N);
+        assert_int_equal(set.array_count, 2);
+        assert_string_equal(set.arrays[0].name, "displacement");
+        assert_int_equal(set.arrays[0].components, 3);
+        for (int i = 0; i < N; i++) {
+            assert_true(set.points[3 * i] == x[i] && set.points[3 * i + 1] == y[i] &&
+                        set.points[3 * i + 2] == 0.0);
+            assert_true(set.arrays[0].data[3 * i] == u[i] && set.arrays[0].data[3 * i + 1] == v[i]);
+            assert_true(set.arrays[1].data[i] == damage[i]);
+        }
+        vtk_point_set_free(&set);
+    }
+    /* a grid is not a point set, nor a point set a grid */
+    snprintf(path, sizeof path, "%s/grid.vtr", dir);
+    write_field(path);
+    VtkPointSet set;
+    assert_int_equal(vtk_read_points(path, &set), NSPD_ERR_INPUT);
+    assert_non_null(strstr(nspd_error_message(), "not a VTK point set"));
+    vtk_point_set_free(&set);
+    expect_failure(pvtu, NSPD_ERR_INPUT, "expected a .vtr");
+}
+
 static void load(FlowFieldSource *s) {
     char path[1200];
     snprintf(path, sizeof path, "%s/field.vtr", test_scratch_dir("vtk_read_sample"));
@@ -296,7 +354,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip), cmocka_unit_test(test_point_data_skipped),
         cmocka_unit_test(test_bad_files),  cmocka_unit_test(test_pieces),
-        cmocka_unit_test(test_sampling),
+        cmocka_unit_test(test_point_sets), cmocka_unit_test(test_sampling),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
