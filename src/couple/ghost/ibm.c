@@ -46,6 +46,7 @@
 #include "core/status.h"
 #include "core/timer.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -342,7 +343,7 @@ static inline void set_cons(double *const w[4], int64_t k, double rho, double u,
 
 /* Ghost entry e from the fluid state w (indexed like the Ibm's cells),
  * into out (the solver's arrays: its cells ibm_share_local's). */
-static inline void fill_one(Ibm *ibm, const GksSolver *s, int e, double *const w[4],
+static inline void fill_one(Ibm *ibm, const GksSolver *s, int e, const IbmFieldView *w,
                             double *const out[4], double gm1, double R) {
     IbmStencilSet *G = &ibm->ghosts;
     const int b = G->body[e];
@@ -367,13 +368,14 @@ void ibm_fill_ghosts(void *ctx, GksSolver *s) {
     if (ibm->share) { /* several processes: this block's ghosts, from the shadow */
         int n;
         const int *mine = ibm_share_ghosts(ibm, &n);
-        double *const *shadow = ibm_share_refresh(ibm, s);
+        const IbmFieldView shadow = ibm_share_refresh(ibm, s);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-        for (int i = 0; i < n; i++) fill_one(ibm, s, mine[i], shadow, w, gm1, R);
+        for (int i = 0; i < n; i++) fill_one(ibm, s, mine[i], &shadow, w, gm1, R);
     } else {
         const int n = ibm->ghosts.n;
+        const IbmFieldView view = ibm_solver_view(s);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-        for (int e = 0; e < n; e++) fill_one(ibm, s, e, w, w, gm1, R);
+        for (int e = 0; e < n; e++) fill_one(ibm, s, e, &view, w, gm1, R);
     }
     /* the solver reads the slot of its own cells */
     if (ibm->faces == IBM_FACES_SEALED)
@@ -535,8 +537,25 @@ static int cmp_i64(const void *a, const void *b) {
 }
 
 /* Several processes: the cells the n fresh stencils read, fetched into
- * the shadow (every rank builds every fresh stencil: they are few). */
-static int fetch_fresh_nodes(Ibm *ibm, int n, const IbmStencilSet *tmp) {
+ * the shadow (every rank builds every fresh stencil: they are few), which
+ * first makes room for what this process's own (those of its rows and
+ * halo) read. */
+static int fetch_fresh_nodes(Ibm *ibm, const GksSolver *s, int n, const IbmStencilSet *tmp) {
+    const int64_t stride = ibm->grid->stride;
+    int lo[2] = {INT_MAX, INT_MAX}, hi[2] = {0, 0};
+    for (int q = 0; q < n; q++) {
+        if (ibm_share_local(ibm, s, ibm->list_a[q]) < 0) continue; /* another process's */
+        for (int m = 0; m < 4; m++) {
+            if (tmp->rseg[4 * q + m] != IBM_NODE_FLUID) continue;
+            const int64_t k = tmp->node[4 * q + m];
+            const int at[2] = {(int)(k % stride), (int)(k / stride)};
+            for (int a = 0; a < 2; a++) {
+                lo[a] = at[a] < lo[a] ? at[a] : lo[a];
+                hi[a] = at[a] + 1 > hi[a] ? at[a] + 1 : hi[a];
+            }
+        }
+    }
+    if (lo[0] < hi[0]) TRY(ibm_share_cover(ibm, lo, hi));
     int64_t *cells = NULL;
     TRY(nspd_alloc(&cells, 4 * (size_t)n + 1, sizeof *cells));
     int m = 0;
@@ -559,14 +578,15 @@ static int fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
     const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
     double *const local[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
+    const IbmFieldView solver_view = ibm_solver_view(s);
     /* first all stencils (they read only non-fresh fluid cells), then all values */
     for (int q = 0; q < n; q++) {
         int i, j;
         cell_ij(g, ibm->list_a[q], &i, &j);
         ibm_build_point(ibm, g->ax[0].center[i], g->ax[1].center[j], 0.0, ibm->mark, tmp, q);
     }
-    if (ibm->share) TRY(fetch_fresh_nodes(ibm, n, tmp));
-    double *const *w = ibm->share ? ibm_share_shadow(ibm) : local;
+    if (ibm->share) TRY(fetch_fresh_nodes(ibm, s, n, tmp));
+    const IbmFieldView view = ibm->share ? ibm_share_shadow(ibm) : solver_view;
     for (int q = 0; q < n; q++) {
         const int64_t cell = ibm->list_a[q], k = ibm_share_local(ibm, s, cell);
         if (k < 0) continue;                               /* another process's */
@@ -576,7 +596,7 @@ static int fill_fresh(Ibm *ibm, GksSolver *s, int n, IbmStencilSet *tmp) {
         cell_ij(g, ibm->list_a[q], &i, &j);
         const int b = ibm->seg_body[ibm_nearest(ibm, g->ax[0].center[i], g->ax[1].center[j]).seg];
         const int iso = ibm->thermal[b] == IBM_WALL_ISOTHERMAL;
-        const IbmPrim p = ibm_stencil_eval(ibm, tmp, q, w, gm1, R, iso, ibm->wall_t[b]);
+        const IbmPrim p = ibm_stencil_eval(ibm, tmp, q, &view, gm1, R, iso, ibm->wall_t[b]);
         const double T = iso ? fmax(p.T, 0.25 * ibm->wall_t[b]) : p.T;
         set_cons(local, k, p.p / (R * T), p.u, p.v, p.p, gm1);
     }

@@ -40,6 +40,30 @@ enum { IBM_NODE_FLUID = -1, IBM_NODE_UNUSED = -2 };
 
 typedef struct IbmShare IbmShare;
 
+/* The conserved fields a stencil reads, by the Ibm's cell numbers (the
+ * whole grid's padded cells, `stride` a row): on one process the solver's
+ * own arrays (lo 0, row = stride); on several, the share's shadow, a
+ * window of rows lo[1].. and columns lo[0].. + row of the whole grid that
+ * holds what this process's stencils read (share.c). */
+typedef struct {
+    double *w[4];
+    int64_t stride; /* the whole grid's padded row */
+    int lo[2];      /* the window's first padded cell (column, row) */
+    int64_t row;    /* the window's row */
+} IbmFieldView;
+
+/* One process: the solver's arrays, numbered as the Ibm's cells. */
+static inline IbmFieldView ibm_solver_view(const GksSolver *s) {
+    const GksFields f = gks_solver_fields((GksSolver *)s);
+    const int64_t stride = gks_solver_grid(s)->stride;
+    return (IbmFieldView){{f.w[0], f.w[1], f.w[2], f.w[3]}, stride, {0, 0}, stride};
+}
+
+static inline int64_t ibm_view_index(const IbmFieldView *f, int64_t k) {
+    if (f->row == f->stride && f->lo[0] == 0 && f->lo[1] == 0) return k;
+    return (k / f->stride - f->lo[1]) * f->row + (k % f->stride - f->lo[0]);
+}
+
 typedef struct {
     int nbx, nby;
     double x0, y0, size, inv_size;
@@ -158,11 +182,15 @@ int ibm_share_replan(Ibm *ibm);
 /* The current values of the n cells (the same list on every rank, each
  * cell once) into the shadow, from the ranks that hold them; collective. */
 int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells);
-double *const *ibm_share_shadow(const Ibm *ibm);
+/* Makes room in the shadow for the cells in [lo, hi) of the whole grid's
+ * padded numbering, per axis (what this process's fresh stencils read,
+ * before they are fetched); what the shadow held stays. */
+int ibm_share_cover(const Ibm *ibm, const int lo[2], const int hi[2]);
+IbmFieldView ibm_share_shadow(const Ibm *ibm);
 void ibm_share_free(IbmShare **sh);
-/* The whole-grid shadow of the conserved fields, current where this
- * process's stencils read (collective: every rank calls). */
-double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s);
+/* The shadow of the conserved fields, current where this process's
+ * stencils read (collective: every rank calls). */
+IbmFieldView ibm_share_refresh(const Ibm *ibm, GksSolver *s);
 /* The ghost entries this process fills, the probe entries it evaluates. */
 const int *ibm_share_ghosts(const Ibm *ibm, int *count);
 const int *ibm_share_probes(const Ibm *ibm, int *count);
@@ -194,8 +222,9 @@ typedef struct {
 } IbmPrim;
 
 static inline IbmPrim ibm_stencil_eval(const Ibm *ibm, const IbmStencilSet *S, int e,
-                                       double *const w[4], double gm1, double R, int iso,
+                                       const IbmFieldView *f, double gm1, double R, int iso,
                                        double Tw) {
+    double *const *w = f->w;
     double ui = 0.0, vi = 0.0, td = 0.0, pn = 0.0, tn = 0.0;
     double pmin = (double)INFINITY, pmax = -(double)INFINITY, tmin = (double)INFINITY,
            tmax = -(double)INFINITY;
@@ -204,7 +233,7 @@ static inline IbmPrim ibm_stencil_eval(const Ibm *ibm, const IbmStencilSet *S, i
         if (rs == IBM_NODE_UNUSED) continue;
         const double wd = S->wd[4 * e + m], wn = S->wn[4 * e + m];
         if (rs == IBM_NODE_FLUID) {
-            const int64_t k = S->node[4 * e + m];
+            const int64_t k = ibm_view_index(f, S->node[4 * e + m]);
             const double rho = w[0][k], ir = 1.0 / rho;
             const double u = w[1][k] * ir, v = w[2][k] * ir;
             const double p = gm1 * (w[3][k] - 0.5 * (w[1][k] * u + w[2][k] * v));

@@ -17,15 +17,18 @@
  * is needed. A cell's owner and its index on a rank are the solver's
  * (gks_solver_cell_owner, gks_solver_local_cell).
  *
- * The values are gathered into a shadow of the whole grid's conserved
- * fields (indexed like the Ibm's cells), filled only where this process
- * owns the rows or fetched the cells; the stencil evaluation then reads it
- * exactly as it reads the solver's arrays on one process, so each ghost
- * and probe value is the serial one, bit for bit. The shadow costs 32
- * bytes per cell of the whole grid on every process (the limit this puts
- * on a 2D grid: 60 MB for 1.9 million cells). Moving walls (ibm_update)
- * update the replicated Ibm alike on every rank, write the kinds and fresh
- * cells of this block, and rebuild the plan (ibm_share_replan). */
+ * The values are gathered into a shadow of the conserved fields: a window
+ * of the whole grid (rows and columns) that holds this process's block
+ * and the cells it fetches, filled only there; the stencil evaluation
+ * reads it through the Ibm's cell numbers (IbmFieldView), as it reads the
+ * solver's arrays on one process, so each ghost and probe value is the
+ * serial one, bit for bit. The window costs 32 bytes a cell of the block
+ * and the margin its stencils reach (a block far from every wall: its own
+ * cells only), not of the whole grid. Moving walls (ibm_update) update the
+ * replicated Ibm alike on every rank, widen the window for what this
+ * process's fresh cells read (ibm_share_cover), write the kinds and fresh
+ * cells of this block, and rebuild the plan (ibm_share_replan), which
+ * fits the window to the new stencils. */
 #include "couple/ghost/ibm_internal.h"
 
 #include "core/mem.h"
@@ -38,11 +41,13 @@
 struct IbmShare {
     GksSolver *solver; /* the Ibm's (it outlives the Ibm) */
     NspdComm comm;
-    int stride;           /* the whole grid's row length */
-    int own_lo[2];        /* whole padded cells this process owns: per axis */
-    int own_hi[2];        /* [lo, hi) (its block and the box's ghosts at its ends) */
-    int32_t *slot;        /* the Ibm's ghost slots of this process's cells */
-    double *w[4];         /* whole-grid shadow of the conserved fields */
+    int stride;    /* the whole grid's row length */
+    int own_lo[2]; /* whole padded cells this process owns: per axis */
+    int own_hi[2]; /* [lo, hi) (its block and the box's ghosts at its ends) */
+    int32_t *slot; /* the Ibm's ghost slots of this process's cells */
+    double *w[4];  /* the shadow of the conserved fields: the window's cells */
+    int win_lo[2]; /* the window: whole padded cells [win_lo, win_hi) per axis */
+    int win_hi[2];
     int *ghosts, nghosts; /* ghost entries this process fills */
     int *probes, nprobes; /* probe entries it evaluates */
     int *probe_rank;      /* per probe entry: the process that evaluates it */
@@ -114,6 +119,76 @@ static void assign_probes(const Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     }
 }
 
+/* The shadow as a window [lo, hi) of the whole grid; `keep`: the values of
+ * the old window's cells that the new one holds stay (the rest are
+ * unset). */
+static int set_window(IbmShare *sh, const int lo[2], const int hi[2], bool keep) {
+    const int64_t row = hi[0] - lo[0], size = row * (int64_t)(hi[1] - lo[1]);
+    double *w[4] = {NULL, NULL, NULL, NULL};
+    for (int v = 0; v < 4; v++)
+        if (nspd_alloc(&w[v], (size_t)size + 1, sizeof(double)) != NSPD_OK) {
+            for (int q = 0; q < v; q++) nspd_free(&w[q]);
+            return NSPD_ERR_NOMEM;
+        }
+    const int old_row = sh->win_hi[0] - sh->win_lo[0];
+    for (int J = lo[1]; keep && J < hi[1]; J++) {
+        if (J < sh->win_lo[1] || J >= sh->win_hi[1]) continue;
+        const int I0 = lo[0] > sh->win_lo[0] ? lo[0] : sh->win_lo[0];
+        const int I1 = hi[0] < sh->win_hi[0] ? hi[0] : sh->win_hi[0];
+        if (I0 >= I1) continue;
+        for (int v = 0; v < 4; v++)
+            memcpy(w[v] + (int64_t)(J - lo[1]) * row + (I0 - lo[0]),
+                   sh->w[v] + (int64_t)(J - sh->win_lo[1]) * old_row + (I0 - sh->win_lo[0]),
+                   (size_t)(I1 - I0) * sizeof(double));
+    }
+    for (int v = 0; v < 4; v++) {
+        nspd_free(&sh->w[v]);
+        sh->w[v] = w[v];
+    }
+    for (int a = 0; a < 2; a++) sh->win_lo[a] = lo[a], sh->win_hi[a] = hi[a];
+    return NSPD_OK;
+}
+
+static bool in_window(const IbmShare *sh, int64_t k) {
+    const int I = (int)(k % sh->stride), J = (int)(k / sh->stride);
+    return I >= sh->win_lo[0] && I < sh->win_hi[0] && J >= sh->win_lo[1] && J < sh->win_hi[1];
+}
+
+static int64_t window_index(const IbmShare *sh, int64_t k) {
+    return (k / sh->stride - sh->win_lo[1]) * (sh->win_hi[0] - sh->win_lo[0]) +
+           (k % sh->stride - sh->win_lo[0]);
+}
+
+/* The window of the plan: this process's cells and those it fetches. */
+static int fit_window(IbmShare *sh) {
+    int lo[2] = {sh->own_lo[0], sh->own_lo[1]}, hi[2] = {sh->own_hi[0], sh->own_hi[1]};
+    for (int i = 0; i < sh->recv_first[sh->comm.size]; i++) {
+        const int64_t k = sh->recv_cells[i];
+        const int at[2] = {(int)(k % sh->stride), (int)(k / sh->stride)};
+        for (int a = 0; a < 2; a++) {
+            lo[a] = at[a] < lo[a] ? at[a] : lo[a];
+            hi[a] = at[a] + 1 > hi[a] ? at[a] + 1 : hi[a];
+        }
+    }
+    if (sh->w[0] && lo[0] == sh->win_lo[0] && lo[1] == sh->win_lo[1] && hi[0] == sh->win_hi[0] &&
+        hi[1] == sh->win_hi[1])
+        return NSPD_OK;
+    return set_window(sh, lo, hi, false); /* the next refresh fills it */
+}
+
+int ibm_share_cover(const Ibm *ibm, const int lo[2], const int hi[2]) {
+    IbmShare *sh = ibm->share;
+    int l[2], h[2];
+    for (int a = 0; a < 2; a++) {
+        l[a] = lo[a] < sh->win_lo[a] ? lo[a] : sh->win_lo[a];
+        h[a] = hi[a] > sh->win_hi[a] ? hi[a] : sh->win_hi[a];
+    }
+    if (l[0] == sh->win_lo[0] && l[1] == sh->win_lo[1] && h[0] == sh->win_hi[0] &&
+        h[1] == sh->win_hi[1])
+        return NSPD_OK;
+    return set_window(sh, l, h, true);
+}
+
 static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     const int p = sh->comm.size, me = sh->comm.rank;
     const IbmStencilSet *G = &ibm->ghosts, *P = &ibm->probes;
@@ -180,7 +255,7 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
         for (int I = 0; I < g->nx + 2 * GRID_NG; I++)
             sh->slot[(int64_t)J * g->stride + I] =
                 ibm->slot[(int64_t)(first[1] + J) * sh->stride + first[0] + I];
-    return NSPD_OK;
+    return fit_window(sh);
 }
 
 /* Frees the plan (not the shadow). */
@@ -221,7 +296,6 @@ int ibm_share_create(Ibm *ibm, GksSolver *s) {
         sh->own_lo[a] = first[a] == 0 ? 0 : first[a] + GRID_NG;
         sh->own_hi[a] = first[a] + count[a] + (first[a] + count[a] == n[a] ? 2 : 1) * GRID_NG;
     }
-    for (int v = 0; v < 4; v++) TRY(nspd_alloc(&sh->w[v], (size_t)whole->size, sizeof(double)));
     return plan(ibm, s, sh);
 }
 
@@ -233,7 +307,15 @@ void ibm_share_free(IbmShare **p) {
     nspd_free(p);
 }
 
-double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
+IbmFieldView ibm_share_shadow(const Ibm *ibm) {
+    const IbmShare *sh = ibm->share;
+    return (IbmFieldView){{sh->w[0], sh->w[1], sh->w[2], sh->w[3]},
+                          sh->stride,
+                          {sh->win_lo[0], sh->win_lo[1]},
+                          sh->win_hi[0] - sh->win_lo[0]};
+}
+
+IbmFieldView ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
     IbmShare *sh = ibm->share;
     const GksFields f = gks_solver_fields(s);
     const int p = sh->comm.size;
@@ -251,12 +333,14 @@ double *const *ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
     const size_t run = (size_t)(sh->own_hi[0] - sh->own_lo[0]) * sizeof(double);
     for (int J = sh->own_lo[1]; J < sh->own_hi[1]; J++) {
         const int64_t k = (int64_t)J * sh->stride + sh->own_lo[0];
-        const int64_t local = gks_solver_local_cell(s, k);
-        for (int v = 0; v < 4; v++) memcpy(sh->w[v] + k, f.w[v] + local, run);
+        const int64_t local = gks_solver_local_cell(s, k), at = window_index(sh, k);
+        for (int v = 0; v < 4; v++) memcpy(sh->w[v] + at, f.w[v] + local, run);
     }
-    for (int i = 0; i < sh->recv_first[p]; i++)
-        for (int v = 0; v < 4; v++) sh->w[v][sh->recv_cells[i]] = sh->recv_buf[4 * i + v];
-    return sh->w;
+    for (int i = 0; i < sh->recv_first[p]; i++) {
+        const int64_t at = window_index(sh, sh->recv_cells[i]);
+        for (int v = 0; v < 4; v++) sh->w[v][at] = sh->recv_buf[4 * i + v];
+    }
+    return ibm_share_shadow(ibm);
 }
 
 const int *ibm_share_ghosts(const Ibm *ibm, int *count) {
@@ -305,15 +389,15 @@ int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells) {
         }
         status = comm_share_items(&sh->comm, n, owner, 4, mine, all);
     }
+    /* what lies outside the window no stencil of this process reads */
     if (status == NSPD_OK)
-        for (int i = 0; i < n; i++)
-            for (int v = 0; v < 4; v++) sh->w[v][cells[i]] = all[4 * i + v];
+        for (int i = 0; i < n; i++) {
+            if (!in_window(sh, cells[i])) continue;
+            const int64_t at = window_index(sh, cells[i]);
+            for (int v = 0; v < 4; v++) sh->w[v][at] = all[4 * i + v];
+        }
     nspd_free(&mine);
     nspd_free(&all);
     nspd_free(&owner);
     return status;
-}
-
-double *const *ibm_share_shadow(const Ibm *ibm) {
-    return ibm->share->w;
 }

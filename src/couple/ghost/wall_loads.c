@@ -207,7 +207,7 @@ static void body_separation(const Ibm *ibm, const SurfaceFlow *F, const SurfaceB
 }
 
 /* Probe entry e's (u, v, p, T) into q[4 e ..]. */
-static void probe_value(const Ibm *ibm, int e, double *const w[4], double gm1, double R,
+static void probe_value(const Ibm *ibm, int e, const IbmFieldView *w, double gm1, double R,
                         double *q) {
     const int b = ibm->seg_body[e / 2];
     const IbmPrim v = ibm_stencil_eval(ibm, &ibm->probes, e, w, gm1, R,
@@ -221,19 +221,18 @@ static int probe_values(const Ibm *ibm, GksSolver *s, IbmSurface *o) {
     const GksParams *gas = gks_solver_gas(s);
     const double gm1 = gas->gamma - 1.0, R = gas->R;
     if (!ibm->share) {
-        const GksFields f = gks_solver_fields(s);
-        double *const w[4] = {f.w[0], f.w[1], f.w[2], f.w[3]};
+        const IbmFieldView w = ibm_solver_view(s);
         const int n = ibm->probes.n;
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-        for (int e = 0; e < n; e++) probe_value(ibm, e, w, gm1, R, o->probe_q);
+        for (int e = 0; e < n; e++) probe_value(ibm, e, &w, gm1, R, o->probe_q);
         return NSPD_OK;
     }
-    double *const *shadow = ibm_share_refresh(ibm, s);
+    const IbmFieldView shadow = ibm_share_refresh(ibm, s);
     int n;
     const int *mine = ibm_share_probes(ibm, &n);
     /* this process's probes in place, then everyone's (the share reads
      * them out before it writes) */
-    for (int i = 0; i < n; i++) probe_value(ibm, mine[i], shadow, gm1, R, o->probe_q);
+    for (int i = 0; i < n; i++) probe_value(ibm, mine[i], &shadow, gm1, R, o->probe_q);
     return ibm_share_probe_values(ibm, o->probe_q, o->probe_q);
 }
 
