@@ -1,6 +1,9 @@
 #include "app/options.h"
 
+#include "core/comm.h"
+
 #include <omp.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +55,16 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
                         "nspd %s: --processes needs the flow's process grid as PXxPY (blocks "
                         "along x and along y, e.g. 4x2)\n",
                         command);
+                return false;
+            }
+            /* any case: a solid alone, divided by points, takes none but
+             * the count's, and a grid of another count is a mistake */
+            const int p = comm_world().size;
+            if ((int64_t)px * py != p) {
+                fprintf(stderr,
+                        "nspd %s: --processes %dx%d makes %lld blocks for %d process%s; expected "
+                        "PXxPY with PX times PY = %d\n",
+                        command, px, py, (long long)px * py, p, p == 1 ? "" : "es", p);
                 return false;
             }
             opt->processes[0] = px;

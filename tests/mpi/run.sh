@@ -340,6 +340,8 @@ refused "the correspondence solid on 2 ranks" "the correspondence model runs on 
 refused "4 rows on 3 slabs" "4 rows over 3 processes" 3 "$sod" -o "$work/bad" --processes 1x3
 refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 "$sod" \
     -o "$work/bad" --processes 3x1
+refused "a grid of 3 blocks for a solid alone on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 \
+    "$src/cases/plate_crack.yaml" -o "$work/bad" --processes 3x1
 refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
     "$src/cases/cavity_re1.yaml" -o "$work/bad"
 [ -e "$work/bad" ] && fail "a refused run wrote $work/bad"
