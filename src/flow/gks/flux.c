@@ -77,12 +77,18 @@ flux_row(int n, const GksRowSide *restrict L, const GksRowSide *restrict R,
             t0[c] = 0.5 * (tl[c] + tr[c]);
         }
         gks_flux_kernel(wl, nl, tl, wr, nr, tr, n0, t0, dt, &par, law, fl);
-        const int active = (lk[k] == 0) | (rk[k] == 0);
-        f0[k] = active ? fl[0] : 0.0;
-        f1[k] = active ? fl[1] : 0.0;
-        f2[k] = active ? fl[2] : 0.0;
-        f3[k] = active ? fl[3] : 0.0;
+        f0[k] = fl[0];
+        f1[k] = fl[1];
+        f2[k] = fl[2];
+        f3[k] = fl[3];
     }
+    /* faces with no fluid cell on either side: zero, whatever the kernel
+     * made of their inputs. A pass of its own: the cells' kinds (bytes)
+     * in the loop above kept GCC from vectorising it (no vector mode fits
+     * bytes and doubles together there), and it then ran one face at a
+     * time. */
+    for (int k = 0; k < n; k++)
+        if (lk[k] != 0 && rk[k] != 0) f0[k] = f1[k] = f2[k] = f3[k] = 0.0;
 }
 
 void gks_flux_row_x(int n, const GksRowSide *left, const GksRowSide *right, const double *dl,
