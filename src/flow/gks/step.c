@@ -153,9 +153,13 @@ dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double
     for (int i = 0; i < g->nx; i++) {
         const double ir = 1.0 / r[i], u = mx[i] * ir, v = my[i] * ir;
         const double p = gm1 * (e[i] - 0.5 * (mx[i] * u + my[i] * v));
-        const double rt = signal_rate(&gas, law, visc_factor, gamma, iR, ir, u, v, p, idx[i], idy);
-        out[i] = kd[i] == FLOW_CELL_FLUID ? rt : 0.0;
+        out[i] = signal_rate(&gas, law, visc_factor, gamma, iR, ir, u, v, p, idx[i], idy);
     }
+    /* only fluid cells limit the step; a pass of its own, since the kinds
+     * (bytes) in the loop above kept GCC from vectorising it (as in
+     * flux.c's row loop) */
+    for (int i = 0; i < g->nx; i++)
+        if (kd[i] != FLOW_CELL_FLUID) out[i] = 0.0;
 }
 
 double gks_visc_factor(const GksParams *gas) {
