@@ -125,11 +125,13 @@ static void assign_probes(const Ibm *ibm, const GksSolver *s, IbmShare *sh) {
 static int set_window(IbmShare *sh, const int lo[2], const int hi[2], bool keep) {
     const int64_t row = hi[0] - lo[0], size = row * (int64_t)(hi[1] - lo[1]);
     double *w[4] = {NULL, NULL, NULL, NULL};
-    for (int v = 0; v < 4; v++)
-        if (nspd_alloc(&w[v], (size_t)size + 1, sizeof(double)) != NSPD_OK) {
-            for (int q = 0; q < v; q++) nspd_free(&w[q]);
-            return NSPD_ERR_NOMEM;
-        }
+    int status = NSPD_OK;
+    for (int v = 0; v < 4 && status == NSPD_OK; v++)
+        status = nspd_alloc(&w[v], (size_t)size + 1, sizeof(double));
+    if (status != NSPD_OK) { /* nspd_alloc said what */
+        for (int v = 0; v < 4; v++) nspd_free(&w[v]);
+        return status;
+    }
     const int old_row = sh->win_hi[0] - sh->win_lo[0];
     for (int J = lo[1]; keep && J < hi[1]; J++) {
         if (J < sh->win_lo[1] || J >= sh->win_hi[1]) continue;
