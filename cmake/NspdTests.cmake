@@ -104,4 +104,13 @@ if(NSPD_MPI)
     # the longest test (about 2 minutes): started first, so that the others
     # run beside it instead of after it (a fresh build has no timings yet)
     set_tests_properties(mpi.run PROPERTIES LABELS "mpi;release" SKIP_RETURN_CODE 77 COST 1000)
+    # the sanitized build: a few of those cases under ASan and UBSan
+    # (tests/mpi/sanitized.sh), in make test-asan's selection ("cli")
+    if(NSPD_SANITIZE)
+        add_test(NAME mpi.sanitized
+            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/mpi/sanitized.sh $<TARGET_FILE:nspd>
+                ${PROJECT_SOURCE_DIR} ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:vtk_same>
+            WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+        set_tests_properties(mpi.sanitized PROPERTIES LABELS "mpi;cli" COST 500)
+    endif()
 endif()

@@ -31,26 +31,7 @@ src=$2
 mpiexec=$3
 vtk_same=$4
 . "$src/tests/cli/common.sh"
-export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_rmaps_base_oversubscribe=1
-# a hung rank must fail the test, not the suite's time limit
-on() { n=$1; shift; timeout -k 10 300 "$mpiexec" -n "$n" "$nspd" run "$@"; }
-
-# name, end time, the process counts; one process without mpirun first
-check_case() {
-    name=$1 end=$2
-    shift 2
-    ref="$work/$name.1"
-    "$nspd" run "$src/cases/$name.yaml" -o "$ref" --quiet --set "time.end=$end" ||
-        { fail "$name: the run of one process failed"; return; }
-    for n in "$@"; do
-        if on "$n" "$src/cases/$name.yaml" -o "$work/$name.$n" --quiet --set "time.end=$end"; then
-            same_results "$ref" "$work/$name.$n" "$name on $n ranks"
-        else
-            fail "$name on $n ranks: exit status $?"
-        fi
-    done
-}
+. "$src/tests/mpi/checks.sh"
 
 check_case sod 0.2 2 3 4
 check_case vortex 1.0 2 3 4
@@ -60,19 +41,6 @@ check_case blasius 0.3 2 3
 # 2D process grids (--processes PXxPY: blocks along x and along y), against
 # the one-process runs above: the x halo, the corners, the blocks' edge
 # columns, the totals passed along x.
-check_grid() {
-    name=$1 end=$2
-    shift 2
-    for g in "$@"; do
-        n=$((${g%x*} * ${g#*x}))
-        if on "$n" "$src/cases/$name.yaml" -o "$work/$name.$g" --quiet --set "time.end=$end" \
-            --processes "$g"; then
-            same_results "$work/$name.1" "$work/$name.$g" "$name on $g blocks"
-        else
-            fail "$name on $g blocks: exit status $?"
-        fi
-    done
-}
 check_grid sod 0.2 2x1 3x1
 check_grid vortex 1.0 2x2 4x1
 check_grid couette 2.0 2x1
@@ -83,26 +51,6 @@ check_grid blasius 0.3 2x2 3x1
 # start, forces) and of it with reflected faces, and of the NACA 0012
 # (reflected), on some of 2, 3 and 4 ranks each (the suite's time): the
 # walls cross the slabs' edges.
-check_body() {
-    name=$1 tag=$2 ranks=$3
-    shift 3
-    set -f
-    IFS='
-'
-    args=$(golden_overrides "$name" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
-    ref="$work/$tag.1"
-    "$nspd" run "$src/cases/$name.yaml" -o "$ref" --quiet $args "$@" ||
-        { fail "$tag: the run of one process failed"; unset IFS; set +f; return; }
-    for n in $(echo "$ranks" | tr " " "\n"); do
-        if on "$n" "$src/cases/$name.yaml" -o "$work/$tag.$n" --quiet $args "$@"; then
-            same_results "$ref" "$work/$tag.$n" "$tag on $n ranks"
-        else
-            fail "$tag on $n ranks: exit status $?"
-        fi
-    done
-    unset IFS
-    set +f
-}
 check_body cylinder_ma2_re300 cylinder_sealed "2 3 4"
 check_body cylinder_ma2_re300 cylinder_reflected "2 3 4" --set flow.ghost_faces=reflected
 check_body naca0012_ma05_re5000 naca "2 4"
@@ -121,22 +69,6 @@ check_body blast_hollow_square blast_sealed 3 --set time.end=2e-5 --set coupling
 # process above: the immersed boundary's blocks (ghost cells, fetched
 # stencils, sealed faces, probes), moving walls across blocks, the
 # penalty's cells.
-check_body_grid() {
-    name=$1 tag=$2 grid=$3
-    shift 3
-    set -f
-    IFS='
-'
-    args=$(golden_overrides "$name" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
-    n=$((${grid%x*} * ${grid#*x}))
-    if on "$n" "$src/cases/$name.yaml" -o "$work/$tag.$grid" --quiet $args "$@" --processes "$grid"; then
-        same_results "$work/$tag.1" "$work/$tag.$grid" "$tag on $grid blocks"
-    else
-        fail "$tag on $grid blocks: exit status $?"
-    fi
-    unset IFS
-    set +f
-}
 check_body_grid cylinder_ma2_re300 cylinder_sealed 2x2
 check_body_grid cylinder_ma2_re300 cylinder_reflected 2x1 --set flow.ghost_faces=reflected
 check_body_grid naca0012_ma05_re5000 naca 3x1
