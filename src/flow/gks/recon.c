@@ -27,8 +27,8 @@ RECON_INLINE int64_t slopes(int n, FlowLimiter limiter, const double *const wm[4
                            *restrict p3 = wp[3];
     double *restrict s0 = s[0], *restrict s1 = s[1], *restrict s2 = s[2], *restrict s3 = s[3];
     int64_t fallbacks = 0;
-    NSPD_IVDEP
-    for (int k = 0; k < n; k++) {
+    NSPD_IVDEP /* vectorised: tests/unit/flow/gks/vectorised.sh */
+        for (int k = 0; k < n; k++) {
         const double idl = per_cell ? idla[k] : idls, idr = per_cell ? idra[k] : idrs;
         const double hw = per_cell ? hwa[k] : hws;
         const double w[3][4] = {{m0[k], m1[k], m2[k], m3[k]},
