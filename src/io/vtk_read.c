@@ -49,6 +49,27 @@ static int attribute(const char *tag, const char *key, char *buf, size_t size) {
     return 1;
 }
 
+/* The attributes of the DataArray tag at `p` into *d: Float64, appended,
+ * 1 to 3 components (exactly 3 with `three`). */
+static int declare_array(const char *path, const char *p, bool three, Declared *d) {
+    char type[32], format[32], comps[16], off[32];
+    if (!attribute(p, "Name", d->name, sizeof d->name) ||
+        !attribute(p, "type", type, sizeof type) ||
+        !attribute(p, "format", format, sizeof format) || !attribute(p, "offset", off, sizeof off))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a DataArray without Name, type or offset", path);
+    if (strcmp(type, "Float64") != 0 || strcmp(format, "appended") != 0)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "'%s': array '%s' is %s, %s; expected Float64, appended (as nspd "
+                         "writes it)",
+                         path, d->name, type, format);
+    d->components = attribute(p, "NumberOfComponents", comps, sizeof comps) ? atoi(comps) : 1;
+    if (d->components < 1 || d->components > 3 || (three && d->components != 3))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' has %d components", path, d->name,
+                         d->components);
+    d->offset = strtoull(off, NULL, 10);
+    return NSPD_OK;
+}
+
 static int parse_header(const char *path, const char *h, VtkRectilinear *out, Declared *decl,
                         int *decl_count) {
     if (!strstr(h, "<VTKFile type=\"RectilinearGrid\""))
@@ -80,23 +101,7 @@ static int parse_header(const char *path, const char *h, VtkRectilinear *out, De
         if (*decl_count == VTK_MAX_ARRAYS + 3)
             return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d arrays", path, VTK_MAX_ARRAYS);
         Declared *d = &decl[(*decl_count)++];
-        char type[32], format[32], comps[16], off[32];
-        if (!attribute(p, "Name", d->name, sizeof d->name) ||
-            !attribute(p, "type", type, sizeof type) ||
-            !attribute(p, "format", format, sizeof format) ||
-            !attribute(p, "offset", off, sizeof off))
-            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a DataArray without Name, type or offset",
-                             path);
-        if (strcmp(type, "Float64") != 0 || strcmp(format, "appended") != 0)
-            return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "'%s': array '%s' is %s, %s; expected Float64, appended (as nspd "
-                             "writes it)",
-                             path, d->name, type, format);
-        d->components = attribute(p, "NumberOfComponents", comps, sizeof comps) ? atoi(comps) : 1;
-        if (d->components < 1 || d->components > 3)
-            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' has %d components", path, d->name,
-                             d->components);
-        d->offset = strtoull(off, NULL, 10);
+        TRY(declare_array(path, p, false, d));
         d->is_coordinate = coords && p > coords;
         d->is_point = points && points_end && p > points && p < points_end;
     }
@@ -201,31 +206,62 @@ static int read_file(FILE *f, const char *path, VtkRectilinear *out) {
     return NSPD_OK;
 }
 
-static int read_one(const char *path, VtkRectilinear *out) {
-    memset(out, 0, sizeof *out);
+/* A file's reader: the file open, `path` for messages, the result. */
+typedef int (*FileReader)(FILE *f, const char *path, void *out);
+
+/* `read` on the file at `path`, opened as a case's file is (in_file.h). */
+static int read_path(const char *path, FileReader read, void *out) {
     int open_error = 0;
     FILE *f = in_file_open(path, &open_error);
     if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
-    int status = read_file(f, path, out);
+    const int status = read(f, path, out);
     fclose(f);
     return status;
 }
 
-/* Piece p of a .pvtr: its cells' extent and its file (relative to the
- * .pvtr's directory, `dir`), from the <Piece> tag at `tag`. */
-static int piece_tag(const char *path, const char *dir, const char *tag, int ext[6],
-                     char *piece_path, size_t size) {
-    char buf[128], source[1024];
-    if (!attribute(tag, "Extent", buf, sizeof buf) ||
-        sscanf(buf, "%d %d %d %d %d %d", &ext[0], &ext[1], &ext[2], &ext[3], &ext[4], &ext[5]) !=
-            6 ||
-        !attribute(tag, "Source", source, sizeof source))
-        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a <Piece> without Extent or Source", path);
-    if (source[0] == '/')
-        snprintf(piece_path, size, "%s", source);
-    else
-        snprintf(piece_path, size, "%s%s", dir, source);
+static int read_grid(FILE *f, const char *path, void *out) {
+    memset(out, 0, sizeof(VtkRectilinear));
+    return read_file(f, path, out);
+}
+
+/* The head of the file (up to HEADER_MAX bytes, as text) into *header
+ * (freed by the caller): enough to tell a parallel file from a whole one. */
+static int read_head(FILE *f, const char *path, void *header) {
+    (void)path;
+    char **h = header;
+    TRY(nspd_alloc(h, HEADER_MAX + 1, 1));
+    (*h)[fread(*h, 1, HEADER_MAX, f)] = '\0';
     return NSPD_OK;
+}
+
+/* The file a <Piece Source="..."> names, relative to the parallel file
+ * `path`'s directory unless absolute. */
+static int piece_source(const char *path, const char *tag, char *piece_path, size_t size) {
+    char source[1024];
+    if (!attribute(tag, "Source", source, sizeof source))
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a <Piece> without Source", path);
+    const char *slash = strrchr(path, '/');
+    const int dir = source[0] == '/' || !slash ? 0 : (int)(slash - path + 1);
+    snprintf(piece_path, size, "%.*s%s", dir, path, source);
+    return NSPD_OK;
+}
+
+/* A piece's failure, said for the parallel file (NSPD_FAIL replaces the
+ * message it is given, so the piece's is copied first). */
+static int piece_failed(const char *path, int piece, int status) {
+    char why[1024];
+    snprintf(why, sizeof why, "%s", nspd_error_message());
+    return NSPD_FAIL(status, "'%s': piece %d: %s", path, piece, why);
+}
+
+/* Piece p of a .pvtr: its cells' extent and its file, from the <Piece>
+ * tag at `tag`. */
+static int piece_tag(const char *path, const char *tag, int ext[6], char *piece_path, size_t size) {
+    char buf[128];
+    if (!attribute(tag, "Extent", buf, sizeof buf) ||
+        sscanf(buf, "%d %d %d %d %d %d", &ext[0], &ext[1], &ext[2], &ext[3], &ext[4], &ext[5]) != 6)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a <Piece> without Extent or Source", path);
+    return piece_source(path, tag, piece_path, size);
 }
 
 /* Piece `pc` (read from its file) into the whole grid `out` at cells
@@ -299,9 +335,6 @@ static int read_parallel(const char *path, const char *h, VtkRectilinear *out) {
         out->n[a] = (int)n;
         cells *= n;
     }
-    char dir[4096];
-    const char *slash = strrchr(path, '/');
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path + 1) : 0, path);
     int64_t covered = 0;
     uint8_t *held; /* 1: a piece holds the cell */
     TRY(nspd_alloc(&held, (size_t)cells, 1));
@@ -312,12 +345,9 @@ static int read_parallel(const char *path, const char *h, VtkRectilinear *out) {
         char piece_path[5200];
         VtkRectilinear pc;
         memset(&pc, 0, sizeof pc);
-        status = piece_tag(path, dir, tag, ext, piece_path, sizeof piece_path);
-        if (status == NSPD_OK && (status = read_one(piece_path, &pc)) != NSPD_OK) {
-            char why[1024]; /* NSPD_FAIL replaces the message it is given */
-            snprintf(why, sizeof why, "%s", nspd_error_message());
-            status = NSPD_FAIL(status, "'%s': piece %d: %s", path, pieces, why);
-        }
+        status = piece_tag(path, tag, ext, piece_path, sizeof piece_path);
+        if (status == NSPD_OK && (status = read_path(piece_path, read_grid, &pc)) != NSPD_OK)
+            status = piece_failed(path, pieces, status);
         if (status == NSPD_OK && pieces == 0) { /* the whole grid's arrays, as the first piece's */
             for (int a = 0; a < 3 && status == NSPD_OK; a++) {
                 status = nspd_alloc(&out->face[a], (size_t)out->n[a] + 1, sizeof(double));
@@ -347,16 +377,11 @@ static int read_parallel(const char *path, const char *h, VtkRectilinear *out) {
 int vtk_read_rectilinear(const char *path, VtkRectilinear *out) {
     memset(out, 0, sizeof *out);
     /* a .pvtr names its pieces in a short header, no appended data */
-    int open_error = 0;
-    FILE *f = in_file_open(path, &open_error);
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
-    char *header;
-    int status = nspd_alloc(&header, HEADER_MAX + 1, 1);
-    if (status == NSPD_OK) header[fread(header, 1, HEADER_MAX, f)] = '\0';
-    fclose(f);
-    TRY(status);
+    char *header = NULL;
+    TRY(read_path(path, read_head, &header));
     const bool parallel = strstr(header, "<VTKFile type=\"PRectilinearGrid\"") != NULL;
-    status = parallel ? read_parallel(path, header, out) : read_one(path, out);
+    const int status =
+        parallel ? read_parallel(path, header, out) : read_path(path, read_grid, out);
     nspd_free(&header);
     return status;
 }
@@ -390,23 +415,7 @@ static int parse_points_header(const char *path, const char *h, VtkPointSet *out
         if (*decl_count == VTK_MAX_ARRAYS + 1)
             return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': more than %d arrays", path, VTK_MAX_ARRAYS);
         Declared *d = &decl[(*decl_count)++];
-        char type[32], format[32], comps[16], off[32];
-        if (!attribute(p, "Name", d->name, sizeof d->name) ||
-            !attribute(p, "type", type, sizeof type) ||
-            !attribute(p, "format", format, sizeof format) ||
-            !attribute(p, "offset", off, sizeof off))
-            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a DataArray without Name, type or offset",
-                             path);
-        if (strcmp(type, "Float64") != 0 || strcmp(format, "appended") != 0)
-            return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "'%s': array '%s' is %s, %s; expected Float64, appended (as nspd "
-                             "writes it)",
-                             path, d->name, type, format);
-        d->components = attribute(p, "NumberOfComponents", comps, sizeof comps) ? atoi(comps) : 1;
-        if (d->components < 1 || d->components > 3 || (in_points && d->components != 3))
-            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': array '%s' has %d components", path, d->name,
-                             d->components);
-        d->offset = strtoull(off, NULL, 10);
+        TRY(declare_array(path, p, in_points, d));
         d->is_coordinate = in_points;
         d->is_point = in_data;
     }
@@ -448,14 +457,9 @@ static int read_points_file(FILE *f, const char *path, VtkPointSet *out) {
     return NSPD_OK;
 }
 
-static int read_points_one(const char *path, VtkPointSet *out) {
-    memset(out, 0, sizeof *out);
-    int open_error = 0;
-    FILE *f = in_file_open(path, &open_error);
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
-    const int status = read_points_file(f, path, out);
-    fclose(f);
-    return status;
+static int read_points(FILE *f, const char *path, void *out) {
+    memset(out, 0, sizeof(VtkPointSet));
+    return read_points_file(f, path, out);
 }
 
 /* Appends piece `pc` to the whole set `out` (grown to hold it): its
@@ -492,23 +496,15 @@ static int append_piece(const char *path, int index, VtkPointSet *pc, VtkPointSe
 static int read_points_parallel(const char *path, const char *h, VtkPointSet *out) {
     const char *grid = strstr(h, "<PUnstructuredGrid");
     if (!grid) return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': no <PUnstructuredGrid> element", path);
-    char dir[4096];
-    const char *slash = strrchr(path, '/');
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path + 1) : 0, path);
     int status = NSPD_OK, pieces = 0;
     for (const char *tag = strstr(grid, "<Piece"); tag && status == NSPD_OK;
          tag = strstr(tag + 1, "<Piece"), pieces++) {
-        char source[1024], piece_path[5200];
-        if (!attribute(tag, "Source", source, sizeof source))
-            return NSPD_FAIL(NSPD_ERR_INPUT, "'%s': a <Piece> without Source", path);
-        snprintf(piece_path, sizeof piece_path, "%s%s", source[0] == '/' ? "" : dir, source);
+        char piece_path[5200];
         VtkPointSet pc;
-        status = read_points_one(piece_path, &pc);
-        if (status != NSPD_OK) {
-            char why[1024]; /* NSPD_FAIL replaces the message it is given */
-            snprintf(why, sizeof why, "%s", nspd_error_message());
-            status = NSPD_FAIL(status, "'%s': piece %d: %s", path, pieces, why);
-        }
+        memset(&pc, 0, sizeof pc);
+        status = piece_source(path, tag, piece_path, sizeof piece_path);
+        if (status == NSPD_OK && (status = read_path(piece_path, read_points, &pc)) != NSPD_OK)
+            status = piece_failed(path, pieces, status);
         if (status == NSPD_OK) status = append_piece(path, pieces, &pc, out);
         vtk_point_set_free(&pc);
     }
@@ -519,16 +515,11 @@ static int read_points_parallel(const char *path, const char *h, VtkPointSet *ou
 
 int vtk_read_points(const char *path, VtkPointSet *out) {
     memset(out, 0, sizeof *out);
-    int open_error = 0;
-    FILE *f = in_file_open(path, &open_error);
-    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "cannot open '%s' (%s)", path, in_file_error(open_error));
-    char *header;
-    int status = nspd_alloc(&header, HEADER_MAX + 1, 1);
-    if (status == NSPD_OK) header[fread(header, 1, HEADER_MAX, f)] = '\0';
-    fclose(f);
-    TRY(status);
+    char *header = NULL;
+    TRY(read_path(path, read_head, &header));
     const bool parallel = strstr(header, "<VTKFile type=\"PUnstructuredGrid\"") != NULL;
-    status = parallel ? read_points_parallel(path, header, out) : read_points_one(path, out);
+    const int status =
+        parallel ? read_points_parallel(path, header, out) : read_path(path, read_points, out);
     nspd_free(&header);
     return status;
 }
