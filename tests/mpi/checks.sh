@@ -1,80 +1,67 @@
 # The checks of tests/mpi/run.sh and tests/mpi/sanitized.sh: a case run
 # on several processes against the run of one without mpirun, every file
-# the same (same_results, tests/cli/common.sh). Sourced after common.sh,
-# with nspd, src and mpiexec set.
+# the same (same_results, tests/cli/common.sh). Sourced by those scripts
+# with their arguments: NSPD SOURCE_DIR MPIEXEC VTK_SAME.
+nspd=$1
+src=$2
+mpiexec=$3
+vtk_same=$4
+. "$src/tests/cli/common.sh"
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 # a hung rank must fail the test, not the suite's time limit
 on() { n=$1; shift; timeout -k 10 300 "$mpiexec" -n "$n" "$nspd" run "$@"; }
 
-# name, end time, the process counts; one process without mpirun first
+# $1: a layout, a number of processes ("3", slabs or the default grid) or
+# a process grid ("2x2"), run under mpirun as `on` does; its name in
+# messages is in $what afterwards
+on_layout() {
+    layout=$1
+    shift
+    case "$layout" in
+    *x*)
+        what="$layout blocks"
+        on $((${layout%x*} * ${layout#*x})) "$@" --processes "$layout"
+        ;;
+    *)
+        what="$layout ranks"
+        on "$layout" "$@"
+        ;;
+    esac
+}
+
+# a case file's run of one process (directory $work/TAG.1), then on each
+# layout (directories $work/TAG.LAYOUT), every file the same:
+#   check TAG CASE "LAYOUT ..." [nspd run arguments]
+check() {
+    tag=$1 file=$2 layouts=$3
+    shift 3
+    "$nspd" run "$file" -o "$work/$tag.1" --quiet "$@" ||
+        { fail "$tag: the run of one process failed"; return; }
+    for l in $(echo "$layouts" | tr ' ' '\n'); do # split under any IFS
+        if on_layout "$l" "$file" -o "$work/$tag.$l" --quiet "$@"; then
+            same_results "$work/$tag.1" "$work/$tag.$l" "$tag on $what"
+        else
+            fail "$tag on $what: exit status $?"
+        fi
+    done
+}
+
+# a case of cases/ to an end time: check_case NAME END "LAYOUT ..."
 check_case() {
-    name=$1 end=$2
-    shift 2
-    ref="$work/$name.1"
-    "$nspd" run "$src/cases/$name.yaml" -o "$ref" --quiet --set "time.end=$end" ||
-        { fail "$name: the run of one process failed"; return; }
-    for n in "$@"; do
-        if on "$n" "$src/cases/$name.yaml" -o "$work/$name.$n" --quiet --set "time.end=$end"; then
-            same_results "$ref" "$work/$name.$n" "$name on $n ranks"
-        else
-            fail "$name on $n ranks: exit status $?"
-        fi
-    done
+    check "$1" "$src/cases/$1.yaml" "$3" --set "time.end=$2"
 }
 
-# name, end time, process grids (PXxPY), against the run of check_case
-check_grid() {
-    name=$1 end=$2
-    shift 2
-    for g in "$@"; do
-        n=$((${g%x*} * ${g#*x}))
-        if on "$n" "$src/cases/$name.yaml" -o "$work/$name.$g" --quiet --set "time.end=$end" \
-            --processes "$g"; then
-            same_results "$work/$name.1" "$work/$name.$g" "$name on $g blocks"
-        else
-            fail "$name on $g blocks: exit status $?"
-        fi
-    done
-}
-
-# a case at its golden resolution (tests/golden/runs.txt), tag, the
-# process counts ("2 3"), more --set arguments
+# a case at its golden resolution (tests/golden/runs.txt), then more
+# --set arguments: check_body NAME TAG "LAYOUT ..." [ARGS]
 check_body() {
-    name=$1 tag=$2 ranks=$3
+    name=$1 tag=$2 layouts=$3
     shift 3
     set -f
     IFS='
 '
     args=$(golden_overrides "$name" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
-    ref="$work/$tag.1"
-    "$nspd" run "$src/cases/$name.yaml" -o "$ref" --quiet $args "$@" ||
-        { fail "$tag: the run of one process failed"; unset IFS; set +f; return; }
-    for n in $(echo "$ranks" | tr " " "\n"); do
-        if on "$n" "$src/cases/$name.yaml" -o "$work/$tag.$n" --quiet $args "$@"; then
-            same_results "$ref" "$work/$tag.$n" "$tag on $n ranks"
-        else
-            fail "$tag on $n ranks: exit status $?"
-        fi
-    done
-    unset IFS
-    set +f
-}
-
-# the same on one process grid, against check_body's run of one process
-check_body_grid() {
-    name=$1 tag=$2 grid=$3
-    shift 3
-    set -f
-    IFS='
-'
-    args=$(golden_overrides "$name" | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
-    n=$((${grid%x*} * ${grid#*x}))
-    if on "$n" "$src/cases/$name.yaml" -o "$work/$tag.$grid" --quiet $args "$@" --processes "$grid"; then
-        same_results "$work/$tag.1" "$work/$tag.$grid" "$tag on $grid blocks"
-    else
-        fail "$tag on $grid blocks: exit status $?"
-    fi
+    check "$tag" "$src/cases/$name.yaml" "$layouts" $args "$@" # split at newlines only
     unset IFS
     set +f
 }

@@ -26,55 +26,36 @@
 # the one process's .vtr array by array (VTK_SAME, tests/mpi/vtk_same.c).
 #   usage: run.sh NSPD SOURCE_DIR MPIEXEC VTK_SAME
 set -u
-nspd=$1
-src=$2
-mpiexec=$3
-vtk_same=$4
-. "$src/tests/cli/common.sh"
-. "$src/tests/mpi/checks.sh"
+. "$2/tests/mpi/checks.sh"
 
-check_case sod 0.2 2 3 4
-check_case vortex 1.0 2 3 4
-check_case couette 2.0 3
-check_case blasius 0.3 2 3
-
-# 2D process grids (--processes PXxPY: blocks along x and along y), against
-# the one-process runs above: the x halo, the corners, the blocks' edge
-# columns, the totals passed along x.
-check_grid sod 0.2 2x1 3x1
-check_grid vortex 1.0 2x2 4x1
-check_grid couette 2.0 2x1
-check_grid blasius 0.3 2x2 3x1
+# Each case on numbers of processes (slabs of rows, or the default grid)
+# and on 2D process grids (PXxPY: --processes): the x halo, the corners,
+# the blocks' edge columns, the totals passed along x.
+check_case sod 0.2 "2 3 4 2x1 3x1"
+check_case vortex 1.0 "2 3 4 2x2 4x1"
+check_case couette 2.0 "3 2x1"
+check_case blasius 0.3 "2 3 2x2 3x1"
 
 # Fixed bodies (the ghost-cell immersed boundary, couple/ghost/share.c):
 # the coarse golden runs of the Mach 2 cylinder (sealed ghost faces, soft
 # start, forces) and of it with reflected faces, and of the NACA 0012
 # (reflected), on some of 2, 3 and 4 ranks each (the suite's time): the
-# walls cross the slabs' edges.
-check_body cylinder_ma2_re300 cylinder_sealed "2 3 4"
-check_body cylinder_ma2_re300 cylinder_reflected "2 3 4" --set flow.ghost_faces=reflected
-check_body naca0012_ma05_re5000 naca "2 4"
+# walls cross the slabs' edges; and on a 2D process grid each, as the
+# coupled cases below (ghost cells, fetched stencils, sealed faces, probes,
+# moving walls and the penalty's cells across blocks).
+check_body cylinder_ma2_re300 cylinder_sealed "2 3 4 2x2"
+check_body cylinder_ma2_re300 cylinder_reflected "2 3 4 2x1" --set flow.ghost_faces=reflected
+check_body naca0012_ma05_re5000 naca "2 4 3x1"
 # A solid coupled to the flow (ghost-cell FSI, moving walls): divided
 # between the ranks as a solid alone; the coarse panel in a shock and the coarse cracking
 # cylinder.
 check_body panel_shock panel "2 3 4"
-check_body cylinder_crack_ma17 crack "2 4"
+check_body cylinder_crack_ma17 crack "2 4 2x2"
 # The volumetric penalty coupling (solid replicated, cells gathered and
 # scattered by the flow's ops): the coarse detonation chamber, and the
 # hollow square in a blast with sealed faces, shortened.
-check_body chamber_detonation chamber "2 3 4"
-check_body blast_hollow_square blast_sealed 3 --set time.end=2e-5 --set coupling.seal=true \
-    --set output.field_interval=1e-5
-# The same on 2D process grids (--processes PXxPY), against the runs of one
-# process above: the immersed boundary's blocks (ghost cells, fetched
-# stencils, sealed faces, probes), moving walls across blocks, the
-# penalty's cells.
-check_body_grid cylinder_ma2_re300 cylinder_sealed 2x2
-check_body_grid cylinder_ma2_re300 cylinder_reflected 2x1 --set flow.ghost_faces=reflected
-check_body_grid naca0012_ma05_re5000 naca 3x1
-check_body_grid cylinder_crack_ma17 crack 2x2
-check_body_grid chamber_detonation chamber 2x2
-check_body_grid blast_hollow_square blast_sealed 2x1 --set time.end=2e-5 --set coupling.seal=true \
+check_body chamber_detonation chamber "2 3 4 2x2"
+check_body blast_hollow_square blast_sealed "3 2x1" --set time.end=2e-5 --set coupling.seal=true \
     --set output.field_interval=1e-5
 # A solid alone, divided between the ranks (solid/bond/halo.h): the coarse
 # pre-cracked plate (bonds break across the ranks' runs; energies, the

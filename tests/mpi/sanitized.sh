@@ -9,20 +9,14 @@
 # UBSan's stay on; any report fails the run).
 #   usage: sanitized.sh NSPD SOURCE_DIR MPIEXEC VTK_SAME
 set -u
-nspd=$1
-src=$2
-mpiexec=$3
-vtk_same=$4
-. "$src/tests/cli/common.sh"
-. "$src/tests/mpi/checks.sh"
+. "$2/tests/mpi/checks.sh"
 export ASAN_OPTIONS=detect_leaks=0
 
 check_case blasius 0.3 3
 from=$(ls "$work/blasius.3"/flow_*.pvtr | tail -n 1)
 "$nspd" run "$src/cases/blasius.yaml" -o "$work/from.1" --quiet --set time.end=0.05 \
     --set "flow.initial={from: $from}" && ok || fail "a run of one process from a .pvtr failed"
-check_body cylinder_crack_ma17 crack 2
-check_body_grid cylinder_crack_ma17 crack 2x2
+check_body cylinder_crack_ma17 crack "2 2x2"
 check_body chamber_detonation chamber 2
 check_body plate_crack plate 3
 finish

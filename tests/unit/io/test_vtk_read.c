@@ -74,20 +74,28 @@ static void write_field(const char *path) {
     write_field_with(path, false);
 }
 
+/* Reads the NX x NY grid of faces() at `path` (a .vtr or a .pvtr),
+ * checking its size and every face bit for bit. */
+static void read_stretched(const char *path, VtkRectilinear *g) {
+    assert_ok(vtk_read_rectilinear(path, g));
+    assert_int_equal(g->n[0], NX);
+    assert_int_equal(g->n[1], NY);
+    assert_int_equal(g->n[2], 1);
+    double xf[NX + 1], yf[NY + 1];
+    faces(xf, yf);
+    assert_memory_equal(g->face[0], xf, sizeof xf);
+    assert_memory_equal(g->face[1], yf, sizeof yf);
+}
+
 static void test_round_trip(void **state) {
     (void)state;
     char path[1200];
     snprintf(path, sizeof path, "%s/field.vtr", test_scratch_dir("vtk_read"));
     write_field(path);
     VtkRectilinear g;
-    assert_ok(vtk_read_rectilinear(path, &g));
-    assert_int_equal(g.n[0], NX);
-    assert_int_equal(g.n[1], NY);
-    assert_int_equal(g.n[2], 1);
+    read_stretched(path, &g);
     double xf[NX + 1], yf[NY + 1];
     faces(xf, yf);
-    assert_memory_equal(g.face[0], xf, sizeof xf);
-    assert_memory_equal(g.face[1], yf, sizeof yf);
     const VtkCellArray *vel = vtk_find_cell_array(&g, "velocity", 3);
     assert_non_null(vel);
     assert_null(vtk_find_cell_array(&g, "velocity", 1));
@@ -194,14 +202,9 @@ static void test_pieces(void **state) {
     char path[1300];
     snprintf(path, sizeof path, "%s/whole.pvtr", dir);
     VtkRectilinear g;
-    assert_ok(vtk_read_rectilinear(path, &g));
-    assert_int_equal(g.n[0], NX);
-    assert_int_equal(g.n[1], NY);
-    assert_int_equal(g.n[2], 1);
+    read_stretched(path, &g);
     double xf[NX + 1], yf[NY + 1];
     faces(xf, yf);
-    assert_memory_equal(g.face[0], xf, sizeof xf);
-    assert_memory_equal(g.face[1], yf, sizeof yf);
     const VtkCellArray *rho = vtk_find_cell_array(&g, "density", 1),
                        *vel = vtk_find_cell_array(&g, "velocity", 3);
     assert_non_null(rho);
