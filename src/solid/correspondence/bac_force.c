@@ -1,6 +1,8 @@
 #include "solid/correspondence/bac_force.h"
 
+#include "core/mem.h"
 #include "core/parallel.h"
+#include "core/status.h"
 #include "solid/correspondence/rk_gradient.h"
 #include "solid/correspondence/svk.h"
 
@@ -41,20 +43,41 @@ int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, i
     return missing;
 }
 
+/* The canonical bonds in bond order; count only when pair_bond is NULL. */
+static int64_t pair_list(int64_t n, const int64_t *first, const int64_t *reverse,
+                         int64_t *pair_bond, int32_t *pair_point) {
+    int64_t count = 0;
+    for (int64_t i = 0; i < n; i++)
+        for (int64_t k = first[i]; k < first[i + 1]; k++) {
+            if (reverse[k] >= 0 && reverse[k] < k) continue; /* the pair's other bond */
+            if (pair_bond) pair_bond[count] = k, pair_point[count] = (int32_t)i;
+            count++;
+        }
+    return count;
+}
+
+int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, int64_t *count,
+                     int64_t **pair_bond, int32_t **pair_point) {
+    *count = pair_list(n, first, reverse, NULL, NULL);
+    const size_t m = (size_t)(*count > 0 ? *count : 1);
+    TRY(nspd_alloc(pair_bond, m, sizeof(int64_t)));
+    TRY(nspd_alloc(pair_point, m, sizeof(int32_t)));
+    pair_list(n, first, reverse, *pair_bond, *pair_point);
+    return NSPD_OK;
+}
+
 /* The bond's deformation gradient F_b = Fm + (Y - Fm xi) (x) xi / |xi|^2,
- * with g = xi / |xi|^2 (one division a bond, formed by the caller). 2D in
- * closed form on the four in-plane entries (the rest of F is 0 in 2D, as
- * rk_deformation_gradient leaves it): the generic loops over 9 entries
- * through memory cost more than the arithmetic. */
-static inline void bond_gradient(int dim, const double Fi[9], const double Fj[9],
-                                 const double xi[3], const double g[3], const double Y[3],
-                                 double Fb[9]) {
+ * with g = xi / |xi|^2 (one division a bond, formed by the caller), of the
+ * points' F (9 entries, row-major 3 x 3). In 2D only the in-plane entries
+ * are formed (Fb[0], Fb[1], Fb[3], Fb[4]); the rest are not touched. */
+static inline __attribute__((always_inline)) void
+bond_gradient(int dim, const double *Fi, const double *Fj, const double xi[3], const double g[3],
+              const double Y[3], double Fb[9]) {
     if (dim == 2) {
         const double m00 = 0.5 * (Fi[0] + Fj[0]), m01 = 0.5 * (Fi[1] + Fj[1]);
         const double m10 = 0.5 * (Fi[3] + Fj[3]), m11 = 0.5 * (Fi[4] + Fj[4]);
         const double r0 = Y[0] - m00 * xi[0] - m01 * xi[1];
         const double r1 = Y[1] - m10 * xi[0] - m11 * xi[1];
-        for (int q = 0; q < 9; q++) Fb[q] = 0.0;
         Fb[0] = m00 + r0 * g[0], Fb[1] = m01 + r0 * g[1];
         Fb[3] = m10 + r1 * g[0], Fb[4] = m11 + r1 * g[1];
         return;
@@ -69,46 +92,164 @@ static inline void bond_gradient(int dim, const double Fi[9], const double Fj[9]
         for (int b = 0; b < dim; b++) Fb[3 * a + b] += r[a] * g[b];
 }
 
-/* P_b of bond k from its F_b (and, with a J2 state, F_b at the start of
- * the step): SVK, or the Green-Naghdi hypoelastic update in the unrotated
- * frame with the midpoint increment (the rotation of F_mid carries the
- * rate; a rigid rotation gives de = 0 exactly, notes 1c.6) and J2 radial
- * return (1c.7), P = J sigma F^-T. */
-static void bond_stress(const BacSystem *s, BacState *st, int64_t k, const double Fb[9],
-                        const double Fb_prev[9], double P[9]) {
-    if (!st) {
-        svk_stress(s->dim, Fb, s->lambda, s->mu, P);
-        return;
+/* Bond k = (i -> j): xi, g = xi / |xi|^2 and Y = xi + u_j - u_i. */
+static inline __attribute__((always_inline)) void bond_vectors(int dim, const BacSystem *s,
+                                                               const double *const u[3], int64_t i,
+                                                               int64_t j, double xi[3], double g[3],
+                                                               double Y[3]) {
+    double xx = 0.0;
+    for (int a = 0; a < 3; a++) xi[a] = g[a] = Y[a] = 0.0;
+    for (int a = 0; a < dim; a++) {
+        xi[a] = s->x[a][j] - s->x[a][i];
+        Y[a] = xi[a] + (u[a][j] - u[a][i]);
+        xx += xi[a] * xi[a];
     }
-    const double F[4] = {Fb[0], Fb[1], Fb[3], Fb[4]};
-    const double Fm[4] = {0.5 * (Fb_prev[0] + Fb[0]), 0.5 * (Fb_prev[1] + Fb[1]),
-                          0.5 * (Fb_prev[3] + Fb[3]), 0.5 * (Fb_prev[4] + Fb[4])};
-    const double dF[4] = {Fb[0] - Fb_prev[0], Fb[1] - Fb_prev[1], Fb[3] - Fb_prev[3],
-                          Fb[4] - Fb_prev[4]};
-    double de[3], *sigma = st->sigma + 4 * k, P2[4];
-    for (int q = 0; q < 9; q++) P[q] = 0.0;
-    const bool upright = F[0] * F[3] - F[1] * F[2] > 0.0;
-    st->inverted[k] = upright ? 0 : 1;
-    if (!upright || !j2_unrotated_increment_2d(Fm, dF, 1.0, de)) {
-        st->inverted[k] = 1;
-        st->principal[k] = 0.0;
-        return;
-    }
-    double dzz;
-    j2_update_zz(st->material, de, sigma, &st->eqps[k], &dzz);
-    st->principal[k] = j2_max_principal(sigma); /* invariant under the in-plane rotation */
-    j2_piola_2d(F, sigma, P2);
-    const double thick = st->strain_zz ? exp(st->strain_zz[k] += dzz) : 1.0;
-    P[0] = thick * P2[0], P[1] = thick * P2[1], P[3] = thick * P2[2], P[4] = thick * P2[3];
+    const double inv_xx = 1.0 / xx;
+    for (int a = 0; a < dim; a++) g[a] = xi[a] * inv_xx;
 }
 
-/* Copies bond k's material state (and its outputs) to its reverse r. */
-static void copy_state(BacState *st, int64_t k, int64_t r) {
-    for (int q = 0; q < 4; q++) st->sigma[4 * r + q] = st->sigma[4 * k + q];
-    st->eqps[r] = st->eqps[k];
-    st->principal[r] = st->principal[k];
-    st->inverted[r] = st->inverted[k];
-    if (st->strain_zz) st->strain_zz[r] = st->strain_zz[k];
+/* Per pair, the hyperelastic (SVK) P_b, stored at both bonds. */
+static inline __attribute__((always_inline)) void pairs_svk(const int dim, const BacSystem *s,
+                                                            const double *const u[3],
+                                                            const double *F, double *Pb) {
+    const int dd = dim * dim;
+#pragma omp parallel for schedule(static) if (s->pair_count >= PARALLEL_MIN_ITEMS)
+    for (int64_t p = 0; p < s->pair_count; p++) {
+        const int64_t k = s->pair_bond[p], i = s->pair_point[p], j = s->nbr[k], r = s->reverse[k];
+        if (s->bond_scale && s->bond_scale[k] == 0.0) continue; /* broken: no stress */
+        double xi[3], g[3], Y[3], Fb[9] = {0}, P[9];
+        bond_vectors(dim, s, u, i, j, xi, g, Y);
+        bond_gradient(dim, F + 9 * i, F + 9 * j, xi, g, Y, Fb);
+        svk_stress(dim, Fb, s->lambda, s->mu, P);
+        for (int a = 0; a < dim; a++)
+            for (int b = 0; b < dim; b++) Pb[dd * k + dim * a + b] = P[3 * a + b];
+        if (r >= 0)
+            for (int q = 0; q < dd; q++) Pb[dd * r + q] = Pb[dd * k + q];
+    }
+}
+
+/* What the 2D J2 pass over pairs reads and writes, as plain arrays: a
+ * local copy in each thread, so that the loop loads them once (through
+ * BacSystem and BacState the compiler must reload them after every store). */
+typedef struct {
+    J2Material material;
+    int64_t sink;  /* the spare bond of the state arrays */
+    int64_t width; /* 4, the doubles of sigma and P_b per bond: a variable, because GCC 12 folds
+                      a constant into the scatter's scale (32 bytes), which no scatter has, and
+                      gives the loop up */
+    const int64_t *pair_bond, *reverse;
+    const int32_t *pair_point, *nbr;
+    const double *x0, *x1, *u0, *u1, *up0, *up1, *F, *Fp, *bond_scale;
+    double *Pb, *sigma, *eqps, *principal, *strain_zz, *flag;
+} PairView;
+
+static PairView pair_view(const BacSystem *s, const BacState *st, const double *const u[3],
+                          const double *F, const double *Fp, double *Pb, double *flag) {
+    return (PairView){.material = *st->material,
+                      .sink = s->first[s->n],
+                      .width = 4,
+                      .pair_bond = s->pair_bond,
+                      .reverse = s->reverse,
+                      .pair_point = s->pair_point,
+                      .nbr = s->nbr,
+                      .x0 = s->x[0],
+                      .x1 = s->x[1],
+                      .u0 = u[0],
+                      .u1 = u[1],
+                      .up0 = st->u_prev[0],
+                      .up1 = st->u_prev[1],
+                      .F = F,
+                      .Fp = Fp,
+                      .bond_scale = s->bond_scale,
+                      .Pb = Pb,
+                      .sigma = st->sigma,
+                      .eqps = st->eqps,
+                      .principal = st->principal,
+                      .strain_zz = st->strain_zz,
+                      .flag = flag};
+}
+
+/* Pair p's J2 step in 2D (j2_step_2d) from the points' F now and at the
+ * step's start, its P_b and state stored at both bonds (the reverse gets
+ * the bits it would compute). plane_stress is a constant at each call;
+ * scaled says whether v->bond_scale exists (a constant 1 in the SIMD loop,
+ * which can not test a pointer before each load). */
+static inline __attribute__((always_inline)) void
+pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scaled) {
+    const int64_t k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k], r = v->reverse[k];
+    const double xi[3] = {v->x0[j] - v->x0[i], v->x1[j] - v->x1[i], 0.0};
+    const double Y[3] = {xi[0] + (v->u0[j] - v->u0[i]), xi[1] + (v->u1[j] - v->u1[i]), 0.0};
+    const double Yp[3] = {xi[0] + (v->up0[j] - v->up0[i]), xi[1] + (v->up1[j] - v->up1[i]), 0.0};
+    const double inv_xx = 1.0 / (0.0 + xi[0] * xi[0] + xi[1] * xi[1]);
+    const double g[3] = {xi[0] * inv_xx, xi[1] * inv_xx, 0.0};
+    /* the points' in-plane F entries, indexed from the array's start (a
+     * gather's offset must be one index times the element size) */
+    const int64_t fi = 9 * i, fj = 9 * j;
+    const double Fi[5] = {v->F[fi], v->F[fi + 1], 0.0, v->F[fi + 3], v->F[fi + 4]};
+    const double Fj[5] = {v->F[fj], v->F[fj + 1], 0.0, v->F[fj + 3], v->F[fj + 4]};
+    const double Fpi[5] = {v->Fp[fi], v->Fp[fi + 1], 0.0, v->Fp[fi + 3], v->Fp[fi + 4]};
+    const double Fpj[5] = {v->Fp[fj], v->Fp[fj + 1], 0.0, v->Fp[fj + 3], v->Fp[fj + 4]};
+    double Fb[9], Fbp[9];
+    bond_gradient(2, Fi, Fj, xi, g, Y, Fb);
+    bond_gradient(2, Fpi, Fpj, xi, g, Yp, Fbp);
+    const double F2[4] = {Fb[0], Fb[1], Fb[3], Fb[4]}, Fp2[4] = {Fbp[0], Fbp[1], Fbp[3], Fbp[4]};
+    double sigma[4], eqps = v->eqps[k], zz = plane_stress ? v->strain_zz[k] : 0.0, P[4], principal;
+    for (int q = 0; q < 4; q++) sigma[q] = v->sigma[4 * k + q];
+    const int inverted =
+        j2_step_2d(&v->material, plane_stress, F2, Fp2, sigma, &eqps, &zz, P, &principal);
+    /* A broken bond keeps its state: its lane stores into the sink, the
+     * spare bond past the last (BacState; P_b's too, bac_force), so that
+     * every store is an unmasked scatter (GCC has no masked one here;
+     * storing the old values back it turns into a masked store). Its P_b
+     * is not needed (S_i and T_ij skip broken bonds). Bond r is k when
+     * there is no reverse. */
+    const int live = !scaled || v->bond_scale[k] != 0.0;
+    const int64_t rk = r >= 0 ? r : k, sk = live ? k : v->sink, sr = live ? rk : v->sink;
+    const int64_t sk4 = v->width * sk, sr4 = v->width * sr;
+    for (int q = 0; q < 4; q++) {
+        v->sigma[sk4 + q] = sigma[q], v->sigma[sr4 + q] = sigma[q];
+        v->Pb[sk4 + q] = P[q], v->Pb[sr4 + q] = P[q];
+    }
+    v->eqps[sk] = eqps, v->eqps[sr] = eqps;
+    v->principal[sk] = principal, v->principal[sr] = principal;
+    if (plane_stress) v->strain_zz[sk] = zz, v->strain_zz[sr] = zz;
+    /* the inversion flag is a byte, which no SIMD scatter stores: a double
+     * per pair here (-1: keep), stored by store_inverted */
+    v->flag[p] = live ? (inverted ? 1.0 : 0.0) : -1.0;
+}
+
+/* The pairs' inversion flags (pair_j2_2d's flag) into both bonds. */
+static void store_inverted(const BacSystem *s, const double *flag, uint8_t *inverted) {
+#pragma omp parallel for schedule(static) if (s->pair_count >= PARALLEL_MIN_ITEMS)
+    for (int64_t p = 0; p < s->pair_count; p++) {
+        if (flag[p] < 0.0) continue;
+        const int64_t k = s->pair_bond[p], r = s->reverse[k];
+        inverted[k] = (uint8_t)flag[p];
+        if (r >= 0) inverted[r] = (uint8_t)flag[p];
+    }
+}
+
+/* Per pair, the J2 P_b and state update (2D). Plane strain runs in SIMD
+ * lanes across pairs (each pair's arithmetic is its own, so the lanes give
+ * the scalar bits); plane stress keeps j2_update_zz's Newton loop, whose
+ * iteration count differs between lanes, on the scalar path, as does a
+ * system without bond_scale (the body always has one). */
+static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *const u[3],
+                        const double *F, const double *Fp, double *Pb, double *flag) {
+    const int64_t np = s->pair_count;
+    const int plane_stress = st->material->plane_stress, scaled = s->bond_scale != NULL;
+#pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
+    {
+        const PairView v = pair_view(s, st, u, F, Fp, Pb, flag);
+        if (plane_stress || !scaled) {
+#pragma omp for schedule(static)
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, scaled);
+        } else {
+#pragma omp for simd schedule(simd : static)
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1);
+        }
+    }
+    store_inverted(s, flag, st->inverted);
 }
 
 void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],
@@ -128,38 +269,17 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
             w += s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0) * s->volume[s->nbr[k]];
         inv_w0[i] = w > 0.0 ? 1.0 / w : 0.0;
     }
-    /* per pair, from its lower-numbered bond: F_b(ij) = F_b(ji) bit for bit,
-     * so the pair's stress (and its state update) is computed once and
-     * copied to the reverse bond - the bits each end would compute. Each
-     * reverse bond is written by its pair's one canonical bond only. */
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
-            const int64_t r = s->reverse[k];
-            if (r >= 0 && r < k) continue; /* the pair's other bond computes it */
-            if (s->bond_scale && s->bond_scale[k] == 0.0) continue; /* broken: no stress */
-            const int32_t j = s->nbr[k];
-            double xi[3] = {0, 0, 0}, Y[3] = {0, 0, 0}, Yp[3] = {0, 0, 0}, xx = 0.0;
-            for (int a = 0; a < dim; a++) {
-                xi[a] = s->x[a][j] - s->x[a][i];
-                Y[a] = xi[a] + (u[a][j] - u[a][i]);
-                if (st) Yp[a] = xi[a] + (st->u_prev[a][j] - st->u_prev[a][i]);
-                xx += xi[a] * xi[a];
-            }
-            const double inv_xx = 1.0 / xx;
-            const double g[3] = {xi[0] * inv_xx, xi[1] * inv_xx, xi[2] * inv_xx};
-            double Fb[9], Fbp[9] = {0}, P[9];
-            bond_gradient(dim, F + 9 * i, F + 9 * (int64_t)j, xi, g, Y, Fb);
-            if (st) bond_gradient(dim, Fp + 9 * i, Fp + 9 * (int64_t)j, xi, g, Yp, Fbp);
-            bond_stress(s, st, k, Fb, Fbp, P);
-            for (int a = 0; a < dim; a++)
-                for (int b = 0; b < dim; b++) Pb[dd * k + dim * a + b] = P[3 * a + b];
-            if (r < 0) continue;
-            for (int q = 0; q < dd; q++) Pb[dd * r + q] = Pb[dd * k + q];
-            if (st) copy_state(st, k, r);
-        }
-    }
-    /* per point: the stress integral S_i, and T_ij */
+    /* per pair, from its canonical (lower-numbered) bond: F_b(ij) = F_b(ji)
+     * bit for bit, so the pair's stress (and its state update) is computed
+     * once and copied to the reverse bond - the bits each end would
+     * compute. Each bond is written by its pair only. */
+    if (st)
+        pairs_j2_2d(s, st, u, F, Fp, Pb, T); /* T, written next, holds the flags meanwhile */
+    else if (dim == 2)
+        pairs_svk(2, s, u, F, Pb);
+    else
+        pairs_svk(3, s, u, F, Pb);
+        /* per point: the stress integral S_i, and T_ij */
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         double Si[9] = {0};

@@ -73,17 +73,20 @@ static int alloc_arrays(CpdBody *b) {
      * which needs no RK weights) */
     const bool classic = b->cfg.force == CPD_FORCE_CLASSIC;
     const size_t ns = classic ? n : nb;
+    /* the bond-associated state has one bond more: bac_force's sink */
+    const size_t nss = classic ? n : nb + 1;
     if (!classic) TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
-    TRY(nspd_alloc(&b->sigma, 4 * ns, sizeof(double)));
-    TRY(nspd_alloc(&b->eqps, ns, sizeof(double)));
+    TRY(nspd_alloc(&b->sigma, 4 * nss, sizeof(double)));
+    TRY(nspd_alloc(&b->eqps, nss, sizeof(double)));
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->principal, ns, sizeof(double)));
+    TRY(nspd_alloc(&b->principal, nss, sizeof(double)));
     TRY(nspd_alloc(&b->inverted, ns, 1));
-    if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, ns, sizeof(double)));
+    if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, nss, sizeof(double)));
     /* T (dim per bond) and, for the bond-associated force, P_b (dim^2) */
     const size_t work = (size_t)(classic ? b->dim : bac_work_per_bond(b->dim));
-    TRY(nspd_alloc(&b->work_bond, work * nb, sizeof(double)));
+    /* + the sink of P_b (bac_force's stateful pass) */
+    TRY(nspd_alloc(&b->work_bond, work * nb + (size_t)(b->dim * b->dim), sizeof(double)));
     return NSPD_OK;
 }
 
@@ -153,6 +156,9 @@ static int build(CpdBody *b, CpdConfig *cfg) {
 
     if (bac_reverse_bonds(b->n, b->first, b->nbr, b->reverse) != 0)
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
+    if (cfg->force != CPD_FORCE_CLASSIC)
+        TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pair_count, &b->pair_bond,
+                             &b->pair_point));
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++)
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
@@ -219,6 +225,8 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->first);
     nspd_free(&b->nbr);
     nspd_free(&b->reverse);
+    nspd_free(&b->pair_bond);
+    nspd_free(&b->pair_point);
     nspd_free(&b->omega);
     nspd_free(&b->phi);
     nspd_free(&b->ok);

@@ -68,6 +68,9 @@ typedef struct {
     int64_t *first;
     int32_t *nbr;
     int64_t *reverse;
+    int64_t pair_count; /* the bond-associated force's bond pairs (bac_pair_list) */
+    int64_t *pair_bond;
+    int32_t *pair_point;
     double *omega, *phi; /* phi: NULL for the classic force */
     uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
     uint8_t *redo;       /* per point: damage grew in its family this step */

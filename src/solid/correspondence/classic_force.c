@@ -67,28 +67,18 @@ static void times_inverse(int dim, const double N[9], const double Kinv[9], doub
         }
 }
 
-/* P_i of the J2 point i from F^{n+1} = I + H and F^n = I + Hp (2D), as
- * bac_force's bond_stress does for a bond. */
+/* P_i of the J2 point i from F^{n+1} = I + H and F^n = I + Hp (2D): the
+ * material step bac_force takes per bond pair (j2_step_2d). */
 static void point_stress(ClassicState *st, int64_t i, const double H[9], const double Hp[9],
                          double P[9]) {
     const double F[4] = {1.0 + H[0], H[1], H[3], 1.0 + H[4]};
     const double Fp[4] = {1.0 + Hp[0], Hp[1], Hp[3], 1.0 + Hp[4]};
-    const double Fm[4] = {0.5 * (Fp[0] + F[0]), 0.5 * (Fp[1] + F[1]), 0.5 * (Fp[2] + F[2]),
-                          0.5 * (Fp[3] + F[3])};
-    const double dF[4] = {F[0] - Fp[0], F[1] - Fp[1], F[2] - Fp[2], F[3] - Fp[3]};
-    double de[3], *sigma = st->sigma + 4 * i, P2[4];
-    if (!(F[0] * F[3] - F[1] * F[2] > 0.0) || !j2_unrotated_increment_2d(Fm, dF, 1.0, de)) {
-        st->inverted[i] = 1;
-        st->principal[i] = 0.0;
-        return;
-    }
-    st->inverted[i] = 0;
-    double dzz;
-    j2_update_zz(st->material, de, sigma, &st->eqps[i], &dzz);
-    st->principal[i] = j2_max_principal(sigma);
-    j2_piola_2d(F, sigma, P2);
-    const double thick = st->strain_zz ? exp(st->strain_zz[i] += dzz) : 1.0;
-    P[0] = thick * P2[0], P[1] = thick * P2[1], P[3] = thick * P2[2], P[4] = thick * P2[3];
+    double P2[4], zz = 0.0;
+    double *strain_zz = st->strain_zz ? &st->strain_zz[i] : &zz;
+    st->inverted[i] =
+        (uint8_t)j2_step_2d(st->material, st->material->plane_stress, F, Fp, st->sigma + 4 * i,
+                            &st->eqps[i], strain_zz, P2, &st->principal[i]);
+    P[0] = P2[0], P[1] = P2[1], P[3] = P2[2], P[4] = P2[3];
 }
 
 /* Point i's F_i and P_i, and T_ij of its bonds; false when K_i is singular

@@ -102,11 +102,11 @@ NSPD_KERNEL void j2_polar_rotation_2d(const double F[4], double R[4]) {
  * then gives D = 0 exactly; with F_{n+1} it gives D = (1 - cos dtheta) / dt I). */
 NSPD_KERNEL int j2_unrotated_increment_2d(const double F[4], const double Fdot[4], double dt,
                                           double de[3]) {
+    /* branch-free (both answers formed, one kept), so that the loop over
+     * bond pairs around it vectorises; the kept answer's bits are those of
+     * the branchy form */
     const double det = F[0] * F[3] - F[1] * F[2];
-    if (!(det > 0.0)) {
-        de[0] = de[1] = de[2] = 0.0;
-        return 0;
-    }
+    const int upright = det > 0.0;
     /* L = Fdot F^-1 with F^-1 = adj(F) / det */
     const double a = dt / det;
     const double l11 = (Fdot[0] * F[3] - Fdot[1] * F[2]) * a;
@@ -118,10 +118,13 @@ NSPD_KERNEL int j2_unrotated_increment_2d(const double F[4], const double Fdot[4
     j2_polar_rotation_2d(F, R);
     const double c = R[0], s = R[2];
     /* d_hat_ab = e_a'^T D e_b' with e_1' = (c, s), e_2' = (-s, c), R's columns */
-    de[0] = c * c * dxx + 2.0 * c * s * dxy + s * s * dyy;
-    de[1] = s * s * dxx - 2.0 * c * s * dxy + c * c * dyy;
-    de[2] = c * s * (dyy - dxx) + (c * c - s * s) * dxy;
-    return 1;
+    const double e0 = c * c * dxx + 2.0 * c * s * dxy + s * s * dyy;
+    const double e1 = s * s * dxx - 2.0 * c * s * dxy + c * c * dyy;
+    const double e2 = c * s * (dyy - dxx) + (c * c - s * s) * dxy;
+    de[0] = upright ? e0 : 0.0;
+    de[1] = upright ? e1 : 0.0;
+    de[2] = upright ? e2 : 0.0;
+    return upright;
 }
 
 /* One radial return (1c.7) from sigma_n, eqps_n for the 3D increment
@@ -141,21 +144,19 @@ NSPD_KERNEL double j2_return(const J2Material *m, const double de[3], double dzz
     const double ss = s0 * s0 + s1 * s1 + s2 * s2 + 2.0 * s3 * s3; /* s : s */
     const double q = sqrt(1.5 * ss);
     const double f = q - (m->yield + H * eqps_n);
-    if (!j2_is_plastic(m) || !(f > 0.0)) {
-        sigma[0] = t0, sigma[1] = t1, sigma[2] = t2, sigma[3] = t3;
-        *c33 = K + 4.0 / 3.0 * G;
-        return 0.0;
-    }
+    /* both branches formed and one kept (a loop over bond pairs vectorises
+     * around this); the elastic one's 0/0 where s_tr = 0 is never kept */
+    const int plastic = j2_is_plastic(m) && f > 0.0;
     const double deqps = f / (3.0 * G + H);
     const double theta = 1.0 - 3.0 * G * deqps / q;
     const double theta_bar = 3.0 * G / (3.0 * G + H) - (1.0 - theta);
     const double nzz2 = s2 * s2 / ss; /* n = s_tr / |s_tr|, |s_tr|^2 = s : s */
-    sigma[0] = p + theta * s0;
-    sigma[1] = p + theta * s1;
-    sigma[2] = p + theta * s2;
-    sigma[3] = theta * s3;
-    *c33 = K + 4.0 / 3.0 * G * theta - 2.0 * G * theta_bar * nzz2;
-    return deqps;
+    sigma[0] = plastic ? p + theta * s0 : t0;
+    sigma[1] = plastic ? p + theta * s1 : t1;
+    sigma[2] = plastic ? p + theta * s2 : t2;
+    sigma[3] = plastic ? theta * s3 : t3;
+    *c33 = plastic ? K + 4.0 / 3.0 * G * theta - 2.0 * G * theta_bar * nzz2 : K + 4.0 / 3.0 * G;
+    return plastic ? deqps : 0.0;
 }
 
 /* One hypoelastic step with J2 radial return and linear isotropic hardening
@@ -243,12 +244,23 @@ NSPD_KERNEL void j2_piola_2d(const double F[4], const double sigma_hat[4], doubl
     P[3] = -s[3] * F[2] + s[1] * F[0];
 }
 
+/* fmax and fmin with libm's exact answers (the larger or smaller; a NaN
+ * operand gives the other one; of two equal values, the second), written
+ * as selects: GCC calls libm for fmax and fmin unless NaNs are ruled out,
+ * and a call keeps the loops over bonds scalar. */
+NSPD_KERNEL double j2_fmax(double a, double b) {
+    return (a > b || b != b) ? a : b;
+}
+NSPD_KERNEL double j2_fmin(double a, double b) {
+    return (a < b || b != b) ? a : b;
+}
+
 /* The maximum principal value of a (rotated, Cauchy) stress [xx, yy, zz, xy]:
  * the larger in-plane eigenvalue c + r, c = (sxx + syy) / 2,
  * r = sqrt(((sxx - syy) / 2)^2 + sxy^2), or sigma_zz if larger. */
 NSPD_KERNEL double j2_max_principal(const double sigma[4]) {
     const double c = 0.5 * (sigma[0] + sigma[1]), h = 0.5 * (sigma[0] - sigma[1]);
-    return fmax(c + sqrt(h * h + sigma[3] * sigma[3]), sigma[2]);
+    return j2_fmax(c + sqrt(h * h + sigma[3] * sigma[3]), sigma[2]);
 }
 
 /* Ductile bond damage (1c.8, PdShell computeDamageByPlasticStrain; paper:
@@ -256,7 +268,7 @@ NSPD_KERNEL double j2_max_principal(const double sigma[4]) {
  * (critical - threshold), 0, 1). Needs critical > threshold. */
 NSPD_KERNEL double j2_damage_ductile(double eqps, double threshold, double critical) {
     const double d = (eqps - threshold) / (critical - threshold);
-    return fmin(fmax(d, 0.0), 1.0);
+    return j2_fmin(j2_fmax(d, 0.0), 1.0);
 }
 
 /* Brittle bond damage on the maximum principal Cauchy stress s1 (1c.8):
@@ -268,7 +280,49 @@ NSPD_KERNEL double j2_damage_ductile(double eqps, double threshold, double criti
 NSPD_KERNEL double j2_damage_brittle(double max_principal, double critical, double ramp) {
     const double r = max_principal / critical;
     if (!(ramp > 0.0)) return r > 1.0 ? 1.0 : 0.0;
-    return fmin(fmax((r - (1.0 - ramp)) / ramp, 0.0), 1.0);
+    return j2_fmin(j2_fmax((r - (1.0 - ramp)) / ramp, 0.0), 1.0);
+}
+
+/* One material step of a bond (bac_force) or a point (classic_force) in
+ * 2D, from F_n = Fp to F_{n+1} = F (in-plane 2 x 2, row-major): the
+ * midpoint increment (j2_unrotated_increment_2d), the J2 update (plane
+ * strain: j2_return with de_zz = 0; plane stress: j2_update_zz's Newton
+ * loop and the thickness stretch exp(strain_zz)), the maximum principal
+ * stress and P = thick sigma cof(F). Where det F or det F_mid is not
+ * positive the bond or point has inverted: P = 0, principal 0, and its
+ * state (sigma, eqps, strain_zz) is left as it was. Returns 1 when
+ * inverted, else 0. plane_stress must be m->plane_stress: it is an
+ * argument so that a caller passing the constant 0 gets no Newton loop,
+ * and its loop over pairs (branch-free here: the kept answers are formed
+ * by the same expressions) vectorises. strain_zz is read only in plane
+ * stress. */
+NSPD_KERNEL int j2_step_2d(const J2Material *m, int plane_stress, const double F[4],
+                           const double Fp[4], double sigma[4], double *eqps, double *strain_zz,
+                           double P[4], double *principal) {
+    const double Fm[4] = {0.5 * (Fp[0] + F[0]), 0.5 * (Fp[1] + F[1]), 0.5 * (Fp[2] + F[2]),
+                          0.5 * (Fp[3] + F[3])};
+    const double dF[4] = {F[0] - Fp[0], F[1] - Fp[1], F[2] - Fp[2], F[3] - Fp[3]};
+    double de[3], s[4], e, dzz = 0.0, c33;
+    const int upright = F[0] * F[3] - F[1] * F[2] > 0.0;
+    const int ok = upright & j2_unrotated_increment_2d(Fm, dF, 1.0, de);
+    if (plane_stress) {
+        for (int q = 0; q < 4; q++) s[q] = sigma[q];
+        e = *eqps;
+        j2_update_zz(m, de, s, &e, &dzz);
+    } else {
+        e = *eqps + j2_return(m, de, 0.0, sigma, *eqps, s, &c33);
+    }
+    double P2[4], thick = 1.0;
+    j2_piola_2d(F, s, P2);
+    if (plane_stress && ok) {
+        *strain_zz += dzz;
+        thick = exp(*strain_zz);
+    }
+    for (int q = 0; q < 4; q++) P[q] = ok ? (plane_stress ? thick * P2[q] : P2[q]) : 0.0;
+    *principal = ok ? j2_max_principal(s) : 0.0;
+    for (int q = 0; q < 4; q++) sigma[q] = ok ? s[q] : sigma[q];
+    *eqps = ok ? e : *eqps;
+    return !ok;
 }
 
 #endif

@@ -24,7 +24,10 @@ static BacSystem system_of(const CpdBody *b) {
                    .omega = b->omega,
                    .lambda = b->lambda,
                    .mu = b->mu,
-                   .bond_scale = b->scale};
+                   .bond_scale = b->scale,
+                   .pair_count = b->pair_count,
+                   .pair_bond = b->pair_bond,
+                   .pair_point = b->pair_point};
     for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
     return s;
 }
@@ -70,10 +73,10 @@ static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
     if (b->inverted[p] || b->inverted[q]) return 1.0;
     switch (c->damage) {
     case CPD_DAMAGE_DUCTILE:
-        return j2_damage_ductile(fmax(b->eqps[p], b->eqps[q]), c->plastic_strain_threshold,
+        return j2_damage_ductile(j2_fmax(b->eqps[p], b->eqps[q]), c->plastic_strain_threshold,
                                  c->plastic_strain_critical);
     case CPD_DAMAGE_BRITTLE:
-        return j2_damage_brittle(fmax(b->principal[p], b->principal[q]), c->critical_stress,
+        return j2_damage_brittle(j2_fmax(b->principal[p], b->principal[q]), c->critical_stress,
                                  c->damage_ramp);
     case CPD_DAMAGE_STRETCH: {
         /* |xi + (u_j - u_i)|^2 against (1 + s_c)^2 |xi|^2: the same bits
