@@ -49,8 +49,8 @@ double cpd_fixture_plane_wave_speed(CpdBody *b, double wavelength, const double 
             b->u_prev[a][i] = 0.0;
         }
     }
-    /* the material state: per point (classic) or per bond */
-    const int64_t states = b->cfg.force == CPD_FORCE_CLASSIC ? b->n : b->bond_count;
+    /* the material state: per point (classic) or per bond pair */
+    const int64_t states = b->cfg.force == CPD_FORCE_CLASSIC ? b->n : b->pairs.count;
     memset(b->sigma, 0, (size_t)(4 * states) * sizeof(double));
     cpd_force(b, 0.0);
     const double margin = 3.5 * b->delta;

@@ -43,27 +43,39 @@ int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, i
     return missing;
 }
 
-/* The canonical bonds in bond order; count only when pair_bond is NULL. */
+/* The canonical bonds in bond order, and each bond's pair; count only when
+ * pair_bond is NULL. */
 static int64_t pair_list(int64_t n, const int64_t *first, const int64_t *reverse,
-                         int64_t *pair_bond, int32_t *pair_point) {
+                         int64_t *pair_bond, int32_t *pair_point, int64_t *pair_of) {
     int64_t count = 0;
     for (int64_t i = 0; i < n; i++)
         for (int64_t k = first[i]; k < first[i + 1]; k++) {
             if (reverse[k] >= 0 && reverse[k] < k) continue; /* the pair's other bond */
-            if (pair_bond) pair_bond[count] = k, pair_point[count] = (int32_t)i;
+            if (pair_bond) {
+                pair_bond[count] = k, pair_point[count] = (int32_t)i;
+                pair_of[k] = count;
+                if (reverse[k] >= 0) pair_of[reverse[k]] = count;
+            }
             count++;
         }
     return count;
 }
 
-int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, int64_t *count,
-                     int64_t **pair_bond, int32_t **pair_point) {
-    *count = pair_list(n, first, reverse, NULL, NULL);
-    const size_t m = (size_t)(*count > 0 ? *count : 1);
-    TRY(nspd_alloc(pair_bond, m, sizeof(int64_t)));
-    TRY(nspd_alloc(pair_point, m, sizeof(int32_t)));
-    pair_list(n, first, reverse, *pair_bond, *pair_point);
+int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, BacPairs *pairs) {
+    pairs->count = pair_list(n, first, reverse, NULL, NULL, NULL);
+    const size_t m = (size_t)(pairs->count > 0 ? pairs->count : 1);
+    TRY(nspd_alloc(&pairs->bond, m, sizeof(int64_t)));
+    TRY(nspd_alloc(&pairs->point, m, sizeof(int32_t)));
+    TRY(nspd_alloc(&pairs->of, (size_t)(first[n] > 0 ? first[n] : 1), sizeof(int64_t)));
+    pair_list(n, first, reverse, pairs->bond, pairs->point, pairs->of);
     return NSPD_OK;
+}
+
+void bac_pairs_free(BacPairs *pairs) {
+    nspd_free(&pairs->bond);
+    nspd_free(&pairs->point);
+    nspd_free(&pairs->of);
+    pairs->count = 0;
 }
 
 /* The bond's deformation gradient F_b = Fm + (Y - Fm xi) (x) xi / |xi|^2,
@@ -108,23 +120,22 @@ static inline __attribute__((always_inline)) void bond_vectors(int dim, const Ba
     for (int a = 0; a < dim; a++) g[a] = xi[a] * inv_xx;
 }
 
-/* Per pair, the hyperelastic (SVK) P_b, stored at both bonds. */
+/* Per pair, the hyperelastic (SVK) P_b (component c of pair p at
+ * Pb[c np + p]). */
 static inline __attribute__((always_inline)) void pairs_svk(const int dim, const BacSystem *s,
                                                             const double *const u[3],
                                                             const double *F, double *Pb) {
-    const int dd = dim * dim;
-#pragma omp parallel for schedule(static) if (s->pair_count >= PARALLEL_MIN_ITEMS)
-    for (int64_t p = 0; p < s->pair_count; p++) {
-        const int64_t k = s->pair_bond[p], i = s->pair_point[p], j = s->nbr[k], r = s->reverse[k];
+    const int64_t np = s->pairs.count;
+#pragma omp parallel for schedule(static) if (np >= PARALLEL_MIN_ITEMS)
+    for (int64_t p = 0; p < np; p++) {
+        const int64_t k = s->pairs.bond[p], i = s->pairs.point[p], j = s->nbr[k];
         if (s->bond_scale && s->bond_scale[k] == 0.0) continue; /* broken: no stress */
         double xi[3], g[3], Y[3], Fb[9] = {0}, P[9];
         bond_vectors(dim, s, u, i, j, xi, g, Y);
         bond_gradient(dim, F + 9 * i, F + 9 * j, xi, g, Y, Fb);
         svk_stress(dim, Fb, s->lambda, s->mu, P);
         for (int a = 0; a < dim; a++)
-            for (int b = 0; b < dim; b++) Pb[dd * k + dim * a + b] = P[3 * a + b];
-        if (r >= 0)
-            for (int q = 0; q < dd; q++) Pb[dd * r + q] = Pb[dd * k + q];
+            for (int b = 0; b < dim; b++) Pb[(dim * a + b) * np + p] = P[3 * a + b];
     }
 }
 
@@ -133,24 +144,20 @@ static inline __attribute__((always_inline)) void pairs_svk(const int dim, const
  * BacSystem and BacState the compiler must reload them after every store). */
 typedef struct {
     J2Material material;
-    int64_t sink;  /* the spare bond of the state arrays */
-    int64_t width; /* 4, the doubles of sigma and P_b per bond: a variable, because GCC 12 folds
-                      a constant into the scatter's scale (32 bytes), which no scatter has, and
-                      gives the loop up */
-    const int64_t *pair_bond, *reverse;
+    int64_t np;
+    const int64_t *pair_bond;
     const int32_t *pair_point, *nbr;
     const double *x0, *x1, *u0, *u1, *up0, *up1, *F, *Fp, *bond_scale;
-    double *Pb, *sigma, *eqps, *principal, *strain_zz, *flag;
+    double *Pb, *sigma, *eqps, *principal, *strain_zz;
+    uint8_t *inverted;
 } PairView;
 
 static PairView pair_view(const BacSystem *s, const BacState *st, const double *const u[3],
-                          const double *F, const double *Fp, double *Pb, double *flag) {
+                          const double *F, const double *Fp, double *Pb) {
     return (PairView){.material = *st->material,
-                      .sink = s->first[s->n],
-                      .width = 4,
-                      .pair_bond = s->pair_bond,
-                      .reverse = s->reverse,
-                      .pair_point = s->pair_point,
+                      .np = s->pairs.count,
+                      .pair_bond = s->pairs.bond,
+                      .pair_point = s->pairs.point,
                       .nbr = s->nbr,
                       .x0 = s->x[0],
                       .x1 = s->x[1],
@@ -166,17 +173,17 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
                       .eqps = st->eqps,
                       .principal = st->principal,
                       .strain_zz = st->strain_zz,
-                      .flag = flag};
+                      .inverted = st->inverted};
 }
 
 /* Pair p's J2 step in 2D (j2_step_2d) from the points' F now and at the
- * step's start, its P_b and state stored at both bonds (the reverse gets
- * the bits it would compute). plane_stress is a constant at each call;
- * scaled says whether v->bond_scale exists (a constant 1 in the SIMD loop,
- * which can not test a pointer before each load). */
+ * step's start: its P_b and its state, component c at [c np + p].
+ * plane_stress is a constant at each call; scaled says whether
+ * v->bond_scale exists (a constant 1 in the SIMD loop, which can not test a
+ * pointer before each load). */
 static inline __attribute__((always_inline)) void
 pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scaled) {
-    const int64_t k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k], r = v->reverse[k];
+    const int64_t np = v->np, k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k];
     const double xi[3] = {v->x0[j] - v->x0[i], v->x1[j] - v->x1[i], 0.0};
     const double Y[3] = {xi[0] + (v->u0[j] - v->u0[i]), xi[1] + (v->u1[j] - v->u1[i]), 0.0};
     const double Yp[3] = {xi[0] + (v->up0[j] - v->up0[i]), xi[1] + (v->up1[j] - v->up1[i]), 0.0};
@@ -193,39 +200,17 @@ pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scale
     bond_gradient(2, Fi, Fj, xi, g, Y, Fb);
     bond_gradient(2, Fpi, Fpj, xi, g, Yp, Fbp);
     const double F2[4] = {Fb[0], Fb[1], Fb[3], Fb[4]}, Fp2[4] = {Fbp[0], Fbp[1], Fbp[3], Fbp[4]};
-    double sigma[4], eqps = v->eqps[k], zz = plane_stress ? v->strain_zz[k] : 0.0, P[4], principal;
-    for (int q = 0; q < 4; q++) sigma[q] = v->sigma[4 * k + q];
+    double sigma[4], eqps = v->eqps[p], zz = plane_stress ? v->strain_zz[p] : 0.0, P[4], principal;
+    for (int q = 0; q < 4; q++) sigma[q] = v->sigma[q * np + p];
     const int inverted =
         j2_step_2d(&v->material, plane_stress, F2, Fp2, sigma, &eqps, &zz, P, &principal);
-    /* A broken bond keeps its state: its lane stores into the sink, the
-     * spare bond past the last (BacState; P_b's too, bac_force), so that
-     * every store is an unmasked scatter (GCC has no masked one here;
-     * storing the old values back it turns into a masked store). Its P_b
-     * is not needed (S_i and T_ij skip broken bonds). Bond r is k when
-     * there is no reverse. */
-    const int live = !scaled || v->bond_scale[k] != 0.0;
-    const int64_t rk = r >= 0 ? r : k, sk = live ? k : v->sink, sr = live ? rk : v->sink;
-    const int64_t sk4 = v->width * sk, sr4 = v->width * sr;
-    for (int q = 0; q < 4; q++) {
-        v->sigma[sk4 + q] = sigma[q], v->sigma[sr4 + q] = sigma[q];
-        v->Pb[sk4 + q] = P[q], v->Pb[sr4 + q] = P[q];
-    }
-    v->eqps[sk] = eqps, v->eqps[sr] = eqps;
-    v->principal[sk] = principal, v->principal[sr] = principal;
-    if (plane_stress) v->strain_zz[sk] = zz, v->strain_zz[sr] = zz;
-    /* the inversion flag is a byte, which no SIMD scatter stores: a double
-     * per pair here (-1: keep), stored by store_inverted */
-    v->flag[p] = live ? (inverted ? 1.0 : 0.0) : -1.0;
-}
-
-/* The pairs' inversion flags (pair_j2_2d's flag) into both bonds. */
-static void store_inverted(const BacSystem *s, const double *flag, uint8_t *inverted) {
-#pragma omp parallel for schedule(static) if (s->pair_count >= PARALLEL_MIN_ITEMS)
-    for (int64_t p = 0; p < s->pair_count; p++) {
-        if (flag[p] < 0.0) continue;
-        const int64_t k = s->pair_bond[p], r = s->reverse[k];
-        inverted[k] = (uint8_t)flag[p];
-        if (r >= 0) inverted[r] = (uint8_t)flag[p];
+    /* a broken pair keeps its state; its P_b is not read (S_i and T_ij skip
+     * broken bonds) */
+    for (int q = 0; q < 4; q++) v->Pb[q * np + p] = P[q];
+    if (!scaled || v->bond_scale[k] != 0.0) {
+        for (int q = 0; q < 4; q++) v->sigma[q * np + p] = sigma[q];
+        v->eqps[p] = eqps, v->principal[p] = principal, v->inverted[p] = (uint8_t)inverted;
+        if (plane_stress) v->strain_zz[p] = zz;
     }
 }
 
@@ -235,12 +220,12 @@ static void store_inverted(const BacSystem *s, const double *flag, uint8_t *inve
  * iteration count differs between lanes, on the scalar path, as does a
  * system without bond_scale (the body always has one). */
 static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *const u[3],
-                        const double *F, const double *Fp, double *Pb, double *flag) {
-    const int64_t np = s->pair_count;
+                        const double *F, const double *Fp, double *Pb) {
+    const int64_t np = s->pairs.count;
     const int plane_stress = st->material->plane_stress, scaled = s->bond_scale != NULL;
 #pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
     {
-        const PairView v = pair_view(s, st, u, F, Fp, Pb, flag);
+        const PairView v = pair_view(s, st, u, F, Fp, Pb);
         if (plane_stress || !scaled) {
 #pragma omp for schedule(static)
             for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, scaled);
@@ -249,12 +234,59 @@ static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *co
             for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1);
         }
     }
-    store_inverted(s, flag, st->inverted);
+}
+
+/* Per point: the stress integral S_i = sum_k c_k P_b(ik) (I - xi xi / |xi|^2),
+ * c_k = omega_ik (1 / (2 w0_i) + 1 / (2 w0_k)) V_k, and T_ij = (omega_ij /
+ * w0_i) P_b xi / |xi|^2 + S_i phi_ij. dim is a constant at each call. */
+static inline __attribute__((always_inline)) void stress_integrals(const int dim,
+                                                                   const BacSystem *s,
+                                                                   const double *inv_w0,
+                                                                   const double *Pb, double *T) {
+    const int64_t n = s->n, np = s->pairs.count;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) {
+        double Si[9] = {0};
+        const double inv_wi = inv_w0[i];
+        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
+            const int32_t j = s->nbr[k];
+            if (s->bond_scale && s->bond_scale[k] == 0.0) {
+                /* broken: no force, and its stress (no longer defined) is left as it was */
+                for (int a = 0; a < dim; a++) T[(int64_t)dim * k + a] = 0.0;
+                continue;
+            }
+            double xi[3] = {0, 0, 0}, xx = 0.0, g[3] = {0, 0, 0}, P[9];
+            for (int a = 0; a < dim; a++) {
+                xi[a] = s->x[a][j] - s->x[a][i];
+                xx += xi[a] * xi[a];
+            }
+            const double inv_xx = 1.0 / xx; /* one division a bond: g = xi / |xi|^2 */
+            for (int a = 0; a < dim; a++) g[a] = xi[a] * inv_xx;
+            const int64_t pk = s->pairs.of[k];
+            for (int c = 0; c < dim * dim; c++) P[c] = Pb[c * np + pk];
+            const double omega = s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0);
+            const double inv_wj = inv_w0[j];
+            const double c = omega * (0.5 * inv_wi + 0.5 * inv_wj) * s->volume[j];
+            for (int a = 0; a < dim; a++) {
+                double Pxi = 0.0;
+                for (int b = 0; b < dim; b++) Pxi += P[dim * a + b] * xi[b];
+                for (int b = 0; b < dim; b++) Si[3 * a + b] += c * (P[dim * a + b] - Pxi * g[b]);
+                /* the direct term (omega / w0_i) P xi / |xi|^2 */
+                T[(int64_t)dim * k + a] = omega * inv_wi * Pxi * inv_xx;
+            }
+        }
+        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)
+            for (int a = 0; a < dim; a++) {
+                double v = 0.0;
+                for (int b = 0; b < dim; b++) v += Si[3 * a + b] * s->phi[(int64_t)dim * k + b];
+                T[(int64_t)dim * k + a] += v;
+            }
+    }
 }
 
 void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],
                double *work_point, double *work_bond) {
-    const int dim = s->dim, dd = dim * dim;
+    const int dim = s->dim;
     const int64_t n = s->n, nb = s->first[n];
     double *F = work_point, *Fp = work_point + 9 * n, *inv_w0 = work_point + 18 * n, *T = work_bond,
            *Pb = work_bond + (int64_t)dim * nb;
@@ -271,52 +303,16 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
     }
     /* per pair, from its canonical (lower-numbered) bond: F_b(ij) = F_b(ji)
      * bit for bit, so the pair's stress (and its state update) is computed
-     * once and copied to the reverse bond - the bits each end would
-     * compute. Each bond is written by its pair only. */
+     * once, for both bonds */
     if (st)
-        pairs_j2_2d(s, st, u, F, Fp, Pb, T); /* T, written next, holds the flags meanwhile */
+        pairs_j2_2d(s, st, u, F, Fp, Pb);
     else if (dim == 2)
         pairs_svk(2, s, u, F, Pb);
     else
         pairs_svk(3, s, u, F, Pb);
-        /* per point: the stress integral S_i, and T_ij */
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        double Si[9] = {0};
-        const double inv_wi = inv_w0[i];
-        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
-            const int32_t j = s->nbr[k];
-            if (s->bond_scale && s->bond_scale[k] == 0.0) {
-                /* broken: no force, and its stress (no longer defined) is left as it was */
-                for (int a = 0; a < dim; a++) T[(int64_t)dim * k + a] = 0.0;
-                continue;
-            }
-            double xi[3] = {0, 0, 0}, xx = 0.0, g[3] = {0, 0, 0};
-            for (int a = 0; a < dim; a++) {
-                xi[a] = s->x[a][j] - s->x[a][i];
-                xx += xi[a] * xi[a];
-            }
-            const double inv_xx = 1.0 / xx; /* one division a bond: g = xi / |xi|^2 */
-            for (int a = 0; a < dim; a++) g[a] = xi[a] * inv_xx;
-            const double *P = Pb + dd * k;
-            const double omega = s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0);
-            const double inv_wj = inv_w0[j];
-            const double c = omega * (0.5 * inv_wi + 0.5 * inv_wj) * s->volume[j];
-            /* S_i += c P (I - xi xi / |xi|^2) */
-            for (int a = 0; a < dim; a++) {
-                double Pxi = 0.0;
-                for (int b = 0; b < dim; b++) Pxi += P[dim * a + b] * xi[b];
-                for (int b = 0; b < dim; b++) Si[3 * a + b] += c * (P[dim * a + b] - Pxi * g[b]);
-                /* the direct term (omega / w0_i) P xi / |xi|^2 */
-                T[(int64_t)dim * k + a] = omega * inv_wi * Pxi * inv_xx;
-            }
-        }
-        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)
-            for (int a = 0; a < dim; a++) {
-                double v = 0.0;
-                for (int b = 0; b < dim; b++) v += Si[3 * a + b] * s->phi[(int64_t)dim * k + b];
-                T[(int64_t)dim * k + a] += v;
-            }
-    }
+    if (dim == 2)
+        stress_integrals(2, s, inv_w0, Pb, T);
+    else
+        stress_integrals(3, s, inv_w0, Pb, T);
     bac_gather(dim, n, s->first, s->nbr, s->reverse, s->volume, T, force);
 }

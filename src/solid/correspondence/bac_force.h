@@ -29,6 +29,18 @@
 
 #include <stdint.h>
 
+/* The bond pairs (i -> j, j -> i) of a symmetric family: the bond-
+ * associated force forms each pair's P_b and material state once, and
+ * stores them per pair. Pair p is known by its canonical bond bond[p] (the
+ * lower-numbered of the two, in bond order) and that bond's point
+ * point[p]; of[k] is bond k's pair. */
+typedef struct {
+    int64_t count;
+    int64_t *bond;
+    int32_t *point;
+    int64_t *of;
+} BacPairs;
+
 typedef struct {
     int dim;
     int64_t n;
@@ -43,29 +55,22 @@ typedef struct {
     /* 1 - damage per bond (NULL: 1): multiplies omega in w0, S_i and T_ij
      * (phi must have been computed with the same scale) */
     const double *bond_scale;
-    /* the pairs, one canonical bond each (bac_pair_list): the bond and its
-     * point */
-    int64_t pair_count;
-    const int64_t *pair_bond;
-    const int32_t *pair_point;
+    BacPairs pairs; /* bac_pairs_create */
 } BacSystem;
 
-/* The per-bond state of the hypoelastic J2 material (solid/correspondence/j2_kernel.h; 2D
- * only): the bond's stress is updated from the change of its F_b over the
- * step instead of being a function of F_b. Each end of a pair stores and
- * updates its own copy, bitwise the same as the other end's because F_b(ij)
- * = F_b(ji) bit for bit (negated operands; STYLE.md). sigma, eqps,
- * principal and strain_zz hold one bond more than the system (index
- * first[n]): the sink, where the SIMD pass over pairs stores the lanes of
- * broken pairs, whose state stays as it was. */
+/* The state of the hypoelastic J2 material (solid/correspondence/j2_kernel.h;
+ * 2D only), per bond pair (F_b(ij) = F_b(ji) bit for bit, negated operands;
+ * STYLE.md): the pair's stress is updated from the change of its F_b over
+ * the step instead of being a function of F_b. Struct of arrays: sigma's
+ * component c of pair p is sigma[c pairs.count + p]. */
 typedef struct {
     const J2Material *material;
     const double *u_prev[3]; /* displacements at the start of the step */
-    double *sigma;           /* unrotated Cauchy stress, 4 per bond [xx, yy, zz, xy], Pa */
-    double *eqps;            /* equivalent plastic strain per bond */
-    double *principal;       /* out: the bond's maximum principal Cauchy stress, Pa */
-    uint8_t *inverted;       /* out: 1 where det F_b <= 0 (the bond carried no stress) */
-    /* plane stress: the logarithmic thickness strain per bond, sum of
+    double *sigma;           /* unrotated Cauchy stress, 4 per pair [xx, yy, zz, xy], Pa */
+    double *eqps;            /* equivalent plastic strain per pair */
+    double *principal;       /* out: the pair's maximum principal Cauchy stress, Pa */
+    uint8_t *inverted;       /* out: 1 where det F_b <= 0 (the pair carried no stress) */
+    /* plane stress: the logarithmic thickness strain per pair, sum of
      * de_zz, whose stretch exp() scales P_b (NULL: plane strain) */
     double *strain_zz;
 } BacState;
@@ -83,25 +88,23 @@ void bac_gather(int dim, int64_t n, const int64_t *first, const int32_t *nbr,
  * Returns the number of bonds without a reverse. */
 int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, int64_t *reverse);
 
-/* The bond pairs of a family CSR with its reverse-bond index, each by its
- * canonical bond (the lower-numbered one of a pair, or a bond without a
- * reverse), in bond order, and that bond's point: *count of each, in arrays
- * allocated with nspd_alloc (the caller frees them with nspd_free).
- * NSPD_ERR_NOMEM. */
-int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, int64_t *count,
-                     int64_t **pair_bond, int32_t **pair_point);
+/* The pairs of a symmetric family CSR with its reverse-bond index (a bond
+ * without a reverse is a pair of its own), in arrays allocated with
+ * nspd_alloc; bac_pairs_free frees them. NSPD_ERR_NOMEM. */
+int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, BacPairs *pairs);
+void bac_pairs_free(BacPairs *pairs);
 
 /* Force densities L (N/m^3, dim arrays of n) for displacements u, with the
  * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic
  * J2 material of *state, whose stresses it advances by the step from
  * state->u_prev to u (2D). work_point: 19 n doubles (F, F at u_prev and
- * 1 / w0 per point); work_bond: dim + dim^2 per bond (T, P_b), and with a
- * state dim^2 more (P_b's sink, as in BacState). Four passes:
- * F_i and w0_i; per pair (s->pair_bond) its P_b (and state update) once,
- * copied to the reverse bond; per point S_i and T_ij; per
+ * 1 / w0 per point); work_bond: dim + dim^2 per bond (T per bond, P_b per
+ * pair, component c of pair p at [c pairs.count + p]). Four passes: F_i and
+ * w0_i; per pair its P_b (and state update) once; per point S_i and T_ij; per
  * point the gather of T_ij - T_ji. A point with w0 = 0 (every bond broken)
  * exerts no force. */
-/* The doubles of work_bond per bond that bac_force needs: T and P_b. */
+/* The doubles of work_bond per bond that bac_force needs at most: T and
+ * P_b (which is per pair: half that with every bond in a pair). */
 static inline int bac_work_per_bond(int dim) {
     return dim + dim * dim;
 }

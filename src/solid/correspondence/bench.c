@@ -71,7 +71,7 @@ int cpd_bench(long points, long steps, Report *out) {
     double seconds = nspd_wall_time() - t0;
     if (status == NSPD_OK) {
         double eqps = 0.0;
-        for (int64_t k = 0; k < body.bond_count; k++) eqps = fmax(eqps, body.eqps[k]);
+        for (int64_t p = 0; p < body.pairs.count; p++) eqps = fmax(eqps, body.eqps[p]);
         const double bond_bytes = (double)body.bond_count * CPD_BYTES_PER_BOND;
         report_text(out, "bench", "cpd");
         report_int(out, "points", body.n);

@@ -50,6 +50,17 @@ static int find_families(CpdBody *b) {
     return NSPD_OK;
 }
 
+/* sigma (4), eqps, principal, inverted and, in plane stress, strain_zz of
+ * `count` points (classic) or pairs. */
+static int state_arrays(CpdBody *b, size_t count) {
+    TRY(nspd_alloc(&b->sigma, 4 * count, sizeof(double)));
+    TRY(nspd_alloc(&b->eqps, count, sizeof(double)));
+    TRY(nspd_alloc(&b->principal, count, sizeof(double)));
+    TRY(nspd_alloc(&b->inverted, count, 1));
+    if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, count, sizeof(double)));
+    return NSPD_OK;
+}
+
 static int alloc_arrays(CpdBody *b) {
     const size_t n = (size_t)b->n, nb = (size_t)b->bond_count;
     for (int d = 0; d < 3; d++) {
@@ -69,24 +80,17 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->work_point, 19 * n, sizeof(double)));
     TRY(nspd_alloc(&b->reverse, nb, sizeof(int64_t)));
     TRY(nspd_alloc(&b->omega, nb, sizeof(double)));
-    /* the material state: per bond (bond-associated) or per point (classic,
-     * which needs no RK weights) */
+    /* the material state: per point for the classic force (which needs no
+     * RK weights); per pair for the bond-associated one, allocated once
+     * the pairs are known (state_arrays) */
     const bool classic = b->cfg.force == CPD_FORCE_CLASSIC;
-    const size_t ns = classic ? n : nb;
-    /* the bond-associated state has one bond more: bac_force's sink */
-    const size_t nss = classic ? n : nb + 1;
     if (!classic) TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
-    TRY(nspd_alloc(&b->sigma, 4 * nss, sizeof(double)));
-    TRY(nspd_alloc(&b->eqps, nss, sizeof(double)));
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
-    TRY(nspd_alloc(&b->principal, nss, sizeof(double)));
-    TRY(nspd_alloc(&b->inverted, ns, 1));
-    if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, nss, sizeof(double)));
-    /* T (dim per bond) and, for the bond-associated force, P_b (dim^2) */
-    const size_t work = (size_t)(classic ? b->dim : bac_work_per_bond(b->dim));
-    /* + the sink of P_b (bac_force's stateful pass) */
-    TRY(nspd_alloc(&b->work_bond, work * nb + (size_t)(b->dim * b->dim), sizeof(double)));
+    if (classic) TRY(state_arrays(b, n));
+    /* T (dim per bond); the bond-associated force's P_b (dim^2 per pair)
+     * comes with the pairs */
+    if (classic) TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * nb, sizeof(double)));
     return NSPD_OK;
 }
 
@@ -156,9 +160,14 @@ static int build(CpdBody *b, CpdConfig *cfg) {
 
     if (bac_reverse_bonds(b->n, b->first, b->nbr, b->reverse) != 0)
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
-    if (cfg->force != CPD_FORCE_CLASSIC)
-        TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pair_count, &b->pair_bond,
-                             &b->pair_point));
+    if (cfg->force != CPD_FORCE_CLASSIC) {
+        TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
+        TRY(state_arrays(b, (size_t)b->pairs.count));
+        const size_t dd = (size_t)(b->dim * b->dim); /* T per bond, P_b per pair */
+        TRY(nspd_alloc(&b->work_bond,
+                       (size_t)b->dim * (size_t)b->bond_count + dd * (size_t)b->pairs.count,
+                       sizeof(double)));
+    }
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++)
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
@@ -225,8 +234,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->first);
     nspd_free(&b->nbr);
     nspd_free(&b->reverse);
-    nspd_free(&b->pair_bond);
-    nspd_free(&b->pair_point);
+    bac_pairs_free(&b->pairs);
     nspd_free(&b->omega);
     nspd_free(&b->phi);
     nspd_free(&b->ok);

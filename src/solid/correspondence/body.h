@@ -35,6 +35,7 @@
 #ifndef NSPD_SOLID_CORRESPONDENCE_BODY_H
 #define NSPD_SOLID_CORRESPONDENCE_BODY_H
 
+#include "solid/correspondence/bac_force.h"
 #include "solid/correspondence/config.h"
 #include "solid/correspondence/j2_kernel.h"
 #include "solid/pd/regions.h"
@@ -42,13 +43,16 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-/* Per bond in 2D; the classic force (notes 1c.3, solid/correspondence/classic_force.h)
- * keeps no RK weights and its material state per point instead (sigma,
- * eqps, principal and inverted are then arrays of n, not of bond_count):
- * 52 bytes per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16)
- * and CPD_CLASSIC_BYTES_PER_POINT more per point (sigma 32, eqps and
- * principal 8 each, inverted 1). */
-enum { CPD_BYTES_PER_BOND = 165, CPD_CLASSIC_BYTES_PER_BOND = 52 };
+/* Per bond in 2D, the bond-associated force: 76 bytes per bond (nbr 4,
+ * reverse, omega, damage, scale, pairs.of 8 each, phi and T 16 each) and 93
+ * per pair, so 46.5 per bond (sigma 32, eqps and principal 8 each,
+ * inverted 1, P_b 32, pairs.bond 8, pairs.point 4): 123 rounded up; plane
+ * stress adds 4 (strain_zz, 8 per pair). The classic force (notes 1c.3,
+ * solid/correspondence/classic_force.h) keeps no RK weights and its material state per point
+ * instead (sigma, eqps, principal and inverted are then arrays of n, not of bond_count): 52 bytes
+ * per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16) and CPD_CLASSIC_BYTES_PER_POINT more
+ * per point (sigma 32, eqps and principal 8 each, inverted 1). */
+enum { CPD_BYTES_PER_BOND = 123, CPD_CLASSIC_BYTES_PER_BOND = 52 };
 enum { CPD_CLASSIC_BYTES_PER_POINT = 49 };
 
 typedef struct {
@@ -68,9 +72,7 @@ typedef struct {
     int64_t *first;
     int32_t *nbr;
     int64_t *reverse;
-    int64_t pair_count; /* the bond-associated force's bond pairs (bac_pair_list) */
-    int64_t *pair_bond;
-    int32_t *pair_point;
+    BacPairs pairs;      /* the bond-associated force's bond pairs; the state is per pair */
     double *omega, *phi; /* phi: NULL for the classic force */
     uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
     uint8_t *redo;       /* per point: damage grew in its family this step */

@@ -111,10 +111,10 @@ static SolidEstimate cpd_estimate(const SolidConfig *sc) {
             }
     e.bonds = e.points * family;
     const bool classic = cfg->force == CPD_FORCE_CLASSIC;
-    /* plane stress adds the thickness strain: 8 B per state (bond or point) */
+    /* plane stress adds the thickness strain: 8 B per state (pair or point) */
     const double zz = pd->model == PD_PLANE_STRESS ? 8.0 : 0.0;
     const double per_point = 450.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT + zz : 0);
-    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + zz;
+    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + zz / 2;
     e.bytes = per_point * e.points + per_bond * e.bonds + 4.0 * searched * e.points;
     /* the step comes from a power iteration on the built body: not known */
     e.check_s = CPD_CHECK_S_PER_BOND * e.bonds;
@@ -237,7 +237,7 @@ static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_los
         for (int64_t i = 0; i < b->n; i++) m = b->ok[i] ? fmax(m, b->eqps[i]) : m;
     else
         for (int64_t k = 0; k < b->bond_count; k++)
-            if (b->damage[k] < 1.0) m = fmax(m, b->eqps[k]);
+            if (b->damage[k] < 1.0) m = fmax(m, b->eqps[b->pairs.of[k]]);
     *max_eqps = m;
     cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
     *mass_loss = cpd_mass_loss(b, cs->broken);
@@ -335,8 +335,9 @@ static void cpd_fields(const void *impl, FieldSet *out) {
              k++) {
             const double wk = b->omega[k] * b->scale[k];
             w += wk;
-            for (int q = 0; q < 4; q++) s[q] += wk * b->sigma[4 * k + q];
-            ep += wk * b->eqps[k];
+            const int64_t p = b->pairs.of[k]; /* the state is per pair, by component */
+            for (int q = 0; q < 4; q++) s[q] += wk * b->sigma[q * b->pairs.count + p];
+            ep += wk * b->eqps[p];
         }
         const double inv = w > 0.0 ? 1.0 / w : 0.0;
         for (int q = 0; q < 4; q++) s[q] *= inv;
@@ -402,7 +403,8 @@ static void cpd_fields(const void *impl, FieldSet *out) {
 static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     CpdBody *b = &((CpdSolid *)impl)->body;
     const size_t n = (size_t)b->n * sizeof(double), nb = (size_t)b->bond_count;
-    const size_t ns = b->cfg.force == CPD_FORCE_CLASSIC ? (size_t)b->n : nb; /* state count */
+    /* the state count: points (classic) or bond pairs */
+    const size_t ns = b->cfg.force == CPD_FORCE_CLASSIC ? (size_t)b->n : (size_t)b->pairs.count;
     static const char *const NAMES[4][3] = {{"cpd.u0", "cpd.u1", "cpd.u2"},
                                             {"cpd.v0", "cpd.v1", "cpd.v2"},
                                             {"cpd.force0", "cpd.force1", "cpd.force2"},

@@ -25,9 +25,7 @@ static BacSystem system_of(const CpdBody *b) {
                    .lambda = b->lambda,
                    .mu = b->mu,
                    .bond_scale = b->scale,
-                   .pair_count = b->pair_count,
-                   .pair_bond = b->pair_bond,
-                   .pair_point = b->pair_point};
+                   .pairs = b->pairs};
     for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
     return s;
 }
@@ -61,15 +59,18 @@ int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo) {
 }
 
 /* The damage law of the configuration for the state of bond k = (i -> j)
- * (notes 1c.8). The bond-associated force keeps it per bond; the classic
+ * (notes 1c.8). The bond-associated force keeps it per bond pair; the classic
  * one per point, and the bond then takes the larger of its two points'
  * values (plastic strain, principal stress; inverted if either is): fmax
  * is exact and commutative, so both ends of a pair get the same damage
  * bits, and a bond fails as soon as either end's material does. */
 static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
     const CpdConfig *c = &b->cfg;
-    int64_t p = k, q = k;
-    if (c->force == CPD_FORCE_CLASSIC) p = i, q = b->nbr[k];
+    int64_t p, q;
+    if (c->force == CPD_FORCE_CLASSIC)
+        p = i, q = b->nbr[k];
+    else
+        p = q = b->pairs.of[k];
     if (b->inverted[p] || b->inverted[q]) return 1.0;
     switch (c->damage) {
     case CPD_DAMAGE_DUCTILE:

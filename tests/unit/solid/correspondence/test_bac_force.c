@@ -30,8 +30,8 @@ typedef struct {
     Cloud c;
     BacSystem s;
     double *phi, *omega, *work_point, *work_bond, *u[3], *f[3];
-    int64_t *reverse, pair_count, *pair_bond;
-    int32_t *pair_point;
+    int64_t *reverse;
+    BacPairs pairs;
     uint8_t *ok;
 } Setup;
 
@@ -54,9 +54,7 @@ static void setup_make(Setup *t, int side, double jitter) {
                                          c->nbr, c->delta, NULL, t->phi, t->ok),
                      0);
     assert_int_equal(bac_reverse_bonds(c->n, c->first, c->nbr, t->reverse), 0);
-    assert_int_equal(
-        bac_pairs_create(c->n, c->first, t->reverse, &t->pair_count, &t->pair_bond, &t->pair_point),
-        NSPD_OK);
+    assert_int_equal(bac_pairs_create(c->n, c->first, t->reverse, &t->pairs), NSPD_OK);
     cloud_omega(c, t->omega);
     t->s = (BacSystem){.dim = 2,
                        .n = c->n,
@@ -65,9 +63,7 @@ static void setup_make(Setup *t, int side, double jitter) {
                        .first = c->first,
                        .nbr = c->nbr,
                        .reverse = t->reverse,
-                       .pair_count = t->pair_count,
-                       .pair_bond = t->pair_bond,
-                       .pair_point = t->pair_point,
+                       .pairs = t->pairs,
                        .phi = t->phi,
                        .omega = t->omega,
                        .lambda = E_MOD * NU / ((1 + NU) * (1 - 2 * NU)),
@@ -78,8 +74,7 @@ static void setup_free(Setup *t) {
     free(t->phi);
     free(t->omega);
     free(t->reverse);
-    nspd_free(&t->pair_bond);
-    nspd_free(&t->pair_point);
+    bac_pairs_free(&t->pairs);
     free(t->ok);
     free(t->work_point);
     free(t->work_bond);

@@ -47,8 +47,8 @@ typedef struct {
     int64_t n; /* points: W M */
     double h, delta;
     double *x[3], *volume, *phi, *omega, *work_point, *work_bond, *u[3], *f[3];
-    int64_t *first, *reverse, pair_count, *pair_bond;
-    int32_t *pair_point;
+    int64_t *first, *reverse;
+    BacPairs pairs;
     int32_t *nbr;
     uint8_t *ok;
     BacSystem s;
@@ -108,9 +108,7 @@ static void strip_make(Strip *t, int N, int M, double h, int order) {
                                             t->nbr, t->delta, NULL, NULL, t->phi, t->ok),
                      0);
     assert_int_equal(bac_reverse_bonds(t->n, t->first, t->nbr, t->reverse), 0);
-    assert_int_equal(
-        bac_pairs_create(t->n, t->first, t->reverse, &t->pair_count, &t->pair_bond, &t->pair_point),
-        NSPD_OK);
+    assert_int_equal(bac_pairs_create(t->n, t->first, t->reverse, &t->pairs), NSPD_OK);
     t->s = (BacSystem){.dim = 2,
                        .n = t->n,
                        .x = {t->x[0], t->x[1], NULL},
@@ -118,9 +116,7 @@ static void strip_make(Strip *t, int N, int M, double h, int order) {
                        .first = t->first,
                        .nbr = t->nbr,
                        .reverse = t->reverse,
-                       .pair_count = t->pair_count,
-                       .pair_bond = t->pair_bond,
-                       .pair_point = t->pair_point,
+                       .pairs = t->pairs,
                        .phi = t->phi,
                        .omega = t->omega,
                        .lambda = E_MOD * NU / ((1 + NU) * (1 - 2 * NU)),
@@ -140,8 +136,7 @@ static void strip_free(Strip *t) {
     free(t->work_bond);
     free(t->first);
     free(t->reverse);
-    nspd_free(&t->pair_bond);
-    nspd_free(&t->pair_point);
+    bac_pairs_free(&t->pairs);
     free(t->nbr);
     free(t->ok);
 }

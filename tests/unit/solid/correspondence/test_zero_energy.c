@@ -51,8 +51,8 @@ typedef struct {
     BacSystem bac;
     ClassicSystem classic;
     double *phi, *omega, *work_point, *work_bond, *u[2], *f[2];
-    int64_t *reverse, pair_count, *pair_bond;
-    int32_t *pair_point;
+    int64_t *reverse;
+    BacPairs pairs;
     uint8_t *ok;
 } Patch;
 
@@ -75,9 +75,7 @@ static void patch_make(Patch *t, Model model, double cs, double jitter) {
     }
     cloud_omega(c, t->omega);
     assert_int_equal(bac_reverse_bonds(c->n, c->first, c->nbr, t->reverse), 0);
-    assert_int_equal(
-        bac_pairs_create(c->n, c->first, t->reverse, &t->pair_count, &t->pair_bond, &t->pair_point),
-        NSPD_OK);
+    assert_int_equal(bac_pairs_create(c->n, c->first, t->reverse, &t->pairs), NSPD_OK);
     const double lambda = E_MOD * NU / ((1 + NU) * (1 - 2 * NU)), mu = E_MOD / (2 * (1 + NU));
     if (model != CLASSIC) {
         /* the outer copies' corners may lack weights; the centre copy reads
@@ -92,9 +90,7 @@ static void patch_make(Patch *t, Model model, double cs, double jitter) {
                              .first = c->first,
                              .nbr = c->nbr,
                              .reverse = t->reverse,
-                             .pair_count = t->pair_count,
-                             .pair_bond = t->pair_bond,
-                             .pair_point = t->pair_point,
+                             .pairs = t->pairs,
                              .phi = t->phi,
                              .omega = t->omega,
                              .lambda = lambda,
@@ -119,8 +115,7 @@ static void patch_free(Patch *t) {
     free(t->phi);
     free(t->omega);
     free(t->reverse);
-    nspd_free(&t->pair_bond);
-    nspd_free(&t->pair_point);
+    bac_pairs_free(&t->pairs);
     free(t->ok);
     free(t->work_point);
     free(t->work_bond);
