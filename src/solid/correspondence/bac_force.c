@@ -10,19 +10,31 @@
 #include <stdbool.h>
 #include <string.h>
 
+/* Point i's L_i = sum_j (T_ij - T_ji) V_j; dim is a constant at each call
+ * (inlined into the loop: an OpenMP region is outlined before inlining). */
+static inline __attribute__((always_inline)) void
+point_gather(const int dim, int64_t i, const int64_t *first, const int32_t *nbr,
+             const int64_t *reverse, const double *volume, const double *T,
+             double *const force[3]) {
+    double L[3] = {0, 0, 0};
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        const double V = volume[nbr[k]];
+        const int64_t r = reverse[k];
+        for (int a = 0; a < dim; a++)
+            L[a] += (T[(int64_t)dim * k + a] - T[(int64_t)dim * r + a]) * V;
+    }
+    for (int a = 0; a < dim; a++) force[a][i] = L[a];
+}
+
 void bac_gather(int dim, int64_t n, const int64_t *first, const int32_t *nbr,
                 const int64_t *reverse, const double *volume, const double *T,
                 double *const force[3]) {
+    if (dim == 2) {
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        double L[3] = {0, 0, 0};
-        for (int64_t k = first[i]; k < first[i + 1]; k++) {
-            const double V = volume[nbr[k]];
-            const int64_t r = reverse[k];
-            for (int a = 0; a < dim; a++)
-                L[a] += (T[(int64_t)dim * k + a] - T[(int64_t)dim * r + a]) * V;
-        }
-        for (int a = 0; a < dim; a++) force[a][i] = L[a];
+        for (int64_t i = 0; i < n; i++) point_gather(2, i, first, nbr, reverse, volume, T, force);
+    } else {
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < n; i++) point_gather(3, i, first, nbr, reverse, volume, T, force);
     }
 }
 
@@ -120,22 +132,30 @@ static inline __attribute__((always_inline)) void bond_vectors(int dim, const Ba
     for (int a = 0; a < dim; a++) g[a] = xi[a] * inv_xx;
 }
 
-/* Per pair, the hyperelastic (SVK) P_b (component c of pair p at
- * Pb[c np + p]). */
-static inline __attribute__((always_inline)) void pairs_svk(const int dim, const BacSystem *s,
-                                                            const double *const u[3],
-                                                            const double *F, double *Pb) {
+/* Pair p's hyperelastic (SVK) P_b (component c at Pb[c np + p]); dim is a
+ * constant at each call. */
+static inline __attribute__((always_inline)) void pair_svk(const int dim, const BacSystem *s,
+                                                           const double *const u[3],
+                                                           const double *F, double *Pb, int64_t p) {
+    const int64_t np = s->pairs.count, k = s->pairs.bond[p], i = s->pairs.point[p], j = s->nbr[k];
+    if (s->bond_scale && s->bond_scale[k] == 0.0) return; /* broken: no stress */
+    double xi[3], g[3], Y[3], Fb[9] = {0}, P[9];
+    bond_vectors(dim, s, u, i, j, xi, g, Y);
+    bond_gradient(dim, F + 9 * i, F + 9 * j, xi, g, Y, Fb);
+    svk_stress(dim, Fb, s->lambda, s->mu, P);
+    for (int a = 0; a < dim; a++)
+        for (int b = 0; b < dim; b++) Pb[(dim * a + b) * np + p] = P[3 * a + b];
+}
+
+/* Per pair, the hyperelastic (SVK) P_b. */
+static void pairs_svk(const BacSystem *s, const double *const u[3], const double *F, double *Pb) {
     const int64_t np = s->pairs.count;
+    if (s->dim == 2) {
 #pragma omp parallel for schedule(static) if (np >= PARALLEL_MIN_ITEMS)
-    for (int64_t p = 0; p < np; p++) {
-        const int64_t k = s->pairs.bond[p], i = s->pairs.point[p], j = s->nbr[k];
-        if (s->bond_scale && s->bond_scale[k] == 0.0) continue; /* broken: no stress */
-        double xi[3], g[3], Y[3], Fb[9] = {0}, P[9];
-        bond_vectors(dim, s, u, i, j, xi, g, Y);
-        bond_gradient(dim, F + 9 * i, F + 9 * j, xi, g, Y, Fb);
-        svk_stress(dim, Fb, s->lambda, s->mu, P);
-        for (int a = 0; a < dim; a++)
-            for (int b = 0; b < dim; b++) Pb[(dim * a + b) * np + p] = P[3 * a + b];
+        for (int64_t p = 0; p < np; p++) pair_svk(2, s, u, F, Pb, p);
+    } else {
+#pragma omp parallel for schedule(static) if (np >= PARALLEL_MIN_ITEMS)
+        for (int64_t p = 0; p < np; p++) pair_svk(3, s, u, F, Pb, p);
     }
 }
 
@@ -236,16 +256,17 @@ static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *co
     }
 }
 
-/* Per point: the stress integral S_i = sum_k c_k P_b(ik) (I - xi xi / |xi|^2),
+/* Point i's stress integral S_i = sum_k c_k P_b(ik) (I - xi xi / |xi|^2),
  * c_k = omega_ik (1 / (2 w0_i) + 1 / (2 w0_k)) V_k, and T_ij = (omega_ij /
- * w0_i) P_b xi / |xi|^2 + S_i phi_ij. dim is a constant at each call. */
-static inline __attribute__((always_inline)) void stress_integrals(const int dim,
-                                                                   const BacSystem *s,
-                                                                   const double *inv_w0,
-                                                                   const double *Pb, double *T) {
-    const int64_t n = s->n, np = s->pairs.count;
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
+ * w0_i) P_b xi / |xi|^2 + S_i phi_ij of its bonds. dim is a constant at each
+ * call (inlined into the loop, not around it: an OpenMP region is outlined
+ * before inlining, with dim a variable again). */
+static inline __attribute__((always_inline)) void point_integrals(const int dim, const BacSystem *s,
+                                                                  const double *inv_w0,
+                                                                  const double *Pb, double *T,
+                                                                  int64_t i) {
+    const int64_t np = s->pairs.count;
+    {
         double Si[9] = {0};
         const double inv_wi = inv_w0[i];
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
@@ -284,16 +305,27 @@ static inline __attribute__((always_inline)) void stress_integrals(const int dim
     }
 }
 
+static void stress_integrals(const BacSystem *s, const double *inv_w0, const double *Pb,
+                             double *T) {
+    if (s->dim == 2) {
+#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < s->n; i++) point_integrals(2, s, inv_w0, Pb, T, i);
+    } else {
+#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < s->n; i++) point_integrals(3, s, inv_w0, Pb, T, i);
+    }
+}
+
 void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],
                double *work_point, double *work_bond) {
     const int dim = s->dim;
     const int64_t n = s->n, nb = s->first[n];
     double *F = work_point, *Fp = work_point + 9 * n, *inv_w0 = work_point + 18 * n, *T = work_bond,
            *Pb = work_bond + (int64_t)dim * nb;
-    rk_deformation_gradient(dim, n, u, s->volume, s->first, s->nbr, s->phi, F);
-    if (st) rk_deformation_gradient(dim, n, st->u_prev, s->volume, s->first, s->nbr, s->phi, Fp);
-        /* 1 / w0 per point (0 where w0 = 0), read by every bond of the point's
-         * neighbours: the same quotient as each bond would form */
+    rk_deformation_gradient(dim, n, u, st ? st->u_prev : NULL, s->volume, s->first, s->nbr, s->phi,
+                            F, Fp);
+    /* 1 / w0 per point (0 where w0 = 0), read by every bond of the point's
+     * neighbours: the same quotient as each bond would form */
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         double w = 0.0;
@@ -306,13 +338,8 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
      * once, for both bonds */
     if (st)
         pairs_j2_2d(s, st, u, F, Fp, Pb);
-    else if (dim == 2)
-        pairs_svk(2, s, u, F, Pb);
     else
-        pairs_svk(3, s, u, F, Pb);
-    if (dim == 2)
-        stress_integrals(2, s, inv_w0, Pb, T);
-    else
-        stress_integrals(3, s, inv_w0, Pb, T);
+        pairs_svk(s, u, F, Pb);
+    stress_integrals(s, inv_w0, Pb, T);
     bac_gather(dim, n, s->first, s->nbr, s->reverse, s->volume, T, force);
 }

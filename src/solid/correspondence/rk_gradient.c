@@ -1,5 +1,6 @@
 #include "solid/correspondence/rk_gradient.h"
 
+#include "core/kernel.h"
 #include "core/parallel.h"
 #include "core/spd_small.h"
 
@@ -128,17 +129,52 @@ void rk_gradient_at(int dim, int64_t i, const double *f, const double *volume, c
     }
 }
 
-void rk_deformation_gradient(int dim, int64_t n, const double *const u[3], const double *volume,
-                             const int64_t *first, const int32_t *nbr, const double *phi,
-                             double *F) {
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        double *Fi = F + 9 * i;
-        memset(Fi, 0, 9 * sizeof(double));
+/* Point i's F (and F2 of u2 when `two`): one pass over its family for
+ * both fields and every component, each sum in rk_gradient_at's order (the
+ * same bits). dim and two are constants at each call (inlined into the
+ * loop: an OpenMP region is outlined before inlining). */
+static inline __attribute__((always_inline)) void
+point_gradients(const int dim, const int two, int64_t i, const double *const u[3],
+                const double *const u2[3], const double *volume, const int64_t *first,
+                const int32_t *nbr, const double *phi, double *F, double *F2) {
+    double g[3][3] = {{0}}, h[3][3] = {{0}};
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        const int32_t j = nbr[k];
+        const double V = volume[j];
         for (int r = 0; r < dim; r++) {
-            double g[3];
-            rk_gradient_at(dim, i, u[r], volume, first, nbr, phi, g);
-            for (int c = 0; c < dim; c++) Fi[3 * r + c] = (r == c ? 1.0 : 0.0) + g[c];
+            const double df = (u[r][j] - u[r][i]) * V;
+            for (int a = 0; a < dim; a++) g[r][a] += df * phi[(int64_t)dim * k + a];
+            if (two) {
+                const double df2 = (u2[r][j] - u2[r][i]) * V;
+                for (int a = 0; a < dim; a++) h[r][a] += df2 * phi[(int64_t)dim * k + a];
+            }
         }
     }
+    double *Fi = F + 9 * i, *F2i = two ? F2 + 9 * i : NULL;
+    for (int q = 0; q < 9; q++) Fi[q] = 0.0;
+    if (two)
+        for (int q = 0; q < 9; q++) F2i[q] = 0.0;
+    for (int r = 0; r < dim; r++)
+        for (int c = 0; c < dim; c++) {
+            Fi[3 * r + c] = (r == c ? 1.0 : 0.0) + g[r][c];
+            if (two) F2i[3 * r + c] = (r == c ? 1.0 : 0.0) + h[r][c];
+        }
+}
+
+void rk_deformation_gradient(int dim, int64_t n, const double *const u[3],
+                             const double *const u2[3], const double *volume, const int64_t *first,
+                             const int32_t *nbr, const double *phi, double *F, double *F2) {
+#define NSPD_RK_F_LOOP(DIM, TWO)                                                                   \
+    NSPD_PRAGMA(omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS))                    \
+    for (int64_t i = 0; i < n; i++)                                                                \
+    point_gradients(DIM, TWO, i, u, u2, volume, first, nbr, phi, F, F2)
+    if (dim == 2 && u2)
+        NSPD_RK_F_LOOP(2, 1);
+    else if (dim == 2)
+        NSPD_RK_F_LOOP(2, 0);
+    else if (u2)
+        NSPD_RK_F_LOOP(3, 1);
+    else
+        NSPD_RK_F_LOOP(3, 0);
+#undef NSPD_RK_F_LOOP
 }

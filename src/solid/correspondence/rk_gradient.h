@@ -77,9 +77,10 @@ void rk_gradient_at(int dim, int64_t i, const double *f, const double *volume, c
 
 /* The deformation gradient at every point, F = I + sum_j (u_j - u_i) (x) phi_ij V_j
  * (row-major dim x dim per point: F[9 i + 3 r + c], rows of u, columns of
- * X), from displacements u[0..dim). */
-void rk_deformation_gradient(int dim, int64_t n, const double *const u[3], const double *volume,
-                             const int64_t *first, const int32_t *nbr, const double *phi,
-                             double *F);
+ * X), from displacements u[0..dim), and with u2 (not NULL) F2 of u2 in the
+ * same pass over the families. */
+void rk_deformation_gradient(int dim, int64_t n, const double *const u[3],
+                             const double *const u2[3], const double *volume, const int64_t *first,
+                             const int32_t *nbr, const double *phi, double *F, double *F2);
 
 #endif

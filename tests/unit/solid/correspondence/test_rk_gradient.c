@@ -166,7 +166,8 @@ static void test_homogeneous_deformation(void **state) {
         for (int r = 0; r < 2; r++)
             u[r][i] = (F[r][0] - (r == 0)) * c.x[0][i] + (F[r][1] - (r == 1)) * c.x[1][i];
     double *Fi = calloc((size_t)(9 * c.n), sizeof(double));
-    rk_deformation_gradient(2, c.n, (const double *const *)u, c.volume, c.first, c.nbr, phi, Fi);
+    rk_deformation_gradient(2, c.n, (const double *const *)u, NULL, c.volume, c.first, c.nbr, phi,
+                            Fi, NULL);
     for (int64_t i = 0; i < c.n; i++)
         for (int r = 0; r < 2; r++)
             for (int col = 0; col < 2; col++)
