@@ -98,15 +98,42 @@ static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
     }
 }
 
+/* The bond-associated force's ductile or brittle law per pair (its state is
+ * per pair), into d: damage_law's bits (the fmax of a value with itself is
+ * the value), formed once per pair instead of once per bond, in SIMD lanes. */
+static void pair_damage(const CpdBody *b, double *d) {
+    const CpdConfig *c = &b->cfg;
+    const int64_t np = b->pairs.count;
+    const uint8_t *inverted = b->inverted;
+    if (c->damage == CPD_DAMAGE_DUCTILE) {
+        const double *eqps = b->eqps, lo = c->plastic_strain_threshold,
+                     hi = c->plastic_strain_critical;
+#pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
+        for (int64_t p = 0; p < np; p++)
+            d[p] = inverted[p] ? 1.0 : j2_damage_ductile(eqps[p], lo, hi);
+    } else {
+        const double *principal = b->principal, cr = c->critical_stress, ramp = c->damage_ramp;
+#pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
+        for (int64_t p = 0; p < np; p++)
+            d[p] = inverted[p] ? 1.0 : j2_damage_brittle(principal[p], cr, ramp);
+    }
+}
+
 /* Damage grows (never falls) by the law, then the weights settle
  * (cpd_settle_weights). Returns the number of bonds whose damage grew. */
 static int64_t update_damage(CpdBody *b) {
     int64_t grown = 0;
+    /* the pairs' laws, in the force's T scratch (free until the next force) */
+    const bool by_pair =
+        b->cfg.force != CPD_FORCE_CLASSIC &&
+        (b->cfg.damage == CPD_DAMAGE_DUCTILE || b->cfg.damage == CPD_DAMAGE_BRITTLE);
+    double *dpair = b->work_bond;
+    if (by_pair) pair_damage(b, dpair);
 #pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         uint8_t redo = 0;
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
-            const double d = damage_law(b, i, k);
+            const double d = by_pair ? dpair[b->pairs.of[k]] : damage_law(b, i, k);
             if (d > b->damage[k]) {
                 b->damage[k] = d;
                 b->scale[k] = 1.0 - d;
