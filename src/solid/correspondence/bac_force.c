@@ -4,7 +4,7 @@
 #include "core/parallel.h"
 #include "core/status.h"
 #include "solid/correspondence/rk_gradient.h"
-#include "solid/correspondence/svk.h"
+#include "solid/correspondence/svk_kernel.h"
 
 #include <math.h>
 #include <stdbool.h>

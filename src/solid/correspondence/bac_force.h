@@ -21,7 +21,7 @@
  * Families must be symmetric (j in H_i exactly when i in H_j). No atomics:
  * T is formed per bond, then each point gathers its own bonds and, through
  * the reverse-bond index, its neighbours' (the same bits on any thread
- * count). The material is solid/correspondence/svk.h (2D: plane strain). */
+ * count). The material is solid/correspondence/svk_kernel.h (2D: plane strain). */
 #ifndef NSPD_SOLID_CORRESPONDENCE_BAC_FORCE_H
 #define NSPD_SOLID_CORRESPONDENCE_BAC_FORCE_H
 

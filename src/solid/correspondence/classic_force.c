@@ -3,7 +3,7 @@
 #include "solid/correspondence/bac_force.h"
 
 #include "core/parallel.h"
-#include "solid/correspondence/svk.h"
+#include "solid/correspondence/svk_kernel.h"
 
 #include <math.h>
 #include <stdbool.h>

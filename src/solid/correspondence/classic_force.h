@@ -11,19 +11,16 @@
  *     K_i  = sum_j omega xi (x) xi V_j                       (shape tensor)
  *     F_i  = (sum_j omega Y (x) xi V_j) K_i^-1
  *          = I + (sum_j omega (u_j - u_i) (x) xi V_j) K_i^-1
- *     P_i  = F_i S(E_i)                       (Saint Venant-Kirchhoff, solid/correspondence/svk.h)
- *     z_ij = Y - F_i xi = (u_j - u_i) - (F_i - I) xi        (the non-affine part)
- *     T_ij = omega P_i K_i^-1 xi + omega (C_s c / delta) z_ij
- *     L_i  = sum_j (T_ij - T_ji) V_j                       (force density, N/m^3)
- * F_i is formed from displacements, not from Y, so that small strains keep
- * their digits (Y = xi + du would cancel xi's).
- * The penalty's scale c is the bond-based micromodulus that matches the
- * bulk modulus K for a family of constant influence: 3D, c = 18 K / (pi
- * delta^4), K = lambda + 2 mu / 3 (Peridynamics.jl's constant); 2D (plane
- * strain), c = 12 K / (pi delta^3) with the in-plane bulk modulus
- * K = lambda + mu, from the same energy match on a disc (1/4 c s^2 int |xi|
- * dA = 2 K s^2 under an isotropic stretch s). Only its order matters: it
- * makes C_s a dimensionless weight of the penalty against the elastic
+ *     P_i  = F_i S(E_i)                       (Saint Venant-Kirchhoff,
+ * solid/correspondence/svk_kernel.h) z_ij = Y - F_i xi = (u_j - u_i) - (F_i - I) xi        (the
+ * non-affine part) T_ij = omega P_i K_i^-1 xi + omega (C_s c / delta) z_ij L_i  = sum_j (T_ij -
+ * T_ji) V_j                       (force density, N/m^3) F_i is formed from displacements, not from
+ * Y, so that small strains keep their digits (Y = xi + du would cancel xi's). The penalty's scale c
+ * is the bond-based micromodulus that matches the bulk modulus K for a family of constant
+ * influence: 3D, c = 18 K / (pi delta^4), K = lambda + 2 mu / 3 (Peridynamics.jl's constant); 2D
+ * (plane strain), c = 12 K / (pi delta^3) with the in-plane bulk modulus K = lambda + mu, from the
+ * same energy match on a disc (1/4 c s^2 int |xi| dA = 2 K s^2 under an isotropic stretch s). Only
+ * its order matters: it makes C_s a dimensionless weight of the penalty against the elastic
  * stiffness. In 2D with volumes of thickness t (the body's V = h^2 t) the
  * energy match is per volume, c = 12 K / (pi delta^3 t): the stress term
  * does not depend on t (K_i and the gather both carry it), so neither may

@@ -10,6 +10,7 @@
 #include "flow/gks/recon_kernel.h"
 #include "solid/bond/force_kernel.h"
 #include "solid/correspondence/j2_kernel.h"
+#include "solid/correspondence/svk_kernel.h"
 
 static __device__ int64_t thread_index(void) {
     return (int64_t)blockIdx.x * blockDim.x + threadIdx.x;
@@ -106,4 +107,27 @@ __global__ void j2_bonds(int64_t n, J2Material m, const double *F_mid, const dou
     damage[i] =
         fmax(damage[i], fmax(j2_damage_ductile(eqps[i], 0.18, 0.2),
                              j2_damage_brittle(j2_max_principal(cauchy), 3e9, J2_BRITTLE_RAMP)));
+}
+
+/* j2_step_2d, the correspondence solid's material step per bond pair as
+ * bac_force takes it (pairs' state by component, c n + i), plane strain
+ * and plane stress. */
+__global__ void j2_pair_steps(int64_t n, J2Material m, const double *F, const double *Fp,
+                              double *sigma, double *eqps, double *strain_zz, double *P,
+                              double *principal, uint8_t *inverted) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    double s[4], Pi[4];
+    for (int q = 0; q < 4; q++) s[q] = sigma[q * n + i];
+    inverted[i] = (uint8_t)j2_step_2d(&m, m.plane_stress, F + 4 * i, Fp + 4 * i, s, eqps + i,
+                                      strain_zz + i, Pi, principal + i);
+    for (int q = 0; q < 4; q++) sigma[q * n + i] = s[q], P[q * n + i] = Pi[q];
+}
+
+/* svk_stress of n deformation gradients (9 each), 2D and 3D. */
+__global__ void svk_points(int64_t n, int dim, const double *F, double lambda, double mu,
+                           double *P) {
+    const int64_t i = thread_index();
+    if (i >= n) return;
+    svk_stress(dim, F + 9 * i, lambda, mu, P + 9 * i);
 }
