@@ -43,6 +43,22 @@
 #define NSPD_UNROLL(n) NSPD_PRAGMA(GCC unroll n)
 #endif
 
+/* Quiet comparisons for kernels (the truth values of >, < and <=, false
+ * with a NaN): in C, <math.h>'s isgreater, isless and islessequal, which
+ * raise no floating-point exception, so GCC may evaluate them outside
+ * their branch and if-convert a loop around them (an ordered comparison
+ * may trap, and stays under its branch); on the device plain comparisons
+ * (nvcc refuses the host's isgreater there, and nothing traps). */
+#ifdef __CUDACC__
+#define NSPD_GT(a, b) ((a) > (b))
+#define NSPD_LT(a, b) ((a) < (b))
+#define NSPD_LE(a, b) ((a) <= (b))
+#else
+#define NSPD_GT(a, b) isgreater(a, b)
+#define NSPD_LT(a, b) isless(a, b)
+#define NSPD_LE(a, b) islessequal(a, b)
+#endif
+
 /* NSPD_IVDEP, before a row loop: GCC may vectorise it without proving that
  * its stores do not alias its loads (the `restrict` row pointers say so).
  * Only GCC knows `#pragma GCC ivdep`; clang (and clang-tidy) would warn on

@@ -168,12 +168,12 @@ typedef struct {
     const int64_t *pair_bond;
     const int32_t *pair_point, *nbr;
     const double *x0, *x1, *u0, *u1, *up0, *up1, *F, *Fp, *bond_scale;
-    double *Pb, *sigma, *eqps, *principal, *strain_zz;
+    double *Pb, *sigma, *eqps, *principal, *strain_zz, *todo;
     uint8_t *inverted;
 } PairView;
 
 static PairView pair_view(const BacSystem *s, const BacState *st, const double *const u[3],
-                          const double *F, const double *Fp, double *Pb) {
+                          const double *F, const double *Fp, double *Pb, double *todo) {
     return (PairView){.material = *st->material,
                       .np = s->pairs.count,
                       .pair_bond = s->pairs.bond,
@@ -193,16 +193,22 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
                       .eqps = st->eqps,
                       .principal = st->principal,
                       .strain_zz = st->strain_zz,
+                      .todo = todo,
                       .inverted = st->inverted};
 }
 
 /* Pair p's J2 step in 2D (j2_step_2d) from the points' F now and at the
  * step's start: its P_b and its state, component c at [c np + p].
- * plane_stress is a constant at each call; scaled says whether
- * v->bond_scale exists (a constant 1 in the SIMD loop, which can not test a
- * pointer before each load). */
-static inline __attribute__((always_inline)) void
-pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scaled) {
+ * plane_stress, scaled and newton are constants at each call. scaled says
+ * whether v->bond_scale exists (the SIMD loops can not test a pointer
+ * before each load). newton > 0 (plane stress in SIMD lanes): at most that
+ * many Newton iterations (j2_step_2d_lane), P_b without the thickness
+ * stretch, the state stored only if they were enough, and todo[p] says
+ * what finish_plane_stress has left to do: 0 nothing, 1 the stretch, 2 the
+ * whole pair again on the scalar path. */
+static inline __attribute__((always_inline)) void pair_j2_2d(const PairView *v, int64_t p,
+                                                             const int plane_stress,
+                                                             const int scaled, const int newton) {
     const int64_t np = v->np, k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k];
     const double xi[3] = {v->x0[j] - v->x0[i], v->x1[j] - v->x1[i], 0.0};
     const double Y[3] = {xi[0] + (v->u0[j] - v->u0[i]), xi[1] + (v->u1[j] - v->u1[i]), 0.0};
@@ -222,36 +228,68 @@ pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scale
     const double F2[4] = {Fb[0], Fb[1], Fb[3], Fb[4]}, Fp2[4] = {Fbp[0], Fbp[1], Fbp[3], Fbp[4]};
     double sigma[4], eqps = v->eqps[p], zz = plane_stress ? v->strain_zz[p] : 0.0, P[4], principal;
     for (int q = 0; q < 4; q++) sigma[q] = v->sigma[q * np + p];
-    const int inverted =
-        j2_step_2d(&v->material, plane_stress, F2, Fp2, sigma, &eqps, &zz, P, &principal);
+    double finished = 1.0;
+    const int inverted = newton > 0 ? j2_step_2d_lane(&v->material, plane_stress, newton, F2, Fp2,
+                                                      sigma, &eqps, &zz, P, &principal, &finished)
+                                    : j2_step_2d(&v->material, plane_stress, F2, Fp2, sigma, &eqps,
+                                                 &zz, P, &principal);
     /* a broken pair keeps its state; its P_b is not read (S_i and T_ij skip
      * broken bonds) */
     for (int q = 0; q < 4; q++) v->Pb[q * np + p] = P[q];
-    if (!scaled || v->bond_scale[k] != 0.0) {
+    const int live = !scaled || v->bond_scale[k] != 0.0;
+    if (newton > 0) v->todo[p] = finished == 0.0 ? 2.0 : live && !inverted ? 1.0 : 0.0;
+    if (live && finished != 0.0) {
         for (int q = 0; q < 4; q++) v->sigma[q * np + p] = sigma[q];
         v->eqps[p] = eqps, v->principal[p] = principal, v->inverted[p] = (uint8_t)inverted;
         if (plane_stress) v->strain_zz[p] = zz;
     }
 }
 
-/* Per pair, the J2 P_b and state update (2D). Plane strain runs in SIMD
- * lanes across pairs (each pair's arithmetic is its own, so the lanes give
- * the scalar bits); plane stress keeps j2_update_zz's Newton loop, whose
- * iteration count differs between lanes, on the scalar path, as does a
- * system without bond_scale (the body always has one). */
+/* Plane-stress Newton iterations a pair takes in SIMD lanes: an elastic
+ * pair needs one, a yielding one two to four, and a pair that needs more
+ * than the lanes take is done again on the scalar path. One is fastest:
+ * the coarse blast_hollow_square's solid took 12.4, 12.9 and 13.6 s with
+ * 1, 2 and 3 (one thread, this machine, 2026-12-03; 15.3 s all scalar). */
+enum { BAC_LANE_NEWTON = 1 };
+
+/* After the plane-stress SIMD pass, pair p's thickness stretch exp() (no
+ * SIMD exp gives libm's bits) or, where the lane's Newton iterations were
+ * not enough, the whole pair on the scalar path (its state was not
+ * stored). */
+static inline __attribute__((always_inline)) void finish_plane_stress(const PairView *v,
+                                                                      int64_t p) {
+    if (v->todo[p] == 1.0) {
+        const double thick = exp(v->strain_zz[p]);
+        for (int q = 0; q < 4; q++) v->Pb[q * v->np + p] = thick * v->Pb[q * v->np + p];
+    } else if (v->todo[p] == 2.0) {
+        pair_j2_2d(v, p, 1, 1, 0);
+    }
+}
+
+/* Per pair, the J2 P_b and state update (2D), in SIMD lanes across pairs
+ * (each pair's arithmetic is its own, so the lanes give the scalar bits);
+ * plane stress with BAC_LANE_NEWTON iterations in the lanes and the rest
+ * after (finish_plane_stress, scalar). A system without bond_scale (the
+ * body always has one) takes the scalar path. todo: a double per pair of
+ * scratch. */
 static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *const u[3],
-                        const double *F, const double *Fp, double *Pb) {
+                        const double *F, const double *Fp, double *Pb, double *todo) {
     const int64_t np = s->pairs.count;
     const int plane_stress = st->material->plane_stress, scaled = s->bond_scale != NULL;
 #pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
     {
-        const PairView v = pair_view(s, st, u, F, Fp, Pb);
-        if (plane_stress || !scaled) {
+        const PairView v = pair_view(s, st, u, F, Fp, Pb, todo);
+        if (!scaled) {
 #pragma omp for schedule(static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, scaled);
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, 0, 0);
+        } else if (plane_stress) {
+#pragma omp for simd schedule(simd : static)
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 1, 1, BAC_LANE_NEWTON);
+#pragma omp for schedule(static)
+            for (int64_t p = 0; p < np; p++) finish_plane_stress(&v, p);
         } else {
 #pragma omp for simd schedule(simd : static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1);
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1, 0);
         }
     }
 }
@@ -337,7 +375,7 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
      * bit for bit, so the pair's stress (and its state update) is computed
      * once, for both bonds */
     if (st)
-        pairs_j2_2d(s, st, u, F, Fp, Pb);
+        pairs_j2_2d(s, st, u, F, Fp, Pb, T); /* T, written next, is the scratch meanwhile */
     else
         pairs_svk(s, u, F, Pb);
     stress_integrals(s, inv_w0, Pb, T);

@@ -159,16 +159,79 @@ NSPD_KERNEL double j2_return(const J2Material *m, const double de[3], double dzz
     return plastic ? deqps : 0.0;
 }
 
+/* The plane-stress Newton loop of j2_update_zz, one iteration at a time,
+ * so that a loop over bond pairs can take a fixed number of them in SIMD
+ * lanes (each lane stops as the scalar loop would: j2_zz_iterate leaves a
+ * finished state as it is) and leave the few unfinished to the scalar
+ * loop. out, deqps and z are the answer once done. */
+typedef struct {
+    double z, lo, hi, out[4], deqps;
+    /* flags and the count as doubles (0 or 1; whole numbers): in SIMD lanes
+     * beside the numbers, GCC 12 does not mix int masks with double ones */
+    double have_lo, have_hi, it, done;
+} J2ZzNewton;
+
+/* The elastic answer (exact when the step stays elastic) and an empty
+ * bracket. */
+NSPD_KERNEL void j2_zz_start(const J2Material *m, const double de[3], const double sigma_n[4],
+                             J2ZzNewton *s) {
+    const double lambda = m->bulk - 2.0 / 3.0 * m->shear;
+    s->z = -(sigma_n[2] + lambda * (de[0] + de[1])) / (lambda + 2.0 * m->shear);
+    s->lo = s->hi = 0.0;
+    s->have_lo = s->have_hi = 0.0;
+    s->it = 0.0;
+    s->done = 0.0;
+    for (int q = 0; q < 4; q++) s->out[q] = 0.0;
+    s->deqps = 0.0;
+}
+
+/* One iteration: the radial return at s->z; done when |sigma_zz| <= 1e-12
+ * (|sigma| + sigma_Y) or after J2_PLANE_STRESS_MAX_ITER iterations, else
+ * the bracket (sigma_zz increases with de_zz) and the next z, Newton on
+ * C33 or, when that leaves the bracket (the kink at first yield),
+ * bisection. Branch-free (selects): nothing changes once done. */
+NSPD_KERNEL void j2_zz_iterate(const J2Material *m, const double de[3], const double sigma_n[4],
+                               double eqps_n, J2ZzNewton *s) {
+    const double yield = j2_is_plastic(m) ? m->yield : 0.0;
+    double out[4], c33;
+    const double deqps = j2_return(m, de, s->z, sigma_n, eqps_n, out, &c33);
+    const double r = out[2];
+    const double size =
+        sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2] + 2.0 * out[3] * out[3]);
+    /* Written for SIMD lanes: the comparisons quiet (NSPD_GT, ...: the
+     * same answers, NaN false), since an ordered one may trap and GCC then
+     * keeps it under its branch; and the flags doubles, 1 or 0, each from
+     * one comparison and combined by exact products and differences: GCC 12
+     * vectorises neither int masks beside doubles nor a mask selected by a
+     * mask. */
+    const double converged = NSPD_LE(fabs(r), 1e-12 * (size + yield)) ? 1.0 : 0.0;
+    const double stop = s->it == (double)J2_PLANE_STRESS_MAX_ITER ? 1.0 : converged;
+    const double active = s->done == 0.0 ? 1.0 : 0.0;
+    const double finish = active * stop, go_on = active - finish;
+    const double rise = go_on * (NSPD_GT(r, 0.0) ? 1.0 : 0.0), fall = go_on - rise;
+    for (int q = 0; q < 4; q++) s->out[q] = finish != 0.0 ? out[q] : s->out[q];
+    s->deqps = finish != 0.0 ? deqps : s->deqps;
+    const double hi = rise != 0.0 ? s->z : s->hi, lo = fall != 0.0 ? s->z : s->lo;
+    const double have_hi = rise != 0.0 ? 1.0 : s->have_hi;
+    const double have_lo = fall != 0.0 ? 1.0 : s->have_lo;
+    double next = s->z - r / c33;
+    const double inside = NSPD_GT(next, lo) ? (NSPD_LT(next, hi) ? 1.0 : 0.0) : 0.0;
+    next = have_lo * have_hi * (1.0 - inside) != 0.0 ? 0.5 * (lo + hi) : next;
+    s->lo = lo, s->hi = hi, s->have_lo = have_lo, s->have_hi = have_hi;
+    s->z = go_on != 0.0 ? next : s->z;
+    s->it = s->it + go_on;
+    s->done = s->done + finish;
+}
+
 /* One hypoelastic step with J2 radial return and linear isotropic hardening
  * (1c.7) on the unrotated Cauchy stress sigma[4] and the equivalent plastic
  * strain *eqps, for the in-plane increment de[3] ([xx, yy, xy], tensor
  * shear). Plane strain: de_zz = 0. Plane stress: de_zz such that
- * sigma_zz = 0, by Newton on C33 until
- * |sigma_zz| <= 1e-12 (|sigma| + sigma_Y) (sigma_Y only where m yields) or
- * J2_PLANE_STRESS_MAX_ITER iterations; sigma_zz of the input is not assumed
- * zero. Returns the plastic increment deqps (0 if elastic) and, in *dzz,
- * de_zz (0 in plane strain): the thickness's logarithmic strain grows by
- * it, and plane-stress forces scale with the thickness (j2_piola_2d). */
+ * sigma_zz = 0, by Newton on C33 (j2_zz_iterate) until converged;
+ * sigma_zz of the input is not assumed zero. Returns the plastic increment
+ * deqps (0 if elastic) and, in *dzz, de_zz (0 in plane strain): the
+ * thickness's logarithmic strain grows by it, and plane-stress forces
+ * scale with the thickness (j2_piola_2d). */
 NSPD_KERNEL double j2_update_zz(const J2Material *m, const double de[3], double sigma[4],
                                 double *eqps, double *dzz) {
     const double eqps_n = *eqps;
@@ -177,28 +240,11 @@ NSPD_KERNEL double j2_update_zz(const J2Material *m, const double de[3], double 
     if (!m->plane_stress) {
         deqps = j2_return(m, de, 0.0, sigma, eqps_n, out, &c33);
     } else {
-        const double lambda = m->bulk - 2.0 / 3.0 * m->shear;
-        const double yield = j2_is_plastic(m) ? m->yield : 0.0;
-        /* the elastic answer: exact when the step stays elastic */
-        z = -(sigma[2] + lambda * (de[0] + de[1])) / (lambda + 2.0 * m->shear);
-        /* bracket of the root (sigma_zz increases with de_zz): a Newton step
-         * that leaves it is replaced by bisection (the kink at first yield) */
-        double lo = 0.0, hi = 0.0;
-        int have_lo = 0, have_hi = 0;
-        for (int it = 0;; it++) {
-            deqps = j2_return(m, de, z, sigma, eqps_n, out, &c33);
-            const double r = out[2];
-            const double size =
-                sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2] + 2.0 * out[3] * out[3]);
-            if (fabs(r) <= 1e-12 * (size + yield) || it == J2_PLANE_STRESS_MAX_ITER) break;
-            if (r > 0.0)
-                hi = z, have_hi = 1;
-            else
-                lo = z, have_lo = 1;
-            double next = z - r / c33;
-            if (have_lo && have_hi && !(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            z = next;
-        }
+        J2ZzNewton s;
+        j2_zz_start(m, de, sigma, &s);
+        while (s.done == 0.0) j2_zz_iterate(m, de, sigma, eqps_n, &s);
+        for (int q = 0; q < 4; q++) out[q] = s.out[q];
+        deqps = s.deqps, z = s.z;
     }
     sigma[0] = out[0], sigma[1] = out[1], sigma[2] = out[2], sigma[3] = out[3];
     *eqps = eqps_n + deqps;
@@ -283,46 +329,72 @@ NSPD_KERNEL double j2_damage_brittle(double max_principal, double critical, doub
     return j2_fmin(j2_fmax((r - (1.0 - ramp)) / ramp, 0.0), 1.0);
 }
 
-/* One material step of a bond (bac_force) or a point (classic_force) in
- * 2D, from F_n = Fp to F_{n+1} = F (in-plane 2 x 2, row-major): the
+/* One material step of a bond pair (bac_force) or a point (classic_force)
+ * in 2D, from F_n = Fp to F_{n+1} = F (in-plane 2 x 2, row-major): the
  * midpoint increment (j2_unrotated_increment_2d), the J2 update (plane
  * strain: j2_return with de_zz = 0; plane stress: j2_update_zz's Newton
- * loop and the thickness stretch exp(strain_zz)), the maximum principal
- * stress and P = thick sigma cof(F). Where det F or det F_mid is not
- * positive the bond or point has inverted: P = 0, principal 0, and its
- * state (sigma, eqps, strain_zz) is left as it was. Returns 1 when
- * inverted, else 0. plane_stress must be m->plane_stress: it is an
- * argument so that a caller passing the constant 0 gets no Newton loop,
- * and its loop over pairs (branch-free here: the kept answers are formed
- * by the same expressions) vectorises. strain_zz is read only in plane
- * stress. */
-NSPD_KERNEL int j2_step_2d(const J2Material *m, int plane_stress, const double F[4],
-                           const double Fp[4], double sigma[4], double *eqps, double *strain_zz,
-                           double P[4], double *principal) {
+ * iterations, the thickness strain grown by de_zz), the maximum principal
+ * stress and P2 = sigma cof(F), without the plane-stress thickness stretch
+ * (j2_step_2d applies it). Where det F or det F_mid is not positive the
+ * pair or point has inverted: P2 = 0, principal 0, and its state (sigma,
+ * eqps, strain_zz) is left as it was. Returns 1 when inverted, else 0.
+ * plane_stress must be m->plane_stress and newton a constant at each call:
+ * plane strain gets no Newton loop at all, and newton > 0 takes at most
+ * that many plane-stress iterations, unrolled, setting *finished to 0.0,
+ * else 1.0 (a double: a mask beside the numbers in SIMD lanes), and the
+ * outputs to no answer when they were not enough; newton = 0 iterates
+ * to the end. Branch-free otherwise (the kept answers are formed by the
+ * same expressions), so that a loop over pairs vectorises around it.
+ * strain_zz is read only in plane stress. */
+NSPD_KERNEL int j2_step_2d_lane(const J2Material *m, const int plane_stress, const int newton,
+                                const double F[4], const double Fp[4], double sigma[4],
+                                double *eqps, double *strain_zz, double P2[4], double *principal,
+                                double *finished) {
     const double Fm[4] = {0.5 * (Fp[0] + F[0]), 0.5 * (Fp[1] + F[1]), 0.5 * (Fp[2] + F[2]),
                           0.5 * (Fp[3] + F[3])};
     const double dF[4] = {F[0] - Fp[0], F[1] - Fp[1], F[2] - Fp[2], F[3] - Fp[3]};
     double de[3], s[4], e, dzz = 0.0, c33;
     const int upright = F[0] * F[3] - F[1] * F[2] > 0.0;
     const int ok = upright & j2_unrotated_increment_2d(Fm, dF, 1.0, de);
-    if (plane_stress) {
+    *finished = 1.0;
+    if (plane_stress && newton > 0) {
+        J2ZzNewton z;
+        j2_zz_start(m, de, sigma, &z);
+        NSPD_UNROLL(8)
+        for (int t = 0; t < newton; t++) j2_zz_iterate(m, de, sigma, *eqps, &z);
+        for (int q = 0; q < 4; q++) s[q] = z.out[q];
+        e = *eqps + z.deqps, dzz = z.z;
+        *finished = z.done;
+    } else if (plane_stress) {
         for (int q = 0; q < 4; q++) s[q] = sigma[q];
         e = *eqps;
         j2_update_zz(m, de, s, &e, &dzz);
     } else {
         e = *eqps + j2_return(m, de, 0.0, sigma, *eqps, s, &c33);
     }
-    double P2[4], thick = 1.0;
-    j2_piola_2d(F, s, P2);
-    if (plane_stress && ok) {
-        *strain_zz += dzz;
-        thick = exp(*strain_zz);
-    }
-    for (int q = 0; q < 4; q++) P[q] = ok ? (plane_stress ? thick * P2[q] : P2[q]) : 0.0;
+    double P[4];
+    j2_piola_2d(F, s, P);
+    for (int q = 0; q < 4; q++) P2[q] = ok ? P[q] : 0.0;
     *principal = ok ? j2_max_principal(s) : 0.0;
     for (int q = 0; q < 4; q++) sigma[q] = ok ? s[q] : sigma[q];
     *eqps = ok ? e : *eqps;
+    if (plane_stress) *strain_zz = ok ? *strain_zz + dzz : *strain_zz;
     return !ok;
+}
+
+/* j2_step_2d_lane to the end, with the plane-stress thickness stretch
+ * exp(strain_zz) on P. */
+NSPD_KERNEL int j2_step_2d(const J2Material *m, int plane_stress, const double F[4],
+                           const double Fp[4], double sigma[4], double *eqps, double *strain_zz,
+                           double P[4], double *principal) {
+    double finished;
+    const int inverted =
+        j2_step_2d_lane(m, plane_stress, 0, F, Fp, sigma, eqps, strain_zz, P, principal, &finished);
+    if (plane_stress && !inverted) {
+        const double thick = exp(*strain_zz);
+        for (int q = 0; q < 4; q++) P[q] = thick * P[q];
+    }
+    return inverted;
 }
 
 #endif
