@@ -69,13 +69,13 @@ add_test(NAME unit.core.cuda_kernels
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
 set_tests_properties(unit.core.cuda_kernels PROPERTIES LABELS "unit;cuda" SKIP_RETURN_CODE 77)
 
-# The GKS step's marked row loops vectorised, as GCC reports it
-# (tests/unit/flow/gks/vectorised.sh); skipped with another compiler.
-add_test(NAME unit.flow.gks.vectorised
-    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/unit/flow/gks/vectorised.sh ${CMAKE_C_COMPILER}
+# The marked loops (GKS rows, correspondence pairs) vectorised, as GCC
+# reports it (tests/unit/core/vectorised.sh); skipped with another compiler.
+add_test(NAME unit.core.vectorised
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/unit/core/vectorised.sh ${CMAKE_C_COMPILER}
         ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR}/vectorised
     WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
-set_tests_properties(unit.flow.gks.vectorised PROPERTIES LABELS "unit" SKIP_RETURN_CODE 77)
+set_tests_properties(unit.core.vectorised PROPERTIES LABELS "unit" SKIP_RETURN_CODE 77)
 
 # The distributed engine (issue 28): tests/mpi/test_<topic>.c, each run by
 # mpiexec on 1, 2, 3 and 4 ranks (ctest mpi.<topic>.ranks<N>, label "mpi"),

@@ -59,7 +59,7 @@ flux_row(int n, const GksRowSide *restrict L, const GksRowSide *restrict R,
     const double idcs = 1.0 / (dls + drs);
     /* GCC ivdep, not omp simd: GCC lowers omp simd before inlining and then
      * cannot vectorise the kernel's local arrays; the plain vectoriser can. */
-    NSPD_IVDEP /* vectorised: tests/unit/flow/gks/vectorised.sh */
+    NSPD_IVDEP /* vectorised: tests/unit/core/vectorised.sh */
         for (int k = 0; k < n; k++) {
         const double dl = per_face ? dla[k] : dls, dr = per_face ? dra[k] : drs;
         const double idc = per_face ? idca[k] : idcs;

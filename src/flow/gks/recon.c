@@ -27,7 +27,7 @@ RECON_INLINE int64_t slopes(int n, FlowLimiter limiter, const double *const wm[4
                            *restrict p3 = wp[3];
     double *restrict s0 = s[0], *restrict s1 = s[1], *restrict s2 = s[2], *restrict s3 = s[3];
     int64_t fallbacks = 0;
-    NSPD_IVDEP /* vectorised: tests/unit/flow/gks/vectorised.sh */
+    NSPD_IVDEP /* vectorised: tests/unit/core/vectorised.sh */
         for (int k = 0; k < n; k++) {
         const double idl = per_cell ? idla[k] : idls, idr = per_cell ? idra[k] : idrs;
         const double hw = per_cell ? hwa[k] : hws;

@@ -149,7 +149,7 @@ dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double
     const uint8_t *restrict kd = s->kind + base;
     const double *restrict idx = g->ax[0].inv_width;
     double *restrict out = rate;
-    NSPD_IVDEP /* vectorised: tests/unit/flow/gks/vectorised.sh */
+    NSPD_IVDEP /* vectorised: tests/unit/core/vectorised.sh */
         for (int i = 0; i < g->nx; i++) {
         const double ir = 1.0 / r[i], u = mx[i] * ir, v = my[i] * ir;
         const double p = gm1 * (e[i] - 0.5 * (mx[i] * u + my[i] * v));

@@ -209,6 +209,7 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
 static inline __attribute__((always_inline)) void pair_j2_2d(const PairView *v, int64_t p,
                                                              const int plane_stress,
                                                              const int scaled, const int newton) {
+    /* vectorised x2: tests/unit/core/vectorised.sh (plane strain, stress) */
     const int64_t np = v->np, k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k];
     const double xi[3] = {v->x0[j] - v->x0[i], v->x1[j] - v->x1[i], 0.0};
     const double Y[3] = {xi[0] + (v->u0[j] - v->u0[i]), xi[1] + (v->u1[j] - v->u1[i]), 0.0};

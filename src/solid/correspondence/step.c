@@ -104,19 +104,27 @@ static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
 static void pair_damage(const CpdBody *b, double *d) {
     const CpdConfig *c = &b->cfg;
     const int64_t np = b->pairs.count;
-    const uint8_t *inverted = b->inverted;
     if (c->damage == CPD_DAMAGE_DUCTILE) {
         const double *eqps = b->eqps, lo = c->plastic_strain_threshold,
                      hi = c->plastic_strain_critical;
 #pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
-        for (int64_t p = 0; p < np; p++)
-            d[p] = inverted[p] ? 1.0 : j2_damage_ductile(eqps[p], lo, hi);
+        for (int64_t p = 0; p < np; p++) {
+            /* vectorised x1: tests/unit/core/vectorised.sh */
+            d[p] = j2_damage_ductile(eqps[p], lo, hi);
+        }
     } else {
         const double *principal = b->principal, cr = c->critical_stress, ramp = c->damage_ramp;
 #pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
-        for (int64_t p = 0; p < np; p++)
-            d[p] = inverted[p] ? 1.0 : j2_damage_brittle(principal[p], cr, ramp);
+        for (int64_t p = 0; p < np; p++) {
+            /* vectorised x1: tests/unit/core/vectorised.sh */
+            d[p] = j2_damage_brittle(principal[p], cr, ramp);
+        }
     }
+    /* an inverted pair has failed: apart, because a byte read beside the
+     * doubles keeps GCC 12 from vectorising the laws' loops */
+#pragma omp parallel for schedule(static) if (np >= PARALLEL_MIN_ITEMS)
+    for (int64_t p = 0; p < np; p++)
+        if (b->inverted[p]) d[p] = 1.0;
 }
 
 /* Damage grows (never falls) by the law, then the weights settle
