@@ -355,6 +355,16 @@ static void stress_integrals(const BacSystem *s, const double *inv_w0, const dou
     }
 }
 
+void bac_inverse_weights(const BacSystem *s, double *inv_w0) {
+#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < s->n; i++) {
+        double w = 0.0;
+        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)
+            w += s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0) * s->volume[s->nbr[k]];
+        inv_w0[i] = w > 0.0 ? 1.0 / w : 0.0;
+    }
+}
+
 void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],
                double *work_point, double *work_bond) {
     const int dim = s->dim;
@@ -363,14 +373,12 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
            *Pb = work_bond + (int64_t)dim * nb;
     rk_deformation_gradient(dim, n, u, st ? st->u_prev : NULL, s->volume, s->first, s->nbr, s->phi,
                             F, Fp);
-    /* 1 / w0 per point (0 where w0 = 0), read by every bond of the point's
-     * neighbours: the same quotient as each bond would form */
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < n; i++) {
-        double w = 0.0;
-        for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)
-            w += s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0) * s->volume[s->nbr[k]];
-        inv_w0[i] = w > 0.0 ? 1.0 / w : 0.0;
+    /* 1 / w0 per point, read by every bond of the point's neighbours: the
+     * same quotient as each bond would form */
+    const double *iw = s->inv_w0;
+    if (!iw) {
+        bac_inverse_weights(s, inv_w0);
+        iw = inv_w0;
     }
     /* per pair, from its canonical (lower-numbered) bond: F_b(ij) = F_b(ji)
      * bit for bit, so the pair's stress (and its state update) is computed
@@ -379,6 +387,6 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
         pairs_j2_2d(s, st, u, F, Fp, Pb, T); /* T, written next, is the scratch meanwhile */
     else
         pairs_svk(s, u, F, Pb);
-    stress_integrals(s, inv_w0, Pb, T);
+    stress_integrals(s, iw, Pb, T);
     bac_gather(dim, n, s->first, s->nbr, s->reverse, s->volume, T, force);
 }

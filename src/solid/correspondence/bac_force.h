@@ -56,6 +56,9 @@ typedef struct {
      * (phi must have been computed with the same scale) */
     const double *bond_scale;
     BacPairs pairs; /* bac_pairs_create */
+    /* 1 / w0 per point (bac_inverse_weights), kept by the caller while
+     * omega, bond_scale and the volumes stay; NULL: formed at each call */
+    const double *inv_w0;
 } BacSystem;
 
 /* The state of the hypoelastic J2 material (solid/correspondence/j2_kernel.h;
@@ -93,6 +96,11 @@ int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, i
  * nspd_alloc; bac_pairs_free frees them. NSPD_ERR_NOMEM. */
 int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, BacPairs *pairs);
 void bac_pairs_free(BacPairs *pairs);
+
+/* 1 / w0_i = 1 / sum_j omega_ij (1 - d_ij) V_j per point (0 where w0 = 0:
+ * every bond broken), into inv_w0 (n): what bac_force forms when
+ * s->inv_w0 is NULL. */
+void bac_inverse_weights(const BacSystem *s, double *inv_w0);
 
 /* Force densities L (N/m^3, dim arrays of n) for displacements u, with the
  * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic

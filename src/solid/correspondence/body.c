@@ -162,6 +162,7 @@ static int build(CpdBody *b, CpdConfig *cfg) {
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
     if (cfg->force != CPD_FORCE_CLASSIC) {
         TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
+        TRY(nspd_alloc(&b->inv_w0, (size_t)b->n, sizeof(double)));
         TRY(state_arrays(b, (size_t)b->pairs.count));
         const size_t dd = (size_t)(b->dim * b->dim); /* T per bond, P_b per pair */
         TRY(nspd_alloc(&b->work_bond,
@@ -235,6 +236,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->nbr);
     nspd_free(&b->reverse);
     bac_pairs_free(&b->pairs);
+    nspd_free(&b->inv_w0);
     nspd_free(&b->omega);
     nspd_free(&b->phi);
     nspd_free(&b->ok);

@@ -73,6 +73,8 @@ typedef struct {
     int32_t *nbr;
     int64_t *reverse;
     BacPairs pairs;      /* the bond-associated force's bond pairs; the state is per pair */
+    double *inv_w0;      /* the bond-associated force's 1 / w0 per point (cpd_settle_weights
+                            refreshes it: damage is what changes it) */
     double *omega, *phi; /* phi: NULL for the classic force */
     uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
     uint8_t *redo;       /* per point: damage grew in its family this step */
@@ -121,11 +123,15 @@ int cpd_step(CpdBody *b, double dt);
  * stresses from u_prev and the damage (what cpd_step calls). */
 void cpd_force(CpdBody *b, double t);
 /* The weights of the points flagged in b->redo recomputed with the damaged
- * kernel; a point left without weights is debris and its bonds break from
- * both ends (each end reads both points' flags), which may leave its
- * neighbours without weights in turn: repeated until no point changes.
- * Returns the number of bonds broken this way. */
+ * kernel (and the bond-associated force's 1 / w0 of every point); a point left without weights is
+ * debris and its bonds break from both ends (each end reads both points' flags), which may leave
+ * its neighbours without weights in turn: repeated until no point changes. Returns the number of
+ * bonds broken this way. */
 int64_t cpd_settle_weights(CpdBody *b);
+/* b->inv_w0 from the current damage (bac_inverse_weights): after anything
+ * that changed scale (cpd_settle_weights calls it; so does a checkpoint's
+ * restore). */
+void cpd_inverse_weights(CpdBody *b);
 
 /* dt = 2 / sqrt(lambda_max) of the linearised operator (K / rho) at the
  * current damage, by power iteration (notes 1c.10 C6): `iterations` from

@@ -25,7 +25,8 @@ static BacSystem system_of(const CpdBody *b) {
                    .lambda = b->lambda,
                    .mu = b->mu,
                    .bond_scale = b->scale,
-                   .pairs = b->pairs};
+                   .pairs = b->pairs,
+                   .inv_w0 = b->inv_w0};
     for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
     return s;
 }
@@ -174,7 +175,15 @@ int64_t cpd_settle_weights(CpdBody *b) {
         if (broke == 0) break;
         grown += broke;
     }
+    cpd_inverse_weights(b);
     return grown;
+}
+
+void cpd_inverse_weights(CpdBody *b) {
+    if (!b->inv_w0) return; /* the classic force keeps none */
+    BacSystem s = system_of(b);
+    s.inv_w0 = NULL;
+    bac_inverse_weights(&s, b->inv_w0);
 }
 
 /* The force density at displacements u into L: with the body's material
