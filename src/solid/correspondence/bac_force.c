@@ -197,6 +197,26 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
                       .inverted = st->inverted};
 }
 
+/* Where pair_j2_2d stores pair p's answers: at index o of arrays of
+ * stride n (component c of sigma and P_b at [c n + o]): the state itself
+ * (o = p), or a block's scratch (pairs_j2_2d_block). */
+typedef struct {
+    int64_t n;
+    double *Pb, *sigma, *eqps, *principal, *strain_zz, *todo;
+    uint8_t *inverted;
+} PairOut;
+
+static PairOut pair_out_state(const PairView *v) {
+    return (PairOut){.n = v->np,
+                     .Pb = v->Pb,
+                     .sigma = v->sigma,
+                     .eqps = v->eqps,
+                     .principal = v->principal,
+                     .strain_zz = v->strain_zz,
+                     .todo = v->todo,
+                     .inverted = v->inverted};
+}
+
 /* Pair p's J2 step in 2D (j2_step_2d) from the points' F now and at the
  * step's start: its P_b and its state, component c at [c np + p].
  * plane_stress, scaled and newton are constants at each call. scaled says
@@ -208,7 +228,8 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
  * whole pair again on the scalar path. */
 static inline __attribute__((always_inline)) void pair_j2_2d(const PairView *v, int64_t p,
                                                              const int plane_stress,
-                                                             const int scaled, const int newton) {
+                                                             const int scaled, const int newton,
+                                                             const PairOut *out, int64_t o) {
     /* vectorised x2: tests/unit/core/vectorised.sh (plane strain, stress) */
     const int64_t np = v->np, k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k];
     const double xi[3] = {v->x0[j] - v->x0[i], v->x1[j] - v->x1[i], 0.0};
@@ -236,43 +257,78 @@ static inline __attribute__((always_inline)) void pair_j2_2d(const PairView *v, 
                                                  &zz, P, &principal);
     /* a broken pair keeps its state; its P_b is not read (S_i and T_ij skip
      * broken bonds) */
-    for (int q = 0; q < 4; q++) v->Pb[q * np + p] = P[q];
+    const int64_t no = out->n;
+    for (int q = 0; q < 4; q++) out->Pb[q * no + o] = P[q];
     const int live = !scaled || v->bond_scale[k] != 0.0;
-    if (newton > 0) v->todo[p] = finished == 0.0 ? 2.0 : live && !inverted ? 1.0 : 0.0;
+    if (newton > 0) out->todo[o] = finished == 0.0 ? 2.0 : live && !inverted ? 1.0 : 0.0;
     if (live && finished != 0.0) {
-        for (int q = 0; q < 4; q++) v->sigma[q * np + p] = sigma[q];
-        v->eqps[p] = eqps, v->principal[p] = principal, v->inverted[p] = (uint8_t)inverted;
-        if (plane_stress) v->strain_zz[p] = zz;
+        for (int q = 0; q < 4; q++) out->sigma[q * no + o] = sigma[q];
+        out->eqps[o] = eqps, out->principal[o] = principal, out->inverted[o] = (uint8_t)inverted;
+        if (plane_stress) out->strain_zz[o] = zz;
     }
 }
 
-/* Plane-stress Newton iterations a pair takes in SIMD lanes: an elastic
- * pair needs one, a yielding one two to four, and a pair that needs more
- * than the lanes take is done again on the scalar path. One is fastest:
- * the coarse blast_hollow_square's solid took 12.4, 12.9 and 13.6 s with
- * 1, 2 and 3 (one thread, this machine, 2026-12-03; 15.3 s all scalar). */
-enum { BAC_LANE_NEWTON = 1 };
+/* Plane stress in SIMD lanes, block by block of BAC_BLOCK pairs: first
+ * every pair with BAC_LANE_NEWTON Newton iterations (an elastic pair needs
+ * one), then the pairs that needed more, gathered into a list, with
+ * BAC_LANE_NEWTON_MORE (a yielding pair needs two to four) into a scratch
+ * of the block (contiguous: GCC 12 has no masked scatter) and copied out;
+ * the few still unfinished, and the thickness stretch exp() (libm's bits:
+ * no SIMD exp gives them), on the scalar path. Measured on the coarse
+ * blast_hollow_square (one thread, solid_s): 15.3 s all scalar; 12.4, 12.9
+ * and 13.6 s with 1, 2 and 3 iterations in one SIMD pass and the rest
+ * scalar; with the second pass of 3, 4 and 6 iterations 12.0, 8.6 and
+ * 9.1 s. */
+enum { BAC_LANE_NEWTON = 1, BAC_LANE_NEWTON_MORE = 4, BAC_BLOCK = 256 };
 
-/* After the plane-stress SIMD pass, pair p's thickness stretch exp() (no
- * SIMD exp gives libm's bits) or, where the lane's Newton iterations were
- * not enough, the whole pair on the scalar path (its state was not
- * stored). */
-static inline __attribute__((always_inline)) void finish_plane_stress(const PairView *v,
-                                                                      int64_t p) {
-    if (v->todo[p] == 1.0) {
-        const double thick = exp(v->strain_zz[p]);
-        for (int q = 0; q < 4; q++) v->Pb[q * v->np + p] = thick * v->Pb[q * v->np + p];
-    } else if (v->todo[p] == 2.0) {
-        pair_j2_2d(v, p, 1, 1, 0);
+/* The pairs [p0, p1) in plane stress, as above. */
+static inline __attribute__((always_inline)) void pairs_plane_stress(const PairView *v, int64_t p0,
+                                                                     int64_t p1) {
+    const PairOut state = pair_out_state(v);
+    double Pb[4 * BAC_BLOCK], sigma[4 * BAC_BLOCK], eqps[BAC_BLOCK], principal[BAC_BLOCK],
+        zz[BAC_BLOCK], todo[BAC_BLOCK];
+    uint8_t inverted[BAC_BLOCK];
+    int64_t list[BAC_BLOCK];
+    const PairOut scratch = {.n = BAC_BLOCK,
+                             .Pb = Pb,
+                             .sigma = sigma,
+                             .eqps = eqps,
+                             .principal = principal,
+                             .strain_zz = zz,
+                             .todo = todo,
+                             .inverted = inverted};
+#pragma omp simd
+    for (int64_t p = p0; p < p1; p++) pair_j2_2d(v, p, 1, 1, BAC_LANE_NEWTON, &state, p);
+    int64_t m = 0;
+    for (int64_t p = p0; p < p1; p++)
+        if (v->todo[p] == 2.0) list[m++] = p;
+#pragma omp simd /* vectorised x1: tests/unit/core/vectorised.sh */
+    for (int64_t q = 0; q < m; q++) pair_j2_2d(v, list[q], 1, 1, BAC_LANE_NEWTON_MORE, &scratch, q);
+    for (int64_t q = 0; q < m; q++) {
+        const int64_t p = list[q];
+        if (todo[q] == 2.0) continue; /* still unfinished: the scalar path */
+        v->todo[p] = todo[q];
+        for (int c = 0; c < 4; c++) v->Pb[c * v->np + p] = Pb[c * BAC_BLOCK + q];
+        if (v->bond_scale[v->pair_bond[p]] == 0.0) continue; /* broken: the state stays */
+        for (int c = 0; c < 4; c++) v->sigma[c * v->np + p] = sigma[c * BAC_BLOCK + q];
+        v->eqps[p] = eqps[q], v->principal[p] = principal[q], v->inverted[p] = inverted[q];
+        v->strain_zz[p] = zz[q];
+    }
+    for (int64_t p = p0; p < p1; p++) {
+        if (v->todo[p] == 1.0) {
+            const double thick = exp(v->strain_zz[p]);
+            for (int c = 0; c < 4; c++) v->Pb[c * v->np + p] = thick * v->Pb[c * v->np + p];
+        } else if (v->todo[p] == 2.0) {
+            pair_j2_2d(v, p, 1, 1, 0, &state, p);
+        }
     }
 }
 
 /* Per pair, the J2 P_b and state update (2D), in SIMD lanes across pairs
  * (each pair's arithmetic is its own, so the lanes give the scalar bits);
- * plane stress with BAC_LANE_NEWTON iterations in the lanes and the rest
- * after (finish_plane_stress, scalar). A system without bond_scale (the
- * body always has one) takes the scalar path. todo: a double per pair of
- * scratch. */
+ * plane stress block by block (pairs_plane_stress). A system without
+ * bond_scale (the body always has one) takes the scalar path. todo: a
+ * double per pair of scratch. */
 static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *const u[3],
                         const double *F, const double *Fp, double *Pb, double *todo) {
     const int64_t np = s->pairs.count;
@@ -280,17 +336,17 @@ static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *co
 #pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
     {
         const PairView v = pair_view(s, st, u, F, Fp, Pb, todo);
+        const PairOut state = pair_out_state(&v);
         if (!scaled) {
 #pragma omp for schedule(static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, 0, 0);
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, 0, 0, &state, p);
         } else if (plane_stress) {
-#pragma omp for simd schedule(simd : static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 1, 1, BAC_LANE_NEWTON);
 #pragma omp for schedule(static)
-            for (int64_t p = 0; p < np; p++) finish_plane_stress(&v, p);
+            for (int64_t b = 0; b < np; b += BAC_BLOCK)
+                pairs_plane_stress(&v, b, b + BAC_BLOCK < np ? b + BAC_BLOCK : np);
         } else {
 #pragma omp for simd schedule(simd : static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1, 0);
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1, 0, &state, p);
         }
     }
 }

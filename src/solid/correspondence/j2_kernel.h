@@ -181,6 +181,7 @@ NSPD_KERNEL void j2_zz_start(const J2Material *m, const double de[3], const doub
     s->have_lo = s->have_hi = 0.0;
     s->it = 0.0;
     s->done = 0.0;
+    NSPD_UNROLL(4)
     for (int q = 0; q < 4; q++) s->out[q] = 0.0;
     s->deqps = 0.0;
 }
@@ -209,6 +210,7 @@ NSPD_KERNEL void j2_zz_iterate(const J2Material *m, const double de[3], const do
     const double active = s->done == 0.0 ? 1.0 : 0.0;
     const double finish = active * stop, go_on = active - finish;
     const double rise = go_on * (NSPD_GT(r, 0.0) ? 1.0 : 0.0), fall = go_on - rise;
+    NSPD_UNROLL(4)
     for (int q = 0; q < 4; q++) s->out[q] = finish != 0.0 ? out[q] : s->out[q];
     s->deqps = finish != 0.0 ? deqps : s->deqps;
     const double hi = rise != 0.0 ? s->z : s->hi, lo = fall != 0.0 ? s->z : s->lo;
@@ -362,10 +364,12 @@ NSPD_KERNEL int j2_step_2d_lane(const J2Material *m, const int plane_stress, con
         j2_zz_start(m, de, sigma, &z);
         NSPD_UNROLL(8)
         for (int t = 0; t < newton; t++) j2_zz_iterate(m, de, sigma, *eqps, &z);
+        NSPD_UNROLL(4)
         for (int q = 0; q < 4; q++) s[q] = z.out[q];
         e = *eqps + z.deqps, dzz = z.z;
         *finished = z.done;
     } else if (plane_stress) {
+        NSPD_UNROLL(4)
         for (int q = 0; q < 4; q++) s[q] = sigma[q];
         e = *eqps;
         j2_update_zz(m, de, s, &e, &dzz);
@@ -374,8 +378,10 @@ NSPD_KERNEL int j2_step_2d_lane(const J2Material *m, const int plane_stress, con
     }
     double P[4];
     j2_piola_2d(F, s, P);
+    NSPD_UNROLL(4)
     for (int q = 0; q < 4; q++) P2[q] = ok ? P[q] : 0.0;
     *principal = ok ? j2_max_principal(s) : 0.0;
+    NSPD_UNROLL(4)
     for (int q = 0; q < 4; q++) sigma[q] = ok ? s[q] : sigma[q];
     *eqps = ok ? e : *eqps;
     if (plane_stress) *strain_zz = ok ? *strain_zz + dzz : *strain_zz;
