@@ -427,8 +427,8 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
     const int64_t n = s->n, nb = s->first[n];
     double *F = work_point, *Fp = work_point + 9 * n, *inv_w0 = work_point + 18 * n, *T = work_bond,
            *Pb = work_bond + (int64_t)dim * nb;
-    rk_deformation_gradient(dim, n, u, st ? st->u_prev : NULL, s->volume, s->first, s->nbr, s->phi,
-                            F, Fp);
+    rk_deformation_gradient(dim, n, u, st && !st->fp_given ? st->u_prev : NULL, s->volume, s->first,
+                            s->nbr, s->phi, F, Fp);
     /* 1 / w0 per point, read by every bond of the point's neighbours: the
      * same quotient as each bond would form */
     const double *iw = s->inv_w0;

@@ -69,10 +69,14 @@ typedef struct {
 typedef struct {
     const J2Material *material;
     const double *u_prev[3]; /* displacements at the start of the step */
-    double *sigma;           /* unrotated Cauchy stress, 4 per pair [xx, yy, zz, xy], Pa */
-    double *eqps;            /* equivalent plastic strain per pair */
-    double *principal;       /* out: the pair's maximum principal Cauchy stress, Pa */
-    uint8_t *inverted;       /* out: 1 where det F_b <= 0 (the pair carried no stress) */
+    /* 1: work_point's F at u_prev (9 n from 9 n) is given, formed by an
+     * earlier call at those displacements and weights (the body keeps it
+     * from its last step), and not formed again */
+    int fp_given;
+    double *sigma;     /* unrotated Cauchy stress, 4 per pair [xx, yy, zz, xy], Pa */
+    double *eqps;      /* equivalent plastic strain per pair */
+    double *principal; /* out: the pair's maximum principal Cauchy stress, Pa */
+    uint8_t *inverted; /* out: 1 where det F_b <= 0 (the pair carried no stress) */
     /* plane stress: the logarithmic thickness strain per pair, sum of
      * de_zz, whose stretch exp() scales P_b (NULL: plane strain) */
     double *strain_zz;

@@ -89,6 +89,14 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid;
+    /* work_point's F is the bond-associated force's F at the current u and
+     * weights (set by a stateful force, cleared by damage growth and by the
+     * stateless force, which writes there) */
+    bool F_now;
+    /* work_point's F at u_prev is given for the next stateful force (the
+     * step copied F there as it remembered u: a step's start is the last
+     * step's end) */
+    bool Fp_given;
     double stable_dt;     /* s, by power iteration at creation (step.c) */
     double stable_now;    /* s, the same at the current damage (re-estimated as it grows) */
     double *mode[3];      /* the highest mode's last iterate (warm start) */

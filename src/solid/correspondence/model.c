@@ -440,7 +440,8 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     int valid = b->force_valid;
     TRY(checkpoint_io_int(ck, "cpd.force_valid", &valid));
     b->force_valid = valid != 0;
-    cpd_inverse_weights(b); /* the damage may have been read */
+    cpd_inverse_weights(b);         /* the damage may have been read */
+    b->F_now = b->Fp_given = false; /* formed again at the next force */
     return NSPD_OK;
 }
 

@@ -209,7 +209,11 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
                    .inverted = b->inverted,
                    .strain_zz = b->strain_zz};
     for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
+    st.fp_given = b->Fp_given ? 1 : 0;
     bac_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
+    /* F at u (a stateful force) or at a probe (the stateless one) */
+    b->F_now = state;
+    b->Fp_given = false;
 }
 
 void cpd_force(CpdBody *b, double t) {
@@ -225,7 +229,10 @@ void cpd_force(CpdBody *b, double t) {
                 for (int a = 0; a < b->dim; a++)
                     b->force[a][i] += p[b->load[i]] * b->load_dir[a][i];
     }
-    if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) b->damage_grew = true;
+    if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) {
+        b->damage_grew = true;
+        b->F_now = false; /* the weights changed */
+    }
 }
 
 static PdMotion motion_of(CpdBody *b) {
@@ -244,8 +251,16 @@ static PdMotion motion_of(CpdBody *b) {
     return m;
 }
 
+/* u_prev = u, the step's start; and, where the last force was formed at
+ * this u with these weights (the step's start is the last step's end: the
+ * kicks move only v), its F is F at u_prev: copied there, so the next
+ * force forms F only once (the same bits as forming it again). */
 static void remember_u(CpdBody *b) {
     for (int d = 0; d < b->dim; d++) memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
+    if (b->F_now && b->cfg.force != CPD_FORCE_CLASSIC) {
+        memcpy(b->work_point + 9 * b->n, b->work_point, (size_t)(9 * b->n) * sizeof(double));
+        b->Fp_given = true;
+    }
 }
 
 static int substep(CpdBody *b, double dt) {
