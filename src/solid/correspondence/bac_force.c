@@ -159,6 +159,15 @@ static void pairs_svk(const BacSystem *s, const double *const u[3], const double
     }
 }
 
+/* Where pair_j2_2d stores pair p's answers: at index o of arrays of
+ * stride n (component c of sigma and P_b at [c n + o]): the state itself
+ * (o = p), or a block's scratch (pairs_plane_stress). */
+typedef struct {
+    int64_t n;
+    double *Pb, *sigma, *eqps, *principal, *strain_zz, *todo;
+    uint8_t *inverted;
+} PairOut;
+
 /* What the 2D J2 pass over pairs reads and writes, as plain arrays: a
  * local copy in each thread, so that the loop loads them once (through
  * BacSystem and BacState the compiler must reload them after every store). */
@@ -168,8 +177,7 @@ typedef struct {
     const int64_t *pair_bond;
     const int32_t *pair_point, *nbr;
     const double *x0, *x1, *u0, *u1, *up0, *up1, *F, *Fp, *bond_scale;
-    double *Pb, *sigma, *eqps, *principal, *strain_zz, *todo;
-    uint8_t *inverted;
+    PairOut state; /* the pairs' state and P_b (stride np), and todo */
 } PairView;
 
 static PairView pair_view(const BacSystem *s, const BacState *st, const double *const u[3],
@@ -188,33 +196,14 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
                       .F = F,
                       .Fp = Fp,
                       .bond_scale = s->bond_scale,
-                      .Pb = Pb,
-                      .sigma = st->sigma,
-                      .eqps = st->eqps,
-                      .principal = st->principal,
-                      .strain_zz = st->strain_zz,
-                      .todo = todo,
-                      .inverted = st->inverted};
-}
-
-/* Where pair_j2_2d stores pair p's answers: at index o of arrays of
- * stride n (component c of sigma and P_b at [c n + o]): the state itself
- * (o = p), or a block's scratch (pairs_j2_2d_block). */
-typedef struct {
-    int64_t n;
-    double *Pb, *sigma, *eqps, *principal, *strain_zz, *todo;
-    uint8_t *inverted;
-} PairOut;
-
-static PairOut pair_out_state(const PairView *v) {
-    return (PairOut){.n = v->np,
-                     .Pb = v->Pb,
-                     .sigma = v->sigma,
-                     .eqps = v->eqps,
-                     .principal = v->principal,
-                     .strain_zz = v->strain_zz,
-                     .todo = v->todo,
-                     .inverted = v->inverted};
+                      .state = {.n = s->pairs.count,
+                                .Pb = Pb,
+                                .sigma = st->sigma,
+                                .eqps = st->eqps,
+                                .principal = st->principal,
+                                .strain_zz = st->strain_zz,
+                                .todo = todo,
+                                .inverted = st->inverted}};
 }
 
 /* Pair p's J2 step in 2D (j2_step_2d) from the points' F now and at the
@@ -248,8 +237,10 @@ static inline __attribute__((always_inline)) void pair_j2_2d(const PairView *v, 
     bond_gradient(2, Fi, Fj, xi, g, Y, Fb);
     bond_gradient(2, Fpi, Fpj, xi, g, Yp, Fbp);
     const double F2[4] = {Fb[0], Fb[1], Fb[3], Fb[4]}, Fp2[4] = {Fbp[0], Fbp[1], Fbp[3], Fbp[4]};
-    double sigma[4], eqps = v->eqps[p], zz = plane_stress ? v->strain_zz[p] : 0.0, P[4], principal;
-    for (int q = 0; q < 4; q++) sigma[q] = v->sigma[q * np + p];
+    const PairOut *old = &v->state;
+    double sigma[4], eqps = old->eqps[p], zz = plane_stress ? old->strain_zz[p] : 0.0, P[4],
+                     principal;
+    for (int q = 0; q < 4; q++) sigma[q] = old->sigma[q * np + p];
     double finished = 1.0;
     const int inverted = newton > 0 ? j2_step_2d_lane(&v->material, plane_stress, newton, F2, Fp2,
                                                       sigma, &eqps, &zz, P, &principal, &finished)
@@ -284,7 +275,7 @@ enum { BAC_LANE_NEWTON = 1, BAC_LANE_NEWTON_MORE = 4, BAC_BLOCK = 256 };
 /* The pairs [p0, p1) in plane stress, as above. */
 static inline __attribute__((always_inline)) void pairs_plane_stress(const PairView *v, int64_t p0,
                                                                      int64_t p1) {
-    const PairOut state = pair_out_state(v);
+    const PairOut *state = &v->state;
     double Pb[4 * BAC_BLOCK], sigma[4 * BAC_BLOCK], eqps[BAC_BLOCK], principal[BAC_BLOCK],
         zz[BAC_BLOCK], todo[BAC_BLOCK];
     uint8_t inverted[BAC_BLOCK];
@@ -298,28 +289,28 @@ static inline __attribute__((always_inline)) void pairs_plane_stress(const PairV
                              .todo = todo,
                              .inverted = inverted};
 #pragma omp simd
-    for (int64_t p = p0; p < p1; p++) pair_j2_2d(v, p, 1, 1, BAC_LANE_NEWTON, &state, p);
+    for (int64_t p = p0; p < p1; p++) pair_j2_2d(v, p, 1, 1, BAC_LANE_NEWTON, state, p);
     int64_t m = 0;
     for (int64_t p = p0; p < p1; p++)
-        if (v->todo[p] == 2.0) list[m++] = p;
+        if (state->todo[p] == 2.0) list[m++] = p;
 #pragma omp simd /* vectorised x1: tests/unit/core/vectorised.sh */
     for (int64_t q = 0; q < m; q++) pair_j2_2d(v, list[q], 1, 1, BAC_LANE_NEWTON_MORE, &scratch, q);
     for (int64_t q = 0; q < m; q++) {
         const int64_t p = list[q];
         if (todo[q] == 2.0) continue; /* still unfinished: the scalar path */
-        v->todo[p] = todo[q];
-        for (int c = 0; c < 4; c++) v->Pb[c * v->np + p] = Pb[c * BAC_BLOCK + q];
+        state->todo[p] = todo[q];
+        for (int c = 0; c < 4; c++) state->Pb[c * v->np + p] = Pb[c * BAC_BLOCK + q];
         if (v->bond_scale[v->pair_bond[p]] == 0.0) continue; /* broken: the state stays */
-        for (int c = 0; c < 4; c++) v->sigma[c * v->np + p] = sigma[c * BAC_BLOCK + q];
-        v->eqps[p] = eqps[q], v->principal[p] = principal[q], v->inverted[p] = inverted[q];
-        v->strain_zz[p] = zz[q];
+        for (int c = 0; c < 4; c++) state->sigma[c * v->np + p] = sigma[c * BAC_BLOCK + q];
+        state->eqps[p] = eqps[q], state->principal[p] = principal[q];
+        state->inverted[p] = inverted[q], state->strain_zz[p] = zz[q];
     }
     for (int64_t p = p0; p < p1; p++) {
-        if (v->todo[p] == 1.0) {
-            const double thick = exp(v->strain_zz[p]);
-            for (int c = 0; c < 4; c++) v->Pb[c * v->np + p] = thick * v->Pb[c * v->np + p];
-        } else if (v->todo[p] == 2.0) {
-            pair_j2_2d(v, p, 1, 1, 0, &state, p);
+        if (state->todo[p] == 1.0) {
+            const double thick = exp(state->strain_zz[p]);
+            for (int c = 0; c < 4; c++) state->Pb[c * v->np + p] *= thick;
+        } else if (state->todo[p] == 2.0) {
+            pair_j2_2d(v, p, 1, 1, 0, state, p);
         }
     }
 }
@@ -336,17 +327,16 @@ static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *co
 #pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
     {
         const PairView v = pair_view(s, st, u, F, Fp, Pb, todo);
-        const PairOut state = pair_out_state(&v);
         if (!scaled) {
 #pragma omp for schedule(static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, 0, 0, &state, p);
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, plane_stress, 0, 0, &v.state, p);
         } else if (plane_stress) {
 #pragma omp for schedule(static)
             for (int64_t b = 0; b < np; b += BAC_BLOCK)
                 pairs_plane_stress(&v, b, b + BAC_BLOCK < np ? b + BAC_BLOCK : np);
         } else {
 #pragma omp for simd schedule(simd : static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1, 0, &state, p);
+            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1, 0, &v.state, p);
         }
     }
 }

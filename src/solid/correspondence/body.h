@@ -7,12 +7,13 @@
  * Points (struct of arrays): x, u, v, force (internal + pressure loads),
  * external (couplings), u_prev (u at the start of the step, for the
  * stress increment), volume, region, the pressure load's face normals.
- * Bonds (compressed rows, each pair stored from both ends, bitwise the same
- * state at both ends, so no atomics and no cross-writes): neighbour,
- * reverse bond, kernel omega, RK weights phi (dim), unrotated stress sigma
- * (4), equivalent plastic strain, damage, 1 - damage, the last maximum
- * principal stress and an inversion flag: 117 bytes per bond in 2D, and a
- * scratch of T (dim) and the pair's P_b (dim^2) per bond: 165 in all.
+ * Bonds (compressed rows, each pair stored from both ends, so no atomics
+ * and no cross-writes): neighbour, reverse bond, its pair, kernel omega,
+ * RK weights phi (dim), damage, 1 - damage (the same bits at both ends),
+ * and the scratch T (dim). Bond pairs (BacPairs, struct of arrays): the
+ * unrotated stress sigma (4), equivalent plastic strain, the last maximum
+ * principal stress, an inversion flag and the scratch P_b (dim^2), formed
+ * once per pair: CPD_BYTES_PER_BOND in all.
  *
  * Damage (notes 1c.8) never decreases; a bond whose damage grew rescales
  * its kernel (omega (1 - d)) and its points' RK weights are recomputed. A

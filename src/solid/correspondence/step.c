@@ -64,7 +64,9 @@ int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo) {
  * one per point, and the bond then takes the larger of its two points'
  * values (plastic strain, principal stress; inverted if either is): fmax
  * is exact and commutative, so both ends of a pair get the same damage
- * bits, and a bond fails as soon as either end's material does. */
+ * bits, and a bond fails as soon as either end's material does.
+ * update_damage takes the bond-associated ductile and brittle laws from
+ * pair_damage instead (the same bits, once per pair). */
 static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
     const CpdConfig *c = &b->cfg;
     int64_t p, q;
