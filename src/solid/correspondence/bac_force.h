@@ -18,10 +18,16 @@
  *     T_ij = (omega_ij / w0_i) P_b(ij) xi / |xi|^2 + S_i phi_ij
  *     L_i  = sum_j (T_ij - T_ji) V_j                                     (force density)
  * F_b(ij) = F_b(ji), so each pair's P_b is computed from either end alike.
- * Families must be symmetric (j in H_i exactly when i in H_j). No atomics:
- * T is formed per bond, then each point gathers its own bonds and, through
- * the reverse-bond index, its neighbours' (the same bits on any thread
- * count). The material is solid/correspondence/svk_kernel.h (2D: plane strain). */
+ * Families must be symmetric (j in H_i exactly when i in H_j), and so are
+ * omega and the damage. T is never stored: with c_ij = omega_ij (1 / (2
+ * w0_i) + 1 / (2 w0_j)) V_j and g = xi / |xi|^2, the same L_i reads
+ *     L_i  = 2 sum_j c_ij P_b(ij) g + S_i sum_j phi_ij V_j - sum_j S_j phi_ji V_j
+ * (the direct terms of T_ij and T_ji share P_b and -g), so each point
+ * gathers its neighbours' S_j instead of their bonds' T_ji, and c_ij,
+ * phi_ji V_j and sum_j phi_ij V_j, which change only with the damage, are
+ * kept (BacCoefficients). No atomics: each point writes only its own S_i
+ * and force (the same bits on any thread count). The material is
+ * solid/correspondence/svk_kernel.h (2D: plane strain). */
 #ifndef NSPD_SOLID_CORRESPONDENCE_BAC_FORCE_H
 #define NSPD_SOLID_CORRESPONDENCE_BAC_FORCE_H
 
@@ -38,7 +44,7 @@ typedef struct {
     int64_t count;
     int64_t *bond;
     int32_t *point;
-    int64_t *of;
+    int32_t *of;
 } BacPairs;
 
 typedef struct {
@@ -59,6 +65,10 @@ typedef struct {
     /* 1 / w0 per point (bac_inverse_weights), kept by the caller while
      * omega, bond_scale and the volumes stay; NULL: formed at each call */
     const double *inv_w0;
+    /* bac_coefficients' c, phi_rev and phi_sum, kept by the caller while
+     * omega, bond_scale, phi and the volumes stay; NULL: formed at each
+     * call (in work_bond and work_point) */
+    const double *c, *phi_rev, *phi_sum;
 } BacSystem;
 
 /* The state of the hypoelastic J2 material (solid/correspondence/j2_kernel.h;
@@ -69,10 +79,14 @@ typedef struct {
 typedef struct {
     const J2Material *material;
     const double *u_prev[3]; /* displacements at the start of the step */
-    /* 1: work_point's F at u_prev (9 n from 9 n) is given, formed by an
-     * earlier call at those displacements and weights (the body keeps it
-     * from its last step), and not formed again */
-    int fp_given;
+    /* The pairs' bond deformation gradients, 4 per pair (in-plane,
+     * row-major, component q of pair p at [q pairs.count + p]): on entry
+     * F_b at u_prev when fb_given is 1 (an earlier call's at those
+     * displacements and weights: the body keeps its last step's), else
+     * formed here from F_prev; on return F_b at u. */
+    double *Fb;
+    int fb_given;
+    double *F_prev;    /* 9 n scratch: F at u_prev, formed when fb_given is 0 */
     double *sigma;     /* unrotated Cauchy stress, 4 per pair [xx, yy, zz, xy], Pa */
     double *eqps;      /* equivalent plastic strain per pair */
     double *principal; /* out: the pair's maximum principal Cauchy stress, Pa */
@@ -97,7 +111,8 @@ int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, i
 
 /* The pairs of a symmetric family CSR with its reverse-bond index (a bond
  * without a reverse is a pair of its own), in arrays allocated with
- * nspd_alloc; bac_pairs_free frees them. NSPD_ERR_NOMEM. */
+ * nspd_alloc; bac_pairs_free frees them. NSPD_ERR_NOMEM; NSPD_ERR_INPUT
+ * beyond INT32_MAX pairs. */
 int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, BacPairs *pairs);
 void bac_pairs_free(BacPairs *pairs);
 
@@ -106,22 +121,41 @@ void bac_pairs_free(BacPairs *pairs);
  * s->inv_w0 is NULL. */
 void bac_inverse_weights(const BacSystem *s, double *inv_w0);
 
+/* What the force's sums take from the weights and the damage alone
+ * (constant between damage changes): per bond k = (i -> j) the stress
+ * integral's weight c[k] = omega_ij s_ij (1 / (2 w0_i) + 1 / (2 w0_j)) V_j
+ * (s = bond_scale) and the reverse bond's RK weight times V_j,
+ * phi_rev[dim k + a] = phi_ji,a V_j; per point phi_sum[dim i + a] = sum_j
+ * phi_ij,a V_j. inv_w0: bac_inverse_weights'. */
+void bac_coefficients(const BacSystem *s, const double *inv_w0, double *c, double *phi_rev,
+                      double *phi_sum);
+
 /* Force densities L (N/m^3, dim arrays of n) for displacements u, with the
  * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic
  * J2 material of *state, whose stresses it advances by the step from
- * state->u_prev to u (2D). work_point: 19 n doubles (F, F at u_prev and
- * 1 / w0 per point); work_bond: dim + dim^2 per bond (T per bond, P_b per
- * pair, component c of pair p at [c pairs.count + p]). Four passes: F_i and
- * w0_i; per pair its P_b (and state update) once; per point S_i and T_ij; per
- * point the gather of T_ij - T_ji. A point with w0 = 0 (every bond broken)
- * exerts no force. */
-/* The doubles of work_bond per bond that bac_force needs at most: T and
- * P_b (which is per pair: half that with every bond in a pair). */
-static inline int bac_work_per_bond(int dim) {
-    return dim + dim * dim;
+ * state->u_prev to u (2D); F (9 n) receives the points' F at u.
+ * work_point: bac_work_per_point(dim) n doubles (1 / w0, S and the direct
+ * force per point, and phi_sum when s has none); work_bond:
+ * bac_work_bond(s, plane stress) doubles (P_b per pair, component c of
+ * pair p at [c pairs.count + p]; in plane stress a flag per pair; c and
+ * phi_rev per bond when s has none). Four passes: F_i; per pair its P_b
+ * (and state update) once; per point S_i and the direct force; per point
+ * the gather of S_j. A point with w0 = 0 (every bond broken) exerts no
+ * force. */
+static inline int64_t bac_work_per_point(int dim) {
+    return 1 + dim * dim + 2 * dim;
+}
+/* at most, per bond (a pair has one bond or two), with no coefficients kept */
+static inline int64_t bac_work_per_bond(int dim) {
+    return dim * dim + 2 + dim;
+}
+static inline int64_t bac_work_bond(const BacSystem *s, int plane_stress) {
+    const int64_t nb = s->first[s->n];
+    return (s->dim * s->dim + (s->c ? plane_stress : 1)) * s->pairs.count +
+           (s->c ? 0 : (1 + s->dim) * nb);
 }
 
 void bac_force(const BacSystem *s, BacState *state, const double *const u[3],
-               double *const force[3], double *work_point, double *work_bond);
+               double *const force[3], double *F, double *work_point, double *work_bond);
 
 #endif

@@ -77,7 +77,9 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->load, n, sizeof(int16_t)));
     TRY(nspd_alloc(&b->ok, n, 1));
     TRY(nspd_alloc(&b->redo, n, 1));
-    TRY(nspd_alloc(&b->work_point, 19 * n, sizeof(double)));
+    /* F and F at u_prev (the classic force: F and P), then the bond-
+     * associated force's per-point scratch */
+    TRY(nspd_alloc(&b->work_point, (size_t)(18 + bac_work_per_point(b->dim)) * n, sizeof(double)));
     TRY(nspd_alloc(&b->reverse, nb, sizeof(int64_t)));
     TRY(nspd_alloc(&b->omega, nb, sizeof(double)));
     /* the material state: per point for the classic force (which needs no
@@ -162,11 +164,17 @@ static int build(CpdBody *b, CpdConfig *cfg) {
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
     if (cfg->force != CPD_FORCE_CLASSIC) {
         TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
-        TRY(nspd_alloc(&b->inv_w0, (size_t)b->n, sizeof(double)));
+        const size_t n = (size_t)b->n, nb = (size_t)b->bond_count, dim = (size_t)b->dim;
+        TRY(nspd_alloc(&b->inv_w0, n, sizeof(double)));
+        TRY(nspd_alloc(&b->coef_c, nb, sizeof(double)));
+        TRY(nspd_alloc(&b->phi_rev, dim * nb, sizeof(double)));
+        TRY(nspd_alloc(&b->phi_sum, dim * n, sizeof(double)));
         TRY(state_arrays(b, (size_t)b->pairs.count));
-        const size_t dd = (size_t)(b->dim * b->dim); /* T per bond, P_b per pair */
-        TRY(nspd_alloc(&b->work_bond,
-                       (size_t)b->dim * (size_t)b->bond_count + dd * (size_t)b->pairs.count,
+        if (b->dim == 2) TRY(nspd_alloc(&b->Fb, 4 * (size_t)b->pairs.count, sizeof(double)));
+        /* bac_work_bond with the coefficients kept: P_b per pair, and a
+         * flag per pair in plane stress */
+        const size_t flags = b->cfg.pd.model == PD_PLANE_STRESS ? 1 : 0;
+        TRY(nspd_alloc(&b->work_bond, (dim * dim + flags) * (size_t)b->pairs.count,
                        sizeof(double)));
     }
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
@@ -237,6 +245,10 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->reverse);
     bac_pairs_free(&b->pairs);
     nspd_free(&b->inv_w0);
+    nspd_free(&b->coef_c);
+    nspd_free(&b->phi_rev);
+    nspd_free(&b->phi_sum);
+    nspd_free(&b->Fb);
     nspd_free(&b->omega);
     nspd_free(&b->phi);
     nspd_free(&b->ok);

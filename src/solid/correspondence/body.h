@@ -10,10 +10,12 @@
  * Bonds (compressed rows, each pair stored from both ends, so no atomics
  * and no cross-writes): neighbour, reverse bond, its pair, kernel omega,
  * RK weights phi (dim), damage, 1 - damage (the same bits at both ends),
- * and the scratch T (dim). Bond pairs (BacPairs, struct of arrays): the
- * unrotated stress sigma (4), equivalent plastic strain, the last maximum
- * principal stress, an inversion flag and the scratch P_b (dim^2), formed
- * once per pair: CPD_BYTES_PER_BOND in all.
+ * and what the force keeps between damage changes (bac_coefficients: c,
+ * the reverse bond's phi times V_j). Bond pairs (BacPairs, struct of
+ * arrays): the unrotated stress sigma (4), equivalent plastic strain, the
+ * last maximum principal stress, an inversion flag, the bond deformation
+ * gradient F_b (4) and the scratch P_b (dim^2), formed once per pair:
+ * CPD_BYTES_PER_BOND in all.
  *
  * Damage (notes 1c.8) never decreases; a bond whose damage grew rescales
  * its kernel (omega (1 - d)) and its points' RK weights are recomputed. A
@@ -44,16 +46,17 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-/* Per bond in 2D, the bond-associated force: 76 bytes per bond (nbr 4,
- * reverse, omega, damage, scale, pairs.of 8 each, phi and T 16 each) and 93
- * per pair, so 46.5 per bond (sigma 32, eqps and principal 8 each,
- * inverted 1, P_b 32, pairs.bond 8, pairs.point 4): 123 rounded up; plane
- * stress adds 4 (strain_zz, 8 per pair). The classic force (notes 1c.3,
+/* Per bond in 2D, the bond-associated force: 80 bytes per bond (nbr and
+ * pairs.of 4 each, reverse, omega, damage, scale and c 8 each, phi and
+ * phi_rev 16 each) and 125 per pair, so 62.5 per bond (sigma, F_b and P_b
+ * 32 each, eqps and principal 8 each, inverted 1, pairs.bond 8,
+ * pairs.point 4): 143 rounded up; plane stress adds 8 (strain_zz and the
+ * force's flag, 8 each per pair). The classic force (notes 1c.3,
  * solid/correspondence/classic_force.h) keeps no RK weights and its material state per point
  * instead (sigma, eqps, principal and inverted are then arrays of n, not of bond_count): 52 bytes
  * per bond (nbr 4, reverse, omega, damage, scale 8 each, T 16) and CPD_CLASSIC_BYTES_PER_POINT more
  * per point (sigma 32, eqps and principal 8 each, inverted 1). */
-enum { CPD_BYTES_PER_BOND = 123, CPD_CLASSIC_BYTES_PER_BOND = 52 };
+enum { CPD_BYTES_PER_BOND = 143, CPD_CLASSIC_BYTES_PER_BOND = 52 };
 enum { CPD_CLASSIC_BYTES_PER_POINT = 49 };
 
 typedef struct {
@@ -73,9 +76,12 @@ typedef struct {
     int64_t *first;
     int32_t *nbr;
     int64_t *reverse;
-    BacPairs pairs;      /* the bond-associated force's bond pairs; the state is per pair */
-    double *inv_w0;      /* the bond-associated force's 1 / w0 per point (cpd_settle_weights
-                            refreshes it: damage is what changes it) */
+    BacPairs pairs; /* the bond-associated force's bond pairs; the state is per pair */
+    double *inv_w0; /* the bond-associated force's 1 / w0 per point (cpd_settle_weights
+                       refreshes it: damage is what changes it) */
+    /* the bond-associated force's bac_coefficients (c per bond, phi_rev dim
+     * per bond, phi_sum dim per point), refreshed with inv_w0 */
+    double *coef_c, *phi_rev, *phi_sum;
     double *omega, *phi; /* phi: NULL for the classic force */
     uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
     uint8_t *redo;       /* per point: damage grew in its family this step */
@@ -90,14 +96,13 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid;
-    /* work_point's F is the bond-associated force's F at the current u and
-     * weights (set by a stateful force, cleared by damage growth and by the
-     * stateless force, which writes there) */
-    bool F_now;
-    /* work_point's F at u_prev is given for the next stateful force (the
-     * step copied F there as it remembered u: a step's start is the last
-     * step's end) */
-    bool Fp_given;
+    /* The bond-associated force's F_b per pair (4 each, in-plane, 2D;
+     * BacState.Fb): at the current u and weights while Fb_now (set by a
+     * stateful force, cleared by damage growth), then, from the step's
+     * start, given to the next stateful force as F_b at u_prev while
+     * Fb_given */
+    double *Fb;
+    bool Fb_now, Fb_given;
     double stable_dt;     /* s, by power iteration at creation (step.c) */
     double stable_now;    /* s, the same at the current damage (re-estimated as it grows) */
     double *mode[3];      /* the highest mode's last iterate (warm start) */

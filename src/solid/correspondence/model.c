@@ -83,9 +83,10 @@ static void cpd_destroy(void *impl) {
 #define CPD_CHECK_S_PER_BOND 5.0e-6
 
 /* Points as the bond-based model counts them; bonds: the square (or disc)
- * family of an interior point; bytes: per point 19 work doubles, 6 motion
- * arrays, volume, region, load, flags, lattice and 8 field arrays (about
- * 450 B), per bond CPD_BYTES_PER_BOND (classic: CPD_CLASSIC_BYTES_PER_BOND,
+ * family of an interior point; bytes: per point 27 work doubles (2D: F, F
+ * at u_prev, 1 / w0, S and the direct force), phi_sum, 6 motion arrays,
+ * volume, region, load, flags, lattice and 8 field arrays (about 530 B),
+ * per bond CPD_BYTES_PER_BOND (classic: CPD_CLASSIC_BYTES_PER_BOND,
  * and CPD_CLASSIC_BYTES_PER_POINT more per point for the point state); the
  * search's disc of sqrt(2) delta before the square filter. */
 static SolidEstimate cpd_estimate(const SolidConfig *sc) {
@@ -111,10 +112,12 @@ static SolidEstimate cpd_estimate(const SolidConfig *sc) {
             }
     e.bonds = e.points * family;
     const bool classic = cfg->force == CPD_FORCE_CLASSIC;
-    /* plane stress adds the thickness strain: 8 B per state (pair or point) */
-    const double zz = pd->model == PD_PLANE_STRESS ? 8.0 : 0.0;
-    const double per_point = 450.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT + zz : 0);
-    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + zz / 2;
+    /* plane stress adds the thickness strain, 8 B per state (pair or
+     * point), and the bond-associated force's flag, 8 B per pair */
+    const bool plane_stress = pd->model == PD_PLANE_STRESS;
+    const double zz = plane_stress ? 8.0 : 0.0, pair_zz = plane_stress ? 16.0 : 0.0;
+    const double per_point = 530.0 + (classic ? CPD_CLASSIC_BYTES_PER_POINT + zz : 0);
+    const double per_bond = classic ? CPD_CLASSIC_BYTES_PER_BOND : CPD_BYTES_PER_BOND + pair_zz / 2;
     e.bytes = per_point * e.points + per_bond * e.bonds + 4.0 * searched * e.points;
     /* the step comes from a power iteration on the built body: not known */
     e.check_s = CPD_CHECK_S_PER_BOND * e.bonds;
@@ -440,8 +443,8 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     int valid = b->force_valid;
     TRY(checkpoint_io_int(ck, "cpd.force_valid", &valid));
     b->force_valid = valid != 0;
-    cpd_inverse_weights(b);         /* the damage may have been read */
-    b->F_now = b->Fp_given = false; /* formed again at the next force */
+    cpd_inverse_weights(b);          /* the damage may have been read */
+    b->Fb_now = b->Fb_given = false; /* formed again at the next force */
     return NSPD_OK;
 }
 

@@ -161,6 +161,38 @@ point_gradients(const int dim, const int two, int64_t i, const double *const u[3
         }
 }
 
+/* point_gradients in 2D with the bonds in SIMD lanes (the sums' order is
+ * the lanes', fixed by the build: the same bits at any thread count, not
+ * rk_gradient_at's). */
+static inline __attribute__((always_inline)) void
+point_gradients_2d(const int two, int64_t i, const double *const u[3], const double *const u2[3],
+                   const double *volume, const int64_t *first, const int32_t *nbr,
+                   const double *phi, double *F, double *F2) {
+    const double *u0 = u[0], *u1 = u[1], *w0 = two ? u2[0] : u0, *w1 = two ? u2[1] : u1;
+    const double ui0 = u0[i], ui1 = u1[i], wi0 = w0[i], wi1 = w1[i];
+    double g00 = 0.0, g01 = 0.0, g10 = 0.0, g11 = 0.0, h00 = 0.0, h01 = 0.0, h10 = 0.0, h11 = 0.0;
+#pragma omp simd reduction(+ : g00, g01, g10, g11, h00, h01, h10, h11)
+    for (int64_t k = first[i]; k < first[i + 1]; k++) {
+        /* vectorised x2: tests/unit/core/vectorised.sh (F alone, and with F at u2) */
+        const int32_t j = nbr[k];
+        const double V = volume[j], f0 = phi[2 * k], f1 = phi[2 * k + 1];
+        const double d0 = (u0[j] - ui0) * V, d1 = (u1[j] - ui1) * V;
+        g00 += d0 * f0, g01 += d0 * f1, g10 += d1 * f0, g11 += d1 * f1;
+        if (two) {
+            const double e0 = (w0[j] - wi0) * V, e1 = (w1[j] - wi1) * V;
+            h00 += e0 * f0, h01 += e0 * f1, h10 += e1 * f0, h11 += e1 * f1;
+        }
+    }
+    double *Fi = F + 9 * i;
+    for (int q = 0; q < 9; q++) Fi[q] = 0.0;
+    Fi[0] = 1.0 + g00, Fi[1] = g01, Fi[3] = g10, Fi[4] = 1.0 + g11;
+    if (two) {
+        double *F2i = F2 + 9 * i;
+        for (int q = 0; q < 9; q++) F2i[q] = 0.0;
+        F2i[0] = 1.0 + h00, F2i[1] = h01, F2i[3] = h10, F2i[4] = 1.0 + h11;
+    }
+}
+
 void rk_deformation_gradient(int dim, int64_t n, const double *const u[3],
                              const double *const u2[3], const double *volume, const int64_t *first,
                              const int32_t *nbr, const double *phi, double *F, double *F2) {
@@ -168,13 +200,18 @@ void rk_deformation_gradient(int dim, int64_t n, const double *const u[3],
     NSPD_PRAGMA(omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS))                    \
     for (int64_t i = 0; i < n; i++)                                                                \
     point_gradients(DIM, TWO, i, u, u2, volume, first, nbr, phi, F, F2)
+#define NSPD_RK_F_LOOP_2D(TWO)                                                                     \
+    NSPD_PRAGMA(omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS))                    \
+    for (int64_t i = 0; i < n; i++)                                                                \
+    point_gradients_2d(TWO, i, u, u2, volume, first, nbr, phi, F, F2)
     if (dim == 2 && u2)
-        NSPD_RK_F_LOOP(2, 1);
+        NSPD_RK_F_LOOP_2D(1);
     else if (dim == 2)
-        NSPD_RK_F_LOOP(2, 0);
+        NSPD_RK_F_LOOP_2D(0);
     else if (u2)
         NSPD_RK_F_LOOP(3, 1);
     else
         NSPD_RK_F_LOOP(3, 0);
 #undef NSPD_RK_F_LOOP
+#undef NSPD_RK_F_LOOP_2D
 }

@@ -2,6 +2,7 @@
  * its stress update and damage, velocity Verlet, and the stable step. */
 #include "solid/correspondence/body.h"
 
+#include "core/kernel.h"
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/reduce.h"
@@ -26,7 +27,10 @@ static BacSystem system_of(const CpdBody *b) {
                    .mu = b->mu,
                    .bond_scale = b->scale,
                    .pairs = b->pairs,
-                   .inv_w0 = b->inv_w0};
+                   .inv_w0 = b->inv_w0,
+                   .c = b->coef_c,
+                   .phi_rev = b->phi_rev,
+                   .phi_sum = b->phi_sum};
     for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
     return s;
 }
@@ -103,8 +107,9 @@ static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
 
 /* The bond-associated force's ductile or brittle law per pair (its state is
  * per pair), into d: damage_law's bits (the fmax of a value with itself is
- * the value), formed once per pair instead of once per bond, in SIMD lanes. */
-static void pair_damage(const CpdBody *b, double *d) {
+ * the value), formed once per pair instead of once per bond, in SIMD lanes.
+ * Returns the number of pairs whose damage grew. */
+static int64_t pair_damage(const CpdBody *b, double *d) {
     const CpdConfig *c = &b->cfg;
     const int64_t np = b->pairs.count;
     if (c->damage == CPD_DAMAGE_DUCTILE) {
@@ -128,6 +133,17 @@ static void pair_damage(const CpdBody *b, double *d) {
 #pragma omp parallel for schedule(static) if (np >= PARALLEL_MIN_ITEMS)
     for (int64_t p = 0; p < np; p++)
         if (b->inverted[p]) d[p] = 1.0;
+    /* a count in a double (exact below 2^53): an int beside the doubles
+     * would keep the loop scalar */
+    double grown = 0.0;
+    const double *damage = b->damage;
+    const int64_t *bond = b->pairs.bond;
+#pragma omp parallel for simd schedule(simd : static) reduction(+ : grown) if (np >= PARALLEL_MIN_ITEMS)
+    for (int64_t p = 0; p < np; p++) {
+        /* vectorised x1: tests/unit/core/vectorised.sh */
+        grown += NSPD_GT(d[p], damage[bond[p]]) ? 1.0 : 0.0;
+    }
+    return (int64_t)grown;
 }
 
 /* Damage grows (never falls) by the law, then the weights settle
@@ -139,7 +155,9 @@ static int64_t update_damage(CpdBody *b) {
         b->cfg.force != CPD_FORCE_CLASSIC &&
         (b->cfg.damage == CPD_DAMAGE_DUCTILE || b->cfg.damage == CPD_DAMAGE_BRITTLE);
     double *dpair = b->work_bond;
-    if (by_pair) pair_damage(b, dpair);
+    /* most steps break nothing: then the pass over the bonds is skipped
+     * (b->redo is read only when something grew) */
+    if (by_pair && pair_damage(b, dpair) == 0) return 0;
 #pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         uint8_t redo = 0;
@@ -186,6 +204,7 @@ void cpd_inverse_weights(CpdBody *b) {
     BacSystem s = system_of(b);
     s.inv_w0 = NULL;
     bac_inverse_weights(&s, b->inv_w0);
+    bac_coefficients(&s, b->inv_w0, b->coef_c, b->phi_rev, b->phi_sum);
 }
 
 /* The force density at displacements u into L: with the body's material
@@ -211,11 +230,18 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
                    .inverted = b->inverted,
                    .strain_zz = b->strain_zz};
     for (int d = 0; d < 3; d++) st.u_prev[d] = b->u_prev[d];
-    st.fp_given = b->Fp_given ? 1 : 0;
-    bac_force(&s, state ? &st : NULL, u, L, b->work_point, b->work_bond);
-    /* F at u (a stateful force) or at a probe (the stateless one) */
-    b->F_now = state;
-    b->Fp_given = false;
+    /* F at u in work_point's first 9 n (what the outputs show), the next 9 n
+     * scratch: F at u_prev where the pairs' F_b at u_prev must be formed,
+     * and the stateless force's F */
+    st.Fb = b->Fb;
+    st.fb_given = b->Fb_given ? 1 : 0;
+    st.F_prev = b->work_point + 9 * b->n;
+    bac_force(&s, state ? &st : NULL, u, L, state ? b->work_point : b->work_point + 9 * b->n,
+              b->work_point + 18 * b->n, b->work_bond);
+    if (state) {
+        b->Fb_now = true;
+        b->Fb_given = false;
+    }
 }
 
 void cpd_force(CpdBody *b, double t) {
@@ -233,7 +259,7 @@ void cpd_force(CpdBody *b, double t) {
     }
     if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) {
         b->damage_grew = true;
-        b->F_now = false; /* the weights changed */
+        b->Fb_now = false; /* the weights changed */
     }
 }
 
@@ -255,14 +281,12 @@ static PdMotion motion_of(CpdBody *b) {
 
 /* u_prev = u, the step's start; and, where the last force was formed at
  * this u with these weights (the step's start is the last step's end: the
- * kicks move only v), its F is F at u_prev: copied there, so the next
- * force forms F only once (the same bits as forming it again). */
+ * kicks move only v), its pairs' F_b are F_b at u_prev, so the next force
+ * forms F only at u (the same bits as forming both). */
 static void remember_u(CpdBody *b) {
     for (int d = 0; d < b->dim; d++) memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
-    if (b->F_now && b->cfg.force != CPD_FORCE_CLASSIC) {
-        memcpy(b->work_point + 9 * b->n, b->work_point, (size_t)(9 * b->n) * sizeof(double));
-        b->Fp_given = true;
-    }
+    b->Fb_given = b->Fb_now;
+    b->Fb_now = false;
 }
 
 static int substep(CpdBody *b, double dt) {

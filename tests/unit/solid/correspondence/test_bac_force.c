@@ -44,7 +44,7 @@ static void setup_make(Setup *t, int side, double jitter) {
     t->omega = calloc((size_t)bonds, sizeof(double));
     t->reverse = calloc((size_t)bonds, sizeof(int64_t));
     t->ok = calloc((size_t)c->n, 1);
-    t->work_point = calloc((size_t)(19 * c->n), sizeof(double));
+    t->work_point = calloc((size_t)((9 + bac_work_per_point(2)) * c->n), sizeof(double));
     t->work_bond = calloc((size_t)(bac_work_per_bond(2) * bonds), sizeof(double));
     for (int a = 0; a < 2; a++) {
         t->u[a] = calloc((size_t)c->n, sizeof(double));
@@ -88,7 +88,7 @@ static void setup_free(Setup *t) {
 static void force(Setup *t) {
     double *const f[3] = {t->f[0], t->f[1], NULL};
     const double *const u[3] = {t->u[0], t->u[1], NULL};
-    bac_force(&t->s, NULL, u, f, t->work_point, t->work_bond);
+    bac_force(&t->s, NULL, u, f, t->work_point, t->work_point + 9 * t->c.n, t->work_bond);
 }
 
 /* Points at least `inset` inside the cloud's lattice box. */

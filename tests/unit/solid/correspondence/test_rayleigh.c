@@ -95,7 +95,7 @@ static void strip_make(Strip *t, int N, int M, double h, int order) {
     t->phi = calloc((size_t)(2 * k), sizeof(double));
     t->reverse = calloc((size_t)k, sizeof(int64_t));
     t->ok = calloc((size_t)t->n, 1);
-    t->work_point = calloc((size_t)(19 * t->n), sizeof(double));
+    t->work_point = calloc((size_t)((9 + bac_work_per_point(2)) * t->n), sizeof(double));
     t->work_bond = calloc((size_t)(bac_work_per_bond(2) * k), sizeof(double));
     for (int64_t p = 0; p < t->n; p++)
         for (int64_t q = t->first[p]; q < t->first[p + 1]; q++) {
@@ -164,7 +164,8 @@ static double lowest_omega2(Strip *t) {
                     for (int a = 0; a < 2; a++)
                         t->u[a][index_of(t, i, j)] =
                             sign * amp * basis(t, q, (i - PAD + t->N) % t->N, j, a);
-            bac_force(&t->s, NULL, (const double *const *)t->u, t->f, t->work_point, t->work_bond);
+            bac_force(&t->s, NULL, (const double *const *)t->u, t->f, t->work_point,
+                      t->work_point + 9 * t->n, t->work_bond);
             if (sign == 1)
                 for (int a = 0; a < 2; a++) memcpy(fp[a], t->f[a], (size_t)t->n * sizeof(double));
         }

@@ -66,8 +66,8 @@ static void patch_make(Patch *t, Model model, double cs, double jitter) {
     t->omega = calloc((size_t)bonds, sizeof(double));
     t->reverse = calloc((size_t)bonds, sizeof(int64_t));
     t->ok = calloc((size_t)c->n, 1);
-    t->work_point =
-        calloc((size_t)(19 * c->n), sizeof(double)) /* bac_force 19 n, classic_force 18 n */;
+    t->work_point = calloc((size_t)((9 + bac_work_per_point(2)) * c->n),
+                           sizeof(double)) /* classic_force takes 18 n */;
     t->work_bond = calloc((size_t)(bac_work_per_bond(2) * bonds), sizeof(double));
     for (int a = 0; a < 2; a++) {
         t->u[a] = calloc((size_t)c->n, sizeof(double));
@@ -130,7 +130,7 @@ static void patch_force(Patch *t) {
     double *const f[3] = {t->f[0], t->f[1], NULL};
     const double *const u[3] = {t->u[0], t->u[1], NULL};
     if (t->model != CLASSIC)
-        bac_force(&t->bac, NULL, u, f, t->work_point, t->work_bond);
+        bac_force(&t->bac, NULL, u, f, t->work_point, t->work_point + 9 * t->c.n, t->work_bond);
     else
         classic_force(&t->classic, NULL, u, f, t->work_point, t->work_bond);
 }
