@@ -184,8 +184,8 @@ typedef struct {
     int64_t np;
     const int64_t *pair_bond;
     const int32_t *pair_point, *nbr;
-    const double *x0, *x1, *u0, *u1, *F, *bond_scale;
-    double *Fb;    /* in, F_b at u_prev; out (pair_j2_2d's Fb_out), F_b at u */
+    const double *x0, *x1, *u0, *u1, *up0, *up1, *F, *Fp, *bond_scale;
+    double *Fb;    /* in, F_b at u_prev (if given); out (pair_j2_2d's Fb_out), F_b at u */
     PairOut state; /* the pairs' state and P_b (stride np), and todo */
 } PairView;
 
@@ -200,7 +200,10 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
                       .x1 = s->x[1],
                       .u0 = u[0],
                       .u1 = u[1],
+                      .up0 = st->u_prev[0],
+                      .up1 = st->u_prev[1],
                       .F = F,
+                      .Fp = st->F_prev,
                       .Fb = st->Fb,
                       .bond_scale = s->bond_scale,
                       .state = {.n = s->pairs.count,
@@ -214,10 +217,11 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
 }
 
 /* Pair p's J2 step in 2D (j2_step_2d) from its F_b at the step's start
- * (v->Fb) and now (from the points' F): its P_b and its state, component c
- * at [c np + p]; F_b now into Fb_out[c fb_n + fb_o] unless Fb_out is NULL.
- * plane_stress, scaled, newton and whether Fb_out is NULL are constants at
- * each call. scaled says whether v->bond_scale exists (the SIMD loops can
+ * (given: v->Fb; else formed from the points' F at u_prev, v->Fp, as F_b
+ * now is from v->F): its P_b and its state, component c at [c np + p]; F_b
+ * now into Fb_out[c fb_n + fb_o] unless Fb_out is NULL. plane_stress,
+ * scaled, newton, given and whether Fb_out is NULL are constants at each
+ * call. scaled says whether v->bond_scale exists (the SIMD loops can
  * not test a pointer before each load). newton > 0 (plane stress in SIMD
  * lanes): at most that many Newton iterations (j2_step_2d_lane), P_b
  * without the thickness stretch, the state stored only if they were
@@ -225,8 +229,9 @@ static PairView pair_view(const BacSystem *s, const BacState *st, const double *
  * nothing, 1 the stretch, 2 the whole pair again on the scalar path. */
 static inline __attribute__((always_inline)) void
 pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scaled, const int newton,
-           const PairOut *out, int64_t o, double *Fb_out, int64_t fb_n, int64_t fb_o) {
-    /* vectorised x1: tests/unit/core/vectorised.sh (plane strain) */
+           const int given, const PairOut *out, int64_t o, double *Fb_out, int64_t fb_n,
+           int64_t fb_o) {
+    /* vectorised x2: tests/unit/core/vectorised.sh (plane strain, F_b given or formed) */
     const int64_t np = v->np, k = v->pair_bond[p], i = v->pair_point[p], j = v->nbr[k];
     const double xi[3] = {v->x0[j] - v->x0[i], v->x1[j] - v->x1[i], 0.0};
     const double Y[3] = {xi[0] + (v->u0[j] - v->u0[i]), xi[1] + (v->u1[j] - v->u1[i]), 0.0};
@@ -240,7 +245,18 @@ pair_j2_2d(const PairView *v, int64_t p, const int plane_stress, const int scale
     double Fb[9];
     bond_gradient(2, Fi, Fj, xi, g, Y, Fb);
     const double F2[4] = {Fb[0], Fb[1], Fb[3], Fb[4]};
-    const double Fp2[4] = {v->Fb[p], v->Fb[np + p], v->Fb[2 * np + p], v->Fb[3 * np + p]};
+    double Fp2[4];
+    if (given) {
+        for (int q = 0; q < 4; q++) Fp2[q] = v->Fb[q * np + p];
+    } else {
+        const double Yp[3] = {xi[0] + (v->up0[j] - v->up0[i]), xi[1] + (v->up1[j] - v->up1[i]),
+                              0.0};
+        const double Fpi[5] = {v->Fp[fi], v->Fp[fi + 1], 0.0, v->Fp[fi + 3], v->Fp[fi + 4]};
+        const double Fpj[5] = {v->Fp[fj], v->Fp[fj + 1], 0.0, v->Fp[fj + 3], v->Fp[fj + 4]};
+        double Fbp[9];
+        bond_gradient(2, Fpi, Fpj, xi, g, Yp, Fbp);
+        Fp2[0] = Fbp[0], Fp2[1] = Fbp[1], Fp2[2] = Fbp[3], Fp2[3] = Fbp[4];
+    }
     if (Fb_out)
         for (int q = 0; q < 4; q++) Fb_out[q * fb_n + fb_o] = F2[q];
     const PairOut *old = &v->state;
@@ -282,7 +298,7 @@ enum { BAC_LANE_NEWTON = 1, BAC_LANE_NEWTON_MORE = 4, BAC_BLOCK = 256 };
  * by the lines of their calls, which are marked for
  * tests/unit/core/vectorised.sh.) */
 static inline __attribute__((always_inline)) void pairs_plane_stress(const PairView *v, int64_t p0,
-                                                                     int64_t p1) {
+                                                                     int64_t p1, const int given) {
     const PairOut *state = &v->state;
     double Pb[4 * BAC_BLOCK], sigma[4 * BAC_BLOCK], eqps[BAC_BLOCK], principal[BAC_BLOCK],
         zz[BAC_BLOCK], todo[BAC_BLOCK], Fb[4 * BAC_BLOCK];
@@ -297,14 +313,14 @@ static inline __attribute__((always_inline)) void pairs_plane_stress(const PairV
                              .todo = todo,
                              .inverted = inverted};
 #pragma omp simd
-    for (int64_t p = p0; p < p1; p++) /* vectorised x1: tests/unit/core/vectorised.sh */
-        pair_j2_2d(v, p, 1, 1, BAC_LANE_NEWTON, state, p, Fb, BAC_BLOCK, p - p0);
+    for (int64_t p = p0; p < p1; p++) /* vectorised x2: tests/unit/core/vectorised.sh */
+        pair_j2_2d(v, p, 1, 1, BAC_LANE_NEWTON, given, state, p, Fb, BAC_BLOCK, p - p0);
     int64_t m = 0;
     for (int64_t p = p0; p < p1; p++)
         if (state->todo[p] == 2.0) list[m++] = p;
 #pragma omp simd
-    for (int64_t q = 0; q < m; q++) /* vectorised x1: tests/unit/core/vectorised.sh */
-        pair_j2_2d(v, list[q], 1, 1, BAC_LANE_NEWTON_MORE, &scratch, q, NULL, 0, 0);
+    for (int64_t q = 0; q < m; q++) /* vectorised x2: tests/unit/core/vectorised.sh */
+        pair_j2_2d(v, list[q], 1, 1, BAC_LANE_NEWTON_MORE, given, &scratch, q, NULL, 0, 0);
     for (int64_t q = 0; q < m; q++) {
         const int64_t p = list[q];
         if (todo[q] == 2.0) continue; /* still unfinished: the scalar path */
@@ -320,40 +336,13 @@ static inline __attribute__((always_inline)) void pairs_plane_stress(const PairV
             const double thick = exp(state->strain_zz[p]);
             for (int c = 0; c < 4; c++) state->Pb[c * v->np + p] *= thick;
         } else if (state->todo[p] == 2.0) {
-            pair_j2_2d(v, p, 1, 1, 0, state, p, NULL, 0, 0);
+            pair_j2_2d(v, p, 1, 1, 0, given, state, p, NULL, 0, 0);
         }
     }
     /* F_b now, kept apart until every pass of the block had read F_b at the
      * step's start */
     for (int c = 0; c < 4; c++)
         for (int64_t p = p0; p < p1; p++) v->Fb[c * v->np + p] = Fb[c * BAC_BLOCK + p - p0];
-}
-
-/* Per pair, F_b (in-plane, 4 per pair, [q np + p]) of the points' F at
- * displacements u (2D), in SIMD lanes: F_b at the step's start when no
- * earlier call left it (pair_j2_2d's bits). */
-static void pairs_bond_gradient(const BacSystem *s, const double *const u[3], const double *F,
-                                double *Fb) {
-    const int64_t np = s->pairs.count;
-    const int64_t *pair_bond = s->pairs.bond;
-    const int32_t *pair_point = s->pairs.point, *nbr = s->nbr;
-    const double *x0 = s->x[0], *x1 = s->x[1], *u0 = u[0], *u1 = u[1];
-#pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
-    for (int64_t p = 0; p < np; p++) {
-        /* scalar: GCC 12 finds its gathers "not profitable" even under omp
-         * simd; it runs only where damage grew or at a run's first step */
-        const int64_t k = pair_bond[p], i = pair_point[p], j = nbr[k];
-        const double xi[3] = {x0[j] - x0[i], x1[j] - x1[i], 0.0};
-        const double Y[3] = {xi[0] + (u0[j] - u0[i]), xi[1] + (u1[j] - u1[i]), 0.0};
-        const double inv_xx = 1.0 / (0.0 + xi[0] * xi[0] + xi[1] * xi[1]);
-        const double g[3] = {xi[0] * inv_xx, xi[1] * inv_xx, 0.0};
-        const int64_t fi = 9 * i, fj = 9 * j;
-        const double Fi[5] = {F[fi], F[fi + 1], 0.0, F[fi + 3], F[fi + 4]};
-        const double Fj[5] = {F[fj], F[fj + 1], 0.0, F[fj + 3], F[fj + 4]};
-        double Fbp[9];
-        bond_gradient(2, Fi, Fj, xi, g, Y, Fbp);
-        Fb[p] = Fbp[0], Fb[np + p] = Fbp[1], Fb[2 * np + p] = Fbp[3], Fb[3 * np + p] = Fbp[4];
-    }
 }
 
 /* Per pair, the J2 P_b and state update (2D), in SIMD lanes across pairs
@@ -364,21 +353,32 @@ static void pairs_bond_gradient(const BacSystem *s, const double *const u[3], co
 static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *const u[3],
                         const double *F, double *Pb, double *todo) {
     const int64_t np = s->pairs.count;
-    const int plane_stress = st->material->plane_stress, scaled = s->bond_scale != NULL;
+    const int plane_stress = st->material->plane_stress, scaled = s->bond_scale != NULL,
+              given = st->fb_given;
 #pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
     {
         const PairView v = pair_view(s, st, u, F, Pb, todo);
         if (!scaled) {
 #pragma omp for schedule(static)
             for (int64_t p = 0; p < np; p++)
-                pair_j2_2d(&v, p, plane_stress, 0, 0, &v.state, p, v.Fb, np, p);
+                pair_j2_2d(&v, p, plane_stress, 0, 0, given, &v.state, p, v.Fb, np, p);
         } else if (plane_stress) {
 #pragma omp for schedule(static)
-            for (int64_t b = 0; b < np; b += BAC_BLOCK)
-                pairs_plane_stress(&v, b, b + BAC_BLOCK < np ? b + BAC_BLOCK : np);
+            for (int64_t b = 0; b < np; b += BAC_BLOCK) {
+                const int64_t e = b + BAC_BLOCK < np ? b + BAC_BLOCK : np;
+                if (given)
+                    pairs_plane_stress(&v, b, e, 1);
+                else
+                    pairs_plane_stress(&v, b, e, 0);
+            }
+        } else if (given) {
+#pragma omp for simd schedule(simd : static)
+            for (int64_t p = 0; p < np; p++)
+                pair_j2_2d(&v, p, 0, 1, 0, 1, &v.state, p, v.Fb, np, p);
         } else {
 #pragma omp for simd schedule(simd : static)
-            for (int64_t p = 0; p < np; p++) pair_j2_2d(&v, p, 0, 1, 0, &v.state, p, v.Fb, np, p);
+            for (int64_t p = 0; p < np; p++)
+                pair_j2_2d(&v, p, 0, 1, 0, 0, &v.state, p, v.Fb, np, p);
         }
     }
 }
@@ -513,11 +513,13 @@ static void point_forces(const BacSystem *s, const double *phi_rev, const double
     }
 }
 
-void bac_coefficients(const BacSystem *s, const double *inv_w0, double *c, double *phi_rev,
-                      double *phi_sum) {
+void bac_coefficients(const BacSystem *s, const double *inv_w0, const uint8_t *only, double *c,
+                      double *phi_rev, double *phi_sum) {
     const int dim = s->dim;
-#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+    /* dynamic: a mask is sparse and uneven; each point's values are its own */
+#pragma omp parallel for schedule(dynamic, 256) if (s->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < s->n; i++) {
+        if (only && !only[i]) continue;
         double sum[3] = {0, 0, 0};
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++) {
             const int32_t j = s->nbr[k];
@@ -534,9 +536,10 @@ void bac_coefficients(const BacSystem *s, const double *inv_w0, double *c, doubl
     }
 }
 
-void bac_inverse_weights(const BacSystem *s, double *inv_w0) {
-#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+void bac_inverse_weights(const BacSystem *s, const uint8_t *only, double *inv_w0) {
+#pragma omp parallel for schedule(dynamic, 256) if (s->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < s->n; i++) {
+        if (only && !only[i]) continue;
         double w = 0.0;
         for (int64_t k = s->first[i]; k < s->first[i + 1]; k++)
             w += s->omega[k] * (s->bond_scale ? s->bond_scale[k] : 1.0) * s->volume[s->nbr[k]];
@@ -556,17 +559,16 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
     const bool form_fb = st && !st->fb_given;
     rk_deformation_gradient(dim, n, u, form_fb ? st->u_prev : NULL, s->volume, s->first, s->nbr,
                             s->phi, F, form_fb ? st->F_prev : NULL);
-    if (form_fb) pairs_bond_gradient(s, st->u_prev, st->F_prev, st->Fb);
     /* what only the damage changes, unless the caller keeps it */
     const double *c = s->c, *phi_rev = s->phi_rev, *phi_sum = s->phi_sum;
     if (!c) {
         const double *iw = s->inv_w0;
         if (!iw) {
-            bac_inverse_weights(s, inv_w0);
+            bac_inverse_weights(s, NULL, inv_w0);
             iw = inv_w0;
         }
         double *cw = Pb + (int64_t)(dim * dim + 1) * np, *rw = cw + nb, *sw = D + (int64_t)dim * n;
-        bac_coefficients(s, iw, cw, rw, sw);
+        bac_coefficients(s, iw, NULL, cw, rw, sw);
         c = cw, phi_rev = rw, phi_sum = sw;
     }
     /* per pair, from its canonical (lower-numbered) bond: F_b(ij) = F_b(ji)

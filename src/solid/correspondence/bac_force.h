@@ -117,18 +117,20 @@ int bac_pairs_create(int64_t n, const int64_t *first, const int64_t *reverse, Ba
 void bac_pairs_free(BacPairs *pairs);
 
 /* 1 / w0_i = 1 / sum_j omega_ij (1 - d_ij) V_j per point (0 where w0 = 0:
- * every bond broken), into inv_w0 (n): what bac_force forms when
- * s->inv_w0 is NULL. */
-void bac_inverse_weights(const BacSystem *s, double *inv_w0);
+ * every bond broken), into inv_w0 (n), for the points with only[i] != 0
+ * (NULL: all): what bac_force forms when s->inv_w0 is NULL. */
+void bac_inverse_weights(const BacSystem *s, const uint8_t *only, double *inv_w0);
 
 /* What the force's sums take from the weights and the damage alone
  * (constant between damage changes): per bond k = (i -> j) the stress
  * integral's weight c[k] = omega_ij s_ij (1 / (2 w0_i) + 1 / (2 w0_j)) V_j
  * (s = bond_scale) and the reverse bond's RK weight times V_j,
  * phi_rev[dim k + a] = phi_ji,a V_j; per point phi_sum[dim i + a] = sum_j
- * phi_ij,a V_j. inv_w0: bac_inverse_weights'. */
-void bac_coefficients(const BacSystem *s, const double *inv_w0, double *c, double *phi_rev,
-                      double *phi_sum);
+ * phi_ij,a V_j. inv_w0: bac_inverse_weights'. Only for the points i with
+ * only[i] != 0 (NULL: all): after damage, those whose family's damage grew
+ * and their neighbours (c reads both ends' w0, phi_rev the neighbour's phi). */
+void bac_coefficients(const BacSystem *s, const double *inv_w0, const uint8_t *only, double *c,
+                      double *phi_rev, double *phi_sum);
 
 /* Force densities L (N/m^3, dim arrays of n) for displacements u, with the
  * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic

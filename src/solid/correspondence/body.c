@@ -77,6 +77,9 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->load, n, sizeof(int16_t)));
     TRY(nspd_alloc(&b->ok, n, 1));
     TRY(nspd_alloc(&b->redo, n, 1));
+    TRY(nspd_alloc(&b->dirty, n, 1));
+    TRY(nspd_alloc(&b->near, n, 1));
+    memset(b->dirty, 1, n); /* nothing formed yet */
     /* F and F at u_prev (the classic force: F and P), then the bond-
      * associated force's per-point scratch */
     TRY(nspd_alloc(&b->work_point, (size_t)(18 + bac_work_per_point(b->dim)) * n, sizeof(double)));
@@ -253,6 +256,8 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->phi);
     nspd_free(&b->ok);
     nspd_free(&b->redo);
+    nspd_free(&b->dirty);
+    nspd_free(&b->near);
     nspd_free(&b->sigma);
     nspd_free(&b->eqps);
     nspd_free(&b->damage);

@@ -85,6 +85,8 @@ typedef struct {
     double *omega, *phi; /* phi: NULL for the classic force */
     uint8_t *ok;         /* per point: 1 while its moment matrix (classic: K_i) is invertible */
     uint8_t *redo;       /* per point: damage grew in its family this step */
+    uint8_t *dirty;      /* per point: its family's damage changed since inv_w0 was formed */
+    uint8_t *near;       /* scratch: the dirty points and their neighbours */
     double *sigma, *eqps, *damage, *scale, *principal; /* classic: sigma, eqps, principal */
     uint8_t *inverted;
     double *strain_zz; /* plane stress: the thickness's log strain, per bond (per point
@@ -142,9 +144,10 @@ void cpd_force(CpdBody *b, double t);
  * its neighbours without weights in turn: repeated until no point changes. Returns the number of
  * bonds broken this way. */
 int64_t cpd_settle_weights(CpdBody *b);
-/* b->inv_w0 from the current damage (bac_inverse_weights): after anything
- * that changed scale (cpd_settle_weights calls it; so does a checkpoint's
- * restore). */
+/* b->inv_w0 and the force's coefficients from the current damage, for
+ * every point (bac_inverse_weights, bac_coefficients): after anything that
+ * changed scale behind the damage bookkeeping (a checkpoint's restore;
+ * cpd_settle_weights refreshes only the points whose damage changed). */
 void cpd_inverse_weights(CpdBody *b);
 
 /* dt = 2 / sqrt(lambda_max) of the linearised operator (K / rho) at the

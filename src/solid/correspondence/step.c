@@ -171,8 +171,30 @@ static int64_t update_damage(CpdBody *b) {
             }
         }
         b->redo[i] = redo;
+        b->dirty[i] |= redo;
     }
     return grown > 0 ? grown + cpd_settle_weights(b) : 0;
+}
+
+/* b->inv_w0 of the points flagged in b->dirty (their family's damage
+ * changed since the last call) and the force's coefficients of them and
+ * their neighbours (bac_coefficients), the flags then cleared. */
+static void refresh_weights(CpdBody *b) {
+    if (b->inv_w0) {
+        BacSystem s = system_of(b);
+        s.inv_w0 = NULL;
+        s.c = s.phi_rev = s.phi_sum = NULL;
+        uint8_t *near = b->near;
+        memcpy(near, b->dirty, (size_t)b->n);
+        /* serial: few points change at a step, and a neighbour may be
+         * marked from several */
+        for (int64_t i = 0; i < b->n; i++)
+            if (b->dirty[i])
+                for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) near[b->nbr[k]] = 1;
+        bac_inverse_weights(&s, b->dirty, b->inv_w0);
+        bac_coefficients(&s, b->inv_w0, near, b->coef_c, b->phi_rev, b->phi_sum);
+    }
+    memset(b->dirty, 0, (size_t)b->n);
 }
 
 int64_t cpd_settle_weights(CpdBody *b) {
@@ -191,20 +213,18 @@ int64_t cpd_settle_weights(CpdBody *b) {
                     broke++;
                 }
             b->redo[i] = redo && b->ok[i];
+            b->dirty[i] |= redo;
         }
         if (broke == 0) break;
         grown += broke;
     }
-    cpd_inverse_weights(b);
+    refresh_weights(b);
     return grown;
 }
 
 void cpd_inverse_weights(CpdBody *b) {
-    if (!b->inv_w0) return; /* the classic force keeps none */
-    BacSystem s = system_of(b);
-    s.inv_w0 = NULL;
-    bac_inverse_weights(&s, b->inv_w0);
-    bac_coefficients(&s, b->inv_w0, b->coef_c, b->phi_rev, b->phi_sum);
+    memset(b->dirty, 1, (size_t)b->n);
+    refresh_weights(b);
 }
 
 /* The force density at displacements u into L: with the body's material
