@@ -17,6 +17,7 @@
 
 #include <math.h>
 #include <omp.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -228,9 +229,12 @@ typedef struct {
     double momentum;
     int64_t broken, bonds, n;
     double *damage, *u;
+    bool refresh_whole; /* the kept 1 / w0 and coefficients equal a full refresh's */
 } Shaken;
 
-static void run_shaken(int threads, Shaken *out) {
+/* form_fb: F_b at each step's start formed again from F at u_prev instead
+ * of taken from the last step (the body's Fb_now cleared after each step) */
+static void run_shaken(int threads, bool form_fb, Shaken *out) {
     omp_set_num_threads(threads);
     CpdConfig c = block(16, 16, 1e-3);
     c.damage = CPD_DAMAGE_BRITTLE;
@@ -250,7 +254,10 @@ static void run_shaken(int threads, Shaken *out) {
             p0[a] += RHO * b.volume[i] * b.v[a][i];
             scale += RHO * b.volume[i] * fabs(b.v[a][i]);
         }
-    for (int s = 0; s < 200; s++) assert_ok(cpd_step(&b, 0.8 * b.stable_dt));
+    for (int s = 0; s < 200; s++) {
+        assert_ok(cpd_step(&b, 0.8 * b.stable_dt));
+        if (form_fb) b.Fb_now = false;
+    }
     double p1[2] = {0, 0};
     for (int64_t i = 0; i < b.n; i++)
         for (int a = 0; a < 2; a++) p1[a] += RHO * b.volume[i] * b.v[a][i];
@@ -263,18 +270,40 @@ static void run_shaken(int threads, Shaken *out) {
     memcpy(out->damage, b.damage, (size_t)b.bond_count * sizeof(double));
     out->u = malloc((size_t)b.n * sizeof(double));
     memcpy(out->u, b.u[0], (size_t)b.n * sizeof(double));
+    /* the weights were refreshed only where damage changed, step by step:
+     * the same bits as refreshing all of them now */
+    const size_t nb = (size_t)b.bond_count, n = (size_t)b.n;
+    double *kept = malloc((4 * nb + 3 * n) * sizeof(double));
+    memcpy(kept, b.coef_c, nb * sizeof(double));
+    memcpy(kept + nb, b.phi_rev, 2 * nb * sizeof(double));
+    memcpy(kept + 3 * nb, b.phi_sum, 2 * n * sizeof(double));
+    memcpy(kept + 3 * nb + 2 * n, b.inv_w0, n * sizeof(double));
+    cpd_inverse_weights(&b);
+    out->refresh_whole = memcmp(kept, b.coef_c, nb * sizeof(double)) == 0 &&
+                         memcmp(kept + nb, b.phi_rev, 2 * nb * sizeof(double)) == 0 &&
+                         memcmp(kept + 3 * nb, b.phi_sum, 2 * n * sizeof(double)) == 0 &&
+                         memcmp(kept + 3 * nb + 2 * n, b.inv_w0, n * sizeof(double)) == 0;
+    free(kept);
     cpd_body_destroy(&b);
 }
 
 /* C9: momentum to round-off while bonds break (measured 1.0e-16 of the sum
  * of |momenta| after 200 steps with 590 of 5220 bonds broken, sub-steps
  * included; tolerance 1e-13), and 1 and 2 threads give the same damage and
- * displacement bits. */
+ * displacement bits; so does forming F_b at every step's start instead of
+ * keeping the last step's, and the weights refreshed only where damage
+ * changed equal a whole refresh. */
 static void test_momentum_and_threads_with_damage(void **state) {
     (void)state;
-    Shaken one, two;
-    run_shaken(1, &one);
-    run_shaken(2, &two);
+    Shaken one, two, formed;
+    run_shaken(1, false, &one);
+    run_shaken(2, false, &two);
+    run_shaken(2, true, &formed);
+    assert_true(one.refresh_whole && two.refresh_whole && formed.refresh_whole);
+    assert_memory_equal(formed.u, two.u, (size_t)two.n * sizeof(double));
+    assert_memory_equal(formed.damage, two.damage, (size_t)two.bonds * sizeof(double));
+    free(formed.damage);
+    free(formed.u);
     omp_set_num_threads(2);
     print_message("momentum drift %.3g (1 thread), %.3g (2); %lld of %lld bonds broken\n",
                   one.momentum, two.momentum, (long long)one.broken, (long long)one.bonds);
