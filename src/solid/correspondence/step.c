@@ -112,38 +112,42 @@ static double damage_law(const CpdBody *b, int64_t i, int64_t k) {
 static int64_t pair_damage(const CpdBody *b, double *d) {
     const CpdConfig *c = &b->cfg;
     const int64_t np = b->pairs.count;
+    const double *damage = b->damage;
+    const int64_t *bond = b->pairs.bond;
+    /* the pairs whose damage the law grows, counted in a double (exact
+     * below 2^53) in the same lanes: an int beside the doubles would keep
+     * the loop scalar */
+    double grown = 0.0;
     if (c->damage == CPD_DAMAGE_DUCTILE) {
         const double *eqps = b->eqps, lo = c->plastic_strain_threshold,
                      hi = c->plastic_strain_critical;
-#pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for simd schedule(simd : static) reduction(+ : grown) if (np >= PARALLEL_MIN_ITEMS)
         for (int64_t p = 0; p < np; p++) {
             /* vectorised x1: tests/unit/core/vectorised.sh */
             d[p] = j2_damage_ductile(eqps[p], lo, hi);
+            grown += NSPD_GT(d[p], damage[bond[p]]) ? 1.0 : 0.0;
         }
     } else {
         const double *principal = b->principal, cr = c->critical_stress, ramp = c->damage_ramp;
-#pragma omp parallel for simd schedule(simd : static) if (np >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for simd schedule(simd : static) reduction(+ : grown) if (np >= PARALLEL_MIN_ITEMS)
         for (int64_t p = 0; p < np; p++) {
             /* vectorised x1: tests/unit/core/vectorised.sh */
             d[p] = j2_damage_brittle(principal[p], cr, ramp);
+            grown += NSPD_GT(d[p], damage[bond[p]]) ? 1.0 : 0.0;
         }
     }
-    /* an inverted pair has failed: apart, because a byte read beside the
-     * doubles keeps GCC 12 from vectorising the laws' loops */
-#pragma omp parallel for schedule(static) if (np >= PARALLEL_MIN_ITEMS)
+    /* an inverted pair has failed (counted if the law had not grown it):
+     * apart, because a byte read beside the doubles keeps GCC 12 from
+     * vectorising the laws' loops */
+    int64_t failed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : failed) if (np >= PARALLEL_MIN_ITEMS)
     for (int64_t p = 0; p < np; p++)
-        if (b->inverted[p]) d[p] = 1.0;
-    /* a count in a double (exact below 2^53): an int beside the doubles
-     * would keep the loop scalar */
-    double grown = 0.0;
-    const double *damage = b->damage;
-    const int64_t *bond = b->pairs.bond;
-#pragma omp parallel for simd schedule(simd : static) reduction(+ : grown) if (np >= PARALLEL_MIN_ITEMS)
-    for (int64_t p = 0; p < np; p++) {
-        /* vectorised x1: tests/unit/core/vectorised.sh */
-        grown += NSPD_GT(d[p], damage[bond[p]]) ? 1.0 : 0.0;
-    }
-    return (int64_t)grown;
+        if (b->inverted[p]) {
+            const double old = damage[bond[p]];
+            failed += !(d[p] > old) && 1.0 > old ? 1 : 0;
+            d[p] = 1.0;
+        }
+    return (int64_t)grown + failed;
 }
 
 /* Damage grows (never falls) by the law, then the weights settle
