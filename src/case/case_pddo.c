@@ -14,6 +14,7 @@ enum { T_WALL, T_LID, T_INLET, T_OUTLET, T_PERIODIC };
 static const char *const PROFILES[] = {"uniform", "parabolic", NULL};
 static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const DIVERGENCE_TERM[] = {"paper", "updated", NULL};
+static const char *const PRESSURE_SOLVES[] = {"umfpack", "runs", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
 
@@ -324,6 +325,9 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     TRY(cfg_opt_enum(flow, "divergence_term", DIVERGENCE_TERM, PDDO_DIVERGENCE_ALL_ROWS,
                      &divergence));
     c->step.divergence = (PddoDivergenceTerm)divergence;
+    int solve;
+    TRY(cfg_opt_enum(flow, "pressure_solve", PRESSURE_SOLVES, 0, &solve));
+    c->pressure_runs = solve == 1;
     const double zero[2] = {0, 0};
     double force[2];
     TRY(cfg_opt_vec(flow, "body_force", 2, zero, force));

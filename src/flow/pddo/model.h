@@ -46,6 +46,7 @@ typedef struct {
     double velocity_scale;     /* m/s: the lid, 1.5 times the inlet, or a body force's
                                   Poiseuille maximum; sets the stable step and pictures */
     double steady_tolerance;   /* m/s^2: the run ends once max |du/dt| falls below; 0: never */
+    bool pressure_runs;        /* flow.pressure_solve: runs (pddo_ppe_use_runs), else umfpack */
     double reference_length;   /* m: `reference.length`, else the body's diameter, else the
                                   rectangle's shorter side (Reynolds number, coefficients) */
     double reference_velocity; /* m/s: the lid, the inlet's mean, or a body force's
