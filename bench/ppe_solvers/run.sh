@@ -1,9 +1,8 @@
 #!/bin/sh
 # The PDDO pressure solvers side by side on the matrix of a case (issue 26;
 # README.md). Builds a copy of nspd with dump.patch, runs the case's first
-# 153 steps with NSPD_PPE_DUMP, then the direct solvers (direct.c),
-# UMFPACK's factor solved by runs of pivots (supernodal.c) and hypre's
-# BoomerAMG (amg.c) on the dumped matrix and right-hand sides.
+# 153 steps with NSPD_PPE_DUMP, then the direct solvers (direct.c) and
+# hypre's BoomerAMG (amg.c) on the dumped matrix and right-hand sides.
 #   bench/ppe_solvers/run.sh [CASE] [WORK_DIR]
 # CASE defaults to the paper's Re 100 cylinder (cases/cylinder_confined_re100.yaml).
 set -eu
@@ -26,10 +25,7 @@ here="$root/bench/ppe_solvers"
 cc -O3 -march=native -o "$work/direct" "$here/direct.c" -I/usr/include/suitesparse \
     -I/usr/include/superlu -I/usr/include/mumps_seq -lumfpack -lsuperlu -ldmumps_seq -lblas -lm
 mpicc -O3 -march=native -o "$work/amg" "$here/amg.c" -I/usr/include/hypre -lHYPRE -lm
-cc -O3 -march=native -fopenmp-simd -o "$work/supernodal" "$here/supernodal.c" \
-    -I/usr/include/suitesparse -lumfpack -lm
 "$work/direct" "$work/dump" 152 5
-"$work/supernodal" "$work/dump" 152 5
 for settings in "0.25 10 6 6" "0.25 10 6 18" "0.5 6 0 6"; do
     echo "BoomerAMG + BiCGStab to 1e-8, threshold coarsening interpolation relaxation = $settings"
     # shellcheck disable=SC2086

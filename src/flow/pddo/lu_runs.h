@@ -9,7 +9,8 @@
  * a value per entry. On the paper's Re 100 cylinder (122,833 pivots, 6.67e7
  * entries) 91 % of the entries lie in runs of 8 pivots or more, and the
  * solve takes 50 ms against UMFPACK's own 111 ms
- * (bench/ppe_solvers/supernodal.c, docs/PERFORMANCE.md).
+ * (docs/PERFORMANCE.md; measured by a prototype since folded in here,
+ * git show daed58e:bench/ppe_solvers/supernodal.c).
  *
  * Two forms, for the two ways a factor groups:
  *   LU_RUNS_GATHER   a lower triangle given by rows: a run of rows whose
