@@ -174,11 +174,12 @@ static int build(CpdBody *b, CpdConfig *cfg) {
         TRY(nspd_alloc(&b->phi_sum, dim * n, sizeof(double)));
         TRY(state_arrays(b, (size_t)b->pairs.count));
         if (b->dim == 2) TRY(nspd_alloc(&b->Fb, 4 * (size_t)b->pairs.count, sizeof(double)));
-        /* bac_work_bond with the coefficients kept: P_b per pair, and a
-         * flag per pair in plane stress */
-        const size_t flags = b->cfg.pd.model == PD_PLANE_STRESS ? 1 : 0;
-        TRY(nspd_alloc(&b->work_bond, (dim * dim + flags) * (size_t)b->pairs.count,
-                       sizeof(double)));
+        /* the force's scratch with the coefficients kept (P_b per pair, and
+         * a flag per pair in plane stress) */
+        const BacSystem kept = {
+            .dim = b->dim, .n = b->n, .first = b->first, .pairs = b->pairs, .c = b->coef_c};
+        const int plane_stress = b->cfg.pd.model == PD_PLANE_STRESS ? 1 : 0;
+        TRY(nspd_alloc(&b->work_bond, (size_t)bac_work_bond(&kept, plane_stress), sizeof(double)));
     }
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++)
