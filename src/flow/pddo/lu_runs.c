@@ -4,6 +4,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 
+#include <omp.h>
 #include <string.h>
 
 /* Whether pivot k joins the run that pivot k - 1 is in: GATHER, row k is
@@ -32,6 +33,19 @@ static inline int64_t tri_at(int64_t ns, int64_t q, int64_t t) {
     return t * (2 * ns - t - 1) / 2 + (q - t - 1);
 }
 
+/* The first of list[0 .. len) (ascending) at or past v: its position. */
+static int64_t first_at_least(const int32_t *list, int64_t len, int64_t v) {
+    int64_t lo = 0, hi = len;
+    while (lo < hi) {
+        const int64_t mid = lo + (hi - lo) / 2;
+        if (list[mid] < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 int lu_runs_build(LuRuns *r, LuRunsForm form, int64_t n, const int64_t *ptr, const int32_t *idx,
                   const double *val, const double *diag, int64_t max_run) {
     memset(r, 0, sizeof *r);
@@ -52,6 +66,9 @@ int lu_runs_build(LuRuns *r, LuRunsForm form, int64_t n, const int64_t *ptr, con
         k = k1;
     }
     r->start[r->count] = n;
+    /* one serial stage (lu_runs_cut divides it) */
+    TRY(nspd_alloc(&r->stage, 3, sizeof *r->stage));
+    r->stages = 1, r->stage[1] = r->stage[2] = r->count;
     TRY(nspd_alloc(&r->cp, (size_t)r->count + 1, sizeof *r->cp));
     TRY(nspd_alloc(&r->bp, (size_t)r->count + 1, sizeof *r->bp));
     r->cp[0] = r->bp[0] = 0;
@@ -84,9 +101,12 @@ int lu_runs_build(LuRuns *r, LuRunsForm form, int64_t n, const int64_t *ptr, con
     return NSPD_OK;
 }
 
-void lu_runs_solve(const LuRuns *r, double *y, double *scratch) {
+/* Runs [s0, s1) of the solve; SCATTER with a log: the updates of unknowns
+ * at or past the run's tail go to *log in order instead of into y. */
+static void solve_range(const LuRuns *r, int64_t s0, int64_t s1, double *y, double *scratch,
+                        double *log) {
     double *g = scratch, *acc = scratch + r->widest;
-    for (int64_t s = 0; s < r->count; s++) {
+    for (int64_t s = s0; s < s1; s++) {
         const int64_t k0 = r->start[s], ns = r->start[s + 1] - k0, c = r->cp[s + 1] - r->cp[s];
         const int32_t *out = r->idx + r->cp[s];
         const double *B = r->bx + r->bp[s], *T = B + ns * c;
@@ -118,9 +138,281 @@ void lu_runs_solve(const LuRuns *r, double *y, double *scratch) {
 #pragma omp simd
                 for (int64_t m = 0; m < c; m++) g[m] += row[m] * z;
             }
-            for (int64_t m = 0; m < c; m++) y[out[m]] -= g[m];
+            const int64_t direct = log ? r->tail[s] : c;
+            for (int64_t m = 0; m < direct; m++) y[out[m]] -= g[m];
+            for (int64_t m = direct; m < c; m++) *log++ = g[m];
         }
     }
+}
+
+int64_t lu_runs_scratch(const LuRuns *r) {
+    return 2 * (r->widest + r->longest) + r->logged + 1;
+}
+
+void lu_runs_solve(const LuRuns *r, double *y, double *scratch) {
+    const int64_t w = r->widest + r->longest;
+    double *log = scratch + 2 * w;
+    const int two = omp_get_max_threads() > 1;
+    const int scatter = r->form == LU_RUNS_SCATTER;
+    for (int64_t i = 0; i < r->stages; i++) {
+        const int64_t lo = r->stage[3 * i], mid = r->stage[3 * i + 1], hi = r->stage[3 * i + 2];
+        if (mid == hi) {
+            solve_range(r, lo, mid, y, scratch, NULL);
+            continue;
+        }
+#pragma omp parallel num_threads(2) if (two)
+        {
+            const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+            for (int part = t; part < 2; part += nt) {
+                if (part == 0)
+                    solve_range(r, lo, mid, y, scratch, NULL);
+                else
+                    solve_range(r, mid, hi, y, scratch + w, scatter ? log : NULL);
+            }
+        }
+        if (scatter) {
+            /* the second part's updates past the stage, in run order: each
+             * unknown gets them after the first part's, as on one thread */
+            const double *at = log;
+            for (int64_t s = mid; s < hi; s++) {
+                const int32_t *out = r->idx + r->cp[s];
+                for (int64_t m = r->tail[s]; m < r->cp[s + 1] - r->cp[s]; m++) y[out[m]] -= *at++;
+            }
+        }
+    }
+}
+
+/* The runs of r as groups of pivots in the factor's order (a GATHER
+ * triangle in reversed order read backwards): group s holds pivots
+ * [lo[s], hi[s]) and reaches the pivots of its outside list, all at or past
+ * hi[s]; reach(s, m) is the m-th of them, ascending. */
+static int64_t group_lo(const LuRuns *r, int64_t s) {
+    return r->form == LU_RUNS_SCATTER ? r->start[s] : r->n - r->start[r->count - s];
+}
+static int64_t group_hi(const LuRuns *r, int64_t s) {
+    return r->form == LU_RUNS_SCATTER ? r->start[s + 1] : r->n - r->start[r->count - 1 - s];
+}
+static int64_t group_len(const LuRuns *r, int64_t s) {
+    const int64_t t = r->form == LU_RUNS_SCATTER ? s : r->count - 1 - s;
+    return r->cp[t + 1] - r->cp[t];
+}
+static int64_t group_reach(const LuRuns *r, int64_t s, int64_t m) {
+    if (r->form == LU_RUNS_SCATTER) return r->idx[r->cp[s] + m];
+    const int64_t t = r->count - 1 - s;
+    return r->n - 1 - r->idx[r->cp[t + 1] - 1 - m];
+}
+
+/* The first reach of group s at or past v: its position (len if none). */
+static int64_t reach_from(const LuRuns *r, int64_t s, int64_t v) {
+    int64_t lo = 0, hi = group_len(r, s);
+    while (lo < hi) {
+        const int64_t mid = lo + (hi - lo) / 2;
+        if (group_reach(r, s, mid) < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* A binary min-heap of (pivot, group, triangle) entries: each group's
+ * current reach. */
+typedef struct {
+    int64_t key, group, at;
+    int tri;
+} Reach;
+
+static void heap_push(Reach *h, int64_t *n, Reach e) {
+    int64_t i = (*n)++;
+    while (i > 0 && h[(i - 1) / 2].key > e.key) h[i] = h[(i - 1) / 2], i = (i - 1) / 2;
+    h[i] = e;
+}
+
+static Reach heap_pop(Reach *h, int64_t *n) {
+    const Reach top = h[0], last = h[--*n];
+    int64_t i = 0;
+    for (;;) {
+        int64_t c = 2 * i + 1;
+        if (c >= *n) break;
+        if (c + 1 < *n && h[c + 1].key < h[c].key) c++;
+        if (h[c].key >= last.key) break;
+        h[i] = h[c], i = c;
+    }
+    if (*n > 0) h[i] = last;
+    return top;
+}
+
+/* The run that starts at pivot k of r's own order (-1: none). */
+static int64_t run_at(const LuRuns *r, int64_t k) {
+    int64_t lo = 0, hi = r->count;
+    while (lo < hi) {
+        const int64_t mid = lo + (hi - lo) / 2;
+        if (r->start[mid] < k)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < r->count && r->start[lo] == k ? lo : k == r->n ? r->count : -1;
+}
+
+/* Whether the runs [s0, s1) of r reach none of the pivots [a, b). */
+static int apart(const LuRuns *r, int64_t s0, int64_t s1, int64_t a, int64_t b) {
+    for (int64_t s = s0; s < s1; s++) {
+        const int64_t c = r->cp[s + 1] - r->cp[s];
+        const int64_t m = first_at_least(r->idx + r->cp[s], c, a);
+        if (m < c && r->idx[r->cp[s] + m] < b) return 0;
+    }
+    return 1;
+}
+
+/* r's stages from the cuts (x_i, a_i, b_i) of the factor's order (pivots
+ * [x_i, a_i) beside [a_i, b_i), x_(i+1) = b_i, at run starts), in r's own
+ * order: SCATTER runs them first to last and then [b_last, n); GATHER
+ * (reversed) [0, n - b_last) first, then the stages last to first. Each is
+ * checked: the part that runs first on one thread must not reach the
+ * other part. */
+static int set_stages(LuRuns *r, const int64_t *cuts, int64_t m) {
+    const int64_t n = r->n, scatter = r->form == LU_RUNS_SCATTER;
+    nspd_free(&r->stage);
+    TRY(nspd_alloc(&r->stage, 3 * (size_t)(m + 1), sizeof *r->stage));
+    r->stages = m + 1;
+    for (int64_t i = 0; i <= m; i++) {
+        int64_t k[3];
+        if (i == (scatter ? m : 0)) { /* the serial rest */
+            const int64_t b = m > 0 ? cuts[3 * (m - 1) + 2] : 0;
+            k[0] = scatter ? b : 0, k[1] = k[2] = scatter ? n : n - b;
+        } else {
+            const int64_t *c = cuts + 3 * (scatter ? i : m - i);
+            k[0] = scatter ? c[0] : n - c[2], k[1] = scatter ? c[1] : n - c[1];
+            k[2] = scatter ? c[2] : n - c[0];
+        }
+        for (int q = 0; q < 3; q++) {
+            r->stage[3 * i + q] = run_at(r, k[q]);
+            if (r->stage[3 * i + q] < 0)
+                return NSPD_FAIL(NSPD_ERR_INTERNAL, "a cut inside a run of the factor");
+        }
+        const int64_t *t = r->stage + 3 * i;
+        const int ok =
+            scatter ? apart(r, t[0], t[1], k[1], k[2]) : apart(r, t[1], t[2], k[0], k[1]);
+        if (!ok) return NSPD_FAIL(NSPD_ERR_INTERNAL, "a cut whose parts reach each other");
+    }
+    if (scatter) {
+        TRY(nspd_alloc(&r->tail, (size_t)r->count + 1, sizeof *r->tail));
+        for (int64_t i = 0; i < m; i++) {
+            const int64_t *t = r->stage + 3 * i, b = cuts[3 * i + 2];
+            int64_t logged = 0;
+            for (int64_t s = t[1]; s < t[2]; s++) {
+                const int64_t c = r->cp[s + 1] - r->cp[s];
+                r->tail[s] = first_at_least(r->idx + r->cp[s], c, b);
+                logged += c - r->tail[s];
+            }
+            if (logged > r->logged) r->logged = logged;
+        }
+    }
+    return NSPD_OK;
+}
+
+/* What lu_runs_cut sweeps with: per pivot the work before it and whether
+ * both triangles' runs start there; the groups by the pivot they end at;
+ * the heap. */
+typedef struct {
+    const LuRuns *t[2];
+    int64_t n;
+    double *before;
+    uint8_t *common;
+    int64_t *ends, *end_at;
+    Reach *heap;
+} Sweep;
+
+/* The best stage of pivots [x, n): [x, a) beside [a, b), then [b, n) on
+ * one thread, minimising max(W[x, a), W[a, b)) + W[b, n); its time (W[x,
+ * n): none better), *a and *b (0: none). The groups that start at or past
+ * x and end at or before a are in the first part; the second may reach up
+ * to the lowest pivot at or past a that one of them reaches. */
+static double best_stage(Sweep *w, int64_t x, int64_t *a_out, int64_t *b_out) {
+    const int64_t n = w->n;
+    const double *before = w->before;
+    double best = before[n] - before[x];
+    int64_t heap_n = 0;
+    *a_out = *b_out = 0;
+    for (int64_t a = x + 1, e = w->end_at[x]; a < n; a++) {
+        for (; e < w->end_at[a]; e++) {
+            const int f = (int)(w->ends[e] % 2);
+            const int64_t s = w->ends[e] / 2;
+            if (group_lo(w->t[f], s) < x) continue;
+            const int64_t m = reach_from(w->t[f], s, a);
+            if (m < group_len(w->t[f], s))
+                heap_push(w->heap, &heap_n, (Reach){group_reach(w->t[f], s, m), s, m, f});
+        }
+        while (heap_n > 0 && w->heap[0].key < a) {
+            Reach r = heap_pop(w->heap, &heap_n);
+            r.at = reach_from(w->t[r.tri], r.group, a);
+            if (r.at < group_len(w->t[r.tri], r.group)) {
+                r.key = group_reach(w->t[r.tri], r.group, r.at);
+                heap_push(w->heap, &heap_n, r);
+            }
+        }
+        if (w->common[a] != 2) continue;
+        int64_t b = heap_n > 0 ? w->heap[0].key : n;
+        while (b > a && b < n && w->common[b] != 2) b--;
+        if (b <= a) continue;
+        const double one = before[a] - before[x], two = before[b] - before[a];
+        const double time = (one > two ? one : two) + before[n] - before[b];
+        if (time < best) best = time, *a_out = a, *b_out = b;
+    }
+    return best;
+}
+
+int lu_runs_cut(LuRuns *first, LuRuns *second, double *share) {
+    *share = 1.0;
+    const int64_t n = first->n;
+    if (first->form != LU_RUNS_SCATTER || second->form != LU_RUNS_GATHER || second->n != n)
+        return NSPD_OK;
+    Sweep w = {.t = {first, second}, .n = n};
+    int64_t *cuts = NULL, m = 0;
+    const int64_t groups = first->count + second->count;
+    int status = nspd_alloc(&w.before, (size_t)n + 1, sizeof *w.before);
+    if (status == NSPD_OK) status = nspd_alloc(&w.common, (size_t)n + 1, 1);
+    if (status == NSPD_OK) status = nspd_alloc(&w.end_at, (size_t)n + 2, sizeof *w.end_at);
+    if (status == NSPD_OK) status = nspd_alloc(&w.ends, (size_t)groups, sizeof *w.ends);
+    if (status == NSPD_OK) status = nspd_alloc(&w.heap, (size_t)groups, sizeof *w.heap);
+    if (status == NSPD_OK) status = nspd_alloc(&cuts, 3 * LU_RUNS_MAX_STAGES, sizeof *cuts);
+    if (status != NSPD_OK) goto done;
+    double *work = w.before + 1; /* work[k], summed in place below */
+    for (int f = 0; f < 2; f++)
+        for (int64_t s = 0; s < w.t[f]->count; s++) {
+            const int64_t lo = group_lo(w.t[f], s), hi = group_hi(w.t[f], s);
+            const int64_t ns = hi - lo, c = group_len(w.t[f], s);
+            w.common[lo]++;
+            for (int64_t q = 0; q < ns; q++) work[lo + q] += (double)(c + ns - 1 - q);
+            w.end_at[hi + 1]++; /* counted, then grouped by the pivot they end at */
+        }
+    for (int64_t k = 0; k < n; k++) w.before[k + 1] += w.before[k];
+    for (int64_t k = 0; k <= n; k++) w.end_at[k + 1] += w.end_at[k];
+    for (int f = 0; f < 2; f++)
+        for (int64_t s = 0; s < w.t[f]->count; s++)
+            w.ends[w.end_at[group_hi(w.t[f], s)]++] = 2 * s + f; /* end_at[k]: end of k's */
+    /* greedily: the best stage of what is left, while one shortens it */
+    double time = 0.0;
+    int64_t x = 0;
+    while (m < LU_RUNS_MAX_STAGES) {
+        int64_t a, b;
+        const double t = best_stage(&w, x, &a, &b);
+        if (b == 0) break;
+        cuts[3 * m] = x, cuts[3 * m + 1] = a, cuts[3 * m + 2] = b;
+        time += t - (w.before[n] - w.before[b]);
+        m++, x = b;
+    }
+    time += w.before[n] - w.before[x];
+    *share = w.before[n] > 0.0 ? time / w.before[n] : 1.0;
+    if (m > 0) {
+        status = set_stages(first, cuts, m);
+        if (status == NSPD_OK) status = set_stages(second, cuts, m);
+    }
+done:
+    nspd_free(&w.before), nspd_free(&w.common), nspd_free(&w.ends), nspd_free(&w.end_at);
+    nspd_free(&w.heap), nspd_free(&cuts);
+    return status;
 }
 
 int64_t lu_runs_entries(const LuRuns *r) {
@@ -133,5 +425,7 @@ void lu_runs_free(LuRuns *r) {
     nspd_free(&r->idx);
     nspd_free(&r->bp);
     nspd_free(&r->bx);
+    nspd_free(&r->tail);
+    nspd_free(&r->stage);
     memset(r, 0, sizeof *r);
 }

@@ -581,7 +581,11 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
                "runs (%.1f MB) among them\n",
                (double)memory / 1e6, (double)memory / (double)c->n,
                8e-6 * (double)(lu_runs_entries(&f->ppe.runs_u) + lu_runs_entries(&f->ppe.runs_l)));
-    else
+    if (f->ppe.runs)
+        APPEND("two-thread solve     %lld stages of independent parts: %.2f of one thread's "
+               "entries on the longer path\n",
+               (long long)f->ppe.runs_u.stages - 1, f->ppe.two_thread_share);
+    if (!f->ppe.runs)
         APPEND("memory               %.1f MB in arrays (%.0f bytes per node) and %.1f MB of LU "
                "factors\n",
                (double)memory / 1e6, (double)memory / (double)c->n, f->ppe.factor_bytes / 1e6);

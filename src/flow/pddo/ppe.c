@@ -289,9 +289,9 @@ int pddo_ppe_use_runs(PddoPpe *ppe) {
     TRY(runs_of_u(ppe, unz));
     TRY(runs_of_l(ppe, lnz));
     umfpack_di_free_numeric(&ppe->numeric);
-    const int64_t u = ppe->runs_u.widest + ppe->runs_u.longest,
-                  l = ppe->runs_l.widest + ppe->runs_l.longest;
-    TRY(nspd_alloc(&ppe->runs_scratch, (size_t)(u > l ? u : l) + 1, sizeof(double)));
+    TRY(lu_runs_cut(&ppe->runs_u, &ppe->runs_l, &ppe->two_thread_share));
+    const int64_t u = lu_runs_scratch(&ppe->runs_u), l = lu_runs_scratch(&ppe->runs_l);
+    TRY(nspd_alloc(&ppe->runs_scratch, (size_t)(u > l ? u : l), sizeof(double)));
     TRY(nspd_alloc(&ppe->runs_y, (size_t)ppe->n, sizeof(double)));
     ppe->runs = true;
     return NSPD_OK;

@@ -66,6 +66,9 @@ typedef struct {
     int32_t *perm_row, *perm_col;
     double *diag_u, *row_scale, *runs_y, *runs_scratch;
     int scale_recip;
+    /* the runs' two-thread solve over the one-thread one, in entries
+     * (lu_runs_cut; 1: nothing splits) */
+    double two_thread_share;
     double shift; /* the last solve's consistency shift (y . R / y . m); 0 if regular */
     /* measured at build */
     int64_t nnz;       /* nonzeros of K_L */

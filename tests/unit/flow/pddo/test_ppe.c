@@ -19,6 +19,7 @@
 #include "flow/pddo/ppe.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -263,7 +264,32 @@ static void test_runs_solve_as_umfpack(void **state) {
         assert_ok(pddo_ppe_use_runs(&pb.ppe));
         assert_true(pb.ppe.runs && pb.ppe.numeric == NULL);
         assert_true(pb.ppe.runs_u.count < n && pb.ppe.runs_l.count < n);
+        /* the two-thread cut: found on this lattice, checked to part both
+         * factors, and the same bits on one thread and two */
+        assert_true(pb.ppe.runs_u.stages > 1 && pb.ppe.runs_l.stages == pb.ppe.runs_u.stages);
+        assert_true(pb.ppe.two_thread_share < 1.0);
+        const int threads = omp_get_max_threads();
+        omp_set_num_threads(1);
         assert_ok(pddo_ppe_solve(&pb.ppe, b, q));
+        double *q2 = calloc((size_t)n, sizeof(double));
+        omp_set_num_threads(2);
+        assert_ok(pddo_ppe_solve(&pb.ppe, b, q2));
+        omp_set_num_threads(threads);
+        assert_memory_equal(q, q2, (size_t)n * sizeof(double));
+        /* and the bits of the runs solved in one stage, without the log */
+        LuRuns *tri[2] = {&pb.ppe.runs_u, &pb.ppe.runs_l};
+        int64_t *kept[2], kept_n[2], whole[2][3];
+        for (int f = 0; f < 2; f++) {
+            kept[f] = tri[f]->stage, kept_n[f] = tri[f]->stages;
+            whole[f][0] = 0, whole[f][1] = whole[f][2] = tri[f]->count;
+            tri[f]->stage = whole[f], tri[f]->stages = 1;
+        }
+        assert_ok(pddo_ppe_solve(&pb.ppe, b, q2));
+        for (int f = 0; f < 2; f++) tri[f]->stage = kept[f], tri[f]->stages = kept_n[f];
+        assert_memory_equal(q, q2, (size_t)n * sizeof(double));
+        free(q2);
+        printf("runs in %lld stages: two threads take %.2f of one's time\n",
+               (long long)pb.ppe.runs_u.stages, pb.ppe.two_thread_share);
         double diff = 0.0, size = 0.0;
         for (int64_t k = 0; k < n; k++)
             diff = fmax(diff, fabs(q[k] - p[k])), size = fmax(size, fabs(p[k]));
@@ -278,12 +304,61 @@ static void test_runs_solve_as_umfpack(void **state) {
     }
 }
 
+/* The cut of a small factor by hand: U^T by columns (SCATTER) and L^T in
+ * reversed numbering by rows (GATHER), 4 pivots. Pivot 0 reaches 1 and 3,
+ * 1 reaches 3, 2 reaches 3, in both: the best cut is [0, 2) | [2, 3) | 3,
+ * and the solve with it gives the serial bits. With pivot 0 also reaching
+ * 2 in L, nothing splits. */
+static void test_runs_cut_by_hand(void **state) {
+    (void)state;
+    const int64_t ptr[5] = {0, 2, 3, 4, 4};
+    const int32_t rows[4] = {1, 3, 3, 3};
+    const double val[4] = {0.5, 0.25, 0.125, 1.0};
+    /* L^T reversed (k' = 3 - k): row k' lists the columns 3 - i of L's
+     * column 3 - k'; runs of one pivot (longer ones would join 2 and 3) */
+    const int64_t lptr[5] = {0, 0, 1, 2, 4};
+    const int32_t lcols[4] = {0, 0, 0, 2};
+    const double lval[5] = {0.5, 0.25, 0.125, 1.0, 0.5};
+    LuRuns u, l;
+    double share;
+    assert_ok(lu_runs_build(&u, LU_RUNS_SCATTER, 4, ptr, rows, val, NULL, 1));
+    assert_ok(lu_runs_build(&l, LU_RUNS_GATHER, 4, lptr, lcols, lval, NULL, 1));
+    assert_ok(lu_runs_cut(&u, &l, &share));
+    /* U^T: [0, 2) beside [2, 3), then 3; L^T reversed: 0, then [1, 2)
+     * beside [2, 4); work 4 2 2 0: two threads take 6 of 8 */
+    const int64_t su[6] = {0, 2, 3, 3, 4, 4}, sl[6] = {0, 1, 1, 1, 2, 4};
+    assert_true(u.stages == 2 && l.stages == 2);
+    assert_memory_equal(u.stage, su, sizeof su);
+    assert_memory_equal(l.stage, sl, sizeof sl);
+    assert_true(share == 0.75);
+    double y[4] = {1, 2, 3, 4}, z[4] = {1, 2, 3, 4}, scratch[64];
+    assert_true(lu_runs_scratch(&u) <= 64);
+    lu_runs_solve(&u, y, scratch);
+    /* by hand, the last unknown's updates in pivot order (pivot 2's
+     * logged and applied after the join) */
+    z[1] -= 0.5 * z[0];
+    z[3] = ((z[3] - 0.25 * z[0]) - 0.125 * z[1]) - 1.0 * z[2];
+    assert_memory_equal(y, z, sizeof y);
+    lu_runs_free(&u);
+    lu_runs_free(&l);
+    /* L's column 0 also reaches 2 (reversed: row 3 reads column 1) */
+    const int64_t lptr2[5] = {0, 0, 1, 2, 5};
+    const int32_t lcols2[5] = {0, 0, 0, 1, 2};
+    assert_ok(lu_runs_build(&u, LU_RUNS_SCATTER, 4, ptr, rows, val, NULL, 1));
+    assert_ok(lu_runs_build(&l, LU_RUNS_GATHER, 4, lptr2, lcols2, lval, NULL, 1));
+    assert_ok(lu_runs_cut(&u, &l, &share));
+    assert_true(u.stages == 1 && l.stages == 1 && share == 1.0);
+    lu_runs_free(&u);
+    lu_runs_free(&l);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dirichlet_converges),
         cmocka_unit_test(test_neumann_null_space),
         cmocka_unit_test(test_neumann_consistent_solve),
         cmocka_unit_test(test_runs_solve_as_umfpack),
+        cmocka_unit_test(test_runs_cut_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
