@@ -516,6 +516,7 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     report_int(out, "ppe_nonzeros", f->ppe.nnz);
     report_real(out, "factor_nonzeros", f->ppe.factor_nnz);
     report_real(out, "factor_mb", f->ppe.factor_bytes / 1e6);
+    report_real(out, "pressure_solve_s", f->ppe.solve_s);
     report_real(out, "dt_s", f->step.par.dt);
     report_real(out, "dt_limit_s", pddo_flow_dt_limit(&f->cfg));
     report_real(out, "reynolds",

@@ -17,6 +17,7 @@
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/status.h"
+#include "core/timer.h"
 
 #include <math.h>
 #include <stdbool.h>
@@ -332,11 +333,14 @@ int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p) {
             if (ppe->row[k] == PDDO_ROW_PPE) b[k] -= ppe->shift;
         b[ppe->pinned] = 0.0;
     }
-    if (ppe->runs) {
+    const double t0 = nspd_wall_time();
+    int status = NSPD_OK;
+    if (ppe->runs)
         runs_solve(ppe, b, p);
-        return NSPD_OK;
-    }
-    return umf_solve(ppe, UMFPACK_At, p, b);
+    else
+        status = umf_solve(ppe, UMFPACK_At, p, b);
+    ppe->solve_s += nspd_wall_time() - t0;
+    return status;
 }
 
 void pddo_ppe_apply(const PddoPpe *ppe, const double *p, double *out) {

@@ -75,6 +75,7 @@ typedef struct {
     double factor_nnz; /* nonzeros of L + U */
     double factor_bytes;
     double rcond; /* UMFPACK's reciprocal condition estimate */
+    double solve_s; /* wall time in the triangular solves so far */
 } PddoPpe;
 
 /* Assembles K_L for the cloud with the operators built on its families,
