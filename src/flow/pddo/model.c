@@ -120,11 +120,11 @@ static FlowEstimate pddo_estimate(const FlowConfig *fc) {
     e.items = "nodes";
     e.stored_cells = n;
     const double factor = 32.0 * pow(n, 1.25);
-    /* flow.pressure_solve: runs holds about 12 bytes a factor nonzero more
-     * while the runs are copied out of UMFPACK's factor (measured: peak
-     * resident set 1,877 MB against 1,105 MB at the paper's cylinder, 6.67e7
-     * nonzeros) */
-    const double runs = c->pressure_runs ? 12.0 * factor : 0.0;
+    /* flow.pressure_solve: runs holds about 8 bytes a factor nonzero more
+     * while U is regrouped beside UMFPACK's factor (measured: peak resident
+     * set 1,623 MB against 1,105 MB at the paper's cylinder, 6.67e7
+     * nonzeros: 7.8 bytes each) */
+    const double runs = c->pressure_runs ? 8.0 * factor : 0.0;
     e.bytes = 52.0 * n + 4.0 * m + 4.0 * 8.0 * m + 12.0 * (m + n) + 12.0 * factor + runs +
               14.0 * 8.0 * n + (OUT_ARRAYS + NODE_ARRAYS + 1) * 8.0 * n;
     e.check_s = PDDO_CHECK_S_PER_NODE * n;

@@ -239,7 +239,8 @@ static int runs_of_u(PddoPpe *p, int unz) {
 
 /* L's columns (the rows of L^T: entries below the diagonal), in reversed
  * numbering k' = n - 1 - k so that L^T's backward solve runs forward, as
- * LU_RUNS_GATHER runs with a unit diagonal. */
+ * LU_RUNS_GATHER runs with a unit diagonal; UMFPACK's factor is freed once
+ * L is copied out (U's runs must be made first). */
 static int runs_of_l(PddoPpe *p, int lnz) {
     const int n = (int)p->n;
     int *Lp = NULL, *Lj = NULL;
@@ -255,6 +256,9 @@ static int runs_of_l(PddoPpe *p, int lnz) {
         const int s = umfpack_di_get_numeric(Lp, Lj, Lx, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
                                              NULL, p->numeric);
         if (s != UMFPACK_OK) status = umf_fail(s, "get_numeric (L)");
+        /* U's runs are made and this is the last read of UMFPACK's factor:
+         * freed before L is regrouped, which lowers the peak memory */
+        if (status == NSPD_OK) umfpack_di_free_numeric(&p->numeric);
     }
     if (status == NSPD_OK) {
         for (int i = 0; i < n; i++)
@@ -288,8 +292,7 @@ int pddo_ppe_use_runs(PddoPpe *ppe) {
     const int s = umfpack_di_get_lunz(&lnz, &unz, &rows, &cols, &udiag, ppe->numeric);
     if (s != UMFPACK_OK) return umf_fail(s, "get_lunz");
     TRY(runs_of_u(ppe, unz));
-    TRY(runs_of_l(ppe, lnz));
-    umfpack_di_free_numeric(&ppe->numeric);
+    TRY(runs_of_l(ppe, lnz)); /* frees UMFPACK's factor */
     TRY(lu_runs_cut(&ppe->runs_u, &ppe->runs_l, &ppe->two_thread_share));
     const int64_t u = lu_runs_scratch(&ppe->runs_u), l = lu_runs_scratch(&ppe->runs_l);
     TRY(nspd_alloc(&ppe->runs_scratch, (size_t)(u > l ? u : l), sizeof(double)));

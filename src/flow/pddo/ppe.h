@@ -86,12 +86,14 @@ typedef struct {
 int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops);
 
 /* Solves with UMFPACK's factor stored by runs of pivots from now on
- * (flow.pressure_solve: runs; lu_runs.h): U by rows and L by columns are
- * taken from UMFPACK one after the other and its factor freed. The answers
- * differ from UMFPACK's solve in the last bits (4e-15 of max |p| on the
- * paper's cylinder), the solve takes half the time there. While the runs
- * are copied, UMFPACK's factor and a copy of U or L are both held: the
- * peak resident set there was 1,877 MB against 1,105 MB. NSPD_ERR_NOMEM. */
+ * (flow.pressure_solve: runs; lu_runs.h): U by rows and then L by columns
+ * are taken from UMFPACK, its factor freed as soon as L is copied, and the
+ * runs cut into two-thread stages (lu_runs_cut). The answers differ from
+ * UMFPACK's solve in the last bits (4e-15 of max |p| on the paper's
+ * cylinder) and are the same on one thread and two; the solve takes half
+ * the time there on one thread, a third on two. While U is regrouped,
+ * UMFPACK's factor and two copies of U are held: the peak resident set
+ * there was 1,623 MB against 1,105 MB. NSPD_ERR_NOMEM. */
 int pddo_ppe_use_runs(PddoPpe *ppe);
 
 /* p = K_L^-1 rhs, rhs with the meaning per row given above (n values; not
