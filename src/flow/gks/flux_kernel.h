@@ -243,6 +243,16 @@ NSPD_KERNEL void gks_moment_add(const GksMoments *m, int a, int b, const double 
     out[3] += s * (c[0] * e00 + c[1] * e10 + c[2] * e01 + c[3] * gks_e2(m, a, b));
 }
 
+/* out += s <u^a v^b psi> (gks_moment_add with c = (1, 0, 0, 0), without the
+ * products by the zero coefficients: each of them adds an exact zero to a
+ * finite sum, so the bits are gks_moment_add's; 15 flops instead of 84) */
+NSPD_KERNEL void gks_moment_add_unit(const GksMoments *m, int a, int b, double s, double out[4]) {
+    out[0] += s * GKS_M(m, a, b);
+    out[1] += s * GKS_M(m, a + 1, b);
+    out[2] += s * GKS_M(m, a, b + 1);
+    out[3] += s * GKS_E(m, a, b);
+}
+
 /* One side of the face (left: side = +1, its u > 0 half; right: side = -1). */
 typedef struct {
     GksPrim q;
@@ -294,9 +304,8 @@ NSPD_KERNEL void gks_flux_kernel(const double wl[4], const double nl[4], const d
 
     /* Interface equilibrium from the colliding half-space particles. */
     double w0[4] = {0.0, 0.0, 0.0, 0.0};
-    const double unit[4] = {1.0, 0.0, 0.0, 0.0};
-    gks_moment_add(&L.m, 0, 0, unit, L.q.rho, w0);
-    gks_moment_add(&R.m, 0, 0, unit, R.q.rho, w0);
+    gks_moment_add_unit(&L.m, 0, 0, L.q.rho, w0);
+    gks_moment_add_unit(&R.m, 0, 0, R.q.rho, w0);
     const GksPrim q0 = gks_prim_from_w(w0, K);
     const double p0 = 0.5 * q0.rho / q0.lam;
 

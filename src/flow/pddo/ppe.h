@@ -74,7 +74,7 @@ typedef struct {
     int64_t nnz;       /* nonzeros of K_L */
     double factor_nnz; /* nonzeros of L + U */
     double factor_bytes;
-    double rcond; /* UMFPACK's reciprocal condition estimate */
+    double rcond;   /* UMFPACK's reciprocal condition estimate */
     double solve_s; /* wall time in the triangular solves so far */
 } PddoPpe;
 
