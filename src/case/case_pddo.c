@@ -326,7 +326,7 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
                      &divergence));
     c->step.divergence = (PddoDivergenceTerm)divergence;
     int solve;
-    TRY(cfg_opt_enum(flow, "pressure_solve", PRESSURE_SOLVES, 0, &solve));
+    TRY(cfg_opt_enum(flow, "pressure_solve", PRESSURE_SOLVES, 1, &solve)); /* runs */
     c->pressure_runs = solve == 1;
     const double zero[2] = {0, 0};
     double force[2];
