@@ -218,7 +218,7 @@ static int64_t reach_from(const LuRuns *r, int64_t s, int64_t v) {
 /* A binary min-heap of (pivot, group, triangle) entries: each group's
  * current reach. */
 typedef struct {
-    int64_t key, group, at;
+    int64_t key, group;
     int tri;
 } Reach;
 
@@ -342,13 +342,13 @@ static double best_stage(Sweep *w, int64_t x, int64_t *a_out, int64_t *b_out) {
             if (group_lo(w->t[f], s) < x) continue;
             const int64_t m = reach_from(w->t[f], s, a);
             if (m < group_len(w->t[f], s))
-                heap_push(w->heap, &heap_n, (Reach){group_reach(w->t[f], s, m), s, m, f});
+                heap_push(w->heap, &heap_n, (Reach){group_reach(w->t[f], s, m), s, f});
         }
         while (heap_n > 0 && w->heap[0].key < a) {
             Reach r = heap_pop(w->heap, &heap_n);
-            r.at = reach_from(w->t[r.tri], r.group, a);
-            if (r.at < group_len(w->t[r.tri], r.group)) {
-                r.key = group_reach(w->t[r.tri], r.group, r.at);
+            const int64_t m = reach_from(w->t[r.tri], r.group, a);
+            if (m < group_len(w->t[r.tri], r.group)) {
+                r.key = group_reach(w->t[r.tri], r.group, m);
                 heap_push(w->heap, &heap_n, r);
             }
         }

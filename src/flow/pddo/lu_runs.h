@@ -85,9 +85,9 @@ int lu_runs_cut(LuRuns *first, LuRuns *second, double *share);
 /* The scratch lu_runs_solve takes, in doubles. */
 int64_t lu_runs_scratch(const LuRuns *r);
 
-/* y <- T^-1 y for the triangle T of r, on two threads where r->parallel
- * and the team allows (the same bits on one); scratch: lu_runs_scratch(r)
- * doubles. */
+/* y <- T^-1 y for the triangle T of r, each stage with two parts on two
+ * threads where the team allows (the same bits on one); scratch:
+ * lu_runs_scratch(r) doubles. */
 void lu_runs_solve(const LuRuns *r, double *y, double *scratch);
 
 /* Stored doubles (blocks and triangles) and indices, for memory reports. */

@@ -577,19 +577,19 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
            "set up in %.2f s\n",
            (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, f->ppe.rcond,
            f->ppe.pinned >= 0 ? "level pinned" : "level fixed by the outlet", f->setup_s);
-    if (f->ppe.runs)
+    if (f->ppe.runs) {
         APPEND("memory               %.1f MB in arrays (%.0f bytes per node), the LU factors by "
                "runs (%.1f MB) among them\n",
                (double)memory / 1e6, (double)memory / (double)c->n,
                8e-6 * (double)(lu_runs_entries(&f->ppe.runs_u) + lu_runs_entries(&f->ppe.runs_l)));
-    if (f->ppe.runs)
         APPEND("two-thread solve     %lld stages of independent parts: %.2f of one thread's "
                "entries on the longer path\n",
                (long long)f->ppe.runs_u.stages - 1, f->ppe.two_thread_share);
-    if (!f->ppe.runs)
+    } else {
         APPEND("memory               %.1f MB in arrays (%.0f bytes per node) and %.1f MB of LU "
                "factors\n",
                (double)memory / 1e6, (double)memory / (double)c->n, f->ppe.factor_bytes / 1e6);
+    }
 #undef APPEND
 }
 
