@@ -13,12 +13,14 @@
 # forces), and solids coupled to the flow: by the ghost-cell boundary
 # (the bond solid divided between the ranks) (the panel in a shock, the cracking cylinder:
 # moving walls) and by the volumetric penalty (the detonation chamber, the
-# hollow square in a blast with sealed faces), and a solid alone divided
-# between the ranks (the pre-cracked plate). Then the state moves between
-# process counts: a checkpoint written on 3 ranks resumes on 2 and on 1
-# (the flow, the coupled cylinder, the plate), and a field written on 3
+# hollow square in a blast with sealed faces), and solids alone divided
+# between the ranks (the pre-cracked plate; the correspondence solid's
+# hollow square and hollow cylinder, damage and fragments across the
+# ranks). Then the state moves between process counts: a checkpoint
+# written on 3 ranks resumes on 2 and on 1 (the flow, the coupled
+# cylinder, the plate, the hollow cylinder), and a field written on 3
 # ranks starts a run on 1 (and one written by 1 a run on 3), all with the
-# same bits. Then the refusals: a bad case, the correspondence solid, more
+# same bits. Then the refusals: a bad case, the classic correspondence force, more
 # ranks than rows and the PDDO flow, each exit status 2 with its message
 # printed once; and runs that blow up (the flow, the solid), stopped on
 # every rank with the message of one process.
@@ -64,6 +66,13 @@ check_body plate_crack plate "2 3 4"
 # ... and a 3D block under velocity Verlet (the ghosts' displacements
 # exchanged between the drift and the second force), bonds breaking.
 check_body block_3d block3d "2 3"
+# The correspondence solid alone, divided (solid/correspondence/halo.h):
+# the coarse hollow square (pressure loads, ductile damage; in plane
+# strain and in plane stress) and the coarse hollow cylinder (brittle
+# damage, debris and 8 fragments: the weights settle across the ranks).
+check_body hollow_square_pressure hsq "2 3 4"
+check_body hollow_square_pressure hsq_stress "3" --set solid.model=plane_stress
+check_body hollow_cylinder_pulse hcy "2 3 4"
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of
@@ -187,6 +196,23 @@ if on 3 "$plate" -o "$work/pck.3" --quiet $plate_args --set output.checkpoint_in
 else
     fail "the checkpointed solid on 3 ranks failed"
 fi
+# The correspondence solid's checkpoint (the pairs' material state in the
+# whole body's pair order, the bonds' damage and RK weights, the points'
+# flags) written on 3 ranks resumes on 2 and on 1 with the same bits.
+hcy_args=$(golden_overrides hollow_cylinder_pulse | while IFS= read -r o; do printf -- '--set\n%s\n' "$o"; done)
+hcy="$src/cases/hollow_cylinder_pulse.yaml"
+"$nspd" run "$hcy" -o "$work/hck.ref" --quiet $hcy_args --set output.checkpoint_interval=1.5e-5 ||
+    fail "the checkpointed correspondence solid of one process failed"
+if on 3 "$hcy" -o "$work/hck.3" --quiet $hcy_args --set output.checkpoint_interval=1.5e-5; then
+    for n in 2 1; do
+        cp -r "$work/hck.3" "$work/hck.3to$n"
+        resume_check "$work/hck.3to$n" "$n" solid "$work/hck.ref" \
+            "the correspondence solid's checkpoint of 3 ranks resumed on $n" "$hcy" $hcy_args \
+            --set output.checkpoint_interval=1.5e-5
+    done
+else
+    fail "the checkpointed correspondence solid on 3 ranks failed"
+fi
 # A solid that blows up (a given step 4 times the stable one) stops all
 # ranks with the message of one process.
 "$nspd" run "$plate" -o "$work/pblow.1" --quiet $plate_args --set time.dt=4e-7 2>/dev/null
@@ -250,8 +276,9 @@ refused() {
 }
 sod="$src/cases/sod.yaml"
 refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
-refused "the correspondence solid on 2 ranks" "the correspondence model runs on one process only, not on 2" 2 \
-    "$src/cases/hollow_square_pressure.yaml" -o "$work/bad"
+refused "the classic correspondence force on 2 ranks" \
+    "the classic correspondence force runs on one process only, not on 2" 2 \
+    "$src/cases/hollow_square_pressure.yaml" -o "$work/bad" --set solid.correspondence.force=classic
 refused "4 rows on 3 slabs" "4 rows over 3 processes" 3 "$sod" -o "$work/bad" --processes 1x3
 refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 "$sod" \
     -o "$work/bad" --processes 3x1

@@ -51,7 +51,7 @@ int64_t pd_broken_bonds(const BondBody *body) {
     for (int64_t b = 0; b < body->bond_count; b++) broken += body->bond_coef[b] == 0.0f;
     /* on several processes each end of a crossing bond is on its own
      * rank, and the sum of integers is exact */
-    if (body->halo) broken = comm_sum_i64(&body->halo->comm, broken);
+    if (body->halo) broken = comm_sum_i64(&body->halo->points.comm, broken);
     return broken / 2;
 }
 
@@ -98,12 +98,12 @@ static double body_sum(const BondBody *body, double (*term)(const BondBody *, in
         }
         return reduce_combine(partial);
     }
-    const int64_t total = body->halo->total;
+    const int64_t total = body->halo->points.total;
     double *mine = NULL, *all = NULL, sum = (double)NAN;
     if (nspd_alloc(&mine, (size_t)body->n + 1, sizeof *mine) == NSPD_OK &&
         nspd_alloc(&all, (size_t)total, sizeof *all) == NSPD_OK) {
         for (int64_t i = 0; i < body->n; i++) mine[i] = term(body, i);
-        (void)comm_allgatherv(&body->halo->comm, mine, (int)body->n, all);
+        (void)comm_allgatherv(&body->halo->points.comm, mine, (int)body->n, all);
         sum = reduce_sum(all, total);
     }
     nspd_free(&mine);

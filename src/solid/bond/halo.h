@@ -30,24 +30,14 @@
 
 #include "core/comm.h"
 #include "solid/bond/body.h"
+#include "solid/pd/halo.h"
 
 #include <stdint.h>
 
 typedef struct BondHalo {
-    NspdComm comm;
-    int64_t first;      /* the whole body's index of point 0 */
-    int64_t total;      /* points of the whole body */
+    PointHalo points;   /* the run, the ghosts and their exchange (solid/pd/halo.h) */
     int64_t bond_first; /* the whole body's index of bond 0 */
     int64_t bonds;      /* bonds of the whole body (each stored from both ends) */
-    int64_t *ghost;     /* per ghost, its index in the whole body */
-    /* the exchange: per rank q, the points sent to q (their local
-     * indices, grouped by q) and the ghosts received from q (a run of the
-     * ghosts: they are sorted by owner), in bytes and offsets */
-    int64_t sends;
-    int64_t *send_point;
-    int *send_bytes, *send_at, *recv_bytes, *recv_at;
-    double *send_buf, *recv_buf;
-    double seconds; /* wall time in the exchanges and the step's reductions so far */
 } BondHalo;
 
 /* Keeps this rank's part of the whole body `b` (see above) and its halo.

@@ -44,7 +44,8 @@ static int report_non_finite(const BondBody *body) {
                          (long long)body->step + 1, body->time);
                 break;
             }
-    if (body->halo) first = comm_first_failure(&body->halo->comm, first, text, (int)sizeof text);
+    if (body->halo)
+        first = comm_first_failure(&body->halo->points.comm, first, text, (int)sizeof text);
     if (first == INT64_MAX)
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "non-finite value reported but not found");
     return NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
@@ -71,8 +72,8 @@ int pd_step(BondBody *body, double dt) {
     /* on several processes all fail together (integers: exact) */
     if (body->halo) {
         const double t0 = nspd_wall_time();
-        bad = comm_max_i64(&body->halo->comm, bad) != 0;
-        body->halo->seconds += nspd_wall_time() - t0;
+        bad = comm_max_i64(&body->halo->points.comm, bad) != 0;
+        body->halo->points.seconds += nspd_wall_time() - t0;
     }
     if (bad) return report_non_finite(body);
     body->step++;
@@ -94,7 +95,7 @@ double pd_stable_time_step(const BondBody *body) {
         }
     }
     /* on several processes the least over all (-max(-x): exact) */
-    if (body->halo) min_dt2 = -comm_max(&body->halo->comm, -min_dt2);
+    if (body->halo) min_dt2 = -comm_max(&body->halo->points.comm, -min_dt2);
     return sqrt(min_dt2);
 }
 

@@ -141,22 +141,13 @@ static bool bond_attached(const void *impl, int64_t i) {
 static int io_whole(BondBody *b, Checkpoint *ck, const char *name, void *mine, size_t size,
                     bool bonds) {
     const BondHalo *h = b->halo;
-    const int64_t n = bonds ? b->bond_count : b->n;
-    if (!h) return checkpoint_io(ck, name, mine, (size_t)n * size);
-    const int64_t total = bonds ? h->bonds : h->total, first = bonds ? h->bond_first : h->first;
-    unsigned char *all = NULL, *own = mine;
-    TRY(nspd_alloc(&all, (size_t)total, size));
-    int status = NSPD_OK;
-    if (!checkpoint_reading(ck))
-        status = comm_allgatherv_bytes(&h->comm, own, (int)((size_t)n * size), all);
-    if (status == NSPD_OK) status = checkpoint_io(ck, name, all, (size_t)total * size);
-    if (status == NSPD_OK && checkpoint_reading(ck)) {
-        memcpy(own, all + (size_t)first * size, (size_t)n * size);
-        for (int64_t g = 0; !bonds && g < b->ghosts; g++)
-            memcpy(own + (size_t)(b->n + g) * size, all + (size_t)h->ghost[g] * size, size);
-    }
-    nspd_free(&all);
-    return status;
+    if (!h) return checkpoint_io(ck, name, mine, (size_t)(bonds ? b->bond_count : b->n) * size);
+    const PointHalo *p = &h->points;
+    if (bonds)
+        return halo_checkpoint_io(&p->comm, h->bond_first, b->bond_count, h->bonds, NULL, 0, ck,
+                                  name, mine, size);
+    return halo_checkpoint_io(&p->comm, p->first, b->n, p->total, p->ghost, b->ghosts, ck, name,
+                              mine, size);
 }
 
 /* The state a step changes: displacements, velocities, forces (velocity
@@ -185,7 +176,7 @@ static int bond_checkpoint(void *impl, Checkpoint *ck) {
 
 /* The whole body's points and stored bonds (this process's on one). */
 static int64_t whole_points(const BondBody *b) {
-    return b->halo ? b->halo->total : b->n;
+    return b->halo ? b->halo->points.total : b->n;
 }
 
 static int64_t whole_bonds(const BondBody *b) {
@@ -214,7 +205,7 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
         pd_damage(b, damage);
         for (int64_t i = 0; i < b->n; i++) max_damage = fmax(max_damage, damage[i]);
         nspd_free(&damage);
-        if (b->halo) max_damage = comm_max(&b->halo->comm, max_damage); /* exact */
+        if (b->halo) max_damage = comm_max(&b->halo->points.comm, max_damage); /* exact */
     } else {
         max_damage = (double)NAN;
     }
@@ -225,7 +216,7 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
                 run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);
     /* several processes: this one's wall time in the ghosts' exchanges
      * and the step's reductions */
-    if (b->halo) report_real(out, "exchange_s", b->halo->seconds);
+    if (b->halo) report_real(out, "exchange_s", b->halo->points.seconds);
 }
 
 static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {

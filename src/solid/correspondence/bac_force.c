@@ -551,8 +551,8 @@ void bac_inverse_weights(const BacSystem *s, const uint8_t *only, double *inv_w0
 void bac_force(const BacSystem *s, BacState *st, const double *const u[3], double *const force[3],
                double *F, double *work_point, double *work_bond) {
     const int dim = s->dim;
-    const int64_t n = s->n, nb = s->first[n], np = s->pairs.count;
-    double *inv_w0 = work_point, *S = work_point + n, *D = S + (int64_t)dim * dim * n,
+    const int64_t n = s->n, nb = s->first[n], np = s->pairs.count, na = s->n_all ? s->n_all : n;
+    double *inv_w0 = work_point, *S = work_point + na, *D = S + (int64_t)dim * dim * na,
            *Pb = work_bond;
     /* the plane-stress flags after P_b (where bac_work_bond counts them) */
     double *todo = st && st->material->plane_stress ? Pb + (int64_t)dim * dim * np : NULL;
@@ -560,6 +560,10 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
     const bool form_fb = st && !st->fb_given;
     rk_deformation_gradient(dim, n, u, form_fb ? st->u_prev : NULL, s->volume, s->first, s->nbr,
                             s->phi, F, form_fb ? st->F_prev : NULL);
+    if (s->exchange) { /* the pairs that cross read their ghost's F */
+        s->exchange(s->exchange_context, F, 9);
+        if (form_fb) s->exchange(s->exchange_context, st->F_prev, 9);
+    }
     /* what only the damage changes, unless the caller keeps it */
     const double *c = s->c, *phi_rev = s->phi_rev, *phi_sum = s->phi_sum;
     if (!c) {
@@ -580,5 +584,6 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
     else
         pairs_svk(s, u, F, Pb);
     stress_integrals(s, c, Pb, S, D);
+    if (s->exchange) s->exchange(s->exchange_context, S, dim * dim); /* the gather reads S_j */
     point_forces(s, phi_rev, phi_sum, S, D, force);
 }

@@ -69,6 +69,14 @@ typedef struct {
      * omega, bond_scale, phi and the volumes stay; NULL: formed at each
      * call (in work_bond and work_point) */
     const double *c, *phi_rev, *phi_sum;
+    /* On several processes (solid/correspondence/halo.h): the points
+     * with the ghosts after the n owned ones, the per-point scratch's
+     * length (0: n), and what fills the ghosts' entries of a per-point
+     * array of `width` doubles a point from their owners: F (and F at
+     * u_prev) after the first pass, S before the last (NULL: one process) */
+    int64_t n_all;
+    void (*exchange)(void *context, double *array, int width);
+    void *exchange_context;
 } BacSystem;
 
 /* The state of the hypoelastic J2 material (solid/correspondence/j2_kernel.h;
@@ -136,7 +144,7 @@ void bac_coefficients(const BacSystem *s, const double *inv_w0, const uint8_t *o
  * hyperelastic Saint Venant-Kirchhoff law (state NULL) or the hypoelastic
  * J2 material of *state, whose stresses it advances by the step from
  * state->u_prev to u (2D); F (9 n) receives the points' F at u.
- * work_point: bac_work_per_point(dim) n doubles (1 / w0, S and the direct
+ * work_point: bac_work_per_point(dim) n doubles (n_all with ghosts) (1 / w0, S and the direct
  * force per point, and phi_sum when s has none); work_bond:
  * bac_work_bond(s, plane stress) doubles (P_b per pair, component c of
  * pair p at [c pairs.count + p]; in plane stress a flag per pair; c and

@@ -8,6 +8,7 @@
 #include "core/parallel.h"
 #include "core/status.h"
 #include "solid/correspondence/bac_force.h"
+#include "solid/correspondence/halo.h"
 #include "core/neighbours.h"
 #include "solid/pd/lattice.h"
 #include "solid/pd/precrack.h"
@@ -59,6 +60,24 @@ static int state_arrays(CpdBody *b, size_t count) {
     TRY(nspd_alloc(&b->inverted, count, 1));
     if (b->cfg.pd.model == PD_PLANE_STRESS) TRY(nspd_alloc(&b->strain_zz, count, sizeof(double)));
     return NSPD_OK;
+}
+
+int cpd_body_pair_arrays(CpdBody *b) {
+    nspd_free(&b->sigma);
+    nspd_free(&b->eqps);
+    nspd_free(&b->principal);
+    nspd_free(&b->inverted);
+    nspd_free(&b->strain_zz);
+    nspd_free(&b->Fb);
+    nspd_free(&b->work_bond);
+    TRY(state_arrays(b, (size_t)b->pairs.count));
+    if (b->dim == 2) TRY(nspd_alloc(&b->Fb, 4 * (size_t)b->pairs.count, sizeof(double)));
+    /* the force's scratch with the coefficients kept (P_b per pair, and
+     * a flag per pair in plane stress) */
+    const BacSystem kept = {
+        .dim = b->dim, .n = b->n, .first = b->first, .pairs = b->pairs, .c = b->coef_c};
+    const int plane_stress = b->cfg.pd.model == PD_PLANE_STRESS ? 1 : 0;
+    return nspd_alloc(&b->work_bond, (size_t)bac_work_bond(&kept, plane_stress), sizeof(double));
 }
 
 static int alloc_arrays(CpdBody *b) {
@@ -172,14 +191,7 @@ static int build(CpdBody *b, CpdConfig *cfg) {
         TRY(nspd_alloc(&b->coef_c, nb, sizeof(double)));
         TRY(nspd_alloc(&b->phi_rev, dim * nb, sizeof(double)));
         TRY(nspd_alloc(&b->phi_sum, dim * n, sizeof(double)));
-        TRY(state_arrays(b, (size_t)b->pairs.count));
-        if (b->dim == 2) TRY(nspd_alloc(&b->Fb, 4 * (size_t)b->pairs.count, sizeof(double)));
-        /* the force's scratch with the coefficients kept (P_b per pair, and
-         * a flag per pair in plane stress) */
-        const BacSystem kept = {
-            .dim = b->dim, .n = b->n, .first = b->first, .pairs = b->pairs, .c = b->coef_c};
-        const int plane_stress = b->cfg.pd.model == PD_PLANE_STRESS ? 1 : 0;
-        TRY(nspd_alloc(&b->work_bond, (size_t)bac_work_bond(&kept, plane_stress), sizeof(double)));
+        TRY(cpd_body_pair_arrays(b));
     }
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++)
@@ -268,6 +280,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->strain_zz);
     nspd_free(&b->work_point);
     nspd_free(&b->work_bond);
+    cpd_halo_free(&b->halo);
     cpd_config_free(&b->cfg);
     memset(b, 0, sizeof *b);
 }

@@ -111,6 +111,11 @@ typedef struct {
     int64_t estimated_at; /* step of the last estimate */
     bool damage_grew;     /* since the last estimate */
     int64_t substeps_max; /* the most sub-steps one step took (cpd_step) */
+    /* On several processes (solid/correspondence/halo.h): n is this rank's
+     * run of points, the ghosts after them (positions, volumes, u, ok and
+     * the force's exchanged per-point values; no bonds), and the halo */
+    int64_t ghosts;
+    struct CpdHalo *halo;
 } CpdBody;
 
 /* Builds the body (taking ownership of *cfg, zeroing it): lattice points,
@@ -120,6 +125,9 @@ typedef struct {
  * start (a body thinner than the family needs: say which); NSPD_ERR_NOMEM. */
 int cpd_body_create(CpdBody *b, CpdConfig *cfg);
 void cpd_body_destroy(CpdBody *b);
+/* The bond-associated force's arrays of one entry a pair (the material
+ * state, zero; F_b; the force's scratch) for b->pairs, anew. NSPD_ERR_NOMEM. */
+int cpd_body_pair_arrays(CpdBody *b);
 
 /* One step of dt: velocity Verlet sub-steps (pressure loads at each new
  * time). Damage stiffens what is left of a family (its stress integral and

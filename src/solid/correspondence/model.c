@@ -2,6 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "solid/correspondence/halo.h"
 #include "solid/pd/lattice.h"
 
 #include <math.h>
@@ -9,7 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The model: the body, and the per-point fields it reports (scratch). */
+/* The model: the body, and the per-point fields it reports (scratch; on
+ * several processes the whole body's, gathered). */
 typedef struct {
     CpdBody body;
     double *stress[3]; /* xx, yy, xy of the point's Cauchy stress, Pa */
@@ -27,7 +29,10 @@ static int cpd_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     CpdConfig cc = *(CpdConfig *)cfg->model;
     nspd_free(&cfg->model); /* taken */
     int status = cpd_body_create(b, &cc);
-    const size_t n = (size_t)b->n;
+    /* on several processes every rank builds the whole body and keeps its
+     * part (halo.h) */
+    if (status == NSPD_OK && cfg->comm) status = cpd_body_divide(b, cfg->comm);
+    const size_t n = status == NSPD_OK ? (size_t)cpd_whole_points(b) : 1;
     for (int d = 0; d < 3 && status == NSPD_OK; d++) status = nspd_alloc(&cs->stress[d], n, 8);
     if (status == NSPD_OK) status = nspd_alloc(&cs->stress_zz, n, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&cs->mises, n, sizeof(double));
@@ -161,20 +166,30 @@ static bool cpd_attached(const void *impl, int64_t i) {
     return false;
 }
 
+/* output only: summed in sequence over the whole body's points, so the
+ * same at any thread or process count (the run's terms gathered) */
 static double kinetic_energy(const CpdBody *b) {
-    double e = 0.0; /* output only: sequential, so the same at any thread count */
+    double *term = NULL, *all = NULL, e = 0.0;
+    if (nspd_alloc(&term, (size_t)b->n + 1, sizeof *term) != NSPD_OK) return (double)NAN;
     for (int64_t i = 0; i < b->n; i++) {
         double v2 = 0.0;
         for (int d = 0; d < b->dim; d++) v2 += b->v[d][i] * b->v[d][i];
-        e += 0.5 * b->cfg.pd.density * b->volume[i] * v2;
+        term[i] = 0.5 * b->cfg.pd.density * b->volume[i] * v2;
     }
+    all = cpd_halo_whole(b, term, 1);
+    const int64_t n = cpd_whole_points(b);
+    for (int64_t i = 0; all && i < n; i++) e += all[i];
+    if (!all) e = (double)NAN;
+    nspd_free(&term);
+    nspd_free(&all);
     return e;
 }
 
+/* each pair broken counts from both its ends, wherever they are */
 static int64_t broken_pairs(const CpdBody *b) {
     int64_t k = 0;
     for (int64_t q = 0; q < b->bond_count; q++) k += b->damage[q] >= 1.0 ? 1 : 0;
-    return k / 2;
+    return cpd_halo_sum(b, k) / 2;
 }
 
 static double max_of(const double *a, int64_t n) {
@@ -183,13 +198,18 @@ static double max_of(const double *a, int64_t n) {
     return m;
 }
 
-/* The volume fraction of the points whose damage lies in [lo, hi). */
+/* The volume fraction of the points whose damage (of the run's points)
+ * lies in [lo, hi), summed in the whole body's order. */
 static double damaged_fraction(const CpdBody *b, const double *damage, double lo, double hi) {
+    double *d = cpd_halo_whole(b, damage, 1), *volume = cpd_halo_whole(b, b->volume, 1);
     double in = 0.0, all = 0.0;
-    for (int64_t i = 0; i < b->n; i++) {
-        all += b->volume[i];
-        in += damage[i] >= lo && damage[i] < hi ? b->volume[i] : 0.0;
+    const int64_t n = d && volume ? cpd_whole_points(b) : 0;
+    for (int64_t i = 0; i < n; i++) {
+        all += volume[i];
+        in += d[i] >= lo && d[i] < hi ? volume[i] : 0.0;
     }
+    nspd_free(&d);
+    nspd_free(&volume);
     return all > 0.0 ? in / all : 0.0;
 }
 
@@ -209,24 +229,31 @@ static int64_t root_of(int64_t *parent, int64_t i) {
     return i;
 }
 
+/* Over the whole body's rows of intact bonds (cpd_halo_intact_rows: the
+ * ranks' rows gathered, neighbours by whole index). */
 int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris) {
-    int64_t *parent;
-    if (nspd_alloc(&parent, (size_t)b->n, sizeof(int64_t)) != NSPD_OK) return -1;
-    for (int64_t i = 0; i < b->n; i++) parent[i] = i;
+    int64_t *parent = NULL, *first = NULL, *nbr = NULL;
+    const int64_t n = cpd_whole_points(b);
+    if (cpd_halo_intact_rows(b, &first, &nbr) != NSPD_OK ||
+        nspd_alloc(&parent, (size_t)n + 1, sizeof(int64_t)) != NSPD_OK) {
+        nspd_free(&first);
+        nspd_free(&nbr);
+        return -1;
+    }
+    for (int64_t i = 0; i < n; i++) parent[i] = i;
     int64_t loose = 0;
-    for (int64_t i = 0; i < b->n; i++) {
-        bool any = false;
-        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
-            if (b->damage[k] >= 1.0) continue;
-            any = true;
-            const int64_t ri = root_of(parent, i), rj = root_of(parent, b->nbr[k]);
+    for (int64_t i = 0; i < n; i++) {
+        for (int64_t k = first[i]; k < first[i + 1]; k++) {
+            const int64_t ri = root_of(parent, i), rj = root_of(parent, nbr[k]);
             if (ri != rj) parent[ri < rj ? rj : ri] = ri < rj ? ri : rj;
         }
-        loose += any ? 0 : 1;
+        loose += first[i + 1] > first[i] ? 0 : 1;
     }
     int64_t roots = 0;
-    for (int64_t i = 0; i < b->n; i++) roots += root_of(parent, i) == i ? 1 : 0;
+    for (int64_t i = 0; i < n; i++) roots += root_of(parent, i) == i ? 1 : 0;
     nspd_free(&parent);
+    nspd_free(&first);
+    nspd_free(&nbr);
     if (debris) *debris = loose;
     return roots - loose; /* a loose point is its own root */
 }
@@ -241,11 +268,11 @@ static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_los
     else
         for (int64_t k = 0; k < b->bond_count; k++)
             if (b->damage[k] < 1.0) m = fmax(m, b->eqps[b->pairs.of[k]]);
-    *max_eqps = m;
+    *max_eqps = cpd_halo_max(b, m);        /* exact */
     cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
     *mass_loss = cpd_mass_loss(b, cs->broken);
     *partly = cpd_partly_damaged(b, cs->broken);
-    *max_damage = max_of(cs->broken, b->n);
+    *max_damage = cpd_halo_max(b, max_of(cs->broken, b->n));
 }
 
 static void cpd_history(const void *impl, Report *row) {
@@ -265,12 +292,12 @@ static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     const CpdBody *b = &cs->body;
     double eqps, loss, dmax, partly;
     state_numbers(cs, &eqps, &loss, &dmax, &partly);
-    report_int(out, "points", b->n);
-    report_int(out, "bonds", b->bond_count / 2);
+    const int64_t bonds = cpd_whole_bonds(b);
+    report_int(out, "points", cpd_whole_points(b));
+    report_int(out, "bonds", bonds / 2);
     const int64_t broken = broken_pairs(b);
     report_int(out, "broken_bonds", broken);
-    report_real(out, "broken_bond_fraction",
-                b->bond_count ? 2.0 * (double)broken / (double)b->bond_count : 0.0);
+    report_real(out, "broken_bond_fraction", bonds ? 2.0 * (double)broken / (double)bonds : 0.0);
     report_real(out, "max_damage", dmax);
     report_real(out, "max_plastic_strain", eqps);
     report_real(out, "mass_loss", loss);
@@ -282,7 +309,9 @@ static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "stable_dt_damaged_s", b->stable_now);
     report_int(out, "substeps_max", b->substeps_max);
     report_real(out, "bond_updates_per_s",
-                run->wall_s > 0 ? (double)b->bond_count * (double)run->steps / run->wall_s : 0.0);
+                run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);
+    /* several processes: this one's wall time in the ghosts' exchanges */
+    if (b->halo) report_real(out, "exchange_s", b->halo->points.seconds + b->halo->bonds.seconds);
 }
 
 static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
@@ -296,9 +325,10 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
     if (c->force == CPD_FORCE_CLASSIC)
         APPEND("stabilisation        C_s %.4g (Silling 2017 zero-energy penalty)\n",
                c->stabilisation);
-    APPEND("points               %lld\n", (long long)b->n);
-    APPEND("bonds                %lld (%.1f per point, %s family)\n", (long long)b->bond_count / 2,
-           (double)b->bond_count / (double)b->n, CPD_FAMILY_NAMES[c->family]);
+    const int64_t points = cpd_whole_points(b), bonds = cpd_whole_bonds(b);
+    APPEND("points               %lld\n", (long long)points);
+    APPEND("bonds                %lld (%.1f per point, %s family)\n", (long long)bonds / 2,
+           (double)bonds / (double)points, CPD_FAMILY_NAMES[c->family]);
     APPEND("spacing              %.6g m\n", b->spacing);
     APPEND("horizon              %.6g m (%.4g x spacing)\n", b->delta, c->pd.horizon_factor);
     APPEND("material             E %.6g Pa, nu %.4g, yield %.6g Pa, hardening %.6g Pa\n",
@@ -316,7 +346,8 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
 
 static void cpd_brief(const void *impl, char *buf, size_t size) {
     const CpdBody *b = &((const CpdSolid *)impl)->body;
-    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)b->n, (long long)b->bond_count / 2);
+    snprintf(buf, size, "%lld points, %lld bonds, ", (long long)cpd_whole_points(b),
+             (long long)cpd_whole_bonds(b) / 2);
 }
 
 /* Per point: the omega-weighted mean of its intact bonds' unrotated stress
@@ -366,6 +397,15 @@ static void cpd_fields(const void *impl, FieldSet *out) {
         cs->jacobian[i] = b->force_valid ? Fi[0] * Fi[4] - Fi[1] * Fi[3] : 1.0;
     }
     cpd_point_damage(b, NULL, cs->broken);
+    if (b->halo) { /* the whole body's (solid.c writes each rank's piece of them) */
+        double *const field[8] = {cs->stress[0], cs->stress[1], cs->stress[2], cs->stress_zz,
+                                  cs->mises,     cs->plastic,   cs->jacobian,  cs->broken};
+        for (int f = 0; f < 8; f++) {
+            double *all = cpd_halo_whole(b, field[f], 1);
+            if (all) memcpy(field[f], all, (size_t)cpd_whole_points(b) * sizeof(double));
+            nspd_free(&all);
+        }
+    }
     out->field[out->field_count++] =
         (FieldRef){"stress", 3, {cs->stress[0], cs->stress[1], cs->stress[2]}};
     out->field[out->field_count++] = (FieldRef){"stress_zz", 1, {cs->stress_zz, NULL, NULL}};
@@ -405,32 +445,45 @@ static void cpd_fields(const void *impl, FieldSet *out) {
  * classic force has none) and the F_i of the last force pass (fields read it). */
 static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     CpdBody *b = &((CpdSolid *)impl)->body;
-    const size_t n = (size_t)b->n * sizeof(double), nb = (size_t)b->bond_count;
-    /* the state count: points (classic) or bond pairs */
-    const size_t ns = b->cfg.force == CPD_FORCE_CLASSIC ? (size_t)b->n : (size_t)b->pairs.count;
+    const size_t d8 = sizeof(double);
     static const char *const NAMES[4][3] = {{"cpd.u0", "cpd.u1", "cpd.u2"},
                                             {"cpd.v0", "cpd.v1", "cpd.v2"},
                                             {"cpd.force0", "cpd.force1", "cpd.force2"},
                                             {"cpd.external0", "cpd.external1", "cpd.external2"}};
+    /* records in the one process's layout on any number (halo.h) */
     for (int d = 0; d < b->dim && d < 3; d++) {
-        TRY(checkpoint_io(ck, NAMES[0][d], b->u[d], n));
-        TRY(checkpoint_io(ck, NAMES[1][d], b->v[d], n));
-        TRY(checkpoint_io(ck, NAMES[2][d], b->force[d], n));
-        TRY(checkpoint_io(ck, NAMES[3][d], b->external[d], n));
+        TRY(cpd_halo_io_points(b, ck, NAMES[0][d], b->u[d], d8));
+        TRY(cpd_halo_io_points(b, ck, NAMES[1][d], b->v[d], d8));
+        TRY(cpd_halo_io_points(b, ck, NAMES[2][d], b->force[d], d8));
+        TRY(cpd_halo_io_points(b, ck, NAMES[3][d], b->external[d], d8));
     }
-    TRY(checkpoint_io(ck, "cpd.sigma", b->sigma, 4 * ns * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.eqps", b->eqps, ns * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.damage", b->damage, nb * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.scale", b->scale, nb * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.principal", b->principal, ns * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, ns));
-    if (b->strain_zz) TRY(checkpoint_io(ck, "cpd.strain_zz", b->strain_zz, ns * sizeof(double)));
-    if (b->phi) TRY(checkpoint_io(ck, "cpd.phi", b->phi, (size_t)b->dim * nb * sizeof(double)));
-    TRY(checkpoint_io(ck, "cpd.ok", b->ok, (size_t)b->n));
-    TRY(checkpoint_io(ck, "cpd.F", b->work_point, 9 * n));
+    /* the material state: per point (classic) or per pair */
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        const size_t n = (size_t)b->n;
+        TRY(checkpoint_io(ck, "cpd.sigma", b->sigma, 4 * n * d8));
+        TRY(checkpoint_io(ck, "cpd.eqps", b->eqps, n * d8));
+    } else {
+        TRY(cpd_halo_io_pairs(b, ck, "cpd.sigma", b->sigma, d8, 4));
+        TRY(cpd_halo_io_pairs(b, ck, "cpd.eqps", b->eqps, d8, 1));
+    }
+    TRY(cpd_halo_io_bonds(b, ck, "cpd.damage", b->damage, d8));
+    TRY(cpd_halo_io_bonds(b, ck, "cpd.scale", b->scale, d8));
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        const size_t n = (size_t)b->n;
+        TRY(checkpoint_io(ck, "cpd.principal", b->principal, n * d8));
+        TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, n));
+        if (b->strain_zz) TRY(checkpoint_io(ck, "cpd.strain_zz", b->strain_zz, n * d8));
+    } else {
+        TRY(cpd_halo_io_pairs(b, ck, "cpd.principal", b->principal, d8, 1));
+        TRY(cpd_halo_io_pairs(b, ck, "cpd.inverted", b->inverted, 1, 1));
+        if (b->strain_zz) TRY(cpd_halo_io_pairs(b, ck, "cpd.strain_zz", b->strain_zz, d8, 1));
+    }
+    if (b->phi) TRY(cpd_halo_io_bonds(b, ck, "cpd.phi", b->phi, (size_t)b->dim * d8));
+    TRY(cpd_halo_io_points(b, ck, "cpd.ok", b->ok, 1));
+    TRY(cpd_halo_io_points(b, ck, "cpd.F", b->work_point, 9 * d8));
     for (int d = 0; d < b->dim && d < 3; d++) {
         static const char *const MODE[3] = {"cpd.mode0", "cpd.mode1", "cpd.mode2"};
-        TRY(checkpoint_io(ck, MODE[d], b->mode[d], n));
+        TRY(cpd_halo_io_points(b, ck, MODE[d], b->mode[d], d8));
     }
     TRY(checkpoint_io_double(ck, "cpd.stable_now", &b->stable_now));
     TRY(checkpoint_io_int64(ck, "cpd.estimated_at", &b->estimated_at));
@@ -458,6 +511,7 @@ static int cpd_config_dim(const void *model) {
 
 const SolidOps CPD_SOLID_OPS = {
     .name = "correspondence",
+    .distributed = true,
     .config_free = cpd_config_free_model,
     .config_dim = cpd_config_dim,
     .estimate = cpd_estimate,

@@ -9,10 +9,17 @@
 #include "core/status.h"
 #include "solid/correspondence/bac_force.h"
 #include "solid/correspondence/classic_force.h"
+#include "solid/correspondence/halo.h"
 #include "solid/correspondence/rk_gradient.h"
 
 #include <math.h>
 #include <string.h>
+
+/* BacSystem.exchange on several processes: a per-point array's ghosts */
+static void exchange_points(void *body, double *array, int width) {
+    void *arrays[1] = {array};
+    cpd_halo_exchange(body, arrays, 1, (size_t)width * sizeof(double));
+}
 
 static BacSystem system_of(const CpdBody *b) {
     BacSystem s = {.dim = b->dim,
@@ -30,7 +37,10 @@ static BacSystem system_of(const CpdBody *b) {
                    .inv_w0 = b->inv_w0,
                    .c = b->coef_c,
                    .phi_rev = b->phi_rev,
-                   .phi_sum = b->phi_sum};
+                   .phi_sum = b->phi_sum,
+                   .n_all = b->n + b->ghosts,
+                   .exchange = b->halo ? exchange_points : NULL,
+                   .exchange_context = (void *)b};
     for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
     return s;
 }
@@ -161,7 +171,7 @@ static int64_t update_damage(CpdBody *b) {
     double *dpair = b->work_bond;
     /* most steps break nothing: then the pass over the bonds is skipped
      * (b->redo is read only when something grew) */
-    if (by_pair && pair_damage(b, dpair) == 0) return 0;
+    if (by_pair && cpd_halo_sum(b, pair_damage(b, dpair)) == 0) return 0; /* all ranks alike */
 #pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         uint8_t redo = 0;
@@ -177,6 +187,7 @@ static int64_t update_damage(CpdBody *b) {
         b->redo[i] = redo;
         b->dirty[i] |= redo;
     }
+    grown = cpd_halo_sum(b, grown); /* the weights settle on every rank or none */
     return grown > 0 ? grown + cpd_settle_weights(b) : 0;
 }
 
@@ -188,23 +199,35 @@ static void refresh_weights(CpdBody *b) {
         BacSystem s = system_of(b);
         s.inv_w0 = NULL;
         s.c = s.phi_rev = s.phi_sum = NULL;
-        uint8_t *near = b->near;
-        memcpy(near, b->dirty, (size_t)b->n);
-        /* serial: few points change at a step, and a neighbour may be
-         * marked from several */
-        for (int64_t i = 0; i < b->n; i++)
-            if (b->dirty[i])
-                for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) near[b->nbr[k]] = 1;
         bac_inverse_weights(&s, b->dirty, b->inv_w0);
+        /* several processes: the ghosts' 1 / w0 and whether their
+         * families changed */
+        void *w0[1] = {b->inv_w0}, *dirty[1] = {b->dirty};
+        cpd_halo_exchange(b, w0, 1, sizeof(double));
+        cpd_halo_exchange(b, dirty, 1, 1);
+        uint8_t *near = b->near;
+        memcpy(near, b->dirty, (size_t)(b->n + b->ghosts));
+        /* serial: few points change at a step, and a neighbour may be
+         * marked from several; a point next to a dirty ghost is marked
+         * from its own row (families are symmetric) */
+        for (int64_t i = 0; i < b->n; i++)
+            for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
+                const int32_t j = b->nbr[k];
+                if (b->dirty[i]) near[j] = 1;
+                if (j >= b->n && b->dirty[j]) near[i] = 1;
+            }
         bac_coefficients(&s, b->inv_w0, near, b->coef_c, b->phi_rev, b->phi_sum);
+        cpd_halo_reverse_weights(b); /* the crossing bonds' phi_ji V_j */
     }
-    memset(b->dirty, 0, (size_t)b->n);
+    memset(b->dirty, 0, (size_t)(b->n + b->ghosts));
 }
 
 int64_t cpd_settle_weights(CpdBody *b) {
     int64_t grown = 0;
     for (int pass = 0; pass < 1000; pass++) {
-        if (cpd_shape_check(b, b->redo) == 0) break;
+        if (cpd_halo_sum(b, cpd_shape_check(b, b->redo)) == 0) break; /* all ranks alike */
+        void *ok[1] = {b->ok};
+        cpd_halo_exchange(b, ok, 1, 1); /* a bond breaks from both ends */
         int64_t broke = 0;
 #pragma omp parallel for schedule(static) reduction(+ : broke) if (b->n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < b->n; i++) {
@@ -219,6 +242,7 @@ int64_t cpd_settle_weights(CpdBody *b) {
             b->redo[i] = redo && b->ok[i];
             b->dirty[i] |= redo;
         }
+        broke = cpd_halo_sum(b, broke);
         if (broke == 0) break;
         grown += broke;
     }
@@ -259,9 +283,10 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
      * and the stateless force's F */
     st.Fb = b->Fb;
     st.fb_given = b->Fb_given ? 1 : 0;
-    st.F_prev = b->work_point + 9 * b->n;
-    bac_force(&s, state ? &st : NULL, u, L, state ? b->work_point : b->work_point + 9 * b->n,
-              b->work_point + 18 * b->n, b->work_bond);
+    const int64_t na = b->n + b->ghosts; /* the ghosts' F and S after the run's */
+    st.F_prev = b->work_point + 9 * na;
+    bac_force(&s, state ? &st : NULL, u, L, state ? b->work_point : b->work_point + 9 * na,
+              b->work_point + 18 * na, b->work_bond);
     if (state) {
         b->Fb_now = true;
         b->Fb_given = false;
@@ -308,7 +333,8 @@ static PdMotion motion_of(CpdBody *b) {
  * kicks move only v), its pairs' F_b are F_b at u_prev, so the next force
  * forms F only at u (the same bits as forming both). */
 static void remember_u(CpdBody *b) {
-    for (int d = 0; d < b->dim; d++) memcpy(b->u_prev[d], b->u[d], (size_t)b->n * sizeof(double));
+    for (int d = 0; d < b->dim; d++) /* the ghosts' too: exchanged after the last drift */
+        memcpy(b->u_prev[d], b->u[d], (size_t)(b->n + b->ghosts) * sizeof(double));
     b->Fb_given = b->Fb_now;
     b->Fb_now = false;
 }
@@ -321,7 +347,8 @@ static int substep(CpdBody *b, double dt) {
     }
     pd_kick(&m, 0.5 * dt);
     remember_u(b);
-    const bool bad = pd_drift(&m, dt);
+    const bool bad = cpd_halo_sum(b, pd_drift(&m, dt)) > 0; /* all ranks fail together */
+    cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
     cpd_force(b, b->time + dt);
     pd_kick(&m, 0.5 * dt);
     b->force_valid = true;
@@ -355,18 +382,37 @@ int cpd_step(CpdBody *b, double dt) {
     return NSPD_OK;
 }
 
-/* sum_i a_i b_i over both components, in the fixed order of core/reduce.h */
-static double dot(const CpdBody *b, double *const a[3], double *const c[3]) {
+/* sum_i a_i b_i over both components, in the fixed order of core/reduce.h
+ * over the whole body; on several processes the products gathered in its
+ * order (products: dim n doubles of scratch), so every rank adds what one
+ * process adds. */
+static double dot(const CpdBody *b, double *const a[3], double *const c[3], double *products) {
+    const int dim = b->dim;
+    const double *terms = products;
+    double *whole = NULL;
+    if (b->halo) {
+        for (int64_t i = 0; i < b->n; i++)
+            for (int d = 0; d < dim; d++) products[dim * i + d] = a[d][i] * c[d][i];
+        whole = cpd_halo_whole(b, products, dim);
+        if (!whole) return (double)NAN;
+        terms = whole;
+    }
+    const int64_t n = cpd_whole_points(b);
     double partial[REDUCE_CHUNKS];
-#pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int ch = 0; ch < REDUCE_CHUNKS; ch++) {
         int64_t lo, hi;
-        reduce_chunk(b->n, ch, &lo, &hi);
+        reduce_chunk(n, ch, &lo, &hi);
         double s = 0.0;
-        for (int64_t i = lo; i < hi; i++)
-            for (int d = 0; d < b->dim; d++) s += a[d][i] * c[d][i];
+        if (whole)
+            for (int64_t i = lo; i < hi; i++)
+                for (int d = 0; d < dim; d++) s += terms[dim * i + d];
+        else
+            for (int64_t i = lo; i < hi; i++)
+                for (int d = 0; d < dim; d++) s += a[d][i] * c[d][i];
         partial[ch] = s;
     }
+    nspd_free(&whole);
     return reduce_combine(partial);
 }
 
@@ -387,20 +433,26 @@ static const double CPD_POWER_MARGIN = 1.02;
 
 double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
     const int dim = b->dim;
-    const int64_t n = b->n;
+    /* the run's points, with their ghosts (the probes'), and the whole body's */
+    const int64_t n = b->n, na = b->n + b->ghosts, whole = cpd_whole_points(b);
     double *mem = NULL;
-    if (nspd_alloc(&mem, (size_t)(3 * dim) * (size_t)n, sizeof(double)) != NSPD_OK)
+    if (nspd_alloc(&mem, (size_t)(4 * dim) * (size_t)na, sizeof(double)) != NSPD_OK)
         return b->stable_now;
     double *v[3] = {NULL}, *probe[3] = {NULL}, *Lp[3] = {NULL}, *Lm[3] = {NULL};
+    double *products = mem + (int64_t)(3 * dim) * na;
     for (int d = 0; d < dim; d++) {
         v[d] = b->mode[d];
-        probe[d] = mem + (int64_t)d * n;
-        Lp[d] = mem + (int64_t)(dim + d) * n;
-        Lm[d] = mem + (int64_t)(2 * dim + d) * n;
+        probe[d] = mem + (int64_t)d * na;
+        Lp[d] = mem + (int64_t)(dim + d) * na;
+        Lm[d] = mem + (int64_t)(2 * dim + d) * na;
     }
     double vnorm = 0.0;
-    if (warm) vnorm = sqrt(dot(b, v, v) / (double)n);
+    if (warm) vnorm = sqrt(dot(b, v, v, products) / (double)whole);
+    /* the pseudo-random sequence runs over the whole body's points: a
+     * run's starts where its first point's does */
     uint64_t h = 0x9E3779B97F4A7C15ull;
+    const int64_t skipped = b->halo ? b->halo->points.first * dim : 0;
+    for (int64_t k = 0; k < skipped; k++) h ^= h << 13, h ^= h >> 7, h ^= h << 17;
     for (int64_t i = 0; i < n; i++)
         for (int d = 0; d < dim; d++) {
             h ^= h << 13, h ^= h >> 7, h ^= h << 17;
@@ -412,21 +464,23 @@ double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
         }
     double lambda = 0.0;
     for (int it = 0; it < iterations; it++) {
-        const double norm = sqrt(dot(b, v, v));
+        const double norm = sqrt(dot(b, v, v, products));
         if (!(norm > 0.0)) break;
-        const double e = 1e-7 * b->spacing * sqrt((double)n);
+        const double e = 1e-7 * b->spacing * sqrt((double)whole);
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++) v[d][i] /= norm;
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++) probe[d][i] = e * v[d][i];
+        cpd_halo_exchange(b, (void *const *)probe, dim, sizeof(double));
         body_force(b, false, (const double *const *)probe, Lp);
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++) probe[d][i] = -e * v[d][i];
+        cpd_halo_exchange(b, (void *const *)probe, dim, sizeof(double));
         body_force(b, false, (const double *const *)probe, Lm);
         for (int d = 0; d < dim; d++)
             for (int64_t i = 0; i < n; i++)
                 Lp[d][i] = -(Lp[d][i] - Lm[d][i]) / (2.0 * e * b->cfg.pd.density);
-        lambda = dot(b, v, Lp);
+        lambda = dot(b, v, Lp, products);
         for (int d = 0; d < dim; d++) memcpy(v[d], Lp[d], (size_t)n * sizeof(double));
     }
     nspd_free(&mem);

@@ -1,0 +1,90 @@
+/* A correspondence body divided between processes (issue 28: a solid
+ * alone on several ranks), bitwise the run of one process.
+ *
+ * Every rank builds the whole body (lattice, families, RK weights, the
+ * stable step: the same bits everywhere), then keeps its run of points in
+ * the Morton order and, as ghosts, the points its bonds reach (the point
+ * halo of solid/pd/halo.h, as the bond-based body), and frees the rest.
+ * So the set-up's peak memory is the whole body's on every rank; a step
+ * holds the rank's part.
+ *
+ * What a step takes from the owners (cpd_step):
+ * - u of the ghosts after every drift (u_prev: the ghosts' u at the
+ *   step's start);
+ * - F of the ghosts after the force's first pass (and F at u_prev where
+ *   it is formed), and S before the last (BacSystem.exchange);
+ * - when damage grew: the ghosts' ok flags at each pass of the settling,
+ *   their 1 / w0 and dirty flags, and, per bond that crosses (i -> j, j a
+ *   ghost), the RK weight phi_ji of its reverse bond, which j's owner holds
+ *   (the bonds' halo: the reverse bonds are its "ghosts").
+ * A pair that crosses has no reverse bond on either rank, so each keeps
+ * it as a pair of its own; both form the same F_b (negated operands: the
+ * same bits) and advance the same J2 state. Whether damage grew, the
+ * settling's loop and a numerical failure are decided by all ranks
+ * together (integers: exact); the stable step's dot products and the
+ * diagnostics' sums gather the terms in the whole body's order.
+ *
+ * The classic force is not divided (its T_ji per bond would be one more
+ * exchange): refused on several processes. */
+#ifndef NSPD_SOLID_CORRESPONDENCE_HALO_H
+#define NSPD_SOLID_CORRESPONDENCE_HALO_H
+
+#include "solid/correspondence/body.h"
+#include "solid/pd/halo.h"
+
+typedef struct CpdHalo {
+    PointHalo points; /* the run of points, its ghosts and their exchange */
+    /* the run of bonds (the rows of the run's points, the whole body's
+     * [bonds.first, ...)); its "ghosts": the reverse bonds of the bonds
+     * that cross, exchanged as the RK weights phi (dim a bond) */
+    PointHalo bonds;
+    int64_t *cross_bond; /* per reverse bond asked, the local bond it is the reverse of */
+    /* the pairs: per local pair its index among the whole body's, and
+     * whether its canonical bond lies in this run (the checkpoint's) */
+    int64_t pairs_total;
+    int64_t *pair_whole;
+    uint8_t *pair_here;
+} CpdHalo;
+
+/* Keeps this rank's part of the whole body `b` (see above). Nothing on
+ * one process. NSPD_ERR_INPUT: the classic force, or fewer points than
+ * processes; NSPD_ERR_NOMEM. */
+int cpd_body_divide(CpdBody *b, const NspdComm *comm);
+void cpd_halo_free(CpdHalo **h);
+
+/* The ghosts' entries of `count` per-point arrays of `bytes` a point
+ * (collective; nothing on one process). */
+void cpd_halo_exchange(CpdBody *b, void *const *arrays, int count, size_t bytes);
+
+/* phi_rev of the bonds that cross from their owners' RK weights
+ * (collective; after the weights or the damage changed). */
+void cpd_halo_reverse_weights(CpdBody *b);
+
+/* Integer sum and max over the ranks (the value itself on one process). */
+int64_t cpd_halo_sum(const CpdBody *b, int64_t mine);
+double cpd_halo_max(const CpdBody *b, double mine);
+
+/* The whole body's `width` values a point in its order: this rank's n
+ * points' `mine` gathered in rank order into a new array (nspd_alloc'd;
+ * the caller frees it), or on one process a copy. NULL: no memory. */
+double *cpd_halo_whole(const CpdBody *b, const double *mine, int width);
+
+/* The whole body's rows of intact bonds (damage < 1), neighbours by whole
+ * index: *first (points + 1) and *nbr, new arrays the caller frees (the
+ * ranks' rows gathered in rank order). NSPD_ERR_NOMEM. */
+int cpd_halo_intact_rows(const CpdBody *b, int64_t **first, int64_t **nbr);
+
+/* Whole-body counts: points, stored bonds. */
+int64_t cpd_whole_points(const CpdBody *b);
+int64_t cpd_whole_bonds(const CpdBody *b);
+
+/* Checkpoint records in the one process's layout: a per-point array
+ * (ghosts read back too), a per-bond one (the run's rows), and a per-pair
+ * one of `components` arrays of the pairs, component c of pair p at
+ * state + size (c pairs.count + p). */
+int cpd_halo_io_points(CpdBody *b, Checkpoint *ck, const char *name, void *mine, size_t size);
+int cpd_halo_io_bonds(CpdBody *b, Checkpoint *ck, const char *name, void *mine, size_t size);
+int cpd_halo_io_pairs(CpdBody *b, Checkpoint *ck, const char *name, void *state, size_t size,
+                      int components);
+
+#endif
