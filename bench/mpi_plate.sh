@@ -1,26 +1,30 @@
 #!/bin/sh
-# Strong scaling of a solid alone (issue 28; docs/PERFORMANCE.md "GKS on
-# several processes"): the pre-cracked plate of paper 000 at its own
-# resolution (253,000 points, 3.5 million bonds) divided by points
-# (solid/bond/halo.h) on 1 rank x 1 thread, 1 rank x 2 threads and 2 ranks
-# x 1 thread, alternated, ROUNDS rounds, to t = END (the case's history
-# every 5 steps: energies, the crack-tip probe; no field files). Prints
-# one line per run and the medians: ms per step of the whole run and of
-# the solid's steps, the share in the ghosts' exchange and reductions,
-# and the peak memory of rank 0.
-#   usage: bench/mpi_plate.sh [NSPD] [END] [ROUNDS]
+# Strong scaling of a solid (issue 28; docs/PERFORMANCE.md "GKS on
+# several processes"): by default the pre-cracked plate of paper 000 at
+# its own resolution (253,000 points, 3.5 million bonds) divided by points
+# (solid/bond/halo.h), or CASE with its --set arguments (a correspondence
+# solid: solid/correspondence/halo.h), on 1 rank x 1 thread, 1 rank x 2
+# threads and 2 ranks x 1 thread, alternated, ROUNDS rounds, to t = END
+# (the case's history; no field files). Prints one line per run and the
+# medians: ms per step of the whole run and of the solid's steps, the
+# share in the solid's ghosts' exchange and reductions, and the peak
+# memory of rank 0.
+#   usage: bench/mpi_plate.sh [NSPD] [END] [ROUNDS] [CASE [ARGS...]]
 set -eu
 nspd=${1:-build/nspd}
 end=${2:-2.67e-6}
 rounds=${3:-5}
+case_file=${4:-cases/plate_crack.yaml}
+[ $# -ge 4 ] && shift 4 || shift $#
+extra=$*
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 run() { # ranks threads dir
     ranks=$1 threads=$2 dir=$3
-    set -- cases/plate_crack.yaml --quiet --force --set "time.end=$end" \
-        --set output.field_interval=1 --set output.plots=false -o "$dir"
+    set -- "$case_file" --quiet --force --set "time.end=$end" \
+        --set output.field_interval=1 --set output.plots=false -o "$dir" $extra
     if [ "$ranks" -eq 1 ]; then
         OMP_NUM_THREADS=$threads "$nspd" run "$@"
     else
@@ -37,7 +41,7 @@ for r in $(seq "$rounds"); do
         dir="$work/r$1t$2"
         run "$1" "$2" "$dir"
         s="$dir/summary.json"
-        echo "$1 $2 $(key steps "$s") $(key wall_s "$s") $(key solid_s "$s") $(key exchange_s "$s") $(key peak_rss_mb "$s")" |
+        echo "$1 $2 $(key steps "$s") $(key wall_s "$s") $(key solid_s "$s") $(key solid_exchange_s "$s") $(key peak_rss_mb "$s")" |
             awk -v round="$r" '{ printf "round %d: %d rank x %d thread: %d steps, %.2f ms/step, solid %.2f ms/step, exchange %.3f ms/step, rss %.0f MB\n",
                 round, $1, $2, $3, 1e3 * $4 / $3, 1e3 * $5 / $3, 1e3 * $6 / $3, $7 }' |
             tee -a "$work/lines"

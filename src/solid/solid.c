@@ -46,9 +46,10 @@ struct Solid {
     int64_t advances;       /* solid_advance calls so far */
     int64_t synced_at;      /* `advances` at the last solid_sync (-1: never) */
     int64_t last_substeps;
-    double *damage;       /* scratch for solid_damage (the model's points) */
-    double *damage_whole; /* several processes: the whole body's damage */
-    double *position[3];  /* scratch for solid_current_positions */
+    bool velocities_changed; /* by a coupling, in the whole view (solid_velocities_changed) */
+    double *damage;          /* scratch for solid_damage (the model's points) */
+    double *damage_whole;    /* several processes: the whole body's damage */
+    double *position[3];     /* scratch for solid_current_positions */
 };
 
 /* What the driver, the outputs and the probes see: the whole body. */
@@ -135,6 +136,10 @@ int solid_sync(Solid *s) {
     const int status = comm_allgatherv_bytes(&s->comm, s->attached_mine, (int)p->n, s->attached);
     if (status == NSPD_OK) s->synced_at = s->advances;
     return status;
+}
+
+void solid_velocities_changed(Solid *s) {
+    s->velocities_changed = comm_distributed(&s->comm);
 }
 
 /* The ops table of a kind, or NULL for none or an unknown one. */
@@ -347,7 +352,10 @@ int solid_advance(Solid *s, double dt, double max_substep) {
         const PdPoints *p = &s->points;
         for (int d = 0; d < p->dim; d++)
             memcpy(p->external[d], s->whole.external[d] + s->first, (size_t)p->n * sizeof(double));
+        for (int d = 0; d < p->dim && s->velocities_changed; d++) /* and their velocities */
+            memcpy(p->v[d], s->whole.v[d] + s->first, (size_t)p->n * sizeof(double));
     }
+    s->velocities_changed = false;
     s->advances++;
     int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
     if (n < 1) n = 1;

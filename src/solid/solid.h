@@ -184,6 +184,11 @@ int solid_sync(Solid *s);
  * rank passes the same list): what a coupling that reads a few points (a
  * surface) gathers instead of the whole body. */
 int solid_sync_points(Solid *s, int64_t n, const int32_t *points);
+/* Says that a coupling changed the whole view's velocities (alike on every
+ * rank, after a solid_sync): the next solid_advance hands each process's
+ * points their part first (nothing on one process, whose view is the
+ * model's own). */
+void solid_velocities_changed(Solid *s);
 double solid_stable_dt(const Solid *s);
 double solid_time(const Solid *s);
 void solid_set_time(Solid *s, double t);

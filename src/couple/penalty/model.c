@@ -222,6 +222,7 @@ static double gather(const PenaltyCoupling *p, int64_t c, const double *f) {
 static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
     PenaltyCoupling *p = impl;
     if (!p->cfg.seal) return NSPD_OK;
+    TRY(solid_sync(solid)); /* a divided solid: the whole body's view */
     const PdPoints *pts = solid_points(solid);
     const double *damage = solid_damage(solid);
     for (int64_t i = 0; i < p->n; i++) {
@@ -253,6 +254,7 @@ static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
  * kinetic energy gains. */
 static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     PenaltyCoupling *p = impl;
+    TRY(solid_sync(solid)); /* a divided solid: the whole body's view */
     PdPoints *pts = solid_points(solid);
     if (!p->said && pts->n > 0) {
         p->said = true;
@@ -324,6 +326,7 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
         }
         p->step.impulse[d] = sum;
     }
+    solid_velocities_changed(solid); /* a divided solid's parts take them */
     for (int64_t i = 0; i < n; i++)
         p->work_rate[i] = -(p->J[0][i] * 0.5 * (p->v[0][i] + pts->v[0][i]) +
                             p->J[1][i] * 0.5 * (p->v[1][i] + pts->v[1][i]));
@@ -421,9 +424,12 @@ static void penalty_config_free(void *model) {
 
 const CouplingOps PENALTY_COUPLING_OPS = {
     .name = "penalty",
-    /* the solid replicated on every rank; the flow's ops gather and
-     * scatter the cells (flow/gks/model.c) */
+    /* the flow's ops gather and scatter the cells (flow/gks/model.c);
+     * the relaxation runs alike on every rank over the whole body's view
+     * of the solid, which a solid that divides keeps in parts (synced
+     * before, its velocities handed back after) */
     .distributed = true,
+    .divided_solid = true,
     .config_free = penalty_config_free,
     .estimate = penalty_estimate,
     .create = penalty_create,

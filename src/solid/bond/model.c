@@ -216,7 +216,7 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
                 run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);
     /* several processes: this one's wall time in the ghosts' exchanges
      * and the step's reductions */
-    if (b->halo) report_real(out, "exchange_s", b->halo->points.seconds);
+    if (b->halo) report_real(out, "solid_exchange_s", b->halo->points.seconds);
 }
 
 static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {

@@ -311,7 +311,8 @@ static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "bond_updates_per_s",
                 run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);
     /* several processes: this one's wall time in the ghosts' exchanges */
-    if (b->halo) report_real(out, "exchange_s", b->halo->points.seconds + b->halo->bonds.seconds);
+    if (b->halo)
+        report_real(out, "solid_exchange_s", b->halo->points.seconds + b->halo->bonds.seconds);
 }
 
 static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
