@@ -131,9 +131,10 @@ int sim_create(Sim *sim, SimConfig *cfg) {
     sim->built = true;
     /* On several processes the flow is divided (a coupling that
      * distributes takes the whole grid's cells; coupling_create checks),
-     * and so is a solid alone, or a solid that divides (the bond model)
+     * and so is a solid alone, or a solid that divides (both PD models)
      * coupled by a coupling that takes a divided solid (the ghost-cell
-     * FSI); any other coupled solid is advanced whole by every rank alike.
+     * FSI, the penalty); any other coupled solid is advanced whole by
+     * every rank alike.
      * A solid alone that does not divide is refused. */
     c->flow.comm = c->coupling.comm = &c->comm;
     c->flow.processes[0] = c->processes[0];

@@ -53,8 +53,9 @@ check_body naca0012_ma05_re5000 naca "2 4 3x1"
 # cylinder.
 check_body panel_shock panel "2 3 4"
 check_body cylinder_crack_ma17 crack "2 4 2x2"
-# The volumetric penalty coupling (solid replicated, cells gathered and
-# scattered by the flow's ops): the coarse detonation chamber, and the
+# The volumetric penalty coupling (the solid divided, its whole view
+# gathered for the relaxation; cells gathered and scattered by the
+# flow's ops): the coarse detonation chamber, and the
 # hollow square in a blast with sealed faces, shortened.
 check_body chamber_detonation chamber "2 3 4 2x2"
 check_body blast_hollow_square blast_sealed "3 2x1" --set time.end=2e-5 --set coupling.seal=true \
