@@ -280,6 +280,9 @@ refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/b
 refused "the classic correspondence force on 2 ranks" \
     "the classic correspondence force runs on one process only, not on 2" 2 \
     "$src/cases/hollow_square_pressure.yaml" -o "$work/bad" --set solid.correspondence.force=classic
+refused "a correspondence body thinner than its family on 3 ranks" \
+    "3900 points, the first at \\(-0.079, -0.079\\) m, have too few neighbours" 3 \
+    "$src/cases/hollow_square_pressure.yaml" -o "$work/bad" --set solid.horizon_factor=1.0
 refused "4 rows on 3 slabs" "4 rows over 3 processes" 3 "$sod" -o "$work/bad" --processes 1x3
 refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 "$sod" \
     -o "$work/bad" --processes 3x1

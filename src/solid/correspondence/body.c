@@ -15,6 +15,7 @@
 #include "solid/correspondence/rk_gradient.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* The square family |xi|_inf <= delta is the disc search of radius
@@ -80,8 +81,11 @@ int cpd_body_pair_arrays(CpdBody *b) {
     return nspd_alloc(&b->work_bond, (size_t)bac_work_bond(&kept, plane_stress), sizeof(double));
 }
 
+/* Per point (the run's and the ghosts') and per bond (the run's rows; phi
+ * with room for the crossing bonds' reverse weights after them, halo.h). */
 static int alloc_arrays(CpdBody *b) {
-    const size_t n = (size_t)b->n, nb = (size_t)b->bond_count;
+    const size_t n = (size_t)(b->n + b->ghosts), nb = (size_t)b->bond_count;
+    const size_t crossing = b->halo ? (size_t)b->halo->bonds.ghosts : 0;
     for (int d = 0; d < 3; d++) {
         TRY(nspd_alloc(&b->u[d], n, sizeof(double)));
         TRY(nspd_alloc(&b->v[d], n, sizeof(double)));
@@ -102,13 +106,12 @@ static int alloc_arrays(CpdBody *b) {
     /* F and F at u_prev (the classic force: F and P), then the bond-
      * associated force's per-point scratch */
     TRY(nspd_alloc(&b->work_point, (size_t)(18 + bac_work_per_point(b->dim)) * n, sizeof(double)));
-    TRY(nspd_alloc(&b->reverse, nb, sizeof(int64_t)));
     TRY(nspd_alloc(&b->omega, nb, sizeof(double)));
     /* the material state: per point for the classic force (which needs no
      * RK weights); per pair for the bond-associated one, allocated once
      * the pairs are known (state_arrays) */
     const bool classic = b->cfg.force == CPD_FORCE_CLASSIC;
-    if (!classic) TRY(nspd_alloc(&b->phi, (size_t)b->dim * nb, sizeof(double)));
+    if (!classic) TRY(nspd_alloc(&b->phi, (size_t)b->dim * (nb + crossing), sizeof(double)));
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
     if (classic) TRY(state_arrays(b, n));
@@ -151,7 +154,34 @@ static void pressure_directions(CpdBody *b) {
     }
 }
 
-static int build(CpdBody *b, CpdConfig *cfg) {
+/* The first point (the whole body's lowest index, on any number of
+ * processes) left without RK weights (or an invertible K_i) by the intact
+ * body, refused: the body is thinner than its family there. */
+static int refuse_thin(const CpdBody *b) {
+    int64_t first = INT64_MAX, missing = 0;
+    char text[400] = "";
+    for (int64_t i = 0; i < b->n; i++) {
+        if (b->ok[i]) continue;
+        missing++;
+        if (first != INT64_MAX) continue;
+        first = b->halo ? point_halo_global(&b->halo->points, i) : i;
+        snprintf(text, sizeof text, "(%g, %g) m", b->x[0][i], b->x[1][i]);
+    }
+    missing = cpd_halo_sum(b, missing);
+    if (missing == 0) return NSPD_OK;
+    if (b->halo) (void)comm_first_failure(&b->halo->points.comm, first, text, (int)sizeof text);
+    return NSPD_FAIL(NSPD_ERR_INPUT,
+                     "%lld points, the first at %s, have too few neighbours for "
+                     "the correspondence gradient (%s over |xi| <= %g m): the "
+                     "body is thinner than its family there; expected a smaller spacing or "
+                     "a larger horizon_factor",
+                     (long long)missing, text,
+                     b->cfg.force == CPD_FORCE_CLASSIC ? "an invertible shape tensor"
+                                                       : "a quadratic fit",
+                     b->delta);
+}
+
+static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
     memset(b, 0, sizeof *b);
     b->cfg = *cfg;
     memset(cfg, 0, sizeof *cfg);
@@ -176,17 +206,23 @@ static int build(CpdBody *b, CpdConfig *cfg) {
         b->lattice[d] = lat.index[d];
     }
     TRY(find_families(b));
-    TRY(alloc_arrays(b));
-    const double v_ref = pow(pd->spacing, b->dim) * (b->dim == 2 ? pd->thickness : 1.0);
-    for (int64_t i = 0; i < b->n; i++) b->volume[i] = v_ref;
-    pd_regions_assign(pd, b->n, (const double *const *)b->x, b->region, b->v);
-    TRY(pd_boundary_table_build(&b->boundary, pd));
-
+    TRY(nspd_alloc(&b->reverse, (size_t)b->bond_count + 1, sizeof(int64_t)));
     if (bac_reverse_bonds(b->n, b->first, b->nbr, b->reverse) != 0)
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
-    if (cfg->force != CPD_FORCE_CLASSIC) {
+    if (cfg->force != CPD_FORCE_CLASSIC)
         TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
-        const size_t n = (size_t)b->n, nb = (size_t)b->bond_count, dim = (size_t)b->dim;
+    /* several processes: the run's part of the families from here on,
+     * and everything below for the part alone (halo.h) */
+    if (comm) TRY(cpd_body_divide(b, comm));
+    TRY(alloc_arrays(b));
+    const int64_t na = b->n + b->ghosts;
+    const double v_ref = pow(pd->spacing, b->dim) * (b->dim == 2 ? pd->thickness : 1.0);
+    for (int64_t i = 0; i < na; i++) b->volume[i] = v_ref;
+    pd_regions_assign(pd, na, (const double *const *)b->x, b->region, b->v);
+    TRY(pd_boundary_table_build(&b->boundary, pd));
+
+    if (cfg->force != CPD_FORCE_CLASSIC) {
+        const size_t n = (size_t)na, nb = (size_t)b->bond_count, dim = (size_t)b->dim;
         TRY(nspd_alloc(&b->inv_w0, n, sizeof(double)));
         TRY(nspd_alloc(&b->coef_c, nb, sizeof(double)));
         TRY(nspd_alloc(&b->phi_rev, dim * nb, sizeof(double)));
@@ -209,20 +245,10 @@ static int build(CpdBody *b, CpdConfig *cfg) {
      * than a family: refused); then the pre-cracks break their bonds and
      * the weights settle like damage's (a point a pre-crack isolates is
      * debris) */
-    const int64_t missing = cpd_shape_check(b, NULL);
-    if (missing > 0) {
-        int64_t i = 0;
-        while (b->ok[i]) i++;
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "%lld points, the first at (%g, %g) m, have too few neighbours for "
-                         "the correspondence gradient (%s over |xi| <= %g m): the "
-                         "body is thinner than its family there; expected a smaller spacing or "
-                         "a larger horizon_factor",
-                         (long long)missing, b->x[0][i], b->x[1][i],
-                         b->cfg.force == CPD_FORCE_CLASSIC ? "an invertible shape tensor"
-                                                           : "a quadratic fit",
-                         b->delta);
-    }
+    (void)cpd_shape_check(b, NULL);
+    TRY(refuse_thin(b));
+    void *ok[1] = {b->ok};
+    cpd_halo_exchange(b, ok, 1, 1); /* the ghosts' (several processes) */
     for (int64_t i = 0; i < b->n; i++) {
         b->redo[i] = 0;
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
@@ -235,7 +261,13 @@ static int build(CpdBody *b, CpdConfig *cfg) {
 }
 
 int cpd_body_create(CpdBody *b, CpdConfig *cfg) {
-    int status = build(b, cfg);
+    int status = build(b, cfg, NULL);
+    if (status != NSPD_OK) cpd_body_destroy(b);
+    return status;
+}
+
+int cpd_body_create_divided(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
+    int status = build(b, cfg, comm_distributed(comm) ? comm : NULL);
     if (status != NSPD_OK) cpd_body_destroy(b);
     return status;
 }

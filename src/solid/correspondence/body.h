@@ -38,6 +38,7 @@
 #ifndef NSPD_SOLID_CORRESPONDENCE_BODY_H
 #define NSPD_SOLID_CORRESPONDENCE_BODY_H
 
+#include "core/comm.h"
 #include "solid/correspondence/bac_force.h"
 #include "solid/correspondence/config.h"
 #include "solid/correspondence/j2_kernel.h"
@@ -124,6 +125,9 @@ typedef struct {
  * if the geometry holds no point or a point has no RK weights at the
  * start (a body thinner than the family needs: say which); NSPD_ERR_NOMEM. */
 int cpd_body_create(CpdBody *b, CpdConfig *cfg);
+/* The same on the processes of `comm`, each keeping its part
+ * (solid/correspondence/halo.h; on one process cpd_body_create). */
+int cpd_body_create_divided(CpdBody *b, CpdConfig *cfg, const NspdComm *comm);
 void cpd_body_destroy(CpdBody *b);
 /* The bond-associated force's arrays of one entry a pair (the material
  * state, zero; F_b; the force's scratch) for b->pairs, anew. NSPD_ERR_NOMEM. */

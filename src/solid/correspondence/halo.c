@@ -7,56 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The whole body's per-point arrays cut to the run and its ghosts
- * (from[k]: the whole index of local point k; the first `own` the run). */
-static int take_points(CpdBody *b, const int64_t *from, int64_t own, int64_t all) {
-    for (int d = 0; d < 3; d++) {
-        double **a[8] = {&b->x[d],        &b->u[d],      &b->v[d],        &b->force[d],
-                         &b->external[d], &b->u_prev[d], &b->load_dir[d], &b->mode[d]};
-        for (int k = 0; k < 8; k++) TRY(point_halo_take(a[k], sizeof(double), from, all));
-        TRY(point_halo_take(&b->lattice[d], sizeof(int32_t), from, all));
-    }
-    TRY(point_halo_take(&b->volume, sizeof(double), from, all));
-    TRY(point_halo_take(&b->region, sizeof(int16_t), from, all));
-    TRY(point_halo_take(&b->load, sizeof(int16_t), from, all));
-    TRY(point_halo_take(&b->ok, 1, from, all));
-    TRY(point_halo_take(&b->inv_w0, sizeof(double), from, all));
-    TRY(point_halo_take(&b->phi_sum, (size_t)b->dim * sizeof(double), from, own));
-    /* flags and scratch anew at the part's size (the build left no point
-     * dirty) */
-    uint8_t **flags[3] = {&b->redo, &b->dirty, &b->near};
-    for (int k = 0; k < 3; k++) {
-        nspd_free(flags[k]);
-        TRY(nspd_alloc(flags[k], (size_t)all, 1));
-    }
-    nspd_free(&b->work_point);
-    return nspd_alloc(&b->work_point, (size_t)(18 + bac_work_per_point(b->dim)) * (size_t)all,
-                      sizeof(double));
-}
-
-/* The run's rows [b0, b0 + count) of the per-bond arrays; phi with room
- * after them for the reverse weights of `crossing` bonds. */
-static int take_bonds(CpdBody *b, int64_t b0, int64_t count, int64_t crossing) {
-    int64_t *from = NULL;
-    TRY(nspd_alloc(&from, (size_t)count + 1, sizeof *from));
-    for (int64_t k = 0; k < count; k++) from[k] = b0 + k;
-    const size_t dd = (size_t)b->dim * sizeof(double);
-    double **a[4] = {&b->omega, &b->damage, &b->scale, &b->coef_c};
-    int status = NSPD_OK;
-    for (int k = 0; k < 4 && status == NSPD_OK; k++)
-        status = point_halo_take(a[k], sizeof(double), from, count);
-    if (status == NSPD_OK) status = point_halo_take(&b->phi_rev, dd, from, count);
-    double *phi = NULL;
-    if (status == NSPD_OK) status = nspd_alloc(&phi, (size_t)(count + crossing) + 1, dd);
-    if (status == NSPD_OK) {
-        memcpy(phi, b->phi + (size_t)b0 * (size_t)b->dim, (size_t)count * dd);
-        nspd_free(&b->phi);
-        b->phi = phi;
-    }
-    nspd_free(&from);
-    return status;
-}
-
 /* A bond that crosses: the whole index of its reverse bond, and its own
  * local index. */
 typedef struct {
@@ -110,7 +60,6 @@ static int take_rows(CpdBody *b, CpdHalo *h, int64_t lo, int64_t own, int64_t gh
         h->pair_whole[p] = pair_of[k];
         h->pair_here[p] = canonical[k];
     }
-    if (status == NSPD_OK) status = cpd_body_pair_arrays(b); /* the state is still zero */
 done:
     nspd_free(&first);
     nspd_free(&nbr);
@@ -177,10 +126,13 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
             }
         status = crossings(b, lo, own, local, &cross, &crossing);
     }
-    const int64_t b0 = b->first[lo], count = b->first[hi] - b0;
-    if (status == NSPD_OK) status = take_bonds(b, b0, count, crossing);
+    const int64_t count = b->first[hi] - b->first[lo];
     if (status == NSPD_OK) status = take_rows(b, h, lo, own, ghosts, local);
-    if (status == NSPD_OK) status = take_points(b, from, own, own + ghosts);
+    for (int d = 0; d < 3 && status == NSPD_OK; d++) {
+        status = point_halo_take(&b->x[d], sizeof(double), from, own + ghosts);
+        if (status == NSPD_OK)
+            status = point_halo_take(&b->lattice[d], sizeof(int32_t), from, own + ghosts);
+    }
     if (status == NSPD_OK)
         status = point_halo_plan(&h->points, comm, own, ghosts, ghost, 9 * sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&asked, (size_t)crossing + 1, sizeof *asked);

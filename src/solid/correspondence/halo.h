@@ -1,12 +1,14 @@
 /* A correspondence body divided between processes (issue 28: a solid
  * alone on several ranks), bitwise the run of one process.
  *
- * Every rank builds the whole body (lattice, families, RK weights, the
- * stable step: the same bits everywhere), then keeps its run of points in
- * the Morton order and, as ghosts, the points its bonds reach (the point
- * halo of solid/pd/halo.h, as the bond-based body), and frees the rest.
- * So the set-up's peak memory is the whole body's on every rank; a step
- * holds the rank's part.
+ * Every rank places the whole body's points and finds its families (the
+ * lattice, the neighbour lists, the reverse bonds and the bond pairs:
+ * about 30 bytes a bond), then keeps its run of points in the Morton
+ * order and, as ghosts, the points its bonds reach (the point halo of
+ * solid/pd/halo.h, as the bond-based body), and frees the rest; the
+ * build goes on with the part alone (kernel, RK weights, the settling of
+ * the pre-cracks, the stable step: all through the exchanges below, so
+ * the same bits as one process).
  *
  * What a step takes from the owners (cpd_step):
  * - u of the ghosts after every drift (u_prev: the ghosts' u at the
@@ -46,9 +48,10 @@ typedef struct CpdHalo {
     uint8_t *pair_here;
 } CpdHalo;
 
-/* Keeps this rank's part of the whole body `b` (see above). Nothing on
- * one process. NSPD_ERR_INPUT: the classic force, or fewer points than
- * processes; NSPD_ERR_NOMEM. */
+/* Keeps this rank's part of the whole body `b`, which holds only its
+ * points (x, lattice) and families (first, nbr, reverse, pairs) so far
+ * (see above; body.c's build). Nothing on one process. NSPD_ERR_INPUT:
+ * the classic force, or fewer points than processes; NSPD_ERR_NOMEM. */
 int cpd_body_divide(CpdBody *b, const NspdComm *comm);
 void cpd_halo_free(CpdHalo **h);
 

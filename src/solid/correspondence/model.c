@@ -28,10 +28,9 @@ static int cpd_create(void **impl, PdPoints *pts, SolidConfig *cfg) {
     CpdBody *b = &cs->body;
     CpdConfig cc = *(CpdConfig *)cfg->model;
     nspd_free(&cfg->model); /* taken */
-    int status = cpd_body_create(b, &cc);
-    /* on several processes every rank builds the whole body and keeps its
-     * part (halo.h) */
-    if (status == NSPD_OK && cfg->comm) status = cpd_body_divide(b, cfg->comm);
+    /* on several processes each builds and keeps its part (halo.h) */
+    const NspdComm self = comm_self();
+    int status = cpd_body_create_divided(b, &cc, cfg->comm ? cfg->comm : &self);
     const size_t n = status == NSPD_OK ? (size_t)cpd_whole_points(b) : 1;
     for (int d = 0; d < 3 && status == NSPD_OK; d++) status = nspd_alloc(&cs->stress[d], n, 8);
     if (status == NSPD_OK) status = nspd_alloc(&cs->stress_zz, n, sizeof(double));
