@@ -167,8 +167,15 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     return NSPD_OK;
 }
 
+/* The force's packed copy of the points (body.h), for the part kept. */
+static int alloc_packed(BondBody *body) {
+    if (body->dim != 2) return NSPD_OK;
+    return nspd_alloc(&body->packed, 4 * (size_t)(body->n + body->ghosts) + 4, sizeof(double));
+}
+
 int bond_body_create(BondBody *body, PdConfig *cfg) {
     int status = build(body, cfg, NULL);
+    if (status == NSPD_OK) status = alloc_packed(body);
     if (status != NSPD_OK) bond_body_destroy(body);
     return status;
 }
@@ -176,6 +183,7 @@ int bond_body_create(BondBody *body, PdConfig *cfg) {
 int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm) {
     int status = build(body, cfg, comm);
     if (status == NSPD_OK) status = bond_body_divide(body, comm);
+    if (status == NSPD_OK) status = alloc_packed(body);
     if (status != NSPD_OK) bond_body_destroy(body);
     return status;
 }
@@ -196,6 +204,7 @@ void bond_body_destroy(BondBody *body) {
     nspd_free(&body->bond_first);
     nspd_free(&body->bond_nbr);
     nspd_free(&body->bond_coef);
+    nspd_free(&body->packed);
     pd_config_free(&body->cfg);
     bond_halo_free(&body->halo);
     memset(body, 0, sizeof *body);

@@ -68,6 +68,10 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
+    /* 2D: x, y, ux, uy of each point (ghosts too) side by side, 32-byte
+     * aligned, refreshed by pd_force_compute: the force reads a
+     * neighbour's four in one load (force.c) */
+    double *packed;
 
     /* On several processes (halo.h): the ghosts after the n points this
      * process holds (their displacements from their owners, no bonds of

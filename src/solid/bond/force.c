@@ -22,6 +22,11 @@
 #include "core/parallel.h"
 #include "solid/bond/force_kernel.h"
 
+#include <math.h>
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
 void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
                         const double *restrict ux, const double *restrict uy,
                         const int64_t *restrict first, const int32_t *restrict nbr,
@@ -29,6 +34,105 @@ void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const 
                         double *restrict fy) {
     for (int64_t i = lo; i < hi; i++)
         bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
+}
+
+#if defined(__AVX2__)
+/* Four bonds b .. b + 3 of point (xi, yi, uxi, uyi) in 256-bit lanes:
+ * the neighbours' packed rows loaded whole and transposed in registers
+ * (four loads and eight shuffles where the plain kernel gathers four
+ * arrays), their terms f rx and f ry added to (sx, sy), the bonds the step
+ * stretched past s_c broken. The arithmetic of bond_force_point_2d, op
+ * for op. */
+static inline __attribute__((always_inline)) void
+four_bonds(const double *restrict p, const int32_t *restrict nbr, float *restrict coef, int64_t b,
+           __m256d xi, __m256d yi, __m256d uxi, __m256d uyi, __m256d lim, __m256d *sx,
+           __m256d *sy) {
+    const __m256d r0 = _mm256_load_pd(p + 4 * (int64_t)nbr[b]);
+    const __m256d r1 = _mm256_load_pd(p + 4 * (int64_t)nbr[b + 1]);
+    const __m256d r2 = _mm256_load_pd(p + 4 * (int64_t)nbr[b + 2]);
+    const __m256d r3 = _mm256_load_pd(p + 4 * (int64_t)nbr[b + 3]);
+    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+    const __m256d xj = _mm256_permute2f128_pd(t0, t2, 0x20);
+    const __m256d yj = _mm256_permute2f128_pd(t1, t3, 0x20);
+    const __m256d uxj = _mm256_permute2f128_pd(t0, t2, 0x31);
+    const __m256d uyj = _mm256_permute2f128_pd(t1, t3, 0x31);
+    const __m128 kf = _mm_loadu_ps(coef + b);
+    const __m256d k = _mm256_cvtps_pd(_mm_andnot_ps(_mm_set1_ps(-0.0f), kf)); /* |k| */
+    const __m256d ex = _mm256_sub_pd(xj, xi), ey = _mm256_sub_pd(yj, yi);
+    const __m256d rx = _mm256_add_pd(ex, _mm256_sub_pd(uxj, uxi));
+    const __m256d ry = _mm256_add_pd(ey, _mm256_sub_pd(uyj, uyi));
+    const __m256d e2 = _mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey));
+    const __m256d r2s = _mm256_add_pd(_mm256_mul_pd(rx, rx), _mm256_mul_pd(ry, ry));
+    const __m256d root = _mm256_sqrt_pd(_mm256_div_pd(e2, r2s));
+    const __m256d f = _mm256_mul_pd(k, _mm256_sub_pd(_mm256_set1_pd(1.0), root));
+    /* a breakable bond (k > 0) stretched past s_c: its coefficient to 0 */
+    const __m128 live = _mm_cmpgt_ps(kf, _mm_setzero_ps());
+    const __m256d over = _mm256_cmp_pd(r2s, _mm256_mul_pd(lim, e2), _CMP_GT_OQ);
+    const __m128 broken = _mm_and_ps(live, _mm256_cvtpd_ps(over)); /* the mask, narrowed */
+    if (_mm_movemask_ps(broken)) _mm_storeu_ps(coef + b, _mm_andnot_ps(broken, kf));
+    *sx = _mm256_add_pd(*sx, _mm256_mul_pd(f, rx));
+    *sy = _mm256_add_pd(*sy, _mm256_mul_pd(f, ry));
+}
+#endif
+
+void pd_force_kernel_2d_packed(int64_t lo, int64_t hi, const double *restrict x,
+                               const double *restrict y, const double *restrict ux,
+                               const double *restrict uy, const double *restrict p,
+                               const int64_t *restrict first, const int32_t *restrict nbr,
+                               float *restrict coef, double scale, double limit2,
+                               double *restrict fx, double *restrict fy) {
+#if defined(__AVX2__)
+    (void)x, (void)y, (void)ux, (void)uy;
+    const __m256d lim = _mm256_set1_pd(limit2);
+    for (int64_t i = lo; i < hi; i++) {
+        const double *pi = p + 4 * i;
+        const __m256d xi = _mm256_set1_pd(pi[0]), yi = _mm256_set1_pd(pi[1]);
+        const __m256d uxi = _mm256_set1_pd(pi[2]), uyi = _mm256_set1_pd(pi[3]);
+        __m256d sx0 = _mm256_setzero_pd(), sy0 = sx0, sx1 = sx0, sy1 = sx0;
+        const int64_t b0 = first[i], b1 = first[i + 1];
+        int64_t b = b0;
+        /* GCC's omp simd reduction in bond_force_point_2d (-O3, AVX-512
+         * with 256-bit vectors: tests/unit/solid/bond/test_force.c holds
+         * this to it bit for bit) keeps 8 lanes, bond b0 + 8 t + l in lane
+         * l, while 8 bonds are left; adds the rest of the row (all of a
+         * row of fewer than 8) into lane 0 in order; and sums the lanes 0
+         * to 7 onto 0.0 */
+        if (b1 - b0 >= 8)
+            for (; b + 8 <= b1; b += 8) {
+                four_bonds(p, nbr, coef, b, xi, yi, uxi, uyi, lim, &sx0, &sy0);
+                four_bonds(p, nbr, coef, b + 4, xi, yi, uxi, uyi, lim, &sx1, &sy1);
+            }
+        double lx[8], ly[8];
+        _mm256_storeu_pd(lx, sx0), _mm256_storeu_pd(lx + 4, sx1);
+        _mm256_storeu_pd(ly, sy0), _mm256_storeu_pd(ly + 4, sy1);
+        for (; b + 4 <= b1; b += 4) { /* terms in lanes, added into lane 0 in order */
+            __m256d tx = _mm256_setzero_pd(), ty = tx;
+            four_bonds(p, nbr, coef, b, xi, yi, uxi, uyi, lim, &tx, &ty);
+            double ax[4], ay[4];
+            _mm256_storeu_pd(ax, tx), _mm256_storeu_pd(ay, ty);
+            for (int q = 0; q < 4; q++) lx[0] += ax[q], ly[0] += ay[q];
+        }
+        for (; b < b1; b++) {
+            const int64_t j = nbr[b];
+            const float k = coef[b];
+            const double ex = p[4 * j] - pi[0], ey = p[4 * j + 1] - pi[1];
+            const double rx = ex + (p[4 * j + 2] - pi[2]), ry = ey + (p[4 * j + 3] - pi[3]);
+            const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
+            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
+            if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
+            lx[0] += f * rx;
+            ly[0] += f * ry;
+        }
+        double sx = 0.0, sy = 0.0;
+        for (int l = 0; l < 8; l++) sx += lx[l], sy += ly[l];
+        fx[i] = scale * sx;
+        fy[i] = scale * sy;
+    }
+#else
+    (void)p; /* no AVX2: the plain kernel */
+    pd_force_kernel_2d(lo, hi, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
+#endif
 }
 
 void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
@@ -49,12 +153,19 @@ void pd_force_compute(BondBody *body) {
     const int64_t n = body->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
     if (body->dim == 2) {
+        const int64_t all = n + body->ghosts;
+        double *p = body->packed;
+#pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < all; i++) {
+            p[4 * i] = body->x[0][i], p[4 * i + 1] = body->x[1][i];
+            p[4 * i + 2] = body->u[0][i], p[4 * i + 3] = body->u[1][i];
+        }
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
-            pd_force_kernel_2d(lo, hi, body->x[0], body->x[1], body->u[0], body->u[1],
-                               body->bond_first, body->bond_nbr, body->bond_coef, scale, limit2,
-                               body->force[0], body->force[1]);
+            pd_force_kernel_2d_packed(lo, hi, body->x[0], body->x[1], body->u[0], body->u[1], p,
+                                      body->bond_first, body->bond_nbr, body->bond_coef, scale,
+                                      limit2, body->force[0], body->force[1]);
         }
     } else {
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)

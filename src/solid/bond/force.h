@@ -13,6 +13,18 @@ void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const 
                         const int64_t *restrict first, const int32_t *restrict nbr,
                         float *restrict coef, double scale, double limit2, double *restrict fx,
                         double *restrict fy);
+/* The same force in 2D from the points' packed rows p[4 i ..] = (x, y,
+ * ux, uy), the copy of x, y, ux, uy (32-byte aligned; BondBody.packed):
+ * with AVX2, four bonds at a time loaded whole instead of gathered, the
+ * bits of pd_force_kernel_2d as GCC 12 vectorises it with AVX-512 (its
+ * reduction's order kept: force.c); without AVX2, pd_force_kernel_2d on
+ * x, y, ux, uy. What pd_force_compute runs in 2D. */
+void pd_force_kernel_2d_packed(int64_t lo, int64_t hi, const double *restrict x,
+                               const double *restrict y, const double *restrict ux,
+                               const double *restrict uy, const double *restrict p,
+                               const int64_t *restrict first, const int32_t *restrict nbr,
+                               float *restrict coef, double scale, double limit2,
+                               double *restrict fx, double *restrict fy);
 void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
                         const double *restrict z, const double *restrict ux,
                         const double *restrict uy, const double *restrict uz,
