@@ -169,8 +169,8 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
 
 /* The force's packed copy of the points (body.h), for the part kept. */
 static int alloc_packed(BondBody *body) {
-    if (body->dim != 2) return NSPD_OK;
-    return nspd_alloc(&body->packed, 4 * (size_t)(body->n + body->ghosts) + 4, sizeof(double));
+    const size_t width = body->dim == 2 ? 4 : 8; /* 3D: x, y, z, 0, ux, uy, uz, 0 */
+    return nspd_alloc(&body->packed, width * (size_t)(body->n + body->ghosts + 1), sizeof(double));
 }
 
 int bond_body_create(BondBody *body, PdConfig *cfg) {

@@ -68,9 +68,9 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
-    /* 2D: x, y, ux, uy of each point (ghosts too) side by side, 32-byte
-     * aligned, refreshed by pd_force_compute: the force reads a
-     * neighbour's four in one load (force.c) */
+    /* x, y, ux, uy of each point (ghosts too) side by side (3D: x, y, z,
+     * 0, ux, uy, uz, 0), 32-byte aligned, refreshed by pd_force_compute:
+     * the force reads a neighbour's in one or two loads (force.c) */
     double *packed;
 
     /* On several processes (halo.h): the ghosts after the n points this

@@ -135,6 +135,108 @@ void pd_force_kernel_2d_packed(int64_t lo, int64_t hi, const double *restrict x,
 #endif
 }
 
+#if defined(__AVX2__)
+/* The 3D form of four_bonds: packed rows of 8 (x, y, z, 0, ux, uy, uz,
+ * 0), two 256-bit loads a bond. */
+static inline __attribute__((always_inline)) void
+four_bonds_3d(const double *restrict p, const int32_t *restrict nbr, float *restrict coef,
+              int64_t b, const __m256d c[6], __m256d lim, __m256d s[3]) {
+    __m256d col[8]; /* x, y, z, -, ux, uy, uz, - of the four */
+    for (int half = 0; half < 2; half++) {
+        const __m256d r0 = _mm256_load_pd(p + 8 * (int64_t)nbr[b] + 4 * half);
+        const __m256d r1 = _mm256_load_pd(p + 8 * (int64_t)nbr[b + 1] + 4 * half);
+        const __m256d r2 = _mm256_load_pd(p + 8 * (int64_t)nbr[b + 2] + 4 * half);
+        const __m256d r3 = _mm256_load_pd(p + 8 * (int64_t)nbr[b + 3] + 4 * half);
+        const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+        const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+        col[4 * half] = _mm256_permute2f128_pd(t0, t2, 0x20);
+        col[4 * half + 1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+        col[4 * half + 2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    }
+    const __m128 kf = _mm_loadu_ps(coef + b);
+    const __m256d k = _mm256_cvtps_pd(_mm_andnot_ps(_mm_set1_ps(-0.0f), kf)); /* |k| */
+    __m256d e[3], r[3];
+    for (int a = 0; a < 3; a++) {
+        e[a] = _mm256_sub_pd(col[a], c[a]);
+        r[a] = _mm256_add_pd(e[a], _mm256_sub_pd(col[4 + a], c[3 + a]));
+    }
+    const __m256d e2 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e[0], e[0]), _mm256_mul_pd(e[1], e[1])),
+                      _mm256_mul_pd(e[2], e[2]));
+    const __m256d r2s =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r[0], r[0]), _mm256_mul_pd(r[1], r[1])),
+                      _mm256_mul_pd(r[2], r[2]));
+    const __m256d root = _mm256_sqrt_pd(_mm256_div_pd(e2, r2s));
+    const __m256d f = _mm256_mul_pd(k, _mm256_sub_pd(_mm256_set1_pd(1.0), root));
+    const __m128 live = _mm_cmpgt_ps(kf, _mm_setzero_ps());
+    const __m256d over = _mm256_cmp_pd(r2s, _mm256_mul_pd(lim, e2), _CMP_GT_OQ);
+    const __m128 broken = _mm_and_ps(live, _mm256_cvtpd_ps(over));
+    if (_mm_movemask_ps(broken)) _mm_storeu_ps(coef + b, _mm_andnot_ps(broken, kf));
+    for (int a = 0; a < 3; a++) s[a] = _mm256_add_pd(s[a], _mm256_mul_pd(f, r[a]));
+}
+#endif
+
+void pd_force_kernel_3d_packed(int64_t lo, int64_t hi, const double *const x[3],
+                               const double *const u[3], const double *restrict p,
+                               const int64_t *restrict first, const int32_t *restrict nbr,
+                               float *restrict coef, double scale, double limit2,
+                               double *const force[3]) {
+#if defined(__AVX2__)
+    (void)x, (void)u;
+    const __m256d lim = _mm256_set1_pd(limit2);
+    for (int64_t i = lo; i < hi; i++) {
+        const double *pi = p + 8 * i;
+        const __m256d c[6] = {_mm256_set1_pd(pi[0]), _mm256_set1_pd(pi[1]), _mm256_set1_pd(pi[2]),
+                              _mm256_set1_pd(pi[4]), _mm256_set1_pd(pi[5]), _mm256_set1_pd(pi[6])};
+        __m256d s0[3], s1[3];
+        for (int a = 0; a < 3; a++) s0[a] = s1[a] = _mm256_setzero_pd();
+        const int64_t b0 = first[i], b1 = first[i + 1];
+        int64_t b = b0;
+        /* the 2D kernel's lanes and order (pd_force_kernel_2d_packed) */
+        if (b1 - b0 >= 8)
+            for (; b + 8 <= b1; b += 8) {
+                four_bonds_3d(p, nbr, coef, b, c, lim, s0);
+                four_bonds_3d(p, nbr, coef, b + 4, c, lim, s1);
+            }
+        double lane[3][8];
+        for (int a = 0; a < 3; a++)
+            _mm256_storeu_pd(lane[a], s0[a]), _mm256_storeu_pd(lane[a] + 4, s1[a]);
+        for (; b + 4 <= b1; b += 4) {
+            __m256d t[3] = {_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()};
+            four_bonds_3d(p, nbr, coef, b, c, lim, t);
+            for (int a = 0; a < 3; a++) {
+                double v[4];
+                _mm256_storeu_pd(v, t[a]);
+                for (int q = 0; q < 4; q++) lane[a][0] += v[q];
+            }
+        }
+        for (; b < b1; b++) {
+            const int64_t j = nbr[b];
+            const float k = coef[b];
+            const double *pj = p + 8 * j;
+            const double ex = pj[0] - pi[0], ey = pj[1] - pi[1], ez = pj[2] - pi[2];
+            const double rx = ex + (pj[4] - pi[4]), ry = ey + (pj[5] - pi[5]),
+                         rz = ez + (pj[6] - pi[6]);
+            const double e2 = ex * ex + ey * ey + ez * ez, r2 = rx * rx + ry * ry + rz * rz;
+            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
+            if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
+            lane[0][0] += f * rx;
+            lane[1][0] += f * ry;
+            lane[2][0] += f * rz;
+        }
+        for (int a = 0; a < 3; a++) {
+            double sum = 0.0;
+            for (int l = 0; l < 8; l++) sum += lane[a][l];
+            force[a][i] = scale * sum;
+        }
+    }
+#else
+    (void)p; /* no AVX2: the plain kernel */
+    pd_force_kernel_3d(lo, hi, x[0], x[1], x[2], u[0], u[1], u[2], first, nbr, coef, scale, limit2,
+                       force[0], force[1], force[2]);
+#endif
+}
+
 void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
                         const double *restrict z, const double *restrict ux,
                         const double *restrict uy, const double *restrict uz,
@@ -168,12 +270,18 @@ void pd_force_compute(BondBody *body) {
                                       limit2, body->force[0], body->force[1]);
         }
     } else {
+        const int64_t all = n + body->ghosts;
+        double *p = body->packed;
+#pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
+        for (int64_t i = 0; i < all; i++)
+            for (int a = 0; a < 3; a++)
+                p[8 * i + a] = body->x[a][i], p[8 * i + 4 + a] = body->u[a][i];
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
-            pd_force_kernel_3d(lo, hi, body->x[0], body->x[1], body->x[2], body->u[0], body->u[1],
-                               body->u[2], body->bond_first, body->bond_nbr, body->bond_coef, scale,
-                               limit2, body->force[0], body->force[1], body->force[2]);
+            pd_force_kernel_3d_packed(lo, hi, (const double *const *)body->x,
+                                      (const double *const *)body->u, p, body->bond_first,
+                                      body->bond_nbr, body->bond_coef, scale, limit2, body->force);
         }
     }
 }

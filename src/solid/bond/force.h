@@ -32,6 +32,15 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
                         float *restrict coef, double scale, double limit2, double *restrict fx,
                         double *restrict fy, double *restrict fz);
 
+/* The same in 3D from packed rows of 8, p[8 i ..] = (x, y, z, 0, ux, uy,
+ * uz, 0) (BondBody.packed), as pd_force_kernel_2d_packed: the bits of
+ * pd_force_kernel_3d. */
+void pd_force_kernel_3d_packed(int64_t lo, int64_t hi, const double *const x[3],
+                               const double *const u[3], const double *restrict p,
+                               const int64_t *restrict first, const int32_t *restrict nbr,
+                               float *restrict coef, double scale, double limit2,
+                               double *const force[3]);
+
 /* Operator: the force of the whole body into body->force (OpenMP over
  * points, static schedule; bitwise the same at any thread count). */
 void pd_force_compute(BondBody *body);

@@ -65,8 +65,8 @@ void bond_solid_points_of(BondBody *b, PdPoints *pts) {
  * point (an upper bound: surface points have fewer). Bytes: what
  * body.c allocates per point (158: positions, displacements,
  * velocities, forces, external forces, lattice indices, volume, region,
- * damage denominator, row offsets; in 2D 32 more, the force's packed
- * copy of x and u) and per bond (8), plus the building's
+ * damage denominator, row offsets; 32 more in 2D and 64 in 3D, the
+ * force's packed copy of x and u) and per bond (8), plus the building's
  * peak (a byte per lattice site and 16 per point while ordering them, or
  * 24 per point of surface factors). */
 static SolidEstimate bond_estimate(const SolidConfig *sc) {
@@ -83,7 +83,8 @@ static SolidEstimate bond_estimate(const SolidConfig *sc) {
             for (int i = -reach; i <= reach; i++)
                 if ((i || j || k) && (double)(i * i + j * j + k * k) <= m * m) family += 1;
     e.bonds = e.points * family;
-    const double per_point = cfg->dim == 2 ? 190.0 : 158.0, build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
+    const double per_point = cfg->dim == 2 ? 190.0 : 222.0,
+                 build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
     e.bytes = per_point * e.points + (double)PD_BYTES_PER_BOND * e.bonds + build;
     e.check_s = BOND_CHECK_S_PER_BOND * e.bonds;
     e.stable_dt = pd_interior_stable_dt(cfg);
