@@ -451,10 +451,10 @@ static inline __attribute__((always_inline)) void point_integrals_2d(const BacSy
 static void stress_integrals(const BacSystem *s, const double *c, const double *Pb, double *S,
                              double *D) {
     if (s->dim == 2) {
-#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < s->n; i++) point_integrals_2d(s, c, Pb, S, D, i);
     } else {
-#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < s->n; i++) point_integrals(3, s, c, Pb, S, D, i);
     }
 }
@@ -506,10 +506,10 @@ point_force_2d(const BacSystem *s, const double *phi_rev, const double *phi_sum,
 static void point_forces(const BacSystem *s, const double *phi_rev, const double *phi_sum,
                          const double *S, const double *D, double *const force[3]) {
     if (s->dim == 2) {
-#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < s->n; i++) point_force_2d(s, phi_rev, phi_sum, S, D, force, i);
     } else {
-#pragma omp parallel for schedule(static) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < s->n; i++) point_force(3, s, phi_rev, phi_sum, S, D, force, i);
     }
 }

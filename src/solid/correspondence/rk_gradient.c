@@ -197,11 +197,11 @@ void rk_deformation_gradient(int dim, int64_t n, const double *const u[3],
                              const double *const u2[3], const double *volume, const int64_t *first,
                              const int32_t *nbr, const double *phi, double *F, double *F2) {
 #define NSPD_RK_F_LOOP(DIM, TWO)                                                                   \
-    NSPD_PRAGMA(omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS))                    \
+    NSPD_PRAGMA(omp parallel for schedule(static) if (first[n] >= PARALLEL_MIN_ITEMS))             \
     for (int64_t i = 0; i < n; i++)                                                                \
     point_gradients(DIM, TWO, i, u, u2, volume, first, nbr, phi, F, F2)
 #define NSPD_RK_F_LOOP_2D(TWO)                                                                     \
-    NSPD_PRAGMA(omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS))                    \
+    NSPD_PRAGMA(omp parallel for schedule(static) if (first[n] >= PARALLEL_MIN_ITEMS))             \
     for (int64_t i = 0; i < n; i++)                                                                \
     point_gradients_2d(TWO, i, u, u2, volume, first, nbr, phi, F, F2)
     if (dim == 2 && u2)

@@ -172,7 +172,7 @@ static int64_t update_damage(CpdBody *b) {
     /* most steps break nothing: then the pass over the bonds is skipped
      * (b->redo is read only when something grew) */
     if (by_pair && cpd_halo_sum(b, pair_damage(b, dpair)) == 0) return 0; /* all ranks alike */
-#pragma omp parallel for schedule(static) reduction(+ : grown) if (b->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) reduction(+ : grown) if (b->bond_count >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         uint8_t redo = 0;
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
