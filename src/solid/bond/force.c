@@ -248,8 +248,9 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
 }
 
 /* Rows per OpenMP chunk: large enough to amortise scheduling, small enough
- * to balance two threads on a 10^4-point test body. */
-enum { FORCE_BLOCK = 1024 };
+ * to balance two threads on a body of a few thousand points (the panel's
+ * 3,224: 13 blocks). The team is taken by the bond count (core/parallel.h). */
+enum { FORCE_BLOCK = 256 };
 
 void pd_force_compute(BondBody *body) {
     const int64_t n = body->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
@@ -262,7 +263,7 @@ void pd_force_compute(BondBody *body) {
             p[4 * i] = body->x[0][i], p[4 * i + 1] = body->x[1][i];
             p[4 * i + 2] = body->u[0][i], p[4 * i + 3] = body->u[1][i];
         }
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
             pd_force_kernel_2d_packed(lo, hi, body->x[0], body->x[1], body->u[0], body->u[1], p,
@@ -276,7 +277,7 @@ void pd_force_compute(BondBody *body) {
         for (int64_t i = 0; i < all; i++)
             for (int a = 0; a < 3; a++)
                 p[8 * i + a] = body->x[a][i], p[8 * i + 4 + a] = body->u[a][i];
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
         for (int64_t blk = 0; blk < blocks; blk++) {
             int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
             pd_force_kernel_3d_packed(lo, hi, (const double *const *)body->x,
