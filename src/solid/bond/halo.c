@@ -77,28 +77,12 @@ int bond_body_divide(BondBody *b, const NspdComm *comm) {
     }
     nspd_free(&counts);
     TRY(st);
-    /* the local index of each point of the whole body (-1: not kept;
-     * -2: a ghost, numbered below in the whole body's order) */
-    int64_t *local = NULL, *from = NULL;
-    TRY(nspd_alloc(&local, (size_t)total, sizeof *local));
-    for (int64_t g = 0; g < total; g++) local[g] = g >= lo && g < hi ? g - lo : -1;
-    int64_t ghosts = 0;
-    for (int64_t k = b->bond_first[lo]; k < b->bond_first[hi]; k++)
-        if (local[b->bond_nbr[k]] == -1) local[b->bond_nbr[k]] = -2, ghosts++;
-    int64_t *ghost = NULL;
-    int status = nspd_alloc(&ghost, (size_t)ghosts + 1, sizeof(int64_t));
-    if (status == NSPD_OK) status = nspd_alloc(&from, (size_t)(own + ghosts), sizeof *from);
-    if (status == NSPD_OK) {
-        for (int64_t i = 0; i < own; i++) from[i] = lo + i;
-        int64_t k = 0;
-        for (int64_t g = 0; g < total; g++)
-            if (local[g] == -2) {
-                local[g] = own + k;
-                ghost[k] = g;
-                from[own + k++] = g;
-            }
-        status = take_bonds(b, lo, hi, ghosts, local);
-    }
+    /* the local index of each point of the whole body: the run, then its
+     * ghosts in the whole body's order */
+    int64_t *local = NULL, *from = NULL, *ghost = NULL, ghosts = 0;
+    int status = point_halo_number(total, lo, hi, b->bond_first, b->bond_nbr, &local, &ghost, &from,
+                                   &ghosts);
+    if (status == NSPD_OK) status = take_bonds(b, lo, hi, ghosts, local);
     if (status == NSPD_OK) status = take_points(b, from, own + ghosts);
     if (status == NSPD_OK)
         status =

@@ -109,23 +109,8 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
      * ghosts in the whole body's order (-1: not kept) */
     int64_t *local = NULL, *from = NULL, *ghost = NULL, *asked = NULL, ghosts = 0, crossing = 0;
     Crossing *cross = NULL;
-    TRY(nspd_alloc(&local, (size_t)total, sizeof *local));
-    for (int64_t g = 0; g < total; g++) local[g] = g >= lo && g < hi ? g - lo : -1;
-    for (int64_t k = b->first[lo]; k < b->first[hi]; k++)
-        if (local[b->nbr[k]] == -1) local[b->nbr[k]] = -2, ghosts++;
-    int status = nspd_alloc(&ghost, (size_t)ghosts + 1, sizeof *ghost);
-    if (status == NSPD_OK) status = nspd_alloc(&from, (size_t)(own + ghosts), sizeof *from);
-    if (status == NSPD_OK) {
-        for (int64_t i = 0; i < own; i++) from[i] = lo + i;
-        int64_t k = 0;
-        for (int64_t g = 0; g < total; g++)
-            if (local[g] == -2) {
-                local[g] = own + k;
-                ghost[k] = g;
-                from[own + k++] = g;
-            }
-        status = crossings(b, lo, own, local, &cross, &crossing);
-    }
+    int status = point_halo_number(total, lo, hi, b->first, b->nbr, &local, &ghost, &from, &ghosts);
+    if (status == NSPD_OK) status = crossings(b, lo, own, local, &cross, &crossing);
     const int64_t count = b->first[hi] - b->first[lo];
     if (status == NSPD_OK) status = take_rows(b, h, lo, own, ghosts, local);
     for (int d = 0; d < 3 && status == NSPD_OK; d++) {

@@ -137,6 +137,30 @@ int halo_checkpoint_io(const NspdComm *comm, int64_t first, int64_t n, int64_t t
     return status;
 }
 
+int point_halo_number(int64_t total, int64_t lo, int64_t hi, const int64_t *first,
+                      const int32_t *nbr, int64_t **local, int64_t **ghost, int64_t **from,
+                      int64_t *ghosts) {
+    const int64_t own = hi - lo;
+    int64_t m = 0;
+    TRY(nspd_alloc(local, (size_t)total, sizeof **local));
+    int64_t *l = *local;
+    for (int64_t g = 0; g < total; g++) l[g] = g >= lo && g < hi ? g - lo : -1;
+    for (int64_t k = first[lo]; k < first[hi]; k++)
+        if (l[nbr[k]] == -1) l[nbr[k]] = -2, m++; /* a ghost, numbered below */
+    TRY(nspd_alloc(ghost, (size_t)m + 1, sizeof **ghost));
+    TRY(nspd_alloc(from, (size_t)(own + m) + 1, sizeof **from));
+    for (int64_t i = 0; i < own; i++) (*from)[i] = lo + i;
+    int64_t k = 0;
+    for (int64_t g = 0; g < total; g++)
+        if (l[g] == -2) {
+            l[g] = own + k;
+            (*ghost)[k] = g;
+            (*from)[own + k++] = g;
+        }
+    *ghosts = m;
+    return NSPD_OK;
+}
+
 int64_t point_halo_global(const PointHalo *h, int64_t i) {
     return i < h->n ? h->first + i : h->ghost[i - h->n];
 }

@@ -72,6 +72,16 @@ int halo_checkpoint_io(const NspdComm *comm, int64_t first, int64_t n, int64_t t
                        const int64_t *ghost, int64_t ghosts, Checkpoint *ck, const char *name,
                        void *mine, size_t size);
 
+/* The local numbering of a run [lo, hi) of `total` points whose rows
+ * first[lo] .. first[hi] of nbr (whole-body indices) reach other points:
+ * *local[g] the local index of whole point g (the run first, then its
+ * ghosts in the whole body's order; -1 not kept), *ghost the ghosts'
+ * whole indices, *from the whole index of each local point; new arrays
+ * (nspd_alloc) the caller frees. NSPD_ERR_NOMEM. */
+int point_halo_number(int64_t total, int64_t lo, int64_t hi, const int64_t *first,
+                      const int32_t *nbr, int64_t **local, int64_t **ghost, int64_t **from,
+                      int64_t *ghosts);
+
 /* The whole body's index of local point i (owned or ghost). */
 int64_t point_halo_global(const PointHalo *h, int64_t i);
 
