@@ -7,10 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A bond that crosses: the whole index of its reverse bond, and its own
- * local index. */
+/* A bond that crosses: the whole index of its reverse bond, its own
+ * local index and its point's. */
 typedef struct {
-    int64_t reverse, bond;
+    int64_t reverse, bond, point;
 } Crossing;
 
 static int by_reverse(const void *a, const void *b) {
@@ -77,8 +77,9 @@ static int crossings(const CpdBody *b, int64_t lo, int64_t own, const int64_t *l
     for (int64_t k = b0; k < b1; k++) m += local[b->nbr[k]] >= own ? 1 : 0;
     TRY(nspd_alloc(out, (size_t)m + 1, sizeof **out));
     m = 0;
-    for (int64_t k = b0; k < b1; k++)
-        if (local[b->nbr[k]] >= own) (*out)[m++] = (Crossing){b->reverse[k], k - b0};
+    for (int64_t i = lo; i < lo + own; i++)
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+            if (local[b->nbr[k]] >= own) (*out)[m++] = (Crossing){b->reverse[k], k - b0, i - lo};
     qsort(*out, (size_t)m, sizeof **out, by_reverse);
     *count = m;
     return NSPD_OK;
@@ -123,9 +124,12 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
     if (status == NSPD_OK) status = nspd_alloc(&asked, (size_t)crossing + 1, sizeof *asked);
     if (status == NSPD_OK)
         status = nspd_alloc(&h->cross_bond, (size_t)crossing + 1, sizeof(int64_t));
+    if (status == NSPD_OK)
+        status = nspd_alloc(&h->cross_point, (size_t)crossing + 1, sizeof(int64_t));
     if (status == NSPD_OK) {
         for (int64_t q = 0; q < crossing; q++)
-            asked[q] = cross[q].reverse, h->cross_bond[q] = cross[q].bond;
+            asked[q] = cross[q].reverse, h->cross_bond[q] = cross[q].bond,
+            h->cross_point[q] = cross[q].point;
         status = point_halo_plan(&h->bonds, comm, count, crossing, asked,
                                  (size_t)b->dim * sizeof(double));
     }
@@ -143,6 +147,7 @@ void cpd_halo_free(CpdHalo **hp) {
     point_halo_free(&h->points);
     point_halo_free(&h->bonds);
     nspd_free(&h->cross_bond);
+    nspd_free(&h->cross_point);
     nspd_free(&h->pair_whole);
     nspd_free(&h->pair_here);
     nspd_free(hp);

@@ -40,7 +40,8 @@ typedef struct CpdHalo {
      * [bonds.first, ...)); its "ghosts": the reverse bonds of the bonds
      * that cross, exchanged as the RK weights phi (dim a bond) */
     PointHalo bonds;
-    int64_t *cross_bond; /* per reverse bond asked, the local bond it is the reverse of */
+    int64_t *cross_bond;  /* per reverse bond asked, the local bond it is the reverse of */
+    int64_t *cross_point; /* and that bond's point */
     /* the pairs: per local pair its index among the whole body's, and
      * whether its canonical bond lies in this run (the checkpoint's) */
     int64_t pairs_total;

@@ -208,14 +208,15 @@ static void refresh_weights(CpdBody *b) {
         uint8_t *near = b->near;
         memcpy(near, b->dirty, (size_t)(b->n + b->ghosts));
         /* serial: few points change at a step, and a neighbour may be
-         * marked from several; a point next to a dirty ghost is marked
-         * from its own row (families are symmetric) */
+         * marked from several */
         for (int64_t i = 0; i < b->n; i++)
-            for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
-                const int32_t j = b->nbr[k];
-                if (b->dirty[i]) near[j] = 1;
-                if (j >= b->n && b->dirty[j]) near[i] = 1;
-            }
+            if (b->dirty[i])
+                for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) near[b->nbr[k]] = 1;
+        /* a point next to a dirty ghost, through its bond to it (families
+         * are symmetric) */
+        const CpdHalo *h = b->halo;
+        for (int64_t q = 0; h && q < h->bonds.ghosts; q++)
+            if (b->dirty[b->nbr[h->cross_bond[q]]]) near[h->cross_point[q]] = 1;
         bac_coefficients(&s, b->inv_w0, near, b->coef_c, b->phi_rev, b->phi_sum);
         cpd_halo_reverse_weights(b); /* the crossing bonds' phi_ji V_j */
     }
