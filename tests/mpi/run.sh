@@ -20,7 +20,7 @@
 # written on 3 ranks resumes on 2 and on 1 (the flow, the coupled
 # cylinder, the plate, the hollow cylinder), and a field written on 3
 # ranks starts a run on 1 (and one written by 1 a run on 3), all with the
-# same bits. Then the refusals: a bad case, the classic correspondence force, more
+# same bits. Then the refusals: a bad case, more
 # ranks than rows and the PDDO flow, each exit status 2 with its message
 # printed once; and runs that blow up (the flow, the solid), stopped on
 # every rank with the message of one process.
@@ -74,6 +74,12 @@ check_body block_3d block3d "2 3"
 check_body hollow_square_pressure hsq "2 3 4"
 check_body hollow_square_pressure hsq_stress "3" --set solid.model=plane_stress
 check_body hollow_cylinder_pulse hcy "2 3 4"
+# The classic force (per-point state; the crossing bonds' T_ji from their
+# owners, the damage law's ghost states exchanged)
+check_body hollow_square_pressure hsq_classic "2 3" --set solid.correspondence.force=classic
+check_body hollow_square_pressure hsq_classic_stress "3" --set solid.correspondence.force=classic \
+    --set solid.model=plane_stress
+check_body hollow_cylinder_pulse hcy_classic "2 4" --set solid.correspondence.force=classic
 
 # Checkpoints: written on 3 ranks (every 0.2 of 1.0), the newest resumed
 # on 2 and on 1 with the outputs after it removed; both end as the run of
@@ -214,6 +220,19 @@ if on 3 "$hcy" -o "$work/hck.3" --quiet $hcy_args --set output.checkpoint_interv
 else
     fail "the checkpointed correspondence solid on 3 ranks failed"
 fi
+# The classic force's checkpoint (the material state per point, ghosts
+# read back too) of 3 ranks resumed on 2.
+"$nspd" run "$hcy" -o "$work/hckc.ref" --quiet $hcy_args --set output.checkpoint_interval=1.5e-5 \
+    --set solid.correspondence.force=classic ||
+    fail "the checkpointed classic correspondence solid of one process failed"
+if on 3 "$hcy" -o "$work/hckc.3" --quiet $hcy_args --set output.checkpoint_interval=1.5e-5 \
+    --set solid.correspondence.force=classic; then
+    resume_check "$work/hckc.3" 2 solid "$work/hckc.ref" \
+        "the classic correspondence solid's checkpoint of 3 ranks resumed on 2" "$hcy" $hcy_args \
+        --set output.checkpoint_interval=1.5e-5 --set solid.correspondence.force=classic
+else
+    fail "the checkpointed classic correspondence solid on 3 ranks failed"
+fi
 # A solid that blows up (a given step 4 times the stable one) stops all
 # ranks with the message of one process.
 "$nspd" run "$plate" -o "$work/pblow.1" --quiet $plate_args --set time.dt=4e-7 2>/dev/null
@@ -277,9 +296,6 @@ refused() {
 }
 sod="$src/cases/sod.yaml"
 refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
-refused "the classic correspondence force on 2 ranks" \
-    "the classic correspondence force runs on one process only, not on 2" 2 \
-    "$src/cases/hollow_square_pressure.yaml" -o "$work/bad" --set solid.correspondence.force=classic
 refused "a correspondence body thinner than its family on 3 ranks" \
     "3900 points, the first at \\(-0.079, -0.079\\) m, have too few neighbours" 3 \
     "$src/cases/hollow_square_pressure.yaml" -o "$work/bad" --set solid.horizon_factor=1.0

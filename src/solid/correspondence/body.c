@@ -115,9 +115,9 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
     if (classic) TRY(state_arrays(b, n));
-    /* T (dim per bond); the bond-associated force's P_b (dim^2 per pair)
+    /* T (dim per bond, and per crossing bond its reverse's); the bond-associated force's P_b (dim^2 per pair)
      * comes with the pairs */
-    if (classic) TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * nb, sizeof(double)));
+    if (classic) TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * (nb + crossing), sizeof(double)));
     return NSPD_OK;
 }
 

@@ -162,6 +162,7 @@ int64_t classic_force(const ClassicSystem *s, ClassicState *st, const double *co
 #pragma omp parallel for schedule(static) reduction(+ : singular) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++)
         singular += point_state(s, st, i, u, g, F + 9 * i, P + 9 * i, T) ? 0 : 1;
+    if (s->exchange_bonds) s->exchange_bonds(s->exchange_context, T);
     bac_gather(dim, n, s->first, s->nbr, s->reverse, s->volume, T, force);
     return singular;
 }

@@ -70,6 +70,13 @@ typedef struct {
     double thickness;       /* 2D: the thickness the volumes carry, m (0: 1, per unit thickness) */
     double stabilisation;   /* C_s of the zero-energy penalty; 0: none */
     const double *bond_scale; /* 1 - damage per bond (NULL: 1): multiplies omega */
+    /* Several processes (solid/correspondence/halo.h): called with T
+     * between its pass and the gather, it puts the T of the reverse bonds
+     * that other processes own after the run's bonds, where reverse[]
+     * points for them (the points j past n are ghosts, with u and x but no
+     * bonds of their own). NULL on one process. */
+    void (*exchange_bonds)(void *context, double *T);
+    void *exchange_context;
 } ClassicSystem;
 
 /* The per-point state of the hypoelastic J2 material (2D only). */
@@ -90,7 +97,8 @@ typedef struct {
  * advances by the step from state->u_prev to u (2D).
  * work_point: 18 n doubles; on return F_i (9 i ..) and P_i (9 n + 9 i ..),
  * row-major 3 x 3 (identity and zero at a point with a singular K_i);
- * work_bond: dim per bond (T). Returns the number of points whose K_i was
+ * work_bond: dim per bond (T), and dim per reverse bond exchange_bonds
+ * brings. Returns the number of points whose K_i was
  * singular. */
 int64_t classic_force(const ClassicSystem *s, ClassicState *state, const double *const u[3],
                       double *const force[3], double *work_point, double *work_bond);

@@ -35,10 +35,12 @@ static int take_rows(CpdBody *b, CpdHalo *h, int64_t lo, int64_t own, int64_t gh
     if (status != NSPD_OK) goto done;
     for (int64_t i = 0; i <= own; i++) first[i] = b->first[lo + i] - b0;
     for (int64_t g = 1; g <= ghosts; g++) first[own + g] = count;
+    /* the classic force has no pairs (its state is per point) */
+    const bool paired = b->pairs.of != NULL;
     for (int64_t k = 0; k < count; k++) {
         nbr[k] = (int32_t)local[b->nbr[b0 + k]];
-        pair_of[k] = b->pairs.of[b0 + k];
-        canonical[k] = b->pairs.bond[pair_of[k]] == b0 + k;
+        pair_of[k] = paired ? b->pairs.of[b0 + k] : -1;
+        canonical[k] = paired && b->pairs.bond[pair_of[k]] == b0 + k;
     }
     h->pairs_total = b->pairs.count;
     nspd_free(&b->first);
@@ -51,10 +53,10 @@ static int take_rows(CpdBody *b, CpdHalo *h, int64_t lo, int64_t own, int64_t gh
     status = nspd_alloc(&b->reverse, (size_t)count + 1, sizeof(int64_t));
     if (status != NSPD_OK) goto done;
     (void)bac_reverse_bonds(own, b->first, b->nbr, b->reverse); /* -1: crosses */
-    status = bac_pairs_create(own, b->first, b->reverse, &b->pairs);
+    if (paired) status = bac_pairs_create(own, b->first, b->reverse, &b->pairs);
     const size_t np = (size_t)b->pairs.count + 1;
-    if (status == NSPD_OK) status = nspd_alloc(&h->pair_whole, np, sizeof(int64_t));
-    if (status == NSPD_OK) status = nspd_alloc(&h->pair_here, np, 1);
+    if (status == NSPD_OK && paired) status = nspd_alloc(&h->pair_whole, np, sizeof(int64_t));
+    if (status == NSPD_OK && paired) status = nspd_alloc(&h->pair_here, np, 1);
     for (int64_t p = 0; p < b->pairs.count && status == NSPD_OK; p++) {
         const int64_t k = b->pairs.bond[p];
         h->pair_whole[p] = pair_of[k];
@@ -88,12 +90,6 @@ static int crossings(const CpdBody *b, int64_t lo, int64_t own, const int64_t *l
 int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
     if (!comm_distributed(comm)) return NSPD_OK;
     const int p = comm->size, r = comm->rank;
-    if (b->cfg.force == CPD_FORCE_CLASSIC)
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "solid: the classic correspondence force runs on one process only, not "
-                         "on %d; expected correspondence.force: bond_associated (the default), "
-                         "or a run without mpirun",
-                         p);
     const int64_t total = b->n;
     if (total < p)
         return NSPD_FAIL(NSPD_ERR_INPUT,
@@ -133,6 +129,10 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
         status = point_halo_plan(&h->bonds, comm, count, crossing, asked,
                                  (size_t)b->dim * sizeof(double));
     }
+    /* the classic force's gather reads T_ji of a crossing bond where the
+     * bonds' exchange puts it, after the run's bonds (cpd_halo_bonds) */
+    for (int64_t q = 0; status == NSPD_OK && b->cfg.force == CPD_FORCE_CLASSIC && q < crossing; q++)
+        b->reverse[h->cross_bond[q]] = count + q;
     nspd_free(&local);
     nspd_free(&from);
     nspd_free(&ghost);
@@ -157,11 +157,16 @@ void cpd_halo_exchange(CpdBody *b, void *const *arrays, int count, size_t bytes)
     if (b->halo) point_halo_exchange(&b->halo->points, arrays, count, bytes);
 }
 
+void cpd_halo_bonds(CpdBody *b, double *per_bond) {
+    if (!b->halo) return;
+    void *arrays[1] = {per_bond};
+    point_halo_exchange(&b->halo->bonds, arrays, 1, (size_t)b->dim * sizeof(double));
+}
+
 void cpd_halo_reverse_weights(CpdBody *b) {
     CpdHalo *h = b->halo;
     if (!h) return;
-    void *phi[1] = {b->phi};
-    point_halo_exchange(&h->bonds, phi, 1, (size_t)b->dim * sizeof(double));
+    cpd_halo_bonds(b, b->phi);
     /* bac_coefficients' phi_ji V_j, the reverse bond's weights asked of
      * j's owner (after the run's own bonds' weights in phi) */
     const int dim = b->dim;

@@ -26,8 +26,12 @@
  * together (integers: exact); the stable step's dot products and the
  * diagnostics' sums gather the terms in the whole body's order.
  *
- * The classic force is not divided (its T_ji per bond would be one more
- * exchange): refused on several processes. */
+ * The classic force is divided too: its state is per point, so a ghost's
+ * T_ji (formed from the ghost's own F and P) is its owner's, asked of it
+ * after the T pass through the bonds' halo (cpd_halo_bonds; a crossing
+ * bond's reverse[] points past the run's bonds, where that puts it), and
+ * the damage law reads the ghosts' plastic strain, principal stress and
+ * inversion flag, exchanged before it. */
 #ifndef NSPD_SOLID_CORRESPONDENCE_HALO_H
 #define NSPD_SOLID_CORRESPONDENCE_HALO_H
 
@@ -52,13 +56,19 @@ typedef struct CpdHalo {
 /* Keeps this rank's part of the whole body `b`, which holds only its
  * points (x, lattice) and families (first, nbr, reverse, pairs) so far
  * (see above; body.c's build). Nothing on one process. NSPD_ERR_INPUT:
- * the classic force, or fewer points than processes; NSPD_ERR_NOMEM. */
+ * fewer points than processes; NSPD_ERR_NOMEM. */
 int cpd_body_divide(CpdBody *b, const NspdComm *comm);
 void cpd_halo_free(CpdHalo **h);
 
 /* The ghosts' entries of `count` per-point arrays of `bytes` a point
  * (collective; nothing on one process). */
 void cpd_halo_exchange(CpdBody *b, void *const *arrays, int count, size_t bytes);
+
+/* Of a per-bond array of dim doubles a bond (room for the run's bonds and
+ * then one per bond that crosses): the reverse bonds of the crossing bonds,
+ * from their owners, after the run's (collective; nothing on one process).
+ * The classic force's T_ji; its reverse[] points there. */
+void cpd_halo_bonds(CpdBody *b, double *per_bond);
 
 /* phi_rev of the bonds that cross from their owners' RK weights
  * (collective; after the weights or the damage changed). */

@@ -459,9 +459,8 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     }
     /* the material state: per point (classic) or per pair */
     if (b->cfg.force == CPD_FORCE_CLASSIC) {
-        const size_t n = (size_t)b->n;
-        TRY(checkpoint_io(ck, "cpd.sigma", b->sigma, 4 * n * d8));
-        TRY(checkpoint_io(ck, "cpd.eqps", b->eqps, n * d8));
+        TRY(cpd_halo_io_points(b, ck, "cpd.sigma", b->sigma, 4 * d8));
+        TRY(cpd_halo_io_points(b, ck, "cpd.eqps", b->eqps, d8));
     } else {
         TRY(cpd_halo_io_pairs(b, ck, "cpd.sigma", b->sigma, d8, 4));
         TRY(cpd_halo_io_pairs(b, ck, "cpd.eqps", b->eqps, d8, 1));
@@ -469,10 +468,9 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
     TRY(cpd_halo_io_bonds(b, ck, "cpd.damage", b->damage, d8));
     TRY(cpd_halo_io_bonds(b, ck, "cpd.scale", b->scale, d8));
     if (b->cfg.force == CPD_FORCE_CLASSIC) {
-        const size_t n = (size_t)b->n;
-        TRY(checkpoint_io(ck, "cpd.principal", b->principal, n * d8));
-        TRY(checkpoint_io(ck, "cpd.inverted", b->inverted, n));
-        if (b->strain_zz) TRY(checkpoint_io(ck, "cpd.strain_zz", b->strain_zz, n * d8));
+        TRY(cpd_halo_io_points(b, ck, "cpd.principal", b->principal, d8));
+        TRY(cpd_halo_io_points(b, ck, "cpd.inverted", b->inverted, 1));
+        if (b->strain_zz) TRY(cpd_halo_io_points(b, ck, "cpd.strain_zz", b->strain_zz, d8));
     } else {
         TRY(cpd_halo_io_pairs(b, ck, "cpd.principal", b->principal, d8, 1));
         TRY(cpd_halo_io_pairs(b, ck, "cpd.inverted", b->inverted, 1, 1));

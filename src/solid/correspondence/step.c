@@ -45,6 +45,12 @@ static BacSystem system_of(const CpdBody *b) {
     return s;
 }
 
+/* ClassicSystem.exchange_bonds on several processes: the crossing bonds'
+ * reverse T from their owners */
+static void exchange_reverse_bonds(void *body, double *T) {
+    cpd_halo_bonds(body, T);
+}
+
 static ClassicSystem classic_of(const CpdBody *b) {
     ClassicSystem s = {.dim = b->dim,
                        .n = b->n,
@@ -58,7 +64,9 @@ static ClassicSystem classic_of(const CpdBody *b) {
                        .delta = b->delta,
                        .thickness = b->dim == 2 ? b->cfg.pd.thickness : 0.0,
                        .stabilisation = b->cfg.stabilisation,
-                       .bond_scale = b->scale};
+                       .bond_scale = b->scale,
+                       .exchange_bonds = b->halo ? exchange_reverse_bonds : NULL,
+                       .exchange_context = (void *)b};
     for (int d = 0; d < 3; d++) s.x[d] = b->x[d];
     return s;
 }
@@ -172,6 +180,12 @@ static int64_t update_damage(CpdBody *b) {
     /* most steps break nothing: then the pass over the bonds is skipped
      * (b->redo is read only when something grew) */
     if (by_pair && cpd_halo_sum(b, pair_damage(b, dpair)) == 0) return 0; /* all ranks alike */
+    if (b->cfg.force == CPD_FORCE_CLASSIC) {
+        /* the law reads both ends' point state: the ghosts' from their owners */
+        void *state[2] = {b->eqps, b->principal}, *inverted[1] = {b->inverted};
+        cpd_halo_exchange(b, state, 2, sizeof(double));
+        cpd_halo_exchange(b, inverted, 1, 1);
+    }
 #pragma omp parallel for schedule(static) reduction(+ : grown) if (b->bond_count >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         uint8_t redo = 0;
