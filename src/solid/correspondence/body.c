@@ -18,14 +18,16 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The square family |xi|_inf <= delta is the disc search of radius
- * sqrt(dim) delta, filtered in place (one neighbour search in the code
- * base); the same 1e-12 margin as neighbours_find, so lattice neighbours at
- * exactly delta are in. */
-static int find_families(CpdBody *b) {
+/* The rows of the points with rows[i] (NULL: all) of the family: the
+ * square family |xi|_inf <= delta is the disc search of radius sqrt(dim)
+ * delta, filtered in place (one neighbour search in the code base); the
+ * same 1e-12 margin as neighbours_find, so lattice neighbours at exactly
+ * delta are in. */
+static int find_rows(CpdBody *b, const uint8_t *rows) {
     const bool square = b->cfg.family == CPD_FAMILY_SQUARE;
     const double reach = square ? b->delta * sqrt((double)b->dim) : b->delta;
-    TRY(neighbours_find(b->n, b->dim, (const double *const *)b->x, reach, &b->first, &b->nbr));
+    TRY(neighbours_find_rows(b->n, b->dim, (const double *const *)b->x, reach, rows, &b->first,
+                             &b->nbr));
     if (square) {
         const double limit = b->delta * (1.0 + 1e-12);
         int64_t kept = 0;
@@ -50,6 +52,28 @@ static int find_families(CpdBody *b) {
     }
     b->bond_count = b->first[b->n];
     return NSPD_OK;
+}
+
+/* The families of the whole body, or on several processes (comm) those
+ * of this rank's run (halo.h) and of the points they reach, whose rows
+ * hold the reverse bonds; every other row empty. So a rank never holds
+ * the whole body's bonds. */
+static int find_families(CpdBody *b, const NspdComm *comm) {
+    if (!comm) return find_rows(b, NULL);
+    const int64_t n = b->n, lo = point_halo_run_start(n, comm->size, comm->rank),
+                  hi = point_halo_run_start(n, comm->size, comm->rank + 1);
+    uint8_t *rows = NULL;
+    TRY(nspd_alloc(&rows, (size_t)n + 1, 1));
+    for (int64_t i = lo; i < hi; i++) rows[i] = 1;
+    int status = find_rows(b, rows);
+    if (status == NSPD_OK) { /* the run's neighbours too, then all their rows */
+        for (int64_t k = b->first[lo]; k < b->first[hi]; k++) rows[b->nbr[k]] = 1;
+        nspd_free(&b->first);
+        nspd_free(&b->nbr);
+        status = find_rows(b, rows);
+    }
+    nspd_free(&rows);
+    return status;
 }
 
 /* sigma (4), eqps, principal, inverted and, in plane stress, strain_zz of
@@ -205,15 +229,18 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
         b->x[d] = lat.x[d];
         b->lattice[d] = lat.index[d];
     }
-    TRY(find_families(b));
+    TRY(find_families(b, comm));
     TRY(nspd_alloc(&b->reverse, (size_t)b->bond_count + 1, sizeof(int64_t)));
-    if (bac_reverse_bonds(b->n, b->first, b->nbr, b->reverse) != 0)
-        return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
-    if (cfg->force != CPD_FORCE_CLASSIC)
-        TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
-    /* several processes: the run's part of the families from here on,
-     * and everything below for the part alone (halo.h) */
+    /* several processes: the run's part of the families from here on
+     * (its bonds' reverse bonds are in its neighbours' rows; the
+     * neighbours' bonds to points further away have none here), and
+     * everything below for the part alone (halo.h) */
+    const int64_t missing = bac_reverse_bonds(b->n, b->first, b->nbr, b->reverse);
     if (comm) TRY(cpd_body_divide(b, comm));
+    else if (missing != 0)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
+    if (!comm && cfg->force != CPD_FORCE_CLASSIC)
+        TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
     TRY(alloc_arrays(b));
     const int64_t na = b->n + b->ghosts;
     const double v_ref = pow(pd->spacing, b->dim) * (b->dim == 2 ? pd->thickness : 1.0);

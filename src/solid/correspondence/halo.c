@@ -7,10 +7,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A bond that crosses: the whole index of its reverse bond, its own
- * local index and its point's. */
+/* A bond that crosses: the whole index of its reverse bond (known once
+ * the owners' bond numbers are), its own local index and its point's, the
+ * local index of the ghost it reaches and its reverse bond's place in the
+ * ghost's row. */
 typedef struct {
-    int64_t reverse, bond, point;
+    int64_t reverse, bond, point, ghost, place;
 } Crossing;
 
 static int by_reverse(const void *a, const void *b) {
@@ -18,73 +20,138 @@ static int by_reverse(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
-/* The rows of the run [lo, lo + own) with their neighbours renumbered by
- * local[] (ghosts' rows empty), the reverse bonds among them (-1 where
- * one crosses), the pairs anew, and each pair's whole index: the whole
- * body's pair of its canonical bond (pair_of: whole, before). */
-static int take_rows(CpdBody *b, CpdHalo *h, int64_t lo, int64_t own, int64_t ghosts,
-                     const int64_t *local) {
-    const int64_t b0 = b->first[lo], count = b->first[lo + own] - b0;
-    int64_t *first = NULL, *pair_of = NULL;
-    int32_t *nbr = NULL;
-    uint8_t *canonical = NULL;
-    int status = nspd_alloc(&first, (size_t)(own + ghosts + 1), sizeof *first);
-    if (status == NSPD_OK) status = nspd_alloc(&nbr, (size_t)count + 1, sizeof *nbr);
-    if (status == NSPD_OK) status = nspd_alloc(&pair_of, (size_t)count + 1, sizeof *pair_of);
-    if (status == NSPD_OK) status = nspd_alloc(&canonical, (size_t)count + 1, 1);
-    if (status != NSPD_OK) goto done;
-    for (int64_t i = 0; i <= own; i++) first[i] = b->first[lo + i] - b0;
-    for (int64_t g = 1; g <= ghosts; g++) first[own + g] = count;
-    /* the classic force has no pairs (its state is per point) */
-    const bool paired = b->pairs.of != NULL;
-    for (int64_t k = 0; k < count; k++) {
-        nbr[k] = (int32_t)local[b->nbr[b0 + k]];
-        pair_of[k] = paired ? b->pairs.of[b0 + k] : -1;
-        canonical[k] = paired && b->pairs.bond[pair_of[k]] == b0 + k;
-    }
-    h->pairs_total = b->pairs.count;
-    nspd_free(&b->first);
-    nspd_free(&b->nbr);
-    nspd_free(&b->reverse);
-    bac_pairs_free(&b->pairs);
-    b->first = first, b->nbr = nbr;
-    first = NULL, nbr = NULL;
-    b->n = own, b->ghosts = ghosts, b->bond_count = count;
-    status = nspd_alloc(&b->reverse, (size_t)count + 1, sizeof(int64_t));
-    if (status != NSPD_OK) goto done;
-    (void)bac_reverse_bonds(own, b->first, b->nbr, b->reverse); /* -1: crosses */
-    if (paired) status = bac_pairs_create(own, b->first, b->reverse, &b->pairs);
-    const size_t np = (size_t)b->pairs.count + 1;
-    if (status == NSPD_OK && paired) status = nspd_alloc(&h->pair_whole, np, sizeof(int64_t));
-    if (status == NSPD_OK && paired) status = nspd_alloc(&h->pair_here, np, 1);
-    for (int64_t p = 0; p < b->pairs.count && status == NSPD_OK; p++) {
-        const int64_t k = b->pairs.bond[p];
-        h->pair_whole[p] = pair_of[k];
-        h->pair_here[p] = canonical[k];
-    }
-done:
-    nspd_free(&first);
-    nspd_free(&nbr);
-    nspd_free(&pair_of);
-    nspd_free(&canonical);
-    return status;
-}
-
-/* The bonds of the run that cross, sorted by the whole index of their
- * reverse bond (so by its owner): the bonds' halo's "ghosts". */
+/* The bonds of the run [lo, lo + own) that cross (their reverse bonds
+ * not yet numbered), in bond order; the rows of the run and of the points
+ * it reaches are the whole body's numbering (body.c's find_families), so
+ * each run bond's reverse lies in its neighbour's row. NSPD_ERR_INTERNAL
+ * where one does not (families not symmetric). */
 static int crossings(const CpdBody *b, int64_t lo, int64_t own, const int64_t *local,
                      Crossing **out, int64_t *count) {
     const int64_t b0 = b->first[lo], b1 = b->first[lo + own];
     int64_t m = 0;
-    for (int64_t k = b0; k < b1; k++) m += local[b->nbr[k]] >= own ? 1 : 0;
+    for (int64_t k = b0; k < b1; k++) {
+        if (b->reverse[k] < 0)
+            return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
+        m += local[b->nbr[k]] >= own ? 1 : 0;
+    }
     TRY(nspd_alloc(out, (size_t)m + 1, sizeof **out));
     m = 0;
     for (int64_t i = lo; i < lo + own; i++)
-        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
-            if (local[b->nbr[k]] >= own) (*out)[m++] = (Crossing){b->reverse[k], k - b0, i - lo};
-    qsort(*out, (size_t)m, sizeof **out, by_reverse);
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
+            const int64_t j = b->nbr[k];
+            if (local[j] >= own)
+                (*out)[m++] = (Crossing){-1, k - b0, i - lo, local[j], b->reverse[k] - b->first[j]};
+        }
     *count = m;
     return NSPD_OK;
+}
+
+/* The rows of the run [lo, lo + own) with their neighbours renumbered by
+ * local[] (ghosts' rows empty) and the reverse bonds among them (-1 where
+ * one crosses); the rest of the families freed. */
+static int take_rows(CpdBody *b, int64_t lo, int64_t own, int64_t ghosts, const int64_t *local) {
+    const int64_t b0 = b->first[lo], count = b->first[lo + own] - b0;
+    int64_t *first = NULL;
+    int32_t *nbr = NULL;
+    TRY(nspd_alloc(&first, (size_t)(own + ghosts + 1), sizeof *first));
+    int status = nspd_alloc(&nbr, (size_t)count + 1, sizeof *nbr);
+    if (status != NSPD_OK) {
+        nspd_free(&first);
+        return status;
+    }
+    for (int64_t i = 0; i <= own; i++) first[i] = b->first[lo + i] - b0;
+    for (int64_t g = 1; g <= ghosts; g++) first[own + g] = count;
+    for (int64_t k = 0; k < count; k++) nbr[k] = (int32_t)local[b->nbr[b0 + k]];
+    nspd_free(&b->first);
+    nspd_free(&b->nbr);
+    nspd_free(&b->reverse);
+    b->first = first, b->nbr = nbr;
+    b->n = own, b->ghosts = ghosts, b->bond_count = count;
+    TRY(nspd_alloc(&b->reverse, (size_t)count + 1, sizeof(int64_t)));
+    (void)bac_reverse_bonds(own, b->first, b->nbr, b->reverse); /* -1: crosses */
+    return NSPD_OK;
+}
+
+/* Each rank's value of one integer gathered into all[comm size]. */
+static int gather_counts(const NspdComm *comm, int64_t mine, int64_t *all) {
+    return comm_allgatherv_bytes(comm, &mine, (int)sizeof mine, all);
+}
+
+/* The whole body's index of each crossing bond's reverse: its ghost's
+ * first bond in the whole numbering (the bonds' runs lie in rank order,
+ * each its points' rows in order), asked of the ghost's owner, plus its
+ * place in the ghost's row; then the crossings sorted by it (so by
+ * owner), the bonds' halo's "ghosts". *start: the run's first bond. */
+static int number_reverse(CpdBody *b, const NspdComm *comm, Crossing *cross, int64_t crossing,
+                          int64_t *start) {
+    const int64_t na = b->n + b->ghosts;
+    int64_t *counts = NULL, *whole_first = NULL;
+    int status = nspd_alloc(&counts, (size_t)comm->size, sizeof *counts);
+    if (status == NSPD_OK) status = nspd_alloc(&whole_first, (size_t)na + 1, sizeof *whole_first);
+    if (status == NSPD_OK) status = gather_counts(comm, b->bond_count, counts);
+    if (status == NSPD_OK) {
+        *start = 0;
+        for (int q = 0; q < comm->rank; q++) *start += counts[q];
+        for (int64_t i = 0; i < b->n; i++) whole_first[i] = *start + b->first[i];
+        void *arrays[1] = {whole_first};
+        point_halo_exchange(&b->halo->points, arrays, 1, sizeof *whole_first);
+        for (int64_t q = 0; q < crossing; q++)
+            cross[q].reverse = whole_first[cross[q].ghost] + cross[q].place;
+        qsort(cross, (size_t)crossing, sizeof *cross, by_reverse);
+    }
+    nspd_free(&counts);
+    nspd_free(&whole_first);
+    return status;
+}
+
+/* The pairs of the run's rows (a crossing bond a pair of its own) and
+ * each one's index among the whole body's pairs, which are numbered in
+ * the order of their canonical bonds (the lower whole index of the two):
+ * the pairs canonical here are a run of them, after the lower ranks'
+ * (their counts gathered); a crossing pair canonical on the other rank
+ * takes that rank's number for it, asked through the bonds' halo. */
+static int number_pairs(CpdBody *b, const NspdComm *comm, int64_t start) {
+    CpdHalo *h = b->halo;
+    TRY(bac_pairs_create(b->n, b->first, b->reverse, &b->pairs));
+    const int64_t np = b->pairs.count, nb = b->bond_count, crossing = h->bonds.ghosts;
+    int64_t *counts = NULL, *whole = NULL, *reverse_of = NULL;
+    int status = nspd_alloc(&h->pair_whole, (size_t)np + 1, sizeof(int64_t));
+    if (status == NSPD_OK) status = nspd_alloc(&h->pair_here, (size_t)np + 1, 1);
+    if (status == NSPD_OK) status = nspd_alloc(&counts, (size_t)comm->size, sizeof *counts);
+    if (status == NSPD_OK) status = nspd_alloc(&whole, (size_t)(nb + crossing) + 1, sizeof *whole);
+    if (status == NSPD_OK) status = nspd_alloc(&reverse_of, (size_t)nb + 1, sizeof *reverse_of);
+    if (status != NSPD_OK) goto done;
+    /* the whole index of each crossing bond's reverse, by bond (-1: none) */
+    for (int64_t k = 0; k < nb; k++) reverse_of[k] = -1;
+    for (int64_t q = 0; q < crossing; q++) reverse_of[h->cross_bond[q]] = h->bonds.ghost[q];
+    int64_t here = 0;
+    for (int64_t p = 0; p < np; p++) {
+        const int64_t k = b->pairs.bond[p];
+        h->pair_here[p] = reverse_of[k] < 0 || reverse_of[k] > start + k;
+        here += h->pair_here[p];
+    }
+    status = gather_counts(comm, here, counts);
+    if (status != NSPD_OK) goto done;
+    int64_t next = 0;
+    h->pairs_total = 0;
+    for (int q = 0; q < comm->size; q++) {
+        if (q < comm->rank) next += counts[q];
+        h->pairs_total += counts[q];
+    }
+    for (int64_t p = 0; p < np; p++) h->pair_whole[p] = h->pair_here[p] ? next++ : -1;
+    /* the other rank's numbers of the pairs canonical there */
+    for (int64_t k = 0; k < nb; k++) whole[k] = h->pair_whole[b->pairs.of[k]];
+    void *arrays[1] = {whole};
+    point_halo_exchange(&h->bonds, arrays, 1, sizeof *whole);
+    for (int64_t q = 0; q < crossing; q++) {
+        const int64_t p = b->pairs.of[h->cross_bond[q]];
+        if (!h->pair_here[p]) h->pair_whole[p] = whole[nb + q];
+    }
+done:
+    nspd_free(&counts);
+    nspd_free(&whole);
+    nspd_free(&reverse_of);
+    return status;
 }
 
 int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
@@ -105,11 +172,11 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
     /* the local index of each point of the whole body: the run, then the
      * ghosts in the whole body's order (-1: not kept) */
     int64_t *local = NULL, *from = NULL, *ghost = NULL, *asked = NULL, ghosts = 0, crossing = 0;
+    int64_t start = 0;
     Crossing *cross = NULL;
     int status = point_halo_number(total, lo, hi, b->first, b->nbr, &local, &ghost, &from, &ghosts);
     if (status == NSPD_OK) status = crossings(b, lo, own, local, &cross, &crossing);
-    const int64_t count = b->first[hi] - b->first[lo];
-    if (status == NSPD_OK) status = take_rows(b, h, lo, own, ghosts, local);
+    if (status == NSPD_OK) status = take_rows(b, lo, own, ghosts, local);
     for (int d = 0; d < 3 && status == NSPD_OK; d++) {
         status = point_halo_take(&b->x[d], sizeof(double), from, own + ghosts);
         if (status == NSPD_OK)
@@ -117,6 +184,7 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
     }
     if (status == NSPD_OK)
         status = point_halo_plan(&h->points, comm, own, ghosts, ghost, 9 * sizeof(double));
+    if (status == NSPD_OK) status = number_reverse(b, comm, cross, crossing, &start);
     if (status == NSPD_OK) status = nspd_alloc(&asked, (size_t)crossing + 1, sizeof *asked);
     if (status == NSPD_OK)
         status = nspd_alloc(&h->cross_bond, (size_t)crossing + 1, sizeof(int64_t));
@@ -126,13 +194,16 @@ int cpd_body_divide(CpdBody *b, const NspdComm *comm) {
         for (int64_t q = 0; q < crossing; q++)
             asked[q] = cross[q].reverse, h->cross_bond[q] = cross[q].bond,
             h->cross_point[q] = cross[q].point;
-        status = point_halo_plan(&h->bonds, comm, count, crossing, asked,
+        status = point_halo_plan(&h->bonds, comm, b->bond_count, crossing, asked,
                                  (size_t)b->dim * sizeof(double));
     }
-    /* the classic force's gather reads T_ji of a crossing bond where the
-     * bonds' exchange puts it, after the run's bonds (cpd_halo_bonds) */
+    /* the bond-associated force's pairs; the classic force's gather reads
+     * T_ji of a crossing bond where the bonds' exchange puts it, after the
+     * run's bonds (cpd_halo_bonds) */
+    if (status == NSPD_OK && b->cfg.force != CPD_FORCE_CLASSIC)
+        status = number_pairs(b, comm, start);
     for (int64_t q = 0; status == NSPD_OK && b->cfg.force == CPD_FORCE_CLASSIC && q < crossing; q++)
-        b->reverse[h->cross_bond[q]] = count + q;
+        b->reverse[h->cross_bond[q]] = b->bond_count + q;
     nspd_free(&local);
     nspd_free(&from);
     nspd_free(&ghost);

@@ -1,12 +1,17 @@
 /* A correspondence body divided between processes (issue 28: a solid
  * alone on several ranks), bitwise the run of one process.
  *
- * Every rank places the whole body's points and finds its families (the
- * lattice, the neighbour lists, the reverse bonds and the bond pairs:
- * about 30 bytes a bond), then keeps its run of points in the Morton
- * order and, as ghosts, the points its bonds reach (the point halo of
- * solid/pd/halo.h, as the bond-based body), and frees the rest; the
- * build goes on with the part alone (kernel, RK weights, the settling of
+ * Every rank places the whole body's points (the lattice) but finds the
+ * families of its run of points in the Morton order and of the points
+ * they reach only (body.c), so no rank holds the whole body's bonds; it
+ * keeps the run and, as ghosts, the points its bonds reach (the point
+ * halo of solid/pd/halo.h, as the bond-based body), and frees the rest.
+ * The whole numbering that outputs and checkpoints need is formed from
+ * the parts: a bond's whole index from its point's first bond in the
+ * whole numbering (the runs' bond counts gathered, the ghosts' asked of
+ * their owners), a pair's from the counts of the pairs canonical in each
+ * run (a crossing pair's from the rank where its canonical bond lies).
+ * The build goes on with the part alone (kernel, RK weights, the settling of
  * the pre-cracks, the stable step: all through the exchanges below, so
  * the same bits as one process).
  *
