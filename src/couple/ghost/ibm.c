@@ -194,8 +194,12 @@ static void build_probes_for(Ibm *ibm, int s) {
     const int i = grid_axis_cell_of(&g->ax[0], mx), j = grid_axis_cell_of(&g->ax[1], my);
     const double h = fmax(g->ax[0].width[i], g->ax[1].width[j]);
     for (int q = 0; q < 2; q++) {
-        const double d = (q + 1) * IBM_PROBE_STEP * h;
-        ibm_build_point(ibm, mx + d * nx, my + d * ny, d, NULL, &ibm->probes, 2 * s + q);
+        const double d = (q + 1) * IBM_PROBE_STEP * h, px = mx + d * nx, py = my + d * ny;
+        /* another process's probe: its place only (the loads read its
+         * distance, the plan its cell) */
+        ibm_place_point(ibm, px, py, d, &ibm->probes, 2 * s + q);
+        if (ibm_share_evaluates(ibm, ibm->probes.cell[2 * s + q]))
+            ibm_build_point(ibm, px, py, d, NULL, &ibm->probes, 2 * s + q);
     }
 }
 
@@ -208,7 +212,10 @@ static int build_probes(Ibm *ibm) {
     return NSPD_OK;
 }
 
-/* Ghost statistics (O(ghosts)); the solid count is kept by the callers. */
+/* Ghost statistics (O(ghosts)); the solid count is kept by the callers.
+ * On several processes, after an update, of the stencils this process
+ * built (its block and halo): the levels, cases and weights; the count
+ * of ghosts is the whole grid's. */
 static void count_stats(Ibm *ibm) {
     IbmUpdateStats *st = &ibm->last;
     const IbmStencilSet *G = &ibm->ghosts;
@@ -217,6 +224,7 @@ static void count_stats(Ibm *ibm) {
     memset(st->by_case, 0, sizeof st->by_case);
     st->max_weight_sum = 0.0;
     for (int e = 0; e < G->n; e++) {
+        if (G->level[e] >= IBM_LEVEL_COUNT) continue; /* another process's */
         st->by_level[G->level[e]]++;
         if (G->level[e] == IBM_LEVEL_IMAGE && G->nrep[e] < 3) st->by_case[G->nrep[e]]++;
         double sd = 0.0, sn = 0.0;
@@ -792,10 +800,13 @@ static int rebuild_ghost_list(Ibm *ibm, int64_t nq, int nadd) {
         if (ibm->kind[k] == FLOW_CELL_GHOST && ibm->slot[k] < 0) N->cell[N->n++] = k;
     }
     qsort(N->cell, (size_t)N->n, sizeof(int64_t), cmp_i64);
-    int rebuilt = 0;
+    int rebuilt = 0, elsewhere = 0;
     for (int e = 0; e < N->n; e++) {
         const int f = ibm->slot[N->cell[e]];
-        if (f >= 0 && !box_touches_moved(ibm, O->dep + 4 * f)) {
+        if (!ibm_share_fills(ibm, N->cell[e])) { /* another process's: never read here */
+            N->level[e] = IBM_LEVEL_ELSEWHERE;
+            elsewhere++;
+        } else if (f >= 0 && !box_touches_moved(ibm, O->dep + 4 * f)) {
             keep_ghost(ibm, N, e, O, f);
         } else {
             N->level[e] = 255; /* to build */
@@ -811,7 +822,7 @@ static int rebuild_ghost_list(Ibm *ibm, int64_t nq, int nadd) {
         ibm_build_ghost(ibm, i, j, N, e);
     }
     ibm->last.rebuilt = rebuilt;
-    ibm->last.kept = N->n - rebuilt;
+    ibm->last.kept = N->n - rebuilt - elsewhere;
     for (int e = 0; e < O->n; e++) ibm->slot[O->cell[e]] = -1;
     for (int e = 0; e < N->n; e++) ibm->slot[N->cell[e]] = e;
     const IbmStencilSet tmp = *O;

@@ -35,6 +35,10 @@ enum { IBM_REACH = 2 };
  * is 1.5 %. */
 #define IBM_PROBE_STEP 0.5
 
+/* The level of a ghost entry another process fills (on several
+ * processes an update builds only the stencils this one reads). */
+enum { IBM_LEVEL_ELSEWHERE = 254 };
+
 /* Stencil node slot states (rseg). */
 enum { IBM_NODE_FLUID = -1, IBM_NODE_UNUSED = -2 };
 
@@ -171,14 +175,25 @@ void ibm_build_ghost(const Ibm *ibm, int i, int j, IbmStencilSet *set, int e);
  * the wall; `exclude` (may be NULL): cells flagged there are not usable. */
 void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const uint8_t *exclude,
                      IbmStencilSet *set, int e);
+/* ibm_build_point's entry without the stencil (the point, its cell and
+ * its distance; level IBM_LEVEL_ELSEWHERE): a probe another process
+ * evaluates. */
+void ibm_place_point(const Ibm *ibm, double px, double py, double dist, IbmStencilSet *set, int e);
 
 /* ------------------------------------------------------------ processes */
 /* share.c: the plan of which ghosts and probes this process evaluates and
  * which cells it fetches, built by ibm_attach when the solver runs on
  * several processes. */
 int ibm_share_create(Ibm *ibm, GksSolver *s);
-/* The plan again, for the ghosts and probes of moved walls (ibm_update). */
+/* The plan again, for the ghosts and probes of moved walls (ibm_update):
+ * each process lists the cells its own stencils read and asks their
+ * owners for them (collective). */
 int ibm_share_replan(Ibm *ibm);
+/* Whether this process fills the ghost cell `cell` (its block and the
+ * two-cell halo around it) and evaluates a probe whose point lies in
+ * `cell` (its block); both true on one process (no share). */
+bool ibm_share_fills(const Ibm *ibm, int64_t cell);
+bool ibm_share_evaluates(const Ibm *ibm, int64_t cell);
 /* The current values of the n cells (the same list on every rank, each
  * cell once) into the shadow, from the ranks that hold them; collective. */
 int ibm_share_fetch(const Ibm *ibm, int n, const int64_t *cells);

@@ -12,9 +12,9 @@
  * instead of a halo as wide as the widest stencil on every step of every
  * rank, each process fetches exactly the cells its stencils read from the
  * processes that hold them, once per fill (a few per ghost cell near a
- * block's edge; none for a rank whose block holds no wall). The lists are
- * computed on every rank from the replicated stencils, so no negotiation
- * is needed. A cell's owner and its index on a rank are the solver's
+ * block's edge; none for a rank whose block holds no wall). Each process
+ * lists what its own stencils read and tells each owner what it asks
+ * (two all-to-all exchanges a plan). A cell's owner and its index on a rank are the solver's
  * (gks_solver_cell_owner, gks_solver_local_cell).
  *
  * The values are gathered into a shadow of the conserved fields: a window
@@ -25,10 +25,14 @@
  * serial one, bit for bit. The window costs 32 bytes a cell of the block
  * and the margin its stencils reach (a block far from every wall: its own
  * cells only), not of the whole grid. Moving walls (ibm_update) update the
- * replicated Ibm alike on every rank, widen the window for what this
+ * markers and the tags alike on every rank but build only the stencils
+ * this process reads: the ghosts of its block and halo, the probes in its
+ * block (the others keep their place, IBM_LEVEL_ELSEWHERE), and every
+ * fresh cell's (they are few); they widen the window for what this
  * process's fresh cells read (ibm_share_cover), write the kinds and fresh
  * cells of this block, and rebuild the plan (ibm_share_replan), which
- * fits the window to the new stencils. */
+ * fits the window to the new stencils. The stencils at ibm_create are
+ * built whole (once, before the Ibm knows the processes). */
 #include "couple/ghost/ibm_internal.h"
 
 #include "core/mem.h"
@@ -82,10 +86,21 @@ static int cmp_i64(const void *a, const void *b) {
     return x < y ? -1 : x > y;
 }
 
-/* The fluid cells that rank r's stencils read and r does not own, sorted
- * and unique, into list (capacity: 4 per entry); their count. */
-static int64_t needed(const Ibm *ibm, const GksSolver *s, const IbmShare *sh, int r,
-                      int64_t *list) {
+bool ibm_share_fills(const Ibm *ibm, int64_t cell) {
+    const IbmShare *sh = ibm->share;
+    return !sh || fills(sh->solver, sh, cell, sh->comm.rank);
+}
+
+bool ibm_share_evaluates(const Ibm *ibm, int64_t cell) {
+    const IbmShare *sh = ibm->share;
+    return !sh || cell_rank(sh->solver, sh, cell) == sh->comm.rank;
+}
+
+/* The fluid cells that this process's stencils read and it does not
+ * own, sorted and unique, into list (capacity: 4 per entry); their
+ * count. */
+static int64_t needed(const Ibm *ibm, const GksSolver *s, const IbmShare *sh, int64_t *list) {
+    const int r = sh->comm.rank;
     int64_t n = 0;
     const IbmStencilSet *sets[2] = {&ibm->ghosts, &ibm->probes};
     for (int q = 0; q < 2; q++) {
@@ -200,39 +215,55 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     for (int e = 0; e < G->n; e++)
         if (fills(s, sh, G->cell[e], me)) sh->ghosts[sh->nghosts++] = e;
     assign_probes(ibm, s, sh);
-    int64_t *list = NULL, *recv = NULL, *send = NULL;
-    const size_t cap = 4 * ((size_t)G->n + (size_t)P->n) + 1;
-    size_t send_cap = cap;
-    TRY(nspd_alloc(&list, cap, sizeof *list));
-    int status = nspd_alloc(&recv, cap, sizeof *recv);
-    if (status == NSPD_OK) status = nspd_alloc(&send, send_cap, sizeof *send);
-    if (status == NSPD_OK) status = nspd_alloc(&sh->recv_first, (size_t)p + 1, sizeof(int));
+    /* what this process fetches, grouped by owner in rank order; each
+     * owner is told what it sends (its stencils are not built here) */
+    int64_t *recv = NULL, *send = NULL, *asked = NULL, *told = NULL;
+    int *bytes = NULL, *at = NULL, *told_bytes = NULL, *told_at = NULL;
+    TRY(nspd_alloc(&recv, 4 * ((size_t)G->n + (size_t)P->n) + 1, sizeof *recv));
+    int status = nspd_alloc(&sh->recv_first, (size_t)p + 1, sizeof(int));
     if (status == NSPD_OK) status = nspd_alloc(&sh->send_first, (size_t)p + 1, sizeof(int));
+    if (status == NSPD_OK) status = nspd_alloc(&asked, (size_t)p, sizeof *asked);
+    if (status == NSPD_OK) status = nspd_alloc(&told, (size_t)p, sizeof *told);
+    int **ints[] = {&bytes, &at, &told_bytes, &told_at};
+    for (size_t q = 0; q < sizeof ints / sizeof ints[0] && status == NSPD_OK; q++)
+        status = nspd_alloc(ints[q], (size_t)p, sizeof(int));
     int64_t nrecv = 0, nsend = 0;
-    for (int r = 0; r < p && status == NSPD_OK; r++) {
-        const int64_t n = needed(ibm, s, sh, r, list);
-        sh->send_first[r] = (int)nsend;
-        if (r == me) { /* what this process fetches, grouped by owner in rank order */
-            for (int q = 0; q < p; q++) {
-                sh->recv_first[q] = (int)nrecv;
-                for (int64_t i = 0; i < n; i++)
-                    if (cell_rank(s, sh, list[i]) == q) recv[nrecv++] = list[i];
-            }
-            sh->recv_first[p] = (int)nrecv;
-        } else {
-            if ((size_t)(nsend + n) > send_cap) { /* grows by doubling: amortised */
-                const size_t grown = 2 * send_cap + (size_t)n;
-                status = nspd_realloc(&send, send_cap, grown, sizeof *send);
-                send_cap = grown;
-                if (status != NSPD_OK) break;
-            }
+    if (status == NSPD_OK) {
+        int64_t *list = NULL;
+        status = nspd_alloc(&list, 4 * ((size_t)G->n + (size_t)P->n) + 1, sizeof *list);
+        const int64_t n = status == NSPD_OK ? needed(ibm, s, sh, list) : 0;
+        for (int q = 0; q < p; q++) {
+            sh->recv_first[q] = (int)nrecv;
             for (int64_t i = 0; i < n; i++)
-                if (cell_rank(s, sh, list[i]) == me) send[nsend++] = list[i];
+                if (cell_rank(s, sh, list[i]) == q) recv[nrecv++] = list[i];
+            asked[q] = nrecv - sh->recv_first[q];
         }
+        sh->recv_first[p] = (int)nrecv;
+        nspd_free(&list);
+    }
+    /* the counts, then the lists (each ascending, as asked) */
+    for (int q = 0; q < p && status == NSPD_OK; q++) {
+        bytes[q] = told_bytes[q] = (int)sizeof(int64_t);
+        at[q] = told_at[q] = q * (int)sizeof(int64_t);
+    }
+    if (status == NSPD_OK)
+        status = comm_alltoallv_bytes(&sh->comm, asked, bytes, at, told, told_bytes, told_at);
+    for (int q = 0; q < p && status == NSPD_OK; q++) {
+        sh->send_first[q] = (int)nsend;
+        nsend += told[q];
+        bytes[q] = (int)(asked[q] * (int64_t)sizeof(int64_t));
+        at[q] = (int)(sh->recv_first[q] * (int64_t)sizeof(int64_t));
+        told_bytes[q] = (int)(told[q] * (int64_t)sizeof(int64_t));
+        told_at[q] = (int)(sh->send_first[q] * (int64_t)sizeof(int64_t));
     }
     sh->send_first[p] = (int)nsend;
+    if (status == NSPD_OK) status = nspd_alloc(&send, (size_t)nsend + 1, sizeof *send);
+    if (status == NSPD_OK)
+        status = comm_alltoallv_bytes(&sh->comm, recv, bytes, at, send, told_bytes, told_at);
     sh->recv_cells = recv, sh->send_cells = send;
-    nspd_free(&list);
+    for (size_t q = 0; q < sizeof ints / sizeof ints[0]; q++) nspd_free(ints[q]);
+    nspd_free(&asked);
+    nspd_free(&told);
     TRY(status);
     TRY(nspd_alloc(&sh->send_buf, 4 * (size_t)nsend + 1, sizeof(double)));
     TRY(nspd_alloc(&sh->recv_buf, 4 * (size_t)nrecv + 1, sizeof(double)));

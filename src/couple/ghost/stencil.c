@@ -410,6 +410,18 @@ void ibm_build_ghost(const Ibm *ibm, int i, int j, IbmStencilSet *set, int e) {
     store(set, e, &a, level, &dep);
 }
 
+void ibm_place_point(const Ibm *ibm, double px, double py, double dist, IbmStencilSet *set, int e) {
+    const Grid *g = ibm->grid;
+    set->cell[e] =
+        grid_index(g, grid_axis_cell_of(&g->ax[0], px), grid_axis_cell_of(&g->ax[1], py));
+    set->seg[e] = -1;
+    set->t[e] = 0.0;
+    set->ratio[e] = dist;
+    set->body[e] = 0;
+    set->geo[e] = (IbmStencilGeo){.dist = dist, .px = px, .py = py};
+    set->level[e] = IBM_LEVEL_ELSEWHERE;
+}
+
 void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const uint8_t *exclude,
                      IbmStencilSet *set, int e) {
     const Grid *g = ibm->grid;
@@ -421,12 +433,6 @@ void ibm_build_point(const Ibm *ibm, double px, double py, double dist, const ui
         const int ic = grid_axis_cell_of(&g->ax[0], px), jc = grid_axis_cell_of(&g->ax[1], py);
         nearest_mean(ibm, ic, jc, px, py, !ibm_point_inside(ibm, px, py), exclude, &a, &dep);
     }
-    set->cell[e] =
-        grid_index(g, grid_axis_cell_of(&g->ax[0], px), grid_axis_cell_of(&g->ax[1], py));
-    set->seg[e] = -1;
-    set->t[e] = 0.0;
-    set->ratio[e] = dist;
-    set->body[e] = 0;
-    set->geo[e] = (IbmStencilGeo){.dist = dist, .px = px, .py = py};
+    ibm_place_point(ibm, px, py, dist, set, e);
     store(set, e, &a, level, &dep);
 }
