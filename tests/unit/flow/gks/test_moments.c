@@ -59,7 +59,7 @@ static void test_half_moments_vs_quadrature(void **state) {
     for (int a = 0; a < 5; a++)
         for (int b = 0; b < 3; b++) {
             const double U = Us[a], lam = lams[b];
-            const GksPrim q = {1.3, U, 0.2, lam};
+            const GksPrim q = gks_prim(1.3, U, 0.2, lam);
             const double x = sqrt(lam) * U;
             GksMoments mp, mm, mf;
             gks_moments_half(&mp, &q, K, 1.0, gks_exp(-x * x), gks_erfcx(fabs(x)));
@@ -116,7 +116,7 @@ static void quad_moment(const GksPrim *q, int a, int b, const double c[4], doubl
 
 static void test_polynomial_moments(void **state) {
     (void)state;
-    const GksPrim q = {1.0, 0.3, -0.4, 1.7};
+    const GksPrim q = gks_prim(1.0, 0.3, -0.4, 1.7);
     const double x = sqrt(q.lam) * q.U;
     GksMoments m;
     gks_moments_half(&m, &q, K, 1.0, gks_exp(-x * x), gks_erfcx(fabs(x)));
