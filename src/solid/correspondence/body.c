@@ -139,8 +139,8 @@ static int alloc_arrays(CpdBody *b) {
     TRY(nspd_alloc(&b->damage, nb, sizeof(double)));
     TRY(nspd_alloc(&b->scale, nb, sizeof(double)));
     if (classic) TRY(state_arrays(b, n));
-    /* T (dim per bond, and per crossing bond its reverse's); the bond-associated force's P_b (dim^2 per pair)
-     * comes with the pairs */
+    /* T (dim per bond, and per crossing bond its reverse's); the bond-associated force's P_b (dim^2
+     * per pair) comes with the pairs */
     if (classic) TRY(nspd_alloc(&b->work_bond, (size_t)b->dim * (nb + crossing), sizeof(double)));
     return NSPD_OK;
 }
@@ -236,7 +236,8 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
      * neighbours' bonds to points further away have none here), and
      * everything below for the part alone (halo.h) */
     const int64_t missing = bac_reverse_bonds(b->n, b->first, b->nbr, b->reverse);
-    if (comm) TRY(cpd_body_divide(b, comm));
+    if (comm)
+        TRY(cpd_body_divide(b, comm));
     else if (missing != 0)
         return NSPD_FAIL(NSPD_ERR_INTERNAL, "the correspondence families are not symmetric");
     if (!comm && cfg->force != CPD_FORCE_CLASSIC)
