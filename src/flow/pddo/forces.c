@@ -58,10 +58,10 @@ int pddo_forces_build(PddoForces *f, const PddoCloud *c, int patch) {
 
 /* sum_j w_j (g_j - g_k) over wall node t's fluid-side family. */
 static double side_derivative(const PddoForces *f, PddoOp op, const double *g, int32_t t) {
-    const double *w = f->side.w[op], gk = g[f->wall + t];
+    const double gk = g[f->wall + t];
     double sum = 0.0;
     for (int64_t q = f->first[t]; q < f->first[t + 1]; q++)
-        sum += w[q] * (g[f->nbr[q] - f->m] - gk);
+        sum += pddo_ops_weight(&f->side, op, t, q) * (g[f->nbr[q] - f->m] - gk);
     return sum;
 }
 

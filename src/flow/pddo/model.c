@@ -102,7 +102,8 @@ static void count_nodes(const PddoFlowConfig *c, double *nodes, double *members)
 
 /* Bytes: the cloud (coordinates, area, indices, kinds: 52 per node, and
  * the family's int32 per member), the four operators' float64 weights per
- * member, K_L (int32 + float64 per member and node), its LU factors
+ * member and the slices' int32 neighbour (operators.h; the slices'
+ * padding measured under 1 % on the paper's cylinder), K_L (int32 + float64 per member and node), its LU factors
  * (UMFPACK, about 12 bytes per nonzero; nonzeros of L + U with the
  * AMD/METIS ordering measured on the confined cylinder, dx 0.1 to 0.03 m:
  * 3.9e6 at 12,424 nodes, 8.2e6 at 21,233, 2.0e7 at 45,768, 3.4e7 at
@@ -125,7 +126,7 @@ static FlowEstimate pddo_estimate(const FlowConfig *fc) {
      * set 1,623 MB against 1,105 MB at the paper's cylinder, 6.67e7
      * nonzeros: 7.8 bytes each) */
     const double runs = c->pressure_runs ? 8.0 * factor : 0.0;
-    e.bytes = 52.0 * n + 4.0 * m + 4.0 * 8.0 * m + 12.0 * (m + n) + 12.0 * factor + runs +
+    e.bytes = 52.0 * n + 4.0 * m + (4.0 * 8.0 + 4.0) * m + 12.0 * (m + n) + 12.0 * factor + runs +
               14.0 * 8.0 * n + (OUT_ARRAYS + NODE_ARRAYS + 1) * 8.0 * n;
     e.check_s = PDDO_CHECK_S_PER_NODE * n;
     e.stable_dt = c->step.dt; /* fixed by the reader */

@@ -103,11 +103,41 @@ static void node_weights(PddoOps *ops, int64_t k, const double *x, const double 
         double z[SPD_SMALL_MAX] = {0};
         basis(false, s1, s2, p);
         spd_small_solve((const double(*)[SPD_SMALL_MAX])Lf, TERMS, scale, p, z);
-        ops->w[PDDO_D_X][m] = b[0] * wa * z[0];
-        ops->w[PDDO_D_Y][m] = b[1] * wa * z[1];
-        ops->w[PDDO_LAP][m] = b[2] * wa * z[2] + b[3] * wa * z[3];
-        ops->w[PDDO_D_XY][m] = b[4] * wa * z[4];
+        const int64_t at = pddo_ops_slot(ops, k, m);
+        ops->w[PDDO_D_X][at] = b[0] * wa * z[0];
+        ops->w[PDDO_D_Y][at] = b[1] * wa * z[1];
+        ops->w[PDDO_LAP][at] = b[2] * wa * z[2] + b[3] * wa * z[3];
+        ops->w[PDDO_D_XY][at] = b[4] * wa * z[4];
     }
+}
+
+/* The slices' layout (operators.h): each slice as many rows as its
+ * largest family, the members' nodes placed, padding with the slot's own
+ * node (the last node for the lanes past it) and weight 0. */
+static int slices_build(PddoOps *ops) {
+    const int64_t n = ops->n, slices = pddo_ops_slices(ops);
+    TRY(nspd_alloc(&ops->slice_first, (size_t)slices + 1, sizeof(int64_t)));
+    for (int64_t s = 0; s < slices; s++) {
+        int64_t rows = 0;
+        for (int64_t k = s * PDDO_LANES; k < (s + 1) * PDDO_LANES && k < n; k++)
+            rows = ops->first[k + 1] - ops->first[k] > rows ? ops->first[k + 1] - ops->first[k]
+                                                             : rows;
+        ops->slice_first[s + 1] = ops->slice_first[s] + rows * PDDO_LANES;
+    }
+    const size_t slots = (size_t)ops->slice_first[slices] + 1;
+    TRY(nspd_alloc(&ops->slot_nbr, slots, sizeof(int32_t)));
+    for (int op = 0; op < PDDO_OPS; op++) TRY(nspd_alloc(&ops->w[op], slots, sizeof(double)));
+    for (int64_t s = 0; s < slices; s++) {
+        const int64_t rows = (ops->slice_first[s + 1] - ops->slice_first[s]) / PDDO_LANES;
+        for (int l = 0; l < PDDO_LANES; l++) {
+            const int64_t k = s * PDDO_LANES + l, node = k < n ? k : n - 1;
+            const int64_t size = k < n ? ops->first[k + 1] - ops->first[k] : 0;
+            for (int64_t r = 0; r < rows; r++)
+                ops->slot_nbr[ops->slice_first[s] + r * PDDO_LANES + l] =
+                    r < size ? ops->nbr[ops->first[k] + r] : (int32_t)node;
+        }
+    }
+    return NSPD_OK;
 }
 
 static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
@@ -116,9 +146,8 @@ static int build(PddoOps *ops, int64_t n, const double *x, const double *y, cons
     if (!(delta > 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO operators: horizon %g m; expected > 0", delta);
     ops->n = n, ops->first = first, ops->nbr = nbr;
-    const int64_t members = first[n];
-    for (int op = 0; op < PDDO_OPS && weights; op++) {
-        const int status = nspd_alloc(&ops->w[op], (size_t)members, sizeof(double));
+    if (weights) {
+        const int status = slices_build(ops);
         if (status != NSPD_OK) {
             pddo_ops_free(ops);
             return status;
@@ -170,10 +199,101 @@ static inline __attribute__((always_inline)) void at_many(const PddoOps *ops, in
     const double *w[PDDO_FUSED_MAX];
     double fk[PDDO_FUSED_MAX];
     for (int o = 0; o < count; o++) w[o] = ops->w[op[o]], fk[o] = f[o][k], sum[o] = 0.0;
-    for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) {
-        const int32_t j = ops->nbr[m];
-        for (int o = 0; o < count; o++) sum[o] += w[o][m] * (f[o][j] - fk[o]);
+    const int64_t at = pddo_ops_slot(ops, k, ops->first[k]);
+    for (int64_t m = 0; m < ops->first[k + 1] - ops->first[k]; m++) {
+        const int32_t j = ops->nbr[ops->first[k] + m];
+        for (int o = 0; o < count; o++) sum[o] += w[o][at + m * PDDO_LANES] * (f[o][j] - fk[o]);
     }
+}
+
+/* A slice's lanes as one value (GCC's and Clang's vector extension: the
+ * compiler keeps it in registers, where arrays of lanes it spilled to
+ * the stack between the rows). */
+typedef double Lanes __attribute__((vector_size(PDDO_LANES * sizeof(double))));
+
+static inline Lanes lanes_load(const double *p) {
+    Lanes v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/* at_many at the nodes of slice s in SIMD lanes, with the differences
+ * f_j - f_k formed once per distinct field: `fields` of them in F, op[o]
+ * applied to F[of[o]]. A lane adds its node's members in their order and
+ * then the padding's exact zeros: at_many's bits. */
+static inline __attribute__((always_inline)) void
+slice_sums(const PddoOps *ops, int fields, const double *const *F, int count, const PddoOp *op,
+           const int *of, int64_t s, double *sum) {
+    enum { L = PDDO_LANES };
+    Lanes fk[PDDO_FUSED_MAX], acc[PDDO_FUSED_MAX];
+    const int64_t last = ops->n - 1;
+    for (int q = 0; q < fields; q++)
+        for (int l = 0; l < L; l++) {
+            const int64_t k = s * L + l;
+            fk[q][l] = F[q][k < last ? k : last];
+        }
+    for (int o = 0; o < count; o++) acc[o] = (Lanes){0};
+    const int64_t base = ops->slice_first[s], rows = (ops->slice_first[s + 1] - base) / L;
+    for (int64_t r = 0; r < rows; r++) {
+        const int32_t *j = ops->slot_nbr + base + r * L;
+        Lanes d[PDDO_FUSED_MAX];
+        /* the nodes are numbered row by row, so on a lattice the slice's
+         * member r is mostly one offset from each of its nodes: the
+         * members are consecutive, one load instead of a gather */
+        int consecutive = 1;
+        for (int l = 1; l < L; l++) consecutive &= j[l] == j[0] + l;
+        for (int q = 0; q < fields; q++) {
+            Lanes g;
+            if (consecutive)
+                g = lanes_load(F[q] + j[0]);
+            else
+                for (int l = 0; l < L; l++) g[l] = F[q][j[l]];
+            d[q] = g - fk[q];
+        }
+        for (int o = 0; o < count; o++)
+            acc[o] += lanes_load(ops->w[op[o]] + base + r * L) * d[of[o]];
+    }
+    for (int o = 0; o < count; o++) memcpy(sum + o * L, &acc[o], sizeof acc[o]);
+}
+
+/* The distinct fields of f[0 .. count) into F, and each one's index. */
+static int distinct_fields(int count, const double *const *f, const double **F, int *of) {
+    int fields = 0;
+    for (int o = 0; o < count; o++) {
+        int q = 0;
+        while (q < fields && F[q] != f[o]) q++;
+        if (q == fields) F[fields++] = f[o];
+        of[o] = q;
+    }
+    return fields;
+}
+
+/* slice_sums with the step's (fields, count) constants, so that the
+ * compiler keeps the lanes in registers: (2, 6) the velocity's
+ * derivatives, (4, 4) the divergences, (1, 2) grad p, (1, 1) one operator */
+static void slice_counted(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
+                          int64_t s, double *sum) {
+    const double *F[PDDO_FUSED_MAX];
+    int of[PDDO_FUSED_MAX];
+    const int fields = distinct_fields(count, f, F, of);
+    /* the maps as constants too: an index known only at run time keeps
+     * the differences in memory */
+    static const int step6[6] = {0, 0, 1, 1, 0, 1}, each[4] = {0, 1, 2, 3}, one[2] = {0, 0};
+    if (fields == 2 && count == 6 && !memcmp(of, step6, sizeof step6))
+        slice_sums(ops, 2, F, 6, op, step6, s, sum);
+    else if (fields == 4 && count == 4)
+        slice_sums(ops, 4, F, 4, op, each, s, sum);
+    else if (fields == 1 && count == 2)
+        slice_sums(ops, 1, F, 2, op, one, s, sum);
+    else if (fields == 1 && count == 1)
+        slice_sums(ops, 1, F, 1, op, one, s, sum);
+    else
+        slice_sums(ops, fields, F, count, op, of, s, sum);
+}
+
+void pddo_ops_slice_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
+                         int64_t s, double *sum) {
+    slice_counted(ops, count, op, f, s, sum);
 }
 
 /* at_many with the count a constant, so that the compiler keeps the sums
@@ -212,12 +332,14 @@ double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k) {
 
 void pddo_ops_apply_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
                          double *const *out) {
-    const int64_t n = ops->n;
+    const int64_t n = ops->n, slices = pddo_ops_slices(ops);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < n; k++) {
-        double sum[PDDO_FUSED_MAX];
-        at_counted(ops, count, op, f, k, sum);
-        for (int o = 0; o < count; o++) out[o][k] = sum[o];
+    for (int64_t s = 0; s < slices; s++) {
+        double sum[PDDO_FUSED_MAX * PDDO_LANES];
+        slice_counted(ops, count, op, f, s, sum);
+        for (int o = 0; o < count; o++)
+            for (int l = 0; l < PDDO_LANES && s * PDDO_LANES + l < n; l++)
+                out[o][s * PDDO_LANES + l] = sum[o * PDDO_LANES + l];
     }
 }
 
@@ -227,6 +349,8 @@ void pddo_ops_apply(const PddoOps *ops, PddoOp op, const double *f, double *out)
 
 void pddo_ops_free(PddoOps *ops) {
     for (int op = 0; op < PDDO_OPS; op++) nspd_free(&ops->w[op]);
+    nspd_free(&ops->slice_first);
+    nspd_free(&ops->slot_nbr);
     memset(ops, 0, sizeof *ops);
 }
 

@@ -48,14 +48,38 @@ typedef enum {
 
 #define PDDO_COND_MAX 1e8
 
+/* The weights are stored in slices of PDDO_LANES consecutive nodes, each
+ * slice's members row by row (row r holds member r of each of its nodes,
+ * a node's members in its family's order, then padding: the node itself
+ * with weight 0, which adds an exact zero), so that a slice's sums run
+ * in SIMD lanes, one node a lane, each lane adding its node's members in
+ * the family's order: the bits of the sum one node alone makes. Member m
+ * of node k (first[k] <= m < first[k + 1]) is at pddo_ops_slot(ops, k, m). */
+enum { PDDO_LANES = 8 };
+
 typedef struct {
     int64_t n;
     const int64_t *first; /* borrowed: the families the weights belong to (must outlive) */
     const int32_t *nbr;
-    double *w[PDDO_OPS]; /* per family member k: c_kj in 1/m (D_X, D_Y) or 1/m^2 */
-    double cond_max;     /* largest condition number met (the rule above) */
-    int64_t cond_node;   /* where */
+    int64_t *slice_first; /* per slice of PDDO_LANES nodes, its first slot; the slots' count last */
+    int32_t *slot_nbr;    /* per slot, the member's node (padding: the slot's own node) */
+    double *w[PDDO_OPS];  /* per slot: c_kj in 1/m (D_X, D_Y) or 1/m^2; padding 0 */
+    double cond_max;      /* largest condition number met (the rule above) */
+    int64_t cond_node;    /* where */
 } PddoOps;
+
+static inline int64_t pddo_ops_slot(const PddoOps *ops, int64_t k, int64_t m) {
+    return ops->slice_first[k / PDDO_LANES] + (m - ops->first[k]) * PDDO_LANES + k % PDDO_LANES;
+}
+
+/* The weight of member m of node k for operator op. */
+static inline double pddo_ops_weight(const PddoOps *ops, PddoOp op, int64_t k, int64_t m) {
+    return ops->w[op][pddo_ops_slot(ops, k, m)];
+}
+
+static inline int64_t pddo_ops_slices(const PddoOps *ops) {
+    return (ops->n + PDDO_LANES - 1) / PDDO_LANES;
+}
 
 /* Builds the weights of the n nodes at (x, y) with areas `area` (only their
  * ratios matter) and families first/nbr (each node's neighbours, itself
@@ -89,6 +113,12 @@ void pddo_ops_apply_many(const PddoOps *ops, int count, const PddoOp *op, const 
 /* The same at one node: sum[o] for o < count. */
 void pddo_ops_at_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
                       int64_t k, double *sum);
+
+/* The same at the PDDO_LANES nodes of slice s, in SIMD lanes: sum[o
+ * PDDO_LANES + l] for node s PDDO_LANES + l (lanes past the last node
+ * hold nothing); the bits of pddo_ops_at_many at each node. */
+void pddo_ops_slice_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
+                         int64_t s, double *sum);
 
 void pddo_ops_free(PddoOps *ops);
 

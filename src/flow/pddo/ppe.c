@@ -67,13 +67,13 @@ static int32_t assemble_row(const PddoCloud *c, const PddoOps *ops, int row, int
             col[0] = im, val[0] = s, col[1] = g, val[1] = 1.0;
         return 2;
     }
-    const double *w = ops->w[PDDO_LAP];
     double diag = 0.0;
-    for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) diag -= w[m];
+    for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++)
+        diag -= pddo_ops_weight(ops, PDDO_LAP, k, m);
     bool placed = false;
     for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) {
         if (!placed && ops->nbr[m] > k) col[len] = (int32_t)k, val[len++] = diag, placed = true;
-        col[len] = ops->nbr[m], val[len++] = w[m];
+        col[len] = ops->nbr[m], val[len++] = pddo_ops_weight(ops, PDDO_LAP, k, m);
     }
     if (!placed) col[len] = (int32_t)k, val[len++] = diag;
     return len;

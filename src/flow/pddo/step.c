@@ -240,21 +240,27 @@ int pddo_step_advance(PddoStep *ps) {
     /* r (Eq. 33b) on the PPE rows; the boundary rows' right-hand sides are
      * the paper's zeros (ppe.h) */
     const uint8_t *row = ps->ppe->row;
+    const int64_t slices = pddo_ops_slices(ops);
+    enum { L = PDDO_LANES };
+    /* a slice of nodes at a time, the divergences in SIMD lanes */
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < n; k++) {
-        if (row[k] != PDDO_ROW_PPE) {
-            w[R][k] = row[k] == PDDO_ROW_IMAGE && ps->image_rhs ? ps->image_rhs[k] : 0.0;
-            continue;
-        }
-        const double div_u = w[UX][k] + w[VY][k];
+    for (int64_t s = 0; s < slices; s++) {
         const PddoOp op[] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y};
         const double *const f[] = {w[D1], w[D2], w[LU], w[LV]};
-        double d[4];
-        pddo_ops_at_many(ops, 4, op, f, k, d);
-        const double div_d = d[0] + d[1], div_l = d[2] + d[3];
-        const bool feeds_back =
-            ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
-        w[R][k] = (feeds_back ? rho / dt * div_u : 0.0) - rho * div_d + mu * div_l;
+        double d[4 * L];
+        pddo_ops_slice_many(ops, 4, op, f, s, d);
+        for (int l = 0; l < L && s * L + l < n; l++) {
+            const int64_t k = s * L + l;
+            if (row[k] != PDDO_ROW_PPE) {
+                w[R][k] = row[k] == PDDO_ROW_IMAGE && ps->image_rhs ? ps->image_rhs[k] : 0.0;
+                continue;
+            }
+            const double div_u = w[UX][k] + w[VY][k];
+            const double div_d = d[l] + d[L + l], div_l = d[2 * L + l] + d[3 * L + l];
+            const bool feeds_back =
+                ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
+            w[R][k] = (feeds_back ? rho / dt * div_u : 0.0) - rho * div_d + mu * div_l;
+        }
     }
     /* 7.3 */
     TRY(pddo_ppe_solve(ps->ppe, w[R], p));
@@ -265,18 +271,21 @@ int pddo_step_advance(PddoStep *ps) {
                                                     : bad)                                         \
     reduction(max                                                                                  \
               : rate) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < n; k++) {
-        if (ps->rule[k] != PDDO_VEL_FREE) continue;
+    for (int64_t s = 0; s < slices; s++) {
         const PddoOp op[] = {PDDO_D_X, PDDO_D_Y};
         const double *const f[] = {p, p};
-        double grad_p[2];
-        pddo_ops_at_many(ops, 2, op, f, k, grad_p);
-        const double du = -w[D1][k] - grad_p[0] / rho + nu * w[LU][k] + ps->par.force_x;
-        const double dv = -w[D2][k] - grad_p[1] / rho + nu * w[LV][k] + ps->par.force_y;
-        u[k] += dt * du;
-        v[k] += dt * dv;
-        rate = fmax(rate, fmax(fabs(du), fabs(dv)));
-        if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
+        double grad_p[2 * L];
+        pddo_ops_slice_many(ops, 2, op, f, s, grad_p);
+        for (int l = 0; l < L && s * L + l < n; l++) {
+            const int64_t k = s * L + l;
+            if (ps->rule[k] != PDDO_VEL_FREE) continue;
+            const double du = -w[D1][k] - grad_p[l] / rho + nu * w[LU][k] + ps->par.force_x;
+            const double dv = -w[D2][k] - grad_p[L + l] / rho + nu * w[LV][k] + ps->par.force_y;
+            u[k] += dt * du;
+            v[k] += dt * dv;
+            rate = fmax(rate, fmax(fabs(du), fabs(dv)));
+            if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
+        }
     }
     ps->dudt_max = rate;
     ps->time += dt;
