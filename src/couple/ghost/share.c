@@ -22,9 +22,9 @@
  * and the cells it fetches, filled only there; the stencil evaluation
  * reads it through the Ibm's cell numbers (IbmFieldView), as it reads the
  * solver's arrays on one process, so each ghost and probe value is the
- * serial one, bit for bit. The window costs 32 bytes a cell of the block
- * and the margin its stencils reach (a block far from every wall: its own
- * cells only), not of the whole grid. Moving walls (ibm_update) update the
+ * serial one, bit for bit. The window is the box of the cells this
+ * process's stencils read (32 bytes a cell of it; none for a block far
+ * from every wall), and a fill copies only the block's cells inside it. Moving walls (ibm_update) update the
  * markers and the tags alike on every rank but build only the stencils
  * this process reads: the ghosts of its block and halo, the probes in its
  * block (the others keep their place, IBM_LEVEL_ELSEWHERE), and every
@@ -39,6 +39,7 @@
 #include "core/status.h"
 #include "core/timer.h"
 
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -176,17 +177,26 @@ static int64_t window_index(const IbmShare *sh, int64_t k) {
            (k % sh->stride - sh->win_lo[0]);
 }
 
-/* The window of the plan: this process's cells and those it fetches. */
-static int fit_window(IbmShare *sh) {
-    int lo[2] = {sh->own_lo[0], sh->own_lo[1]}, hi[2] = {sh->own_hi[0], sh->own_hi[1]};
-    for (int i = 0; i < sh->recv_first[sh->comm.size]; i++) {
-        const int64_t k = sh->recv_cells[i];
-        const int at[2] = {(int)(k % sh->stride), (int)(k / sh->stride)};
-        for (int a = 0; a < 2; a++) {
-            lo[a] = at[a] < lo[a] ? at[a] : lo[a];
-            hi[a] = at[a] + 1 > hi[a] ? at[a] + 1 : hi[a];
-        }
-    }
+/* The window of the plan: the box of the cells this process's stencils
+ * read, its own and those it fetches (empty where its block holds no
+ * wall: then a fill copies nothing). */
+static int fit_window(const Ibm *ibm, IbmShare *sh) {
+    int lo[2] = {INT_MAX, INT_MAX}, hi[2] = {INT_MIN, INT_MIN};
+    const IbmStencilSet *sets[2] = {&ibm->ghosts, &ibm->probes};
+    const int *entries[2] = {sh->ghosts, sh->probes}, counts[2] = {sh->nghosts, sh->nprobes};
+    for (int q = 0; q < 2; q++)
+        for (int i = 0; i < counts[q]; i++)
+            for (int m = 0; m < 4; m++) {
+                const int e = entries[q][i];
+                if (sets[q]->rseg[4 * e + m] != IBM_NODE_FLUID) continue;
+                const int64_t k = sets[q]->node[4 * e + m];
+                const int at[2] = {(int)(k % sh->stride), (int)(k / sh->stride)};
+                for (int a = 0; a < 2; a++) {
+                    lo[a] = at[a] < lo[a] ? at[a] : lo[a];
+                    hi[a] = at[a] + 1 > hi[a] ? at[a] + 1 : hi[a];
+                }
+            }
+    if (lo[0] > hi[0]) lo[0] = lo[1] = hi[0] = hi[1] = 0; /* nothing read */
     if (sh->w[0] && lo[0] == sh->win_lo[0] && lo[1] == sh->win_lo[1] && hi[0] == sh->win_hi[0] &&
         hi[1] == sh->win_hi[1])
         return NSPD_OK;
@@ -288,7 +298,7 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
         for (int I = 0; I < g->nx + 2 * GRID_NG; I++)
             sh->slot[(int64_t)J * g->stride + I] =
                 ibm->slot[(int64_t)(first[1] + J) * sh->stride + first[0] + I];
-    return fit_window(sh);
+    return fit_window(ibm, sh);
 }
 
 /* Frees the plan (not the shadow). */
@@ -362,12 +372,17 @@ IbmFieldView ibm_share_refresh(const Ibm *ibm, GksSolver *s) {
     (void)comm_alltoallv_bytes(&sh->comm, sh->send_buf, sh->send_bytes, sh->send_at, sh->recv_buf,
                                sh->recv_bytes, sh->recv_at);
     gks_solver_add_comm_seconds(s, nspd_wall_time() - t0);
-    /* the owned cells, row by row */
-    const size_t run = (size_t)(sh->own_hi[0] - sh->own_lo[0]) * sizeof(double);
-    for (int J = sh->own_lo[1]; J < sh->own_hi[1]; J++) {
-        const int64_t k = (int64_t)J * sh->stride + sh->own_lo[0];
+    /* the owned cells in the window, row by row */
+    int lo[2], hi[2];
+    for (int a = 0; a < 2; a++) {
+        lo[a] = sh->own_lo[a] > sh->win_lo[a] ? sh->own_lo[a] : sh->win_lo[a];
+        hi[a] = sh->own_hi[a] < sh->win_hi[a] ? sh->own_hi[a] : sh->win_hi[a];
+    }
+    for (int J = lo[1]; J < hi[1] && lo[0] < hi[0]; J++) {
+        const int64_t k = (int64_t)J * sh->stride + lo[0];
         const int64_t local = gks_solver_local_cell(s, k), at = window_index(sh, k);
-        for (int v = 0; v < 4; v++) memcpy(sh->w[v] + at, f.w[v] + local, run);
+        for (int v = 0; v < 4; v++)
+            memcpy(sh->w[v] + at, f.w[v] + local, (size_t)(hi[0] - lo[0]) * sizeof(double));
     }
     for (int i = 0; i < sh->recv_first[p]; i++) {
         const int64_t at = window_index(sh, sh->recv_cells[i]);
