@@ -24,11 +24,10 @@
  * solver's arrays on one process, so each ghost and probe value is the
  * serial one, bit for bit. The window is the box of the cells this
  * process's stencils read (32 bytes a cell of it; none for a block far
- * from every wall), and a fill copies only the block's cells inside it. Moving walls (ibm_update) update the
- * markers and the tags alike on every rank but build only the stencils
- * this process reads: the ghosts of its block and halo, the probes in its
- * block (the others keep their place, IBM_LEVEL_ELSEWHERE), and every
- * fresh cell's (they are few); they widen the window for what this
+ * from every wall), and a fill copies only the block's cells inside it. Moving walls (ibm_update)
+ * update the markers and the tags alike on every rank but build only the stencils this process
+ * reads: the ghosts of its block and halo, the probes in its block (the others keep their place,
+ * IBM_LEVEL_ELSEWHERE), and every fresh cell's (they are few); they widen the window for what this
  * process's fresh cells read (ibm_share_cover), write the kinds and fresh
  * cells of this block, and rebuild the plan (ibm_share_replan), which
  * fits the window to the new stencils. The stencils at ibm_create are

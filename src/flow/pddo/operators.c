@@ -120,8 +120,8 @@ static int slices_build(PddoOps *ops) {
     for (int64_t s = 0; s < slices; s++) {
         int64_t rows = 0;
         for (int64_t k = s * PDDO_LANES; k < (s + 1) * PDDO_LANES && k < n; k++)
-            rows = ops->first[k + 1] - ops->first[k] > rows ? ops->first[k + 1] - ops->first[k]
-                                                             : rows;
+            rows =
+                ops->first[k + 1] - ops->first[k] > rows ? ops->first[k + 1] - ops->first[k] : rows;
         ops->slice_first[s + 1] = ops->slice_first[s] + rows * PDDO_LANES;
     }
     const size_t slots = (size_t)ops->slice_first[slices] + 1;
@@ -221,9 +221,10 @@ static inline Lanes lanes_load(const double *p) {
  * f_j - f_k formed once per distinct field: `fields` of them in F, op[o]
  * applied to F[of[o]]. A lane adds its node's members in their order and
  * then the padding's exact zeros: at_many's bits. */
-static inline __attribute__((always_inline)) void
-slice_sums(const PddoOps *ops, int fields, const double *const *F, int count, const PddoOp *op,
-           const int *of, int64_t s, double *sum) {
+static inline __attribute__((always_inline)) void slice_sums(const PddoOps *ops, int fields,
+                                                             const double *const *F, int count,
+                                                             const PddoOp *op, const int *of,
+                                                             int64_t s, double *sum) {
     enum { L = PDDO_LANES };
     Lanes fk[PDDO_FUSED_MAX], acc[PDDO_FUSED_MAX];
     const int64_t last = ops->n - 1;

@@ -196,7 +196,8 @@ static void test_lattice_weights(void **state) {
         const int di = abs(c.i[j] - 6), dj = abs(c.j[j] - 6);
         const int lo = di < dj ? di : dj, hi = di < dj ? dj : di;
         for (int t = 0; t < 6; t++)
-            if (off[t][0] == lo && off[t][1] == hi) assert_close(pddo_ops_weight(&ops, PDDO_LAP, k, m), lap[t], 6e-7);
+            if (off[t][0] == lo && off[t][1] == hi)
+                assert_close(pddo_ops_weight(&ops, PDDO_LAP, k, m), lap[t], 6e-7);
         diag -= pddo_ops_weight(&ops, PDDO_LAP, k, m);
         if (dj == 0 && c.i[j] > 6) {
             const double grad[3] = {0.088646, 0.046734, 0.007597};
