@@ -5,7 +5,8 @@
 # immersed boundary's window and fresh cells with a divided solid on 2
 # ranks and on 2 x 2 blocks, the penalty's gathered cells, a divided
 # solid's pieces (.pvtu), the correspondence solid divided (its halo's
-# exchanges, damage settling across the ranks). Open MPI's own allocations that it never frees
+# exchanges, damage settling across the ranks; the classic force's
+# reverse T and ghost states). Open MPI's own allocations that it never frees
 # are not nspd's leaks: leak detection is off (ASan's other checks and
 # UBSan's stay on; any report fails the run).
 #   usage: sanitized.sh NSPD SOURCE_DIR MPIEXEC VTK_SAME
@@ -21,4 +22,5 @@ check_body cylinder_crack_ma17 crack "2 2x2"
 check_body chamber_detonation chamber 2
 check_body plate_crack plate 3
 check_body hollow_cylinder_pulse hcy 3
+check_body hollow_cylinder_pulse hcy_classic 3 --set solid.correspondence.force=classic
 finish
