@@ -297,32 +297,9 @@ void pddo_ops_slice_many(const PddoOps *ops, int count, const PddoOp *op, const 
     slice_counted(ops, count, op, f, s, sum);
 }
 
-/* at_many with the count a constant, so that the compiler keeps the sums
- * in registers and unrolls the pairs (the step's counts: 6, 4, 2) */
-static void at_counted(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
-                       int64_t k, double *sum) {
-    switch (count) {
-    case 1:
-        at_many(ops, 1, op, f, k, sum);
-        break;
-    case 2:
-        at_many(ops, 2, op, f, k, sum);
-        break;
-    case 4:
-        at_many(ops, 4, op, f, k, sum);
-        break;
-    case 6:
-        at_many(ops, 6, op, f, k, sum);
-        break;
-    default:
-        at_many(ops, count, op, f, k, sum);
-        break;
-    }
-}
-
 void pddo_ops_at_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
                       int64_t k, double *sum) {
-    at_counted(ops, count, op, f, k, sum);
+    at_many(ops, count, op, f, k, sum);
 }
 
 double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k) {

@@ -312,8 +312,10 @@ static void test_jittered_exactness(void **state) {
 
 /* The fused applications (the flow step's one pass for six operators)
  * give the bits of the operators applied one by one, for every count up
- * to PDDO_FUSED_MAX (1, 2, 4 and 6 take the unrolled paths, 3 and 5 the
- * general one), on whole fields and at single nodes. */
+ * to PDDO_FUSED_MAX, on whole fields (in the slices' SIMD lanes) and at
+ * single nodes (one node's sum in its family's order): on distinct
+ * fields, and on the step's patterns of shared fields, whose slices take
+ * paths of their own (operators.c's slice_counted). */
 static void test_fused_equals_single(void **state) {
     (void)state;
     Points p = {0};
@@ -341,8 +343,26 @@ static void test_fused_equals_single(void **state) {
             for (int o = 0; o < count; o++) {
                 const double single = pddo_ops_at(&ops, op[o], f[o], k);
                 assert_memory_equal(&single, &sum[o], sizeof single);
+                /* the slices' lanes against one node's sum */
+                assert_memory_equal(&single, &out[o][k], sizeof single);
             }
         }
+    }
+    /* the step's: six on (u, v), then grad p */
+    const PddoOp six[6] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y, PDDO_LAP, PDDO_LAP};
+    const double *uv[6] = {f[0], f[0], f[1], f[1], f[0], f[1]}, *pp[2] = {f[2], f[2]};
+    const struct {
+        int count;
+        const PddoOp *op;
+        const double **f;
+    } shared[2] = {{6, six, uv}, {2, six, pp}};
+    for (int c = 0; c < 2; c++) {
+        pddo_ops_apply_many(&ops, shared[c].count, shared[c].op, shared[c].f, out);
+        for (int o = 0; o < shared[c].count; o++)
+            for (int64_t k = 0; k < p.n; k++) {
+                const double single = pddo_ops_at(&ops, shared[c].op[o], shared[c].f[o], k);
+                assert_memory_equal(&single, &out[o][k], sizeof single);
+            }
     }
     for (int o = 0; o < PDDO_FUSED_MAX; o++) free(f[o]), free(out[o]);
     free(one);
