@@ -341,6 +341,33 @@ int comm_share_items(const NspdComm *c, int64_t n, const int *owner, int width, 
     return status;
 }
 
+int comm_ask(const NspdComm *c, const int64_t *asked, const int *count, int64_t **told,
+             int *told_count) {
+    const int p = comm_distributed(c) ? c->size : 1;
+    const int unit = (int)sizeof(int64_t);
+    int *bytes = NULL;
+    *told = NULL;
+    TRY(nspd_alloc(&bytes, 4 * (size_t)p, sizeof *bytes));
+    int *at = bytes + p, *told_bytes = bytes + 2 * p, *told_at = bytes + 3 * p;
+    for (int q = 0; q < p; q++) {
+        bytes[q] = told_bytes[q] = (int)sizeof(int);
+        at[q] = told_at[q] = q * (int)sizeof(int);
+    }
+    int status = comm_alltoallv_bytes(c, count, bytes, at, told_count, told_bytes, told_at);
+    int64_t asks = 0, tells = 0;
+    for (int q = 0; q < p && status == NSPD_OK; q++) {
+        bytes[q] = count[q] * unit, at[q] = (int)(asks * unit);
+        told_bytes[q] = told_count[q] * unit, told_at[q] = (int)(tells * unit);
+        asks += count[q], tells += told_count[q];
+    }
+    if (status == NSPD_OK) status = nspd_alloc(told, (size_t)tells + 1, sizeof **told);
+    if (status == NSPD_OK)
+        status = comm_alltoallv_bytes(c, asked, bytes, at, *told, told_bytes, told_at);
+    nspd_free(&bytes);
+    if (status != NSPD_OK) nspd_free(told);
+    return status;
+}
+
 int64_t comm_first_failure(const NspdComm *c, int64_t mine, char *text, int size) {
     if (!comm_distributed(c)) return mine;
     const int64_t first = comm_min_i64(c, mine);

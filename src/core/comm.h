@@ -65,6 +65,15 @@ int comm_share_items(const NspdComm *c, int64_t n, const int *owner, int width, 
 /* The same for bytes (each rank's count in bytes). */
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all);
 
+/* Lists asked of the ranks that hold what they name (a halo's plan):
+ * this rank asks count[q] items of rank q, asked[] grouped by rank in rank
+ * order; it is told what the ranks ask of it, *told (nspd_alloc'd, the
+ * caller frees it) grouped by asking rank in rank order, told_count[q]
+ * of rank q (arrays of `size` entries). One exchange of the counts and
+ * one of the items. */
+int comm_ask(const NspdComm *c, const int64_t *asked, const int *count, int64_t **told,
+             int *told_count);
+
 /* Each rank sends send_bytes[q] bytes from send + send_at[q] to rank q
  * and receives recv_bytes[q] bytes from rank q at recv + recv_at[q]
  * (arrays of `size` entries; the counts must match pairwise). Messages

@@ -226,51 +226,33 @@ static int plan(Ibm *ibm, const GksSolver *s, IbmShare *sh) {
     assign_probes(ibm, s, sh);
     /* what this process fetches, grouped by owner in rank order; each
      * owner is told what it sends (its stencils are not built here) */
-    int64_t *recv = NULL, *send = NULL, *asked = NULL, *told = NULL;
-    int *bytes = NULL, *at = NULL, *told_bytes = NULL, *told_at = NULL;
+    int64_t *recv = NULL, *list = NULL;
+    int *asked = NULL, *told = NULL;
     TRY(nspd_alloc(&recv, 4 * ((size_t)G->n + (size_t)P->n) + 1, sizeof *recv));
-    int status = nspd_alloc(&sh->recv_first, (size_t)p + 1, sizeof(int));
+    int status = nspd_alloc(&list, 4 * ((size_t)G->n + (size_t)P->n) + 1, sizeof *list);
+    if (status == NSPD_OK) status = nspd_alloc(&sh->recv_first, (size_t)p + 1, sizeof(int));
     if (status == NSPD_OK) status = nspd_alloc(&sh->send_first, (size_t)p + 1, sizeof(int));
     if (status == NSPD_OK) status = nspd_alloc(&asked, (size_t)p, sizeof *asked);
     if (status == NSPD_OK) status = nspd_alloc(&told, (size_t)p, sizeof *told);
-    int **ints[] = {&bytes, &at, &told_bytes, &told_at};
-    for (size_t q = 0; q < sizeof ints / sizeof ints[0] && status == NSPD_OK; q++)
-        status = nspd_alloc(ints[q], (size_t)p, sizeof(int));
     int64_t nrecv = 0, nsend = 0;
     if (status == NSPD_OK) {
-        int64_t *list = NULL;
-        status = nspd_alloc(&list, 4 * ((size_t)G->n + (size_t)P->n) + 1, sizeof *list);
-        const int64_t n = status == NSPD_OK ? needed(ibm, s, sh, list) : 0;
+        const int64_t n = needed(ibm, s, sh, list);
         for (int q = 0; q < p; q++) {
             sh->recv_first[q] = (int)nrecv;
             for (int64_t i = 0; i < n; i++)
                 if (cell_rank(s, sh, list[i]) == q) recv[nrecv++] = list[i];
-            asked[q] = nrecv - sh->recv_first[q];
+            asked[q] = (int)(nrecv - sh->recv_first[q]);
         }
         sh->recv_first[p] = (int)nrecv;
-        nspd_free(&list);
+        status = comm_ask(&sh->comm, recv, asked, &sh->send_cells, told);
     }
-    /* the counts, then the lists (each ascending, as asked) */
-    for (int q = 0; q < p && status == NSPD_OK; q++) {
-        bytes[q] = told_bytes[q] = (int)sizeof(int64_t);
-        at[q] = told_at[q] = q * (int)sizeof(int64_t);
-    }
-    if (status == NSPD_OK)
-        status = comm_alltoallv_bytes(&sh->comm, asked, bytes, at, told, told_bytes, told_at);
     for (int q = 0; q < p && status == NSPD_OK; q++) {
         sh->send_first[q] = (int)nsend;
         nsend += told[q];
-        bytes[q] = (int)(asked[q] * (int64_t)sizeof(int64_t));
-        at[q] = (int)(sh->recv_first[q] * (int64_t)sizeof(int64_t));
-        told_bytes[q] = (int)(told[q] * (int64_t)sizeof(int64_t));
-        told_at[q] = (int)(sh->send_first[q] * (int64_t)sizeof(int64_t));
     }
-    sh->send_first[p] = (int)nsend;
-    if (status == NSPD_OK) status = nspd_alloc(&send, (size_t)nsend + 1, sizeof *send);
-    if (status == NSPD_OK)
-        status = comm_alltoallv_bytes(&sh->comm, recv, bytes, at, send, told_bytes, told_at);
-    sh->recv_cells = recv, sh->send_cells = send;
-    for (size_t q = 0; q < sizeof ints / sizeof ints[0]; q++) nspd_free(ints[q]);
+    if (status == NSPD_OK) sh->send_first[p] = (int)nsend;
+    sh->recv_cells = recv;
+    nspd_free(&list);
     nspd_free(&asked);
     nspd_free(&told);
     TRY(status);

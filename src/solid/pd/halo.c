@@ -41,38 +41,20 @@ int point_halo_plan(PointHalo *h, const NspdComm *comm, int64_t n, int64_t ghost
     int **plan[8] = {&h->send_count, &h->send_from, &h->recv_count, &h->recv_from,
                      &h->send_bytes, &h->send_at,   &h->recv_bytes, &h->recv_at};
     for (int k = 0; k < 8; k++) TRY(nspd_alloc(plan[k], ps, sizeof(int)));
-    int *wants = NULL, *ask_bytes = NULL, *ask_at = NULL, *get_bytes = NULL, *get_at = NULL;
-    int status = nspd_alloc(&wants, ps * ps, sizeof(int)); /* wants[q p + r]: q asks r */
-    if (status == NSPD_OK) status = nspd_alloc(&ask_bytes, 4 * ps, sizeof(int));
-    if (status != NSPD_OK) goto done;
-    ask_at = ask_bytes + ps, get_bytes = ask_bytes + 2 * ps, get_at = ask_bytes + 3 * ps;
+    /* the ghosts (sorted, so grouped by owner) asked of their owners */
     for (int64_t k = 0; k < ghosts; k++) h->recv_count[owner(h, ghost[k])]++;
-    status = comm_allgatherv_bytes(comm, h->recv_count, (int)(ps * sizeof(int)), wants);
-    if (status != NSPD_OK) goto done;
+    TRY(comm_ask(comm, h->ghost, h->recv_count, &h->send_point, h->send_count));
     int64_t at = 0, sends = 0;
     for (int q = 0; q < p; q++) {
         h->recv_from[q] = (int)at;
-        ask_at[q] = (int)(at * (int64_t)sizeof(int64_t));
-        ask_bytes[q] = h->recv_count[q] * (int)sizeof(int64_t);
         at += h->recv_count[q];
-        h->send_count[q] = wants[(size_t)q * ps + (size_t)me];
         h->send_from[q] = (int)sends;
-        get_at[q] = (int)(sends * (int64_t)sizeof(int64_t));
-        get_bytes[q] = h->send_count[q] * (int)sizeof(int64_t);
         sends += h->send_count[q];
     }
     h->sends = sends;
-    status = nspd_alloc(&h->send_point, (size_t)sends + 1, sizeof(int64_t));
-    if (status == NSPD_OK) status = nspd_alloc(&h->send_buf, (size_t)sends * max_bytes + 1, 1);
-    if (status == NSPD_OK) status = nspd_alloc(&h->recv_buf, (size_t)ghosts * max_bytes + 1, 1);
-    if (status == NSPD_OK)
-        status = comm_alltoallv_bytes(comm, h->ghost, ask_bytes, ask_at, h->send_point, get_bytes,
-                                      get_at);
-    for (int64_t k = 0; k < sends && status == NSPD_OK; k++) h->send_point[k] -= first;
-done:
-    nspd_free(&wants);
-    nspd_free(&ask_bytes);
-    return status;
+    for (int64_t k = 0; k < sends; k++) h->send_point[k] -= first;
+    TRY(nspd_alloc(&h->send_buf, (size_t)sends * max_bytes + 1, 1));
+    return nspd_alloc(&h->recv_buf, (size_t)ghosts * max_bytes + 1, 1);
 }
 
 void point_halo_free(PointHalo *h) {
