@@ -5,7 +5,10 @@
 #   tests/verify/<case>/test_<topic>.c    -> ctest name verify.<case>.<topic>, label "verify"
 #   tests/cli/test_<topic>.sh             -> ctest name cli.<topic>, label "cli"
 # A file whose first line contains "ctest-labels: a b" gets those labels too
-# ("slow" keeps a test out of `make test`; `make validate` runs it).
+# ("slow" keeps a test out of `make test`; `make validate` runs it); a C test
+# whose second line contains "ctest-sources: x.c" is linked with x.c of its
+# folder too (a translation unit compiled with other definitions, such as
+# the unfused reference of a kernel).
 pkg_check_modules(CMOCKA REQUIRED IMPORTED_TARGET cmocka)
 
 file(GLOB NSPD_TEST_SUPPORT CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/support/*.c)
@@ -14,6 +17,22 @@ target_include_directories(nspd_test_support PUBLIC ${PROJECT_SOURCE_DIR}/tests/
 target_link_libraries(nspd_test_support PUBLIC nspdlib PkgConfig::CMOCKA)
 target_compile_definitions(nspd_test_support PUBLIC
     NSPD_SOURCE_DIR="${PROJECT_SOURCE_DIR}" NSPD_BINARY_DIR="${CMAKE_BINARY_DIR}")
+
+function(nspd_extra_sources file out)
+    file(STRINGS ${file} lines LIMIT_COUNT 2)
+    set(sources "")
+    foreach(line ${lines})
+        if(line MATCHES "ctest-sources:([a-z0-9_. ]+)")
+            string(STRIP "${CMAKE_MATCH_1}" l)
+            string(REPLACE " " ";" names "${l}")
+            get_filename_component(dir ${file} DIRECTORY)
+            foreach(n ${names})
+                list(APPEND sources ${dir}/${n})
+            endforeach()
+        endif()
+    endforeach()
+    set(${out} ${sources} PARENT_SCOPE)
+endfunction()
 
 function(nspd_extra_labels file out)
     file(STRINGS ${file} first LIMIT_COUNT 1)
@@ -37,7 +56,8 @@ foreach(kind unit verify)
         string(REGEX REPLACE "^test_" "" topic ${stem})
         string(REPLACE "/" "." name ${kind}.${group}.${topic})
         string(REPLACE "/" "_" exe ${kind}_${group}_${topic})
-        add_executable(${exe} ${src})
+        nspd_extra_sources(${src} more)
+        add_executable(${exe} ${src} ${more})
         target_link_libraries(${exe} PRIVATE nspd_test_support)
         add_test(NAME ${name} COMMAND ${exe} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
         nspd_extra_labels(${src} extra)

@@ -11,6 +11,8 @@
 #ifndef NSPD_CORE_KERNEL_H
 #define NSPD_CORE_KERNEL_H
 
+#include <math.h>
+
 /* NSPD_PRAGMA(x): a #pragma from inside a macro (C99/C++11 _Pragma). */
 #define NSPD_PRAGMA(x) _Pragma(#x)
 
@@ -68,6 +70,22 @@
 #define NSPD_IVDEP NSPD_PRAGMA(GCC ivdep)
 #else
 #define NSPD_IVDEP
+#endif
+
+/* NSPD_FMA(a, b, c): a b + c rounded once, where the target fuses it in
+ * hardware (x86-64 with FMA, which -march=native enables on every machine
+ * nspd has run on; CUDA), and a b + c rounded twice elsewhere (a software
+ * fma() costs tens of cycles). The build is ISO C, so the compiler never
+ * contracts on its own (-ffp-contract=off): a kernel that wants fused
+ * products writes them, and its bits do not depend on where the compiler
+ * would have fused them (GCC fused the GKS row loops of x and y faces
+ * differently, and the vector body unlike the scalar one). Defining
+ * NSPD_NO_FMA before this header gives the unfused arithmetic: the
+ * reference a fused kernel is tested against. */
+#if defined(__CUDACC__) || (defined(FP_FAST_FMA) && !defined(NSPD_NO_FMA))
+#define NSPD_FMA(a, b, c) fma(a, b, c)
+#else
+#define NSPD_FMA(a, b, c) ((a) * (b) + (c))
 #endif
 
 #endif

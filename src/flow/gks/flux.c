@@ -71,8 +71,8 @@ flux_row(int n, const GksRowSide *restrict L, const GksRowSide *restrict R,
         const double cr[4] = {rw0[k], rw1[k], rw2[k], rw3[k]};
         double wl[4], wr[4], n0[4], t0[4], fl[4];
         for (int c = 0; c < 4; c++) {
-            wl[c] = cl[c] + nl[c] * dl;
-            wr[c] = cr[c] - nr[c] * dr;
+            wl[c] = NSPD_FMA(nl[c], dl, cl[c]);
+            wr[c] = NSPD_FMA(-nr[c], dr, cr[c]);
             n0[c] = (cr[c] - cl[c]) * idc;
             t0[c] = 0.5 * (tl[c] + tr[c]);
         }

@@ -153,24 +153,25 @@ NSPD_KERNEL GksDPrim gks_dprim(const GksPrim *q, const double dw[4], double K) {
     GksDPrim d;
     const double ir = q->ir;
     d.rho = dw[0];
-    d.U = (dw[1] - q->U * dw[0]) * ir;
-    d.V = (dw[2] - q->V * dw[0]) * ir;
+    d.U = NSPD_FMA(-q->U, dw[0], dw[1]) * ir;
+    d.V = NSPD_FMA(-q->V, dw[0], dw[2]) * ir;
     /* internal energy density e = rho E - rho |U|^2/2 = (K+2) rho / (4 lambda):
      * 1 / e = 4 lambda / ((K+2) rho) */
-    const double de =
-        dw[3] - (q->U * dw[1] + q->V * dw[2]) + 0.5 * (q->U * q->U + q->V * q->V) * dw[0];
+    const double de = NSPD_FMA(0.5 * NSPD_FMA(q->U, q->U, q->V * q->V), dw[0],
+                               dw[3] - NSPD_FMA(q->U, dw[1], q->V * dw[2]));
     const double ie = 4.0 / (K + 2.0) * q->lam * ir;
-    d.lam = q->lam * (dw[0] * ir - de * ie);
+    d.lam = q->lam * NSPD_FMA(dw[0], ir, -de * ie);
     return d;
 }
 
 /* Micro slope a (a[0..3] = a1..a4) of a primitive derivative: a = d ln g. */
 NSPD_KERNEL void gks_micro(const GksPrim *q, const GksDPrim *d, double K, double a[4]) {
     a[3] = -2.0 * d->lam;
-    a[1] = 2.0 * (q->lam * d->U + q->U * d->lam);
-    a[2] = 2.0 * (q->lam * d->V + q->V * d->lam);
-    a[0] = d->rho * q->ir + 0.5 * (K + 2.0) * d->lam * q->il -
-           d->lam * (q->U * q->U + q->V * q->V) - 2.0 * q->lam * (q->U * d->U + q->V * d->V);
+    a[1] = 2.0 * NSPD_FMA(q->lam, d->U, q->U * d->lam);
+    a[2] = 2.0 * NSPD_FMA(q->lam, d->V, q->V * d->lam);
+    double a0 = NSPD_FMA(0.5 * (K + 2.0) * d->lam, q->il, d->rho * q->ir);
+    a0 = NSPD_FMA(-d->lam, NSPD_FMA(q->U, q->U, q->V * q->V), a0);
+    a[0] = NSPD_FMA(-2.0 * q->lam, NSPD_FMA(q->U, d->U, q->V * d->V), a0);
 }
 
 /* Euler time derivative of the primitives from the normal (x) and tangential
@@ -179,14 +180,15 @@ NSPD_KERNEL GksDPrim gks_dprim_dt(const GksPrim *q, const GksDPrim *dx, const Gk
                                   double gamma) {
     const double ir = q->ir, il = q->il, p = 0.5 * q->rho * il, ip = 2.0 * q->lam * ir;
     /* p = rho / (2 lambda): dp = (drho - rho dlambda / lambda) / (2 lambda) */
-    const double px = 0.5 * il * (dx->rho - q->rho * dx->lam * il);
-    const double py = 0.5 * il * (dy->rho - q->rho * dy->lam * il);
+    const double px = 0.5 * il * NSPD_FMA(-q->rho * dx->lam, il, dx->rho);
+    const double py = 0.5 * il * NSPD_FMA(-q->rho * dy->lam, il, dy->rho);
     GksDPrim t;
-    t.rho = -(q->U * dx->rho + q->rho * dx->U + q->V * dy->rho + q->rho * dy->V);
-    t.U = -(q->U * dx->U + q->V * dy->U + px * ir);
-    t.V = -(q->U * dx->V + q->V * dy->V + py * ir);
-    const double pt = -(q->U * px + q->V * py + gamma * p * (dx->U + dy->V));
-    t.lam = q->lam * (t.rho * ir - pt * ip);
+    t.rho =
+        -NSPD_FMA(q->rho, dy->V, NSPD_FMA(q->V, dy->rho, NSPD_FMA(q->rho, dx->U, q->U * dx->rho)));
+    t.U = -NSPD_FMA(px, ir, NSPD_FMA(q->V, dy->U, q->U * dx->U));
+    t.V = -NSPD_FMA(py, ir, NSPD_FMA(q->V, dy->V, q->U * dx->V));
+    const double pt = -NSPD_FMA(gamma * p, dx->U + dy->V, NSPD_FMA(q->V, py, q->U * px));
+    t.lam = q->lam * NSPD_FMA(t.rho, ir, -pt * ip);
     return t;
 }
 
@@ -195,24 +197,38 @@ typedef struct {
     double u[7], v[6], xi2, xi4;
 } GksMoments;
 
-/* Fills v[], xi and, from u[0] and u[1], the rest of u[] by the recursion. */
-NSPD_KERNEL void gks_moments_fill(GksMoments *m, const GksPrim *q, double K) {
+/* Fills v[0..2], xi2 and, from u[0] and u[1], u[2] by the recursion: the
+ * moments the interface equilibrium takes. */
+NSPD_KERNEL void gks_moments_fill_low(GksMoments *m, const GksPrim *q, double K) {
     const double h = 0.5 * q->il;
     m->v[0] = 1.0;
     m->v[1] = q->V;
-    NSPD_UNROLL(8)
-    for (int n = 0; n < 4; n++) m->v[n + 2] = q->V * m->v[n + 1] + (n + 1) * h * m->v[n];
-    NSPD_UNROLL(8)
-    for (int n = 0; n < 5; n++) m->u[n + 2] = q->U * m->u[n + 1] + (n + 1) * h * m->u[n];
+    m->v[2] = NSPD_FMA(q->V, m->v[1], h * m->v[0]);
+    m->u[2] = NSPD_FMA(q->U, m->u[1], h * m->u[0]);
     m->xi2 = K * h;
+}
+
+/* The rest of them, v[3..5], u[3..6] and xi4, by the same recursion. */
+NSPD_KERNEL void gks_moments_fill_high(GksMoments *m, const GksPrim *q, double K) {
+    const double h = 0.5 * q->il;
+    NSPD_UNROLL(8)
+    for (int n = 1; n < 4; n++) m->v[n + 2] = NSPD_FMA(q->V, m->v[n + 1], (n + 1) * h * m->v[n]);
+    NSPD_UNROLL(8)
+    for (int n = 1; n < 5; n++) m->u[n + 2] = NSPD_FMA(q->U, m->u[n + 1], (n + 1) * h * m->u[n]);
     m->xi4 = K * (K + 2.0) * h * h;
+}
+
+/* Fills v[], xi and, from u[0] and u[1], the rest of u[] by the recursion. */
+NSPD_KERNEL void gks_moments_fill(GksMoments *m, const GksPrim *q, double K) {
+    gks_moments_fill_low(m, q, K);
+    gks_moments_fill_high(m, q, K);
 }
 
 /* side > 0: u > 0 half of q; side < 0: u < 0 half; side == 0: full space.
  * erfcx_abs = erfcx(|sqrt(lambda) U|) and ex = exp(-lambda U^2) are passed in
  * so that the caller computes them once per state. */
-NSPD_KERNEL void gks_moments_half(GksMoments *m, const GksPrim *q, double K, double side, double ex,
-                                  double erfcx_abs) {
+NSPD_KERNEL void gks_moments_half_start(GksMoments *m, const GksPrim *q, double side, double ex,
+                                        double erfcx_abs) {
     const double rsl = sqrt(q->lam) * q->il; /* 1 / sqrt(lambda) */
     const double e = erfcx_abs * ex;         /* erfc(|x|), x = sqrt(lambda) U */
     /* erfc(-side x)/2: the positive-side half holds more than half the mass
@@ -220,7 +236,12 @@ NSPD_KERNEL void gks_moments_half(GksMoments *m, const GksPrim *q, double K, dou
     const double su = side * q->U;
     const double m0 = su >= 0.0 ? 1.0 - 0.5 * e : 0.5 * e;
     m->u[0] = m0;
-    m->u[1] = q->U * m0 + side * ex * (0.28209479177387814347 * rsl); /* 1 / (2 sqrt(pi)) */
+    m->u[1] = NSPD_FMA(q->U, m0, side * ex * (0.28209479177387814347 * rsl)); /* 1/(2 sqrt(pi)) */
+}
+
+NSPD_KERNEL void gks_moments_half(GksMoments *m, const GksPrim *q, double K, double side, double ex,
+                                  double erfcx_abs) {
+    gks_moments_half_start(m, q, side, ex, erfcx_abs);
     gks_moments_fill(m, q, K);
 }
 
@@ -234,26 +255,34 @@ NSPD_KERNEL void gks_moments_full(GksMoments *m, const GksPrim *q, double K) {
 #define GKS_M(m, a, b) ((m)->u[a] * (m)->v[b])
 /* <u^a v^b psi4>, psi4 = (u^2 + v^2 + xi^2)/2 */
 #define GKS_E(m, a, b)                                                                             \
-    (0.5 * (GKS_M(m, (a) + 2, b) + GKS_M(m, a, (b) + 2) + GKS_M(m, a, b) * (m)->xi2))
+    (0.5 * NSPD_FMA(GKS_M(m, a, b), (m)->xi2,                                                      \
+                    NSPD_FMA((m)->u[a], (m)->v[(b) + 2], GKS_M(m, (a) + 2, b))))
 
 /* <u^a v^b psi4^2> */
 NSPD_KERNEL double gks_e2(const GksMoments *m, int a, int b) {
-    return 0.25 * (GKS_M(m, a + 4, b) + GKS_M(m, a, b + 4) + GKS_M(m, a, b) * m->xi4 +
-                   2.0 * GKS_M(m, a + 2, b + 2) +
-                   2.0 * (GKS_M(m, a + 2, b) + GKS_M(m, a, b + 2)) * m->xi2);
+    double e = NSPD_FMA(m->u[a], m->v[b + 4], GKS_M(m, a + 4, b));
+    e = NSPD_FMA(GKS_M(m, a, b), m->xi4, e);
+    e = NSPD_FMA(2.0 * m->u[a + 2], m->v[b + 2], e);
+    e = NSPD_FMA(2.0 * NSPD_FMA(m->u[a], m->v[b + 2], GKS_M(m, a + 2, b)), m->xi2, e);
+    return 0.25 * e;
+}
+
+/* c[0] m0 + c[1] m1 + c[2] m2 + c[3] m3, left to right, fused */
+NSPD_KERNEL double gks_dot4(const double c[4], double m0, double m1, double m2, double m3) {
+    return NSPD_FMA(c[3], m3, NSPD_FMA(c[2], m2, NSPD_FMA(c[1], m1, c[0] * m0)));
 }
 
 /* out += s <u^a v^b c psi> for a micro polynomial c = c1 + c2 u + c3 v + c4 psi4. */
 NSPD_KERNEL void gks_moment_add(const GksMoments *m, int a, int b, const double c[4], double s,
                                 double out[4]) {
     const double e00 = GKS_E(m, a, b), e10 = GKS_E(m, a + 1, b), e01 = GKS_E(m, a, b + 1);
-    out[0] += s * (c[0] * GKS_M(m, a, b) + c[1] * GKS_M(m, a + 1, b) + c[2] * GKS_M(m, a, b + 1) +
-                   c[3] * e00);
-    out[1] += s * (c[0] * GKS_M(m, a + 1, b) + c[1] * GKS_M(m, a + 2, b) +
-                   c[2] * GKS_M(m, a + 1, b + 1) + c[3] * e10);
-    out[2] += s * (c[0] * GKS_M(m, a, b + 1) + c[1] * GKS_M(m, a + 1, b + 1) +
-                   c[2] * GKS_M(m, a, b + 2) + c[3] * e01);
-    out[3] += s * (c[0] * e00 + c[1] * e10 + c[2] * e01 + c[3] * gks_e2(m, a, b));
+    /* each sum fused in the order written; the accumulation into out is
+     * not (out gathers the two sides, and a fused add would make the
+     * mirror-image face's flux depend on which side comes first) */
+    out[0] += s * gks_dot4(c, GKS_M(m, a, b), GKS_M(m, a + 1, b), GKS_M(m, a, b + 1), e00);
+    out[1] += s * gks_dot4(c, GKS_M(m, a + 1, b), GKS_M(m, a + 2, b), GKS_M(m, a + 1, b + 1), e10);
+    out[2] += s * gks_dot4(c, GKS_M(m, a, b + 1), GKS_M(m, a + 1, b + 1), GKS_M(m, a, b + 2), e01);
+    out[3] += s * gks_dot4(c, e00, e10, e01, gks_e2(m, a, b));
 }
 
 /* out += s <u^a v^b psi> (gks_moment_add with c = (1, 0, 0, 0), without the
@@ -274,17 +303,27 @@ typedef struct {
     double p;                /* pressure */
 } GksSide;
 
-NSPD_KERNEL void gks_side_init(GksSide *s, const double w[4], const double dn[4],
-                               const double dt_[4], const GksParams *par, double side) {
+/* The side's state, pressure and lowest half-space moments (what the
+ * interface equilibrium needs). */
+NSPD_KERNEL void gks_side_init(GksSide *s, const double w[4], const GksParams *par, double side) {
     s->q = gks_prim_from_w(w, par->K);
     s->p = 0.5 * s->q.rho * s->q.il;
+    const double x = sqrt(s->q.lam) * s->q.U, ax = fabs(x);
+    gks_moments_half_start(&s->m, &s->q, side, gks_exp(-x * x), gks_erfcx(ax));
+    gks_moments_fill_low(&s->m, &s->q, par->K);
+}
+
+/* Its higher moments and micro slopes, formed only when its flux is taken:
+ * they are not needed before, and so 19 fewer values a side live across
+ * the interface's work (the row loop spills its vector registers). */
+NSPD_KERNEL void gks_side_finish(GksSide *s, const double dn[4], const double dt_[4],
+                                 const GksParams *par) {
     const GksDPrim dx = gks_dprim(&s->q, dn, par->K), dy = gks_dprim(&s->q, dt_, par->K);
     const GksDPrim dtp = gks_dprim_dt(&s->q, &dx, &dy, par->gamma);
     gks_micro(&s->q, &dx, par->K, s->a);
     gks_micro(&s->q, &dy, par->K, s->b);
     gks_micro(&s->q, &dtp, par->K, s->A);
-    const double x = sqrt(s->q.lam) * s->q.U, ax = fabs(x);
-    gks_moments_half(&s->m, &s->q, par->K, side, gks_exp(-x * x), gks_erfcx(ax));
+    gks_moments_fill_high(&s->m, &s->q, par->K);
 }
 
 /* f += the side's share of the initial-data terms (t0, t1, t2). */
@@ -312,8 +351,8 @@ NSPD_KERNEL void gks_flux_kernel(const double wl[4], const double nl[4], const d
                                  const GksParams *par, ViscosityLaw law, double f[4]) {
     const double K = par->K;
     GksSide L, R;
-    gks_side_init(&L, wl, nl, tl, par, 1.0);
-    gks_side_init(&R, wr, nr, tr, par, -1.0);
+    gks_side_init(&L, wl, par, 1.0);
+    gks_side_init(&R, wr, par, -1.0);
 
     /* Interface equilibrium from the colliding half-space particles. */
     double w0[4] = {0.0, 0.0, 0.0, 0.0};
@@ -342,7 +381,9 @@ NSPD_KERNEL void gks_flux_kernel(const double wl[4], const double nl[4], const d
 
     f[0] = f[1] = f[2] = f[3] = 0.0;
     /* Free transport of the initial, non-equilibrium data. */
+    gks_side_finish(&L, nl, tl, par);
     gks_side_flux(&L, c0, c1, c2, f);
+    gks_side_finish(&R, nr, tr, par);
     gks_side_flux(&R, c0, c1, c2, f);
     /* The equilibrium part. */
     GksMoments m0;

@@ -50,18 +50,18 @@ NSPD_KERNEL double gks_exp(double x) {
     const double k = kt - shifter;
     const double r = (x - k * ln2_hi) - k * ln2_lo;
     double p = 1.0 / 479001600.0;
-    p = p * r + 1.0 / 39916800.0;
-    p = p * r + 1.0 / 3628800.0;
-    p = p * r + 1.0 / 362880.0;
-    p = p * r + 1.0 / 40320.0;
-    p = p * r + 1.0 / 5040.0;
-    p = p * r + 1.0 / 720.0;
-    p = p * r + 1.0 / 120.0;
-    p = p * r + 1.0 / 24.0;
-    p = p * r + 1.0 / 6.0;
-    p = p * r + 0.5;
-    p = p * r + 1.0;
-    p = p * r + 1.0;
+    p = NSPD_FMA(p, r, 1.0 / 39916800.0);
+    p = NSPD_FMA(p, r, 1.0 / 3628800.0);
+    p = NSPD_FMA(p, r, 1.0 / 362880.0);
+    p = NSPD_FMA(p, r, 1.0 / 40320.0);
+    p = NSPD_FMA(p, r, 1.0 / 5040.0);
+    p = NSPD_FMA(p, r, 1.0 / 720.0);
+    p = NSPD_FMA(p, r, 1.0 / 120.0);
+    p = NSPD_FMA(p, r, 1.0 / 24.0);
+    p = NSPD_FMA(p, r, 1.0 / 6.0);
+    p = NSPD_FMA(p, r, 0.5);
+    p = NSPD_FMA(p, r, 1.0);
+    p = NSPD_FMA(p, r, 1.0);
     /* The low bits of kt are k (two's complement); shifted into the exponent
      * field with the bias they give 2^k (k >= -1021 after the clamp). */
     const uint64_t scale = (gks_double_to_bits(kt) + 1023u) << 52;
@@ -82,11 +82,11 @@ NSPD_KERNEL double gks_erfcx(double z) {
     double b1 = 0.0, b2 = 0.0;
     NSPD_UNROLL(24)
     for (int k = 21; k >= 1; k--) {
-        const double b = s2 * b1 - b2 + c[k];
+        const double b = NSPD_FMA(s2, b1, -b2) + c[k];
         b2 = b1;
         b1 = b;
     }
-    return t * (s * b1 - b2 + c[0]);
+    return t * (NSPD_FMA(s, b1, -b2) + c[0]);
 }
 
 NSPD_KERNEL double gks_log(double x) {
@@ -98,15 +98,15 @@ NSPD_KERNEL double gks_log(double x) {
     const double m = gks_bits_to_double(bits - ((uint64_t)e << 52));
     const double s = (m - 1.0) / (m + 1.0), s2 = s * s;
     double p = 1.0 / 19.0;
-    p = p * s2 + 1.0 / 17.0;
-    p = p * s2 + 1.0 / 15.0;
-    p = p * s2 + 1.0 / 13.0;
-    p = p * s2 + 1.0 / 11.0;
-    p = p * s2 + 1.0 / 9.0;
-    p = p * s2 + 1.0 / 7.0;
-    p = p * s2 + 1.0 / 5.0;
-    p = p * s2 + 1.0 / 3.0;
-    p = p * s2 + 1.0;
+    p = NSPD_FMA(p, s2, 1.0 / 17.0);
+    p = NSPD_FMA(p, s2, 1.0 / 15.0);
+    p = NSPD_FMA(p, s2, 1.0 / 13.0);
+    p = NSPD_FMA(p, s2, 1.0 / 11.0);
+    p = NSPD_FMA(p, s2, 1.0 / 9.0);
+    p = NSPD_FMA(p, s2, 1.0 / 7.0);
+    p = NSPD_FMA(p, s2, 1.0 / 5.0);
+    p = NSPD_FMA(p, s2, 1.0 / 3.0);
+    p = NSPD_FMA(p, s2, 1.0);
     /* Cody-Waite split of ln 2 (fdlibm's): ln2_hi has 21 trailing zero bits,
      * so k * ln2_hi is exact for |k| < 2^21 without relying on FMA. */
     const double ln2_hi = 0x1.62e42feep-1, ln2_lo = 0x1.a39ef35793c76p-33;

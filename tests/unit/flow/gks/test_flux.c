@@ -1,6 +1,7 @@
 /* The one-face BGK-NS flux: exact limits it must reproduce. */
 #include "test_support.h"
 
+#include "core/kernel.h"
 #include "flow/gks/bc.h"
 #include "flow/gks/flux.h"
 
@@ -178,8 +179,8 @@ static void test_row_matches_face(void **state) {
     for (int i = 0; i < N; i++) {
         double wl[4], wr[4], nl[4], nr[4], tl[4], tr[4], n0[4], t0[4], g[4];
         for (int v = 0; v < 4; v++) {
-            wl[v] = w[v][i] + sn[v][i] * dl[i];
-            wr[v] = w[v][i + 1] - sn[v][i + 1] * dr[i];
+            wl[v] = NSPD_FMA(sn[v][i], dl[i], w[v][i]); /* as the row reconstructs */
+            wr[v] = NSPD_FMA(-sn[v][i + 1], dr[i], w[v][i + 1]);
             nl[v] = sn[v][i], nr[v] = sn[v][i + 1], tl[v] = st[v][i], tr[v] = st[v][i + 1];
             n0[v] = (w[v][i + 1] - w[v][i]) * idc[i];
             t0[v] = 0.5 * (tl[v] + tr[v]);
