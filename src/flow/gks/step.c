@@ -135,8 +135,9 @@ signal_rate(const GksParams *gas, ViscosityLaw law, double visc_factor, double g
     return (fabs(u) + c) * idx + (fabs(v) + c) * idy + nu * (idx * idx + idy * idy);
 }
 
-/* Signal-speed rate of each cell of row j into rate[0..nx) (0 in non-fluid
- * cells); the law is a constant in each instantiation so the loop vectorises. */
+/* Signal-speed rate of each cell of row j into rate[0..nx) (whatever the
+ * cell's kind: the caller takes the fluid cells' maximum); the law is a
+ * constant in each instantiation so the loop vectorises. */
 static inline __attribute__((always_inline)) void
 dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double *rate) {
     const Grid *g = &s->grid;
@@ -146,7 +147,6 @@ dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double
     const int64_t base = grid_index(g, 0, j);
     const double *restrict r = s->w[0] + base, *restrict mx = s->w[1] + base,
                            *restrict my = s->w[2] + base, *restrict e = s->w[3] + base;
-    const uint8_t *restrict kd = s->kind + base;
     const double *restrict idx = g->ax[0].inv_width;
     double *restrict out = rate;
     NSPD_IVDEP /* vectorised: tests/unit/core/vectorised.sh */
@@ -155,11 +155,6 @@ dt_rates(const GksSolver *s, int j, ViscosityLaw law, double visc_factor, double
         const double p = gm1 * (e[i] - 0.5 * (mx[i] * u + my[i] * v));
         out[i] = signal_rate(&gas, law, visc_factor, gamma, iR, ir, u, v, p, idx[i], idy);
     }
-    /* only fluid cells limit the step; a pass of its own, since the kinds
-     * (bytes) in the loop above kept GCC from vectorising it (as in
-     * flux.c's row loop) */
-    for (int i = 0; i < g->nx; i++)
-        if (kd[i] != FLOW_CELL_FLUID) out[i] = 0.0;
 }
 
 double gks_visc_factor(const GksParams *gas) {
@@ -205,7 +200,12 @@ double gks_solver_stable_dt(const GksSolver *s) {
             default:
                 dt_rates(s, j, VISCOSITY_NONE, visc_factor, rate);
             }
-            for (int i = 0; i < g->nx; i++) m = rate[i] > m ? rate[i] : m;
+            /* only fluid cells limit the step: their maximum, in a pass of its
+             * own, since the kinds (bytes) in the loop above kept GCC from
+             * vectorising it (as in flux.c's row loop) */
+            const uint8_t *restrict kd = s->kind + grid_index(g, 0, j);
+            for (int i = 0; i < g->nx; i++)
+                if (kd[i] == FLOW_CELL_FLUID && rate[i] > m) m = rate[i];
         }
         rmax = m > rmax ? m : rmax;
     }
