@@ -18,7 +18,10 @@
  *   half-space moments that use the same exponential.
  * gks_log: x = m 2^e with m in [sqrt(1/2), sqrt(2)), log m = 2 atanh(s),
  *   s = (m-1)/(m+1), odd series to s^19. Relative error < 4e-16 for normal
- *   positive x; used only for the power-law viscosity. */
+ *   positive x; used only for the power-law viscosity.
+ * Their polynomial and recurrence steps are fused multiply-adds (NSPD_FMA,
+ * core/kernel.h) where the target has them; the bounds above hold both
+ * ways (tests/unit/flow/gks/test_moments.c). */
 #ifndef NSPD_FLOW_GKS_SPECIAL_FUNCTIONS_H
 #define NSPD_FLOW_GKS_SPECIAL_FUNCTIONS_H
 
