@@ -325,6 +325,10 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     TRY(cfg_opt_enum(flow, "divergence_term", DIVERGENCE_TERM, PDDO_DIVERGENCE_ALL_ROWS,
                      &divergence));
     c->step.divergence = (PddoDivergenceTerm)divergence;
+    TRY(cfg_opt_double(flow, "divergence_time", 0.0, &c->step.divergence_time));
+    TRY(cfg_check_range(
+        flow, "divergence_time", c->step.divergence_time, 0.0, 1e30,
+        "tau of the PPE's (rho/tau) div u in s, at least dt; 0 for dt (the paper)"));
     int solve;
     TRY(cfg_opt_enum(flow, "pressure_solve", PRESSURE_SOLVES, 1, &solve)); /* runs */
     c->pressure_runs = solve == 1;
@@ -369,5 +373,11 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
                            "%.4g s (or no dt: half the limit)",
                            dt, limit, c->cloud.dx, nu, c->velocity_scale, limit);
     c->step.dt = dt_given ? dt : 0.5 * limit;
+    if (c->step.divergence_time != 0.0 && !(c->step.divergence_time >= c->step.dt))
+        return cfg_fail_at(flow, "divergence_time",
+                           "%g s is shorter than the step, %g s; expected at least the step (the "
+                           "paper's tau is dt; a shorter one over-corrects the divergence, and "
+                           "under dt/2 it grows), or 0 for dt",
+                           c->step.divergence_time, c->step.dt);
     return cfg_end_map(flow);
 }

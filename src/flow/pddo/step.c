@@ -124,6 +124,11 @@ int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, Pdd
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "PDDO step: dt %g s, rho %g kg/m^3, mu %g Pa s; expected all > 0", par->dt,
                          par->rho, par->mu);
+    if (par->divergence_time != 0.0 && !(par->divergence_time >= par->dt))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "PDDO step: divergence_time %g s with dt %g s; expected at least dt (a "
+                         "shorter one over-corrects the divergence, and under dt/2 it grows)",
+                         par->divergence_time, par->dt);
     if (par->spin_speed != 0.0 && cloud->npatches == 0)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "PDDO step: a spin of %g m/s; expected polar bodies to turn",
@@ -217,6 +222,7 @@ int pddo_step_advance(PddoStep *ps) {
     double *const *w = ps->scratch;
     double *u = ps->u, *v = ps->v, *p = ps->p;
     const double rho = ps->par.rho, mu = ps->par.mu, dt = ps->par.dt, nu = mu / rho;
+    const double tau = ps->par.divergence_time > 0.0 ? ps->par.divergence_time : dt;
     update_spin(ps);        /* a no-op unless the caller set the time (a restart) */
     pddo_step_apply_bc(ps); /* 7.1 (a no-op between steps; the caller may have set u) */
 
@@ -259,7 +265,7 @@ int pddo_step_advance(PddoStep *ps) {
             const double div_d = d[l] + d[L + l], div_l = d[2 * L + l] + d[3 * L + l];
             const bool feeds_back =
                 ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
-            w[R][k] = (feeds_back ? rho / dt * div_u : 0.0) - rho * div_d + mu * div_l;
+            w[R][k] = (feeds_back ? rho / tau * div_u : 0.0) - rho * div_d + mu * div_l;
         }
     }
     /* 7.3 */

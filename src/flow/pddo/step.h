@@ -75,6 +75,15 @@ typedef struct {
     PddoInletProfile inlet_profile;
     PddoWallGhosts walls; /* fictitious velocities of walls, lids and bodies */
     PddoDivergenceTerm divergence;
+    /* tau of the PPE's divergence term (rho/tau) div u, s; 0: dt, the
+     * paper's Eq. 33b. A divergence left by a step is removed over about
+     * tau / dt steps (its factor a step 1 - dt/tau), and the steady state
+     * keeps div u = (tau/rho) (L - D G) p, L the PDDO Laplacian of the PPE
+     * and D G the divergence of its gradient, which differ at the bodies
+     * and walls: with tau = dt the steady flow and its forces depend on dt
+     * (docs/VALIDATION.md), with a fixed tau they do not depend on dt at
+     * all. At least dt (1 - dt/tau > -1 needs tau > dt/2). */
+    double divergence_time;
     double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
                                 Eq. 33 is unchanged) */
     double spin_speed;       /* a start-up seed: every polar body's wall turns counterclockwise
