@@ -2,7 +2,7 @@
 # The Re 10 confined cylinder's steady drag against the lattice and the
 # PPE's divergence time tau (flow.divergence_time), behind the tau table of
 # docs/VALIDATION.md (not part of make validate):
-#   scripts/pddo_tau_study.sh          # about 10 min on 2 cores
+#   scripts/pddo_tau_study.sh          # about 14 min on 2 cores
 # Prints one line a run: dx, tau, dt, the drag and its parts (N/m), the
 # largest |div u| over the fluid nodes (1/s) and the wall time.
 # tau ~ dx^2 is the paper's scheme at dt = tau (0.4 of each lattice's
