@@ -6,9 +6,13 @@
  *   - comm_gatherv: the ranks' parts in rank order on rank 0 only;
  *   - comm_alltoallv_bytes: each rank sends rank q (q != itself) q + 1
  *     values naming sender and receiver, and receives the right ones;
+ *   - comm_ask: each rank asks rank q (itself too) for q + 1 items naming
+ *     asker and holder, and is told exactly what each rank asked of it,
+ *     grouped by asker in rank order;
  *   - comm_bcast from the last rank.
  * Every check is collective (each rank calls it, its verdict reduced). */
 #include "core/comm.h"
+#include "core/mem.h"
 #include "core/status.h"
 
 #include <stdio.h>
@@ -81,6 +85,26 @@ static void exchange(void) {
     check(ok, "alltoallv: what each rank sent each other");
 }
 
+static void ask(void) {
+    const int p = world.size, me = world.rank;
+    int64_t asked[16];
+    int count[4] = {0}, told_count[4] = {-1, -1, -1, -1};
+    int n = 0;
+    for (int q = 0; q < p; q++) {
+        count[q] = q + 1;
+        for (int k = 0; k < q + 1; k++) asked[n++] = 1000 * me + 10 * q + k;
+    }
+    int64_t *told = NULL;
+    check(comm_ask(&world, asked, count, &told, told_count) == NSPD_OK, "ask");
+    bool ok = told != NULL;
+    for (int q = 0, i = 0; q < p && ok; q++) {
+        ok = told_count[q] == me + 1; /* every rank asks me for my rank + 1 items */
+        for (int k = 0; k < told_count[q] && ok; k++) ok = told[i++] == 1000 * q + 10 * me + k;
+    }
+    check(ok, "ask: what each rank asked of this one, by asker");
+    nspd_free(&told);
+}
+
 static void broadcast(void) {
     double v = world.rank == world.size - 1 ? 42.5 : 0.0;
     check(comm_bcast(&world, &v, sizeof v, world.size - 1) == NSPD_OK && v == 42.5,
@@ -97,6 +121,7 @@ int main(int argc, char **argv) {
     agree();
     gather();
     exchange();
+    ask();
     broadcast();
     if (world.rank == 0)
         printf("%s on %d ranks\n", failures ? "FAILED" : "comm operations right", world.size);
