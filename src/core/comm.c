@@ -96,6 +96,12 @@ int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
     return reduce_i64(c, value, MPI_SUM);
 }
 
+int comm_sum_i64_array(const NspdComm *c, int64_t *values, int n) {
+    if (!comm_distributed(c) || n <= 0) return NSPD_OK;
+    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_INT64_T, MPI_SUM, mpi_of(c));
+    return NSPD_OK;
+}
+
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all) {
     if (!comm_distributed(c)) return gather_alone(mine, bytes, all);
     int *counts = NULL, *offsets = NULL;
@@ -232,6 +238,9 @@ int64_t comm_max_i64(const NspdComm *c, int64_t value) {
 }
 int64_t comm_sum_i64(const NspdComm *c, int64_t value) {
     return (void)c, value;
+}
+int comm_sum_i64_array(const NspdComm *c, int64_t *values, int n) {
+    return (void)c, (void)values, (void)n, NSPD_OK;
 }
 
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all) {

@@ -44,6 +44,9 @@ double comm_max(const NspdComm *c, double value);
 int64_t comm_min_i64(const NspdComm *c, int64_t value);
 int64_t comm_max_i64(const NspdComm *c, int64_t value);
 int64_t comm_sum_i64(const NspdComm *c, int64_t value);
+/* values[0..n) summed element by element over the group, in place on
+ * every rank (integers: exact). */
+int comm_sum_i64_array(const NspdComm *c, int64_t *values, int n);
 
 /* Every rank's `count` doubles, concatenated in rank order into all[] on
  * every rank (counts may differ between ranks; all holds their sum). */

@@ -184,6 +184,10 @@ bool flow_has_transfer(const Flow *f) {
     return f->ops->transfer && f->ops->lumped && f->ops->add_lumped;
 }
 
+int flow_cell_owner(const Flow *f, int64_t cell) {
+    return f->ops->cell_owner ? f->ops->cell_owner(f->impl, cell) : 0;
+}
+
 void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double *x,
                    const double *y, int64_t *cell, double *w) {
     f->ops->transfer(f->impl, kind, n, x, y, cell, w);

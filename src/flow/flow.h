@@ -188,12 +188,19 @@ typedef struct FlowOps {
      * off the mesh). Allocation free. NULL: no volumetric coupling. */
     void (*transfer)(const void *impl, FlowTransferKind kind, int64_t n, const double *x,
                      const double *y, int64_t *cell, double *w);
+    /* The process that holds unknown `cell` (its rank in the flow's
+     * group). NULL: one process holds them all. */
+    int (*cell_owner)(const void *impl, int64_t cell);
     /* The lumped mass (kg per metre of depth) and momentum (kg m/s per
-     * metre) of the n unknowns cells[k]. */
+     * metre) of the n unknowns cells[k]; on several processes only
+     * unknowns this process holds (cell_owner; NaN for others), no
+     * message sent. */
     void (*lumped)(const void *impl, int64_t n, const int64_t *cells, double *mass,
                    double *momentum_x, double *momentum_y);
     /* Adds momentum and total energy (per metre of depth; a NULL array:
-     * none of that) to the n unknowns cells[k] (distinct), between steps. */
+     * none of that) to the n unknowns cells[k] (distinct), between steps;
+     * on several processes, what is added to unknowns another process
+     * holds is dropped (each process passes its own). */
     void (*add_lumped)(void *impl, int64_t n, const int64_t *cells, const double *dmx,
                        const double *dmy, const double *de);
     /* Sealed faces inside a solid, for the next steps: a solid moving at
@@ -277,6 +284,7 @@ int flow_set_sources(Flow *f, FlowSources *src);
 /* FlowOps.transfer, lumped, add_lumped: only where flow_has_transfer (a
  * coupling that needs them refuses other flows when it is built). */
 bool flow_has_transfer(const Flow *f);
+int flow_cell_owner(const Flow *f, int64_t cell);
 void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double *x,
                    const double *y, int64_t *cell, double *w);
 void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, double *momentum_x,

@@ -2,6 +2,8 @@
 #include "couple/penalty/model.h"
 
 #include "core/checkpoint.h"
+#include "core/comm.h"
+#include "core/exact_sum.h"
 #include "core/log.h"
 #include "core/mem.h"
 #include "core/status.h"
@@ -46,6 +48,18 @@ typedef struct {
     double *cover, *cover_v[2];
     double *seal_area, *seal_u[2];
     PenaltyWork work;
+    /* divided between processes (issue 28): the touched cells' and the
+     * points' owners, what this process forms, and the plan of the cells
+     * its near points read from others (touched-cell numbers: the stencils
+     * are the same on every process) */
+    NspdComm comm;
+    int *cell_rank, *point_rank;
+    int64_t *own_cell, *near_point, *own_point, *asked, *told;
+    uint8_t *mark;
+    int *ask_count, *told_count, *bytes; /* per rank; bytes: 4 per rank */
+    double *send, *recv, *shared;        /* send, recv: cells; shared: 4 per point */
+    PenaltyDivision div;
+    int status;         /* of the division's collective calls within a relaxation */
     bool stencil_fresh; /* before_flow built the stencils at the points' current positions */
     double last_dt;     /* s, of the last relaxation */
     bool said;          /* C_pen logged (at the first step: the run's log is open then) */
@@ -71,6 +85,20 @@ static void penalty_destroy(void *impl) {
     nspd_free(&p->cell_id);
     nspd_free(&p->first);
     nspd_free(&p->local);
+    nspd_free(&p->cell_rank);
+    nspd_free(&p->point_rank);
+    nspd_free(&p->own_cell);
+    nspd_free(&p->near_point);
+    nspd_free(&p->own_point);
+    nspd_free(&p->asked);
+    nspd_free(&p->told);
+    nspd_free(&p->mark);
+    nspd_free(&p->ask_count);
+    nspd_free(&p->told_count);
+    nspd_free(&p->bytes);
+    nspd_free(&p->send);
+    nspd_free(&p->recv);
+    nspd_free(&p->shared);
     nspd_free(&p);
 }
 
@@ -100,7 +128,21 @@ static int allocate(PenaltyCoupling *p) {
     TRY(nspd_alloc(&p->point, e ? e : 1, sizeof(int32_t)));
     TRY(nspd_alloc(&p->weight, e ? e : 1, sizeof(double)));
     TRY(nspd_alloc(&p->cell_id, e ? e : 1, sizeof(int64_t)));
-    return nspd_alloc(&p->first, e + 1, sizeof(int64_t));
+    TRY(nspd_alloc(&p->first, e + 1, sizeof(int64_t)));
+    if (!comm_distributed(&p->comm)) return NSPD_OK;
+    const size_t ranks = (size_t)p->comm.size;
+    TRY(nspd_alloc(&p->cell_rank, e + 1, sizeof(int)));
+    TRY(nspd_alloc(&p->point_rank, n + 1, sizeof(int)));
+    TRY(nspd_alloc(&p->own_cell, e + 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->asked, e + 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->near_point, n + 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->own_point, n + 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->mark, (n > e ? n : e) + 1, 1));
+    TRY(nspd_alloc(&p->ask_count, ranks, sizeof(int)));
+    TRY(nspd_alloc(&p->told_count, ranks, sizeof(int)));
+    TRY(nspd_alloc(&p->bytes, 4 * ranks, sizeof(int)));
+    TRY(nspd_alloc(&p->recv, e + 1, sizeof(double)));
+    return nspd_alloc(&p->shared, 4 * n + 1, sizeof(double));
 }
 
 static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow) {
@@ -127,6 +169,7 @@ static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *
     p->cfg = *(const PenaltyConfig *)cfg->model;
     nspd_free(&cfg->model); /* taken */
     p->average_from = cfg->average_from;
+    p->comm = cfg->comm ? *cfg->comm : comm_self();
     p->n = pts->n;
     p->width = flow_transfer_width(p->cfg.transfer);
     p->depth = p->cfg.thickness == PENALTY_PLATE_IN_UNIT_DEPTH ? 1.0 : pts->thickness;
@@ -213,6 +256,127 @@ static double gather(const PenaltyCoupling *p, int64_t c, const double *f) {
     return sum;
 }
 
+/* ------------------------------------------- divided between processes */
+
+/* The entry of point i whose weight is the largest (the first of equals):
+ * for all three transfers the cell that holds the point (the nearest
+ * centre); -1 for a point with no gas around it. */
+static int32_t home_col(const PenaltyCoupling *p, int64_t i) {
+    int32_t best = -1;
+    double most = -1.0;
+    for (int j = 0; j < p->width; j++) {
+        const int64_t e = i * p->width + j;
+        if (p->col[e] >= 0 && p->w[e] > most) best = p->col[e], most = p->w[e];
+    }
+    return best;
+}
+
+/* x at the cells this process's near points read and other processes
+ * hold, from them (PenaltyDivision.exchange; one all-to-all with the
+ * partners). */
+static void halo_exchange(void *ctx, double *x) {
+    PenaltyCoupling *p = ctx;
+    const int ranks = p->comm.size;
+    const int *send_bytes = p->bytes, *send_at = p->bytes + ranks;
+    const int *recv_bytes = p->bytes + 2 * ranks, *recv_at = p->bytes + 3 * ranks;
+    int64_t tells = 0, asks = 0;
+    for (int r = 0; r < ranks; r++) tells += p->told_count[r], asks += p->ask_count[r];
+    for (int64_t k = 0; k < tells; k++) p->send[k] = x[p->told[k]];
+    const int status =
+        comm_alltoallv_bytes(&p->comm, p->send, send_bytes, send_at, p->recv, recv_bytes, recv_at);
+    if (p->status == NSPD_OK) p->status = status;
+    for (int64_t k = 0; k < asks; k++) x[p->asked[k]] = p->recv[k];
+}
+
+static void sums_reduce(void *ctx, ExactSum *s, int count) {
+    PenaltyCoupling *p = ctx;
+    const int status = exact_sum_reduce(&p->comm, s, count);
+    if (p->status == NSPD_OK) p->status = status;
+}
+
+/* Who forms what, from the stencils (the same on every process): each
+ * touched cell's row by the process that holds the cell, each point's
+ * impulse by the process that holds its own cell; the near points (those
+ * that touch this process's cells) are sampled here too, so the cells
+ * they read that others hold are asked of those (collective). */
+static int divide(PenaltyCoupling *p, const Flow *flow) {
+    const int me = p->comm.rank, ranks = p->comm.size;
+    const int64_t n = p->n;
+    int64_t own = 0, owned = 0, near = 0;
+    for (int64_t c = 0; c < p->cells; c++) {
+        p->cell_rank[c] = flow_cell_owner(flow, p->cell_id[c]);
+        if (p->cell_rank[c] == me) p->own_cell[own++] = c;
+    }
+    for (int64_t i = 0; i < n; i++) {
+        const int32_t home = home_col(p, i);
+        p->point_rank[i] = home >= 0 ? p->cell_rank[home] : 0; /* no gas: no impulse */
+        if (p->point_rank[i] == me) p->own_point[owned++] = i;
+    }
+    for (int64_t i = 0; i < n; i++) p->mark[i] = 0;
+    for (int64_t q = 0; q < own; q++)
+        for (int64_t k = p->first[p->own_cell[q]]; k < p->first[p->own_cell[q] + 1]; k++)
+            p->mark[p->point[k]] = 1;
+    for (int64_t i = 0; i < n; i++)
+        if (p->mark[i]) p->near_point[near++] = i;
+    /* the cells they read that others hold: asked of their owners, grouped
+     * by owner, each group in touched order */
+    for (int64_t c = 0; c < p->cells; c++) p->mark[c] = 0;
+    for (int64_t q = 0; q < near; q++)
+        for (int j = 0; j < p->width; j++) {
+            const int32_t c = p->col[p->near_point[q] * p->width + j];
+            if (c >= 0 && p->cell_rank[c] != me) p->mark[c] = 1;
+        }
+    int *at = p->bytes; /* scratch until the byte counts below */
+    for (int r = 0; r < ranks; r++) p->ask_count[r] = 0;
+    for (int64_t c = 0; c < p->cells; c++)
+        if (p->mark[c]) p->ask_count[p->cell_rank[c]]++;
+    for (int r = 0, sum = 0; r < ranks; r++) at[r] = sum, sum += p->ask_count[r];
+    for (int64_t c = 0; c < p->cells; c++)
+        if (p->mark[c]) p->asked[at[p->cell_rank[c]]++] = c;
+    nspd_free(&p->told);
+    TRY(comm_ask(&p->comm, p->asked, p->ask_count, &p->told, p->told_count));
+    int64_t tells = 0, asks = 0;
+    int *send_bytes = p->bytes, *send_at = p->bytes + ranks;
+    int *recv_bytes = p->bytes + 2 * ranks, *recv_at = p->bytes + 3 * ranks;
+    for (int r = 0; r < ranks; r++) {
+        send_bytes[r] = p->told_count[r] * (int)sizeof(double);
+        send_at[r] = (int)(tells * (int64_t)sizeof(double));
+        recv_bytes[r] = p->ask_count[r] * (int)sizeof(double);
+        recv_at[r] = (int)(asks * (int64_t)sizeof(double));
+        tells += p->told_count[r], asks += p->ask_count[r];
+    }
+    nspd_free(&p->send);
+    TRY(nspd_alloc(&p->send, (size_t)tells + 1, sizeof(double)));
+    p->div = (PenaltyDivision){.own_cells = own,
+                               .own_cell = p->own_cell,
+                               .near_points = near,
+                               .near_point = p->near_point,
+                               .own_points = owned,
+                               .own_point = p->own_point,
+                               .exchange = halo_exchange,
+                               .reduce = sums_reduce,
+                               .ctx = p};
+    p->status = NSPD_OK;
+    return NSPD_OK;
+}
+
+/* Every point's impulse on every process, from the process that formed
+ * it (the solid's whole view takes them all). */
+static int share_impulses(PenaltyCoupling *p) {
+    double *mine = p->shared, *all = p->shared + 2 * p->n;
+    for (int64_t q = 0; q < p->div.own_points; q++) {
+        const int64_t i = p->own_point[q];
+        mine[2 * q] = p->J[0][i];
+        mine[2 * q + 1] = p->J[1][i];
+    }
+    TRY(comm_share_items(&p->comm, p->n, p->point_rank, 2, mine, all));
+    for (int64_t i = 0; i < p->n; i++) {
+        p->J[0][i] = all[2 * i];
+        p->J[1][i] = all[2 * i + 1];
+    }
+    return NSPD_OK;
+}
+
 /* Before the flow's step, with `seal`: the area the intact solid covers
  * in each cell around it (a point's in-plane area times 1 - d through its
  * weights) and the solid's area-weighted velocity there, handed to the
@@ -275,6 +439,9 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     }
     if (!p->stencil_fresh) TRY(stencil(p, flow));
     p->stencil_fresh = false;
+    const bool divided = comm_distributed(&p->comm);
+    if (divided) TRY(divide(p, flow));
+    /* the cells this process holds (the others' are NaN, never read here) */
     flow_lumped(flow, p->cells, p->cell_id, p->mass, p->dm[0], p->dm[1]);
     for (int64_t c = 0; c < p->cells; c++) {
         p->u[0][c] = p->dm[0][c] / p->mass[c];
@@ -311,43 +478,54 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
                                .u = {p->u[0], p->u[1]},
                                .first = p->first,
                                .point = p->point,
-                               .weight = p->weight};
+                               .weight = p->weight,
+                               .div = divided ? &p->div : NULL};
     PenaltyStats stats;
     penalty_relax(&sys, &p->work, p->J, &stats);
+    if (divided) {
+        TRY(p->status);
+        TRY(share_impulses(p));
+    }
     p->step.iterations = stats.iterations;
-    p->step.slip_max = stats.slip_max;
+    p->step.slip_max = comm_max(&p->comm, stats.slip_max);
     /* the solid: v' = v + J/m; the work of the impulse on each point */
     for (int d = 0; d < 2; d++) {
-        double sum = 0.0;
+        ExactSum sum; /* exact, as the gas's side below */
+        exact_sum_clear(&sum);
         for (int64_t i = 0; i < n; i++) {
             if (p->b[i] == 0.0) continue;
             pts->v[d][i] = p->v[d][i] + p->J[d][i] / p->m[i];
-            sum += p->J[d][i];
+            exact_sum_add(&sum, p->J[d][i]);
         }
-        p->step.impulse[d] = sum;
+        p->step.impulse[d] = exact_sum_value(&sum);
     }
     solid_velocities_changed(solid); /* a divided solid's parts take them */
     for (int64_t i = 0; i < n; i++)
         p->work_rate[i] = -(p->J[0][i] * 0.5 * (p->v[0][i] + pts->v[0][i]) +
                             p->J[1][i] * 0.5 * (p->v[1][i] + pts->v[1][i]));
-    /* the gas: minus each impulse (and its work) through the weights */
-    for (int d = 0; d < 2; d++) {
-        double gas = 0.0;
-        for (int64_t c = 0; c < p->cells; c++) {
-            p->dm[d][c] = -gather(p, c, p->J[d]);
-            gas += p->dm[d][c];
-        }
-        p->step.gas[d] = gas;
-    }
+    /* the gas: minus each impulse (and its work) through the weights, at
+     * the cells this process holds; the totals exact, so the same on any
+     * number of processes */
+    const int64_t own = divided ? p->div.own_cells : p->cells;
     const bool energy = p->cfg.energy == PENALTY_ENERGY_TOTAL;
-    if (energy) {
-        double total = 0.0;
-        for (int64_t c = 0; c < p->cells; c++) {
-            p->de[c] = gather(p, c, p->work_rate);
-            total += p->de[c];
+    ExactSum sums[3];
+    for (int k = 0; k < 3; k++) exact_sum_clear(&sums[k]);
+    for (int64_t q = 0; q < own; q++) {
+        const int64_t c = divided ? p->own_cell[q] : q;
+        for (int d = 0; d < 2; d++) {
+            p->dm[d][c] = -gather(p, c, p->J[d]);
+            exact_sum_add(&sums[d], p->dm[d][c]);
         }
-        p->step.energy_to_gas += total;
+        if (energy) {
+            p->de[c] = gather(p, c, p->work_rate);
+            exact_sum_add(&sums[2], p->de[c]);
+        }
     }
+    TRY(exact_sum_reduce(&p->comm, sums, 3));
+    p->step.gas[0] = exact_sum_value(&sums[0]);
+    p->step.gas[1] = exact_sum_value(&sums[1]);
+    if (energy) p->step.energy_to_gas += exact_sum_value(&sums[2]);
+    /* the flow adds only what this process holds */
     flow_add_lumped(flow, p->cells, p->cell_id, p->dm[0], p->dm[1], energy ? p->de : NULL);
     p->last_dt = dt;
     const double fx = p->step.impulse[0] / dt;

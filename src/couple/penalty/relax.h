@@ -17,12 +17,39 @@
  * momentum is exact to round-off whatever the solver's tolerance, and the
  * relative velocity decays for any dt and any stiffness.
  *
- * Plain arrays, no allocation, serial sums in a fixed order (the same bits
- * on any thread count). */
+ * Plain arrays, no allocation. The rows' sums run over their entries in
+ * point order and the dot products are exact sums (core/exact_sum.h), so
+ * the answer is the same bits on any number of threads and processes.
+ *
+ * Divided between processes (issue 28), each process forms the rows of the
+ * cells it holds and the impulses of the points it owns (those whose own
+ * cell, the one holding them, it holds); a row reads the samples of the
+ * points that touch its cell, which read the cells of their stencils:
+ * those that other processes hold arrive through `exchange` before each
+ * product, and the dot products' sums are added across processes by
+ * `reduce`. */
 #ifndef NSPD_COUPLE_PENALTY_RELAX_H
 #define NSPD_COUPLE_PENALTY_RELAX_H
 
+#include "core/exact_sum.h"
+
 #include <stdint.h>
+
+/* What one process of several forms (PenaltySystem.div; NULL: all). */
+typedef struct {
+    int64_t own_cells;
+    const int64_t *own_cell; /* the cells whose rows it forms */
+    int64_t near_points;
+    const int64_t *near_point; /* the points that touch them */
+    int64_t own_points;
+    const int64_t *own_point; /* the points whose impulses it forms (J's other entries: 0) */
+    /* x at the cells the near points read and other processes hold, from
+     * them (collective) */
+    void (*exchange)(void *ctx, double *x);
+    /* s[0..count) added over the processes (collective) */
+    void (*reduce)(void *ctx, ExactSum *s, int count);
+    void *ctx;
+} PenaltyDivision;
 
 typedef struct {
     int64_t points;
@@ -40,6 +67,7 @@ typedef struct {
     const int64_t *first; /* cells + 1 */
     const int32_t *point;
     const double *weight;
+    const PenaltyDivision *div; /* NULL: one process */
 } PenaltySystem;
 
 /* Scratch of the solve: one array per point, six per cell. */
@@ -51,7 +79,8 @@ typedef struct {
 typedef struct {
     int iterations;   /* the most of the two components' */
     double residual;  /* the largest relative residual reached */
-    double slip_max;  /* max over points of |s_P' - v_P'| after the step, m/s */
+    double slip_max;  /* max over points of |s_P' - v_P'| after the step, m/s (the
+                         process's own points: a max over processes is the whole's) */
     double slip_work; /* sum_P J_P . (s_P' - v_P) = sum_P b_P |s_P' - v_P|^2,
                          J per metre, >= 0 (a scale of the step's dissipation) */
 } PenaltyStats;

@@ -371,13 +371,13 @@ static int gks_set_sources(void *impl, FlowSources *src) {
     return NSPD_OK;
 }
 
-/* A volumetric coupling's side (FlowOps.transfer, lumped, add_lumped,
- * seal). On several processes the coupling (and its solid) is replicated:
- * it passes every rank the same cells of the whole grid; the weights need
- * the whole grid's kinds (gathered again when a block's changed), the
- * lumped values come from the ranks that hold the cells (gathered in the
- * list's order), and each rank adds to and seals only the cells it holds,
- * so every value is the one-process one. */
+/* A volumetric coupling's side (FlowOps.transfer, cell_owner, lumped,
+ * add_lumped, seal). On several processes the coupling passes whole-grid
+ * cells: the weights need the whole grid's kinds (gathered again when a
+ * block's changed); the lumped values are read, and added, by the rank
+ * that holds each cell (the coupling divides its cells by their owners,
+ * couple/penalty/model.c); each rank seals the faces of its block and
+ * halo, so every value is the one-process one. */
 
 /* The whole grid's kinds on every rank (padded; ghost layers SOLID, never
  * read by the weights). Gathered again only when some block's kinds
@@ -431,6 +431,11 @@ static int cell_owner(const GksSolver *s, int64_t c, int64_t *local) {
     return gks_solver_cell_owner(s, (int)(c % w->stride) - GRID_NG, (int)(c / w->stride) - GRID_NG);
 }
 
+static int gks_flow_cell_owner(const void *impl, int64_t cell) {
+    int64_t local;
+    return cell_owner(((const GksFlow *)impl)->solver, cell, &local);
+}
+
 static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
                             double *momentum_x, double *momentum_y) {
     const GksFlow *gf = impl;
@@ -441,29 +446,14 @@ static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, d
         gks_lumped(gks_solver_grid(s), &f, n, cells, mass, momentum_x, momentum_y);
         return;
     }
-    double *mine = NULL, *all = NULL;
-    int *owner = NULL;
-    int status = nspd_alloc(&mine, 3 * (size_t)n + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&all, 3 * (size_t)n + 1, sizeof(double));
-    if (status == NSPD_OK) status = nspd_alloc(&owner, (size_t)n + 1, sizeof(int));
-    int count = 0;
-    for (int64_t k = 0; k < n && status == NSPD_OK; k++) {
-        int64_t local;
-        owner[k] = cell_owner(s, cells[k], &local);
-        if (owner[k] != comm->rank) continue;
-        gks_lumped(gks_solver_grid(s), &f, 1, &local, &mine[count], &mine[count + 1],
-                   &mine[count + 2]);
-        count += 3;
-    }
-    if (status == NSPD_OK) status = comm_share_items(comm, n, owner, 3, mine, all);
     for (int64_t k = 0; k < n; k++) {
-        /* an allocation failure leaves NaN, which the coupling's next step refuses */
-        const double *v = status == NSPD_OK ? &all[3 * k] : (const double[3]){NAN, NAN, NAN};
-        mass[k] = v[0], momentum_x[k] = v[1], momentum_y[k] = v[2];
+        int64_t local;
+        if (cell_owner(s, cells[k], &local) != comm->rank) { /* another process's */
+            mass[k] = momentum_x[k] = momentum_y[k] = (double)NAN;
+            continue;
+        }
+        gks_lumped(gks_solver_grid(s), &f, 1, &local, &mass[k], &momentum_x[k], &momentum_y[k]);
     }
-    nspd_free(&mine);
-    nspd_free(&all);
-    nspd_free(&owner);
 }
 
 static void gks_flow_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
@@ -755,6 +745,7 @@ const FlowOps GKS_FLOW_OPS = {
     .sample = gks_sample,
     .set_sources = gks_set_sources,
     .transfer = gks_flow_transfer,
+    .cell_owner = gks_flow_cell_owner,
     .lumped = gks_flow_lumped,
     .add_lumped = gks_flow_add_lumped,
     .seal = gks_flow_seal,

@@ -9,7 +9,9 @@
 # - each loop marked `NSPD_IVDEP /* vectorised: ... */` (the loop is on the
 #   next line): the GKS step's face fluxes, slopes and stable-step rates;
 # - for a mark `/* vectorised xN: ... */` on the line before a statement,
-#   N loops reported there in 32-byte vectors: GCC names an `omp simd`
+#   N loops reported there in 32- or 64-byte vectors (4 or 8 doubles: GCC
+#   tuned for Intel's AVX-512 cores picks 32, for AMD's Zen, which it
+#   takes for znver3, 64; 16 bytes, two lanes, would not count): GCC names an `omp simd`
 #   loop over an inlined body by the body's first statement (the
 #   correspondence solid's passes over bond pairs).
 # A byte loaded beside the doubles once kept the GKS flux loop scalar
@@ -50,7 +52,7 @@ for file in "$src"/src/flow/gks/*.c "$src"/src/solid/correspondence/*.c; do
         want=${mark#*:}
         marked=$((marked + want))
         at=$((line + 1))
-        got=$(grep -c "$name:$at:[0-9]*: optimized: loop vectorized using 32 byte vectors" "$report")
+        got=$(grep -c -E "$name:$at:[0-9]*: optimized: loop vectorized using (32|64) byte vectors" "$report")
         if [ "$got" -lt "$want" ]; then
             echo "FAIL: $name:$at: $got of the $want loops over this body vectorised (gcc -fopt-info-vec-all says why)"
             status=1

@@ -339,6 +339,7 @@ static void test_ductile_damage_ramp(void **state) {
     uint8_t *ok = malloc((size_t)b.n);
     double prev[4] = {1, 0, 0, 1}, F[4] = {1, 0, 0, 1};
     int checked = 0;
+    double worst = 0.0;
     for (int s = 1; s <= 400 && b.damage[0] < 1.0; s++) {
         memcpy(prev, F, sizeof F);
         F[0] = 1.0 + 0.5 * s / 400.0;
@@ -356,7 +357,11 @@ static void test_ductile_damage_ramp(void **state) {
              * equal to the undamaged ones, relative to the point's largest
              * weight, as a uniform scale must leave them (near corners the
              * moment matrix is too ill-conditioned for that comparison:
-             * the scale varies in its last bits from bond to bond) */
+             * the scale varies in its last bits from bond to bond). The
+             * bound: measured up to 1.22e-12 of the largest weight on an
+             * AMD EPYC (GCC tuned for znver3, 512-bit lanes), below 1e-12
+             * on the Xeon the golden files came from; the moment matrix's
+             * inverse loses about cond ~ 1e4 times eps */
             const double *const *x = (const double *const *)b.x;
             assert_int_equal(rk_gradient_weights(2, b.n, x, b.volume, b.first, b.nbr, b.delta,
                                                  b.scale, fresh, ok),
@@ -367,12 +372,16 @@ static void test_ductile_damage_ramp(void **state) {
                 double big = 0.0;
                 for (int64_t q = 2 * b.first[i]; q < 2 * b.first[i + 1]; q++)
                     big = fmax(big, fabs(phi0[q]));
-                for (int64_t q = 2 * b.first[i]; q < 2 * b.first[i + 1]; q++)
-                    assert_close(b.phi[q], phi0[q], 1e-12 * big);
+                for (int64_t q = 2 * b.first[i]; q < 2 * b.first[i + 1]; q++) {
+                    worst = fmax(worst, fabs(b.phi[q] - phi0[q]) / big);
+                    assert_close(b.phi[q], phi0[q], 3e-12 * big);
+                }
             }
         }
     }
-    print_message("ramp checked at %d intermediate damage levels\n", checked);
+    print_message("ramp checked at %d intermediate damage levels; weights within %.2e of the "
+                  "undamaged\n",
+                  checked, worst);
     assert_true(checked >= 3);
     assert_true(b.damage[0] == 1.0);
     double *dmean = malloc((size_t)b.n * sizeof(double));
