@@ -188,6 +188,10 @@ int flow_cell_owner(const Flow *f, int64_t cell) {
     return f->ops->cell_owner ? f->ops->cell_owner(f->impl, cell) : 0;
 }
 
+bool flow_point_near(const Flow *f, double x, double y, int margin) {
+    return f->ops->point_near ? f->ops->point_near(f->impl, x, y, margin) : true;
+}
+
 void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double *x,
                    const double *y, int64_t *cell, double *w) {
     f->ops->transfer(f->impl, kind, n, x, y, cell, w);

@@ -191,6 +191,10 @@ typedef struct FlowOps {
     /* The process that holds unknown `cell` (its rank in the flow's
      * group). NULL: one process holds them all. */
     int (*cell_owner)(const void *impl, int64_t cell);
+    /* Whether the point (x, y) lies in a cell within `margin` cells (along
+     * each axis, around a periodic one) of those this process holds: the
+     * points whose stencils can reach them. NULL, or one process: true. */
+    bool (*point_near)(const void *impl, double x, double y, int margin);
     /* The lumped mass (kg per metre of depth) and momentum (kg m/s per
      * metre) of the n unknowns cells[k]; on several processes only
      * unknowns this process holds (cell_owner; NaN for others), no
@@ -285,6 +289,7 @@ int flow_set_sources(Flow *f, FlowSources *src);
  * coupling that needs them refuses other flows when it is built). */
 bool flow_has_transfer(const Flow *f);
 int flow_cell_owner(const Flow *f, int64_t cell);
+bool flow_point_near(const Flow *f, double x, double y, int margin);
 void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double *x,
                    const double *y, int64_t *cell, double *w);
 void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, double *momentum_x,

@@ -16,6 +16,12 @@
 const char *const PENALTY_THICKNESS_NAMES[] = {"depth_consistent", "plate_in_unit_depth", NULL};
 const char *const PENALTY_ENERGY_NAMES[] = {"total", "momentum_only", NULL};
 
+/* Cells around a process's block within which a point's stencil may
+ * reach its cells or its halo's (the faces a seal closes): the stencil's
+ * one (the cells around the one that holds the point), the halo's two,
+ * one to spare. */
+enum { PENALTY_REACH = 4 };
+
 typedef struct {
     PenaltyConfig cfg;
     double average_from;
@@ -24,11 +30,17 @@ typedef struct {
     double depth;  /* m of the solid per metre of gas depth's share: t or 1 */
     double dt_pen; /* s */
     double h;      /* m */
-    /* per point */
-    double *x[2]; /* the points' positions at the relaxation */
+    /* per point of the whole body */
     double *m, *b, *v[2], *J[2];
     double *work_rate; /* J per metre: minus the impulse's work on the point */
-    /* per entry (n * width) */
+    /* the candidates: the points whose stencils this process forms (within
+     * PENALTY_REACH cells of its block; every point on one process), by
+     * their order in the whole body: pick[k] its point, and per candidate
+     * its position, mass, b, velocity, impulse and work rate */
+    int64_t nc, *pick;
+    double *x[2]; /* the points' positions at the relaxation */
+    double *cm, *cb, *cv[2], *cJ[2], *cwr;
+    /* per entry (nc * width) */
     int64_t *cell;
     double *w;
     int32_t *col;
@@ -49,15 +61,15 @@ typedef struct {
     double *seal_area, *seal_u[2];
     PenaltyWork work;
     /* divided between processes (issue 28): the touched cells' and the
-     * points' owners, what this process forms, and the plan of the cells
-     * its near points read from others (touched-cell numbers: the stencils
-     * are the same on every process) */
+     * candidates' owners, what this process forms, and the plan of the
+     * cells its near points read from others (their touched numbers here,
+     * and the flow's numbers of those asked) */
     NspdComm comm;
     int *cell_rank, *point_rank;
-    int64_t *own_cell, *near_point, *own_point, *asked, *told;
+    int64_t *own_cell, *near_point, *own_point, *asked, *asked_id, *told;
     uint8_t *mark;
     int *ask_count, *told_count, *bytes; /* per rank; bytes: 4 per rank */
-    double *send, *recv, *shared;        /* send, recv: cells; shared: 4 per point */
+    double *send, *recv, *shared;        /* send, recv: cells; shared: 8 per point */
     PenaltyDivision div;
     int status;         /* of the division's collective calls within a relaxation */
     bool stencil_fresh; /* before_flow built the stencils at the points' current positions */
@@ -75,7 +87,8 @@ static void penalty_destroy(void *impl) {
         &p->J[0],       &p->J[1],       &p->w,         &p->mass,      &p->u[0],        &p->u[1],
         &p->dm[0],      &p->dm[1],      &p->de,        &p->work_rate, &p->work.sample, &p->work.x,
         &p->work.r,     &p->work.z,     &p->work.p,    &p->work.ap,   &p->work.diag,   &p->cover,
-        &p->cover_v[0], &p->cover_v[1], &p->seal_area, &p->seal_u[0], &p->seal_u[1]};
+        &p->cover_v[0], &p->cover_v[1], &p->seal_area, &p->seal_u[0], &p->seal_u[1],   &p->cm,
+        &p->cb,         &p->cv[0],      &p->cv[1],     &p->cJ[0],     &p->cJ[1],       &p->cwr};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++) nspd_free(arrays[k]);
     nspd_free(&p->cell);
     nspd_free(&p->col);
@@ -91,7 +104,9 @@ static void penalty_destroy(void *impl) {
     nspd_free(&p->near_point);
     nspd_free(&p->own_point);
     nspd_free(&p->asked);
+    nspd_free(&p->asked_id);
     nspd_free(&p->told);
+    nspd_free(&p->pick);
     nspd_free(&p->mark);
     nspd_free(&p->ask_count);
     nspd_free(&p->told_count);
@@ -104,8 +119,10 @@ static void penalty_destroy(void *impl) {
 
 static int allocate(PenaltyCoupling *p) {
     const size_t n = (size_t)p->n, e = n * (size_t)p->width;
-    double **per_point[] = {&p->x[0], &p->x[1], &p->m,    &p->b,         &p->v[0],
-                            &p->v[1], &p->J[0], &p->J[1], &p->work_rate, &p->work.sample};
+    double **per_point[] = {&p->x[0],  &p->x[1], &p->m,     &p->b,         &p->v[0],
+                            &p->v[1],  &p->J[0], &p->J[1],  &p->work_rate, &p->work.sample,
+                            &p->cm,    &p->cb,   &p->cv[0], &p->cv[1],     &p->cJ[0],
+                            &p->cJ[1], &p->cwr};
     for (size_t k = 0; k < sizeof per_point / sizeof *per_point; k++)
         TRY(nspd_alloc(per_point[k], n ? n : 1, sizeof(double)));
     double **per_cell[] = {&p->mass,   &p->u[0],   &p->u[1],    &p->dm[0],
@@ -129,12 +146,14 @@ static int allocate(PenaltyCoupling *p) {
     TRY(nspd_alloc(&p->weight, e ? e : 1, sizeof(double)));
     TRY(nspd_alloc(&p->cell_id, e ? e : 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->first, e + 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->pick, n + 1, sizeof(int64_t)));
     if (!comm_distributed(&p->comm)) return NSPD_OK;
     const size_t ranks = (size_t)p->comm.size;
     TRY(nspd_alloc(&p->cell_rank, e + 1, sizeof(int)));
     TRY(nspd_alloc(&p->point_rank, n + 1, sizeof(int)));
     TRY(nspd_alloc(&p->own_cell, e + 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->asked, e + 1, sizeof(int64_t)));
+    TRY(nspd_alloc(&p->asked_id, e + 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->near_point, n + 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->own_point, n + 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->mark, (n > e ? n : e) + 1, 1));
@@ -142,7 +161,7 @@ static int allocate(PenaltyCoupling *p) {
     TRY(nspd_alloc(&p->told_count, ranks, sizeof(int)));
     TRY(nspd_alloc(&p->bytes, 4 * ranks, sizeof(int)));
     TRY(nspd_alloc(&p->recv, e + 1, sizeof(double)));
-    return nspd_alloc(&p->shared, 4 * n + 1, sizeof(double));
+    return nspd_alloc(&p->shared, 8 * n + 1, sizeof(double));
 }
 
 static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *flow) {
@@ -199,11 +218,11 @@ static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *
     return NSPD_OK;
 }
 
-/* The touched cells of the entries in p->cell (point order), their local
- * numbers in p->col and the cell -> entries index (a counting sort: each
- * cell's entries in point order). */
+/* The touched cells of the entries in p->cell (candidate order, the whole
+ * body's), their local numbers in p->col and the cell -> entries index (a
+ * counting sort: each cell's entries in point order). */
 static int index_cells(PenaltyCoupling *p) {
-    const int64_t entries = p->n * p->width;
+    const int64_t entries = p->nc * p->width;
     int64_t top = -1;
     for (int64_t e = 0; e < entries; e++)
         if (p->cell[e] > top) top = p->cell[e];
@@ -242,9 +261,21 @@ static int index_cells(PenaltyCoupling *p) {
     return NSPD_OK;
 }
 
-/* The transfer weights at the points' positions p->x and their index. */
-static int stencil(PenaltyCoupling *p, const Flow *flow) {
-    flow_transfer(flow, p->cfg.transfer, p->n, p->x[0], p->x[1], p->cell, p->w);
+/* The candidates (the points whose stencils can reach this process's
+ * cells, or those of its halo, which a seal reads: within PENALTY_REACH
+ * cells of its block; every point on one process), at their current
+ * positions, their transfer weights and the weights' index. */
+static int stencil(PenaltyCoupling *p, const Flow *flow, const PdPoints *pts) {
+    int64_t nc = 0;
+    for (int64_t i = 0; i < p->n; i++) {
+        const double x = pts->x[0][i] + pts->u[0][i], y = pts->x[1][i] + pts->u[1][i];
+        if (!flow_point_near(flow, x, y, PENALTY_REACH)) continue;
+        p->pick[nc] = i;
+        p->x[0][nc] = x, p->x[1][nc] = y;
+        nc++;
+    }
+    p->nc = nc;
+    flow_transfer(flow, p->cfg.transfer, nc, p->x[0], p->x[1], p->cell, p->w);
     return index_cells(p);
 }
 
@@ -294,30 +325,30 @@ static void sums_reduce(void *ctx, ExactSum *s, int count) {
     if (p->status == NSPD_OK) p->status = status;
 }
 
-/* Who forms what, from the stencils (the same on every process): each
- * touched cell's row by the process that holds the cell, each point's
- * impulse by the process that holds its own cell; the near points (those
- * that touch this process's cells) are sampled here too, so the cells
- * they read that others hold are asked of those (collective). */
+/* Who forms what: each touched cell's row by the process that holds the
+ * cell, each point's impulse by the process that holds the cell of its
+ * largest weight (the one around it); the near points (the candidates that
+ * touch this process's cells) are sampled here too, so the cells they read
+ * that others hold are asked of those, by the flow's numbers (collective). */
 static int divide(PenaltyCoupling *p, const Flow *flow) {
     const int me = p->comm.rank, ranks = p->comm.size;
-    const int64_t n = p->n;
+    const int64_t nc = p->nc;
     int64_t own = 0, owned = 0, near = 0;
     for (int64_t c = 0; c < p->cells; c++) {
         p->cell_rank[c] = flow_cell_owner(flow, p->cell_id[c]);
         if (p->cell_rank[c] == me) p->own_cell[own++] = c;
     }
-    for (int64_t i = 0; i < n; i++) {
-        const int32_t home = home_col(p, i);
-        p->point_rank[i] = home >= 0 ? p->cell_rank[home] : 0; /* no gas: no impulse */
-        if (p->point_rank[i] == me) p->own_point[owned++] = i;
+    for (int64_t k = 0; k < nc; k++) {
+        const int32_t home = home_col(p, k);
+        p->point_rank[k] = home >= 0 ? p->cell_rank[home] : -1; /* no gas: nobody's */
+        if (p->point_rank[k] == me) p->own_point[owned++] = k;
     }
-    for (int64_t i = 0; i < n; i++) p->mark[i] = 0;
+    for (int64_t k = 0; k < nc; k++) p->mark[k] = 0;
     for (int64_t q = 0; q < own; q++)
         for (int64_t k = p->first[p->own_cell[q]]; k < p->first[p->own_cell[q] + 1]; k++)
             p->mark[p->point[k]] = 1;
-    for (int64_t i = 0; i < n; i++)
-        if (p->mark[i]) p->near_point[near++] = i;
+    for (int64_t k = 0; k < nc; k++)
+        if (p->mark[k]) p->near_point[near++] = k;
     /* the cells they read that others hold: asked of their owners, grouped
      * by owner, each group in touched order */
     for (int64_t c = 0; c < p->cells; c++) p->mark[c] = 0;
@@ -333,11 +364,30 @@ static int divide(PenaltyCoupling *p, const Flow *flow) {
     for (int r = 0, sum = 0; r < ranks; r++) at[r] = sum, sum += p->ask_count[r];
     for (int64_t c = 0; c < p->cells; c++)
         if (p->mark[c]) p->asked[at[p->cell_rank[c]]++] = c;
+    int64_t asks = 0, tells = 0;
+    for (int r = 0; r < ranks; r++) asks += p->ask_count[r];
+    for (int64_t k = 0; k < asks; k++) p->asked_id[k] = p->cell_id[p->asked[k]];
     nspd_free(&p->told);
-    TRY(comm_ask(&p->comm, p->asked, p->ask_count, &p->told, p->told_count));
-    int64_t tells = 0, asks = 0;
+    TRY(comm_ask(&p->comm, p->asked_id, p->ask_count, &p->told, p->told_count));
+    for (int r = 0; r < ranks; r++) tells += p->told_count[r];
+    /* what others ask, by this process's touched numbers: a cell they read
+     * is one of its own, so one of its candidates touches it */
+    for (int64_t c = 0; c < p->cells; c++) p->local[p->cell_id[c]] = c;
+    int64_t missing = 0;
+    for (int64_t k = 0; k < tells; k++) {
+        const int64_t id = p->told[k];
+        p->told[k] = id >= 0 && id < p->local_size ? p->local[id] : -1;
+        missing += p->told[k] < 0;
+    }
+    for (int64_t c = 0; c < p->cells; c++) p->local[p->cell_id[c]] = -1;
+    if (missing > 0)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL,
+                         "the penalty coupling: %lld cells asked of rank %d are not among its "
+                         "touched cells",
+                         (long long)missing, me);
     int *send_bytes = p->bytes, *send_at = p->bytes + ranks;
     int *recv_bytes = p->bytes + 2 * ranks, *recv_at = p->bytes + 3 * ranks;
+    tells = asks = 0;
     for (int r = 0; r < ranks; r++) {
         send_bytes[r] = p->told_count[r] * (int)sizeof(double);
         send_at[r] = (int)(tells * (int64_t)sizeof(double));
@@ -360,19 +410,36 @@ static int divide(PenaltyCoupling *p, const Flow *flow) {
     return NSPD_OK;
 }
 
-/* Every point's impulse on every process, from the process that formed
- * it (the solid's whole view takes them all). */
-static int share_impulses(PenaltyCoupling *p) {
-    double *mine = p->shared, *all = p->shared + 2 * p->n;
-    for (int64_t q = 0; q < p->div.own_points; q++) {
-        const int64_t i = p->own_point[q];
-        mine[2 * q] = p->J[0][i];
-        mine[2 * q + 1] = p->J[1][i];
+/* Every point's impulse and b on every process, from the process that
+ * formed them (the solid's whole view takes them all; a point nobody owns
+ * has no gas around it: b = 0, no impulse); the points with gas counted.
+ * On one process the candidates are the points. */
+static int share_impulses(PenaltyCoupling *p, int64_t *with_gas) {
+    if (!comm_distributed(&p->comm)) {
+        *with_gas = 0;
+        for (int64_t i = 0; i < p->n; i++) {
+            p->J[0][i] = p->cJ[0][i], p->J[1][i] = p->cJ[1][i], p->b[i] = p->cb[i];
+            *with_gas += p->cell[i * p->width] >= 0;
+        }
+        return NSPD_OK;
     }
-    TRY(comm_share_items(&p->comm, p->n, p->point_rank, 2, mine, all));
-    for (int64_t i = 0; i < p->n; i++) {
-        p->J[0][i] = all[2 * i];
-        p->J[1][i] = all[2 * i + 1];
+    double *mine = p->shared, *all = p->shared + 4 * p->n;
+    const int64_t owned = p->div.own_points;
+    for (int64_t q = 0; q < owned; q++) {
+        const int64_t k = p->own_point[q];
+        mine[4 * q] = (double)p->pick[k]; /* exact: below 2^53 */
+        mine[4 * q + 1] = p->cJ[0][k];
+        mine[4 * q + 2] = p->cJ[1][k];
+        mine[4 * q + 3] = p->cb[k];
+    }
+    *with_gas = comm_sum_i64(&p->comm, owned);
+    if (*with_gas > p->n)
+        return NSPD_FAIL(NSPD_ERR_INTERNAL, "the penalty coupling: a point owned twice");
+    TRY(comm_allgatherv(&p->comm, mine, (int)(4 * owned), all));
+    for (int64_t i = 0; i < p->n; i++) p->J[0][i] = p->J[1][i] = p->b[i] = 0.0;
+    for (int64_t q = 0; q < *with_gas; q++) {
+        const int64_t i = (int64_t)all[4 * q];
+        p->J[0][i] = all[4 * q + 1], p->J[1][i] = all[4 * q + 2], p->b[i] = all[4 * q + 3];
     }
     return NSPD_OK;
 }
@@ -389,16 +456,17 @@ static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
     TRY(solid_sync(solid)); /* a divided solid: the whole body's view */
     const PdPoints *pts = solid_points(solid);
     const double *damage = solid_damage(solid);
-    for (int64_t i = 0; i < p->n; i++) {
-        p->x[0][i] = pts->x[0][i] + pts->u[0][i];
-        p->x[1][i] = pts->x[1][i] + pts->u[1][i];
-        const double a = pts->volume[i] / pts->thickness * (1.0 - damage[i]);
-        p->cover[i] = a;
-        p->cover_v[0][i] = a * pts->v[0][i];
-        p->cover_v[1][i] = a * pts->v[1][i];
-    }
-    TRY(stencil(p, flow));
+    TRY(stencil(p, flow, pts));
     p->stencil_fresh = true; /* the flow's step does not move the solid */
+    for (int64_t k = 0; k < p->nc; k++) {
+        const int64_t i = p->pick[k];
+        const double a = pts->volume[i] / pts->thickness * (1.0 - damage[i]);
+        p->cover[k] = a;
+        p->cover_v[0][k] = a * pts->v[0][i];
+        p->cover_v[1][k] = a * pts->v[1][i];
+    }
+    /* every cell of this process's block and halo has all its points among
+     * the candidates; the flow seals only those */
     for (int64_t c = 0; c < p->cells; c++) {
         const double a = gather(p, c, p->cover);
         p->seal_area[c] = a;
@@ -432,12 +500,10 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     }
     const int64_t n = p->n;
     for (int64_t i = 0; i < n; i++) {
-        p->x[0][i] = pts->x[0][i] + pts->u[0][i];
-        p->x[1][i] = pts->x[1][i] + pts->u[1][i];
         p->v[0][i] = pts->v[0][i];
         p->v[1][i] = pts->v[1][i];
     }
-    if (!p->stencil_fresh) TRY(stencil(p, flow));
+    if (!p->stencil_fresh) TRY(stencil(p, flow, pts));
     p->stencil_fresh = false;
     const bool divided = comm_distributed(&p->comm);
     if (divided) TRY(divide(p, flow));
@@ -448,31 +514,35 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
         p->u[1][c] = p->dm[1][c] / p->mass[c];
     }
     const double *damage = p->cfg.damaged ? solid_damage(solid) : NULL;
-    p->step.c_pen_max = 0.0;
-    p->step.outside = 0;
     const double scale = p->cfg.beta * p->dt_pen / (p->h * p->h);
+    p->step.c_pen_max = 0.0;
     for (int64_t i = 0; i < n; i++) {
         const double V = pts->volume[i] / p->depth; /* m^2: per metre of gas depth */
         p->m[i] = solid_density(solid, i) * V;
         const double C = scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
         if (C > p->step.c_pen_max) p->step.c_pen_max = C;
-        const double a = dt * C * V;
-        if (p->cell[i * p->width] < 0) {
-            p->b[i] = 0.0; /* no gas around it */
-            p->step.outside++;
-        } else if (p->cfg.strong) {
-            p->b[i] = damage && damage[i] >= 1.0 ? 0.0 : p->m[i];
-        } else {
-            p->b[i] = a > 0.0 ? a * p->m[i] / (p->m[i] + a) : 0.0;
-        }
     }
-    const PenaltySystem sys = {.points = n,
+    for (int64_t k = 0; k < p->nc; k++) {
+        const int64_t i = p->pick[k];
+        const double V = pts->volume[i] / p->depth;
+        const double C = scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
+        const double a = dt * C * V;
+        p->cm[k] = p->m[i];
+        p->cv[0][k] = p->v[0][i], p->cv[1][k] = p->v[1][i];
+        if (p->cell[k * p->width] < 0)
+            p->cb[k] = 0.0; /* no gas around it */
+        else if (p->cfg.strong)
+            p->cb[k] = damage && damage[i] >= 1.0 ? 0.0 : p->m[i];
+        else
+            p->cb[k] = a > 0.0 ? a * p->m[i] / (p->m[i] + a) : 0.0;
+    }
+    const PenaltySystem sys = {.points = p->nc,
                                .width = p->width,
                                .col = p->col,
                                .w = p->w,
-                               .m = p->m,
-                               .b = p->b,
-                               .v = {p->v[0], p->v[1]},
+                               .m = p->cm,
+                               .b = p->cb,
+                               .v = {p->cv[0], p->cv[1]},
                                .cells = p->cells,
                                .mass = p->mass,
                                .u = {p->u[0], p->u[1]},
@@ -481,11 +551,11 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
                                .weight = p->weight,
                                .div = divided ? &p->div : NULL};
     PenaltyStats stats;
-    penalty_relax(&sys, &p->work, p->J, &stats);
-    if (divided) {
-        TRY(p->status);
-        TRY(share_impulses(p));
-    }
+    penalty_relax(&sys, &p->work, p->cJ, &stats);
+    TRY(p->status);
+    int64_t with_gas;
+    TRY(share_impulses(p, &with_gas));
+    p->step.outside = n - with_gas;
     p->step.iterations = stats.iterations;
     p->step.slip_max = comm_max(&p->comm, stats.slip_max);
     /* the solid: v' = v + J/m; the work of the impulse on each point */
@@ -503,6 +573,10 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     for (int64_t i = 0; i < n; i++)
         p->work_rate[i] = -(p->J[0][i] * 0.5 * (p->v[0][i] + pts->v[0][i]) +
                             p->J[1][i] * 0.5 * (p->v[1][i] + pts->v[1][i]));
+    for (int64_t k = 0; k < p->nc; k++) { /* the candidates', for the gathers below */
+        const int64_t i = p->pick[k];
+        p->cJ[0][k] = p->J[0][i], p->cJ[1][k] = p->J[1][i], p->cwr[k] = p->work_rate[i];
+    }
     /* the gas: minus each impulse (and its work) through the weights, at
      * the cells this process holds; the totals exact, so the same on any
      * number of processes */
@@ -513,11 +587,11 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     for (int64_t q = 0; q < own; q++) {
         const int64_t c = divided ? p->own_cell[q] : q;
         for (int d = 0; d < 2; d++) {
-            p->dm[d][c] = -gather(p, c, p->J[d]);
+            p->dm[d][c] = -gather(p, c, p->cJ[d]);
             exact_sum_add(&sums[d], p->dm[d][c]);
         }
         if (energy) {
-            p->de[c] = gather(p, c, p->work_rate);
+            p->de[c] = gather(p, c, p->cwr);
             exact_sum_add(&sums[2], p->de[c]);
         }
     }

@@ -436,6 +436,28 @@ static int gks_flow_cell_owner(const void *impl, int64_t cell) {
     return cell_owner(((const GksFlow *)impl)->solver, cell, &local);
 }
 
+static bool gks_flow_point_near(const void *impl, double x, double y, int margin) {
+    const GksSolver *s = ((const GksFlow *)impl)->solver;
+    const NspdComm *comm = gks_solver_comm(s);
+    if (!comm_distributed(comm)) return true;
+    const Grid *w = gks_solver_whole_grid(s);
+    const double at[2] = {x, y};
+    int first[2], count[2];
+    gks_solver_block(s, comm->rank, first, count);
+    for (int a = 0; a < 2; a++) {
+        const GridAxis *ax = &w->ax[a];
+        if (!(at[a] >= ax->face[0] && at[a] <= ax->face[ax->n])) return false; /* off the grid */
+        const int i = grid_axis_cell_of(ax, at[a]);
+        const int lo = first[a], hi = first[a] + count[a] - 1;
+        /* cells between i and the block, the shorter way round a periodic axis */
+        int d = i < lo ? lo - i : i > hi ? i - hi : 0;
+        if (ax->periodic && i < lo && i + ax->n - hi < d) d = i + ax->n - hi;
+        if (ax->periodic && i > hi && lo + ax->n - i < d) d = lo + ax->n - i;
+        if (d > margin) return false;
+    }
+    return true;
+}
+
 static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
                             double *momentum_x, double *momentum_y) {
     const GksFlow *gf = impl;
@@ -746,6 +768,7 @@ const FlowOps GKS_FLOW_OPS = {
     .set_sources = gks_set_sources,
     .transfer = gks_flow_transfer,
     .cell_owner = gks_flow_cell_owner,
+    .point_near = gks_flow_point_near,
     .lumped = gks_flow_lumped,
     .add_lumped = gks_flow_add_lumped,
     .seal = gks_flow_seal,
