@@ -477,6 +477,14 @@ static int penalty_before_flow(void *impl, Solid *solid, Flow *flow) {
                      p->cfg.seal_fraction);
 }
 
+/* C_pen at point i, kg/(m^3 s) (Eqs. 22-23: beta E dt / h^2, times 1 - d
+ * where the penalty weakens with damage). */
+static double penalty_at(const PenaltyCoupling *p, const Solid *solid, const double *damage,
+                         int64_t i) {
+    const double scale = p->cfg.beta * p->dt_pen / (p->h * p->h);
+    return scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
+}
+
 /* The relaxation after the flow's step and before the solid's: the points'
  * velocities and the cells' momentum change by the impulses at once (a
  * split step: relaxation, then the solid's own dynamics from the relaxed
@@ -514,19 +522,16 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
         p->u[1][c] = p->dm[1][c] / p->mass[c];
     }
     const double *damage = p->cfg.damaged ? solid_damage(solid) : NULL;
-    const double scale = p->cfg.beta * p->dt_pen / (p->h * p->h);
     p->step.c_pen_max = 0.0;
     for (int64_t i = 0; i < n; i++) {
         const double V = pts->volume[i] / p->depth; /* m^2: per metre of gas depth */
         p->m[i] = solid_density(solid, i) * V;
-        const double C = scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
+        const double C = penalty_at(p, solid, damage, i);
         if (C > p->step.c_pen_max) p->step.c_pen_max = C;
     }
     for (int64_t k = 0; k < p->nc; k++) {
         const int64_t i = p->pick[k];
-        const double V = pts->volume[i] / p->depth;
-        const double C = scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
-        const double a = dt * C * V;
+        const double a = dt * penalty_at(p, solid, damage, i) * (pts->volume[i] / p->depth);
         p->cm[k] = p->m[i];
         p->cv[0][k] = p->v[0][i], p->cv[1][k] = p->v[1][i];
         if (p->cell[k * p->width] < 0)
