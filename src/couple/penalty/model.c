@@ -69,6 +69,7 @@ typedef struct {
     int64_t *own_cell, *near_point, *own_point, *asked, *asked_id, *told;
     uint8_t *mark;
     int *ask_count, *told_count, *bytes; /* per rank; bytes: 4 per rank */
+    int64_t asks, tells;                 /* their sums: the cells asked of others, told */
     double *send, *recv, *shared;        /* send, recv: cells; shared: 8 per point */
     PenaltyDivision div;
     int status;         /* of the division's collective calls within a relaxation */
@@ -310,13 +311,11 @@ static void halo_exchange(void *ctx, double *x) {
     const int ranks = p->comm.size;
     const int *send_bytes = p->bytes, *send_at = p->bytes + ranks;
     const int *recv_bytes = p->bytes + 2 * ranks, *recv_at = p->bytes + 3 * ranks;
-    int64_t tells = 0, asks = 0;
-    for (int r = 0; r < ranks; r++) tells += p->told_count[r], asks += p->ask_count[r];
-    for (int64_t k = 0; k < tells; k++) p->send[k] = x[p->told[k]];
+    for (int64_t k = 0; k < p->tells; k++) p->send[k] = x[p->told[k]];
     const int status =
         comm_alltoallv_bytes(&p->comm, p->send, send_bytes, send_at, p->recv, recv_bytes, recv_at);
     if (p->status == NSPD_OK) p->status = status;
-    for (int64_t k = 0; k < asks; k++) x[p->asked[k]] = p->recv[k];
+    for (int64_t k = 0; k < p->asks; k++) x[p->asked[k]] = p->recv[k];
 }
 
 static void sums_reduce(void *ctx, ExactSum *s, int count) {
@@ -395,6 +394,7 @@ static int divide(PenaltyCoupling *p, const Flow *flow) {
         recv_at[r] = (int)(asks * (int64_t)sizeof(double));
         tells += p->told_count[r], asks += p->ask_count[r];
     }
+    p->asks = asks, p->tells = tells;
     nspd_free(&p->send);
     TRY(nspd_alloc(&p->send, (size_t)tells + 1, sizeof(double)));
     p->div = (PenaltyDivision){.own_cells = own,
