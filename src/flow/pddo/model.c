@@ -103,12 +103,13 @@ static void count_nodes(const PddoFlowConfig *c, double *nodes, double *members)
 /* Bytes: the cloud (coordinates, area, indices, kinds: 52 per node, and
  * the family's int32 per member), the four operators' float64 weights per
  * member and the slices' int32 neighbour (operators.h; the slices'
- * padding measured under 1 % on the paper's cylinder), K_L (int32 + float64 per member and node),
- * its LU factors (UMFPACK, about 12 bytes per nonzero; nonzeros of L + U with the AMD/METIS
- * ordering measured on the confined cylinder, dx 0.1 to 0.03 m: 3.9e6 at 12,424 nodes, 8.2e6 at
- * 21,233, 2.0e7 at 45,768, 3.4e7 at 70,345, 6.7e7 at 122,833, that is 29 to 32 n^1.25 (21 n log2 n,
- * fitted on small cavities, fell 35 % short at 122,833); 32 n^1.25 bounds them and the
- * cavity's 3.0e6 at 11,449 nodes), the step's 14 arrays per node and the output scratch. */
+ * padding measured under 1 % on the paper's cylinder; templates keep
+ * about half of them on a lattice, not counted: the estimate bounds), K_L (int32 + float64 per
+ * member and node), its LU factors (UMFPACK, about 12 bytes per nonzero; nonzeros of L + U with the
+ * AMD/METIS ordering measured on the confined cylinder, dx 0.1 to 0.03 m: 3.9e6 at 12,424
+ * nodes, 8.2e6 at 21,233, 2.0e7 at 45,768, 3.4e7 at 70,345, 6.7e7 at 122,833, that is 29 to 32
+ * n^1.25 (21 n log2 n, fitted on small cavities, fell 35 % short at 122,833); 32 n^1.25 bounds them
+ * and the cavity's 3.0e6 at 11,449 nodes), the step's 14 arrays per node and the output scratch. */
 static FlowEstimate pddo_estimate(const FlowConfig *fc) {
     const PddoFlowConfig *c = fc->model;
     FlowEstimate e = {0};
@@ -232,7 +233,8 @@ static int build(PddoFlow *f) {
          * cloud that passes; the run checks them) */
         TRY(pddo_ops_check(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
     } else {
-        TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+        TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                           &(PddoLattice){c->i, c->j, c->dx}));
         TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
         if (f->cfg.pressure_runs) TRY(pddo_ppe_use_runs(&f->ppe));
     }

@@ -8,6 +8,7 @@
  * by delta, a second by delta^2. */
 #include "flow/pddo/operators.h"
 
+#include "core/hash.h"
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/spd_small.h"
@@ -56,21 +57,54 @@ static double condition(double M[SPD_SMALL_MAX][SPD_SMALL_MAX],
     return norm * inv_norm;
 }
 
+/* The centre of a family: a point (xc, yc), or a node with its lattice
+ * indices (li = INT32_MIN: none), and the scaled offsets xi / delta of
+ * the members from it. */
+typedef struct {
+    const double *x, *y;
+    double xc, yc, inv_delta;
+    const PddoLattice *lattice;
+    int32_t li, lj;
+} Centre;
+
+static Centre centre_at(const double *x, const double *y, double xc, double yc, double delta) {
+    return (Centre){.x = x, .y = y, .xc = xc, .yc = yc, .inv_delta = 1.0 / delta, .li = INT32_MIN};
+}
+
+static Centre centre_node(const double *x, const double *y, int64_t k, double delta,
+                          const PddoLattice *lattice) {
+    Centre c = centre_at(x, y, x[k], y[k], delta);
+    if (lattice) c.lattice = lattice, c.li = lattice->i[k], c.lj = lattice->j[k];
+    return c;
+}
+
+/* xi / delta of member j: from the lattice indices where both are lattice
+ * nodes (the same bits for the same offset anywhere), else from the
+ * coordinates. */
+static void offset(const Centre *c, int32_t j, double *s1, double *s2) {
+    if (c->li != INT32_MIN && c->lattice->i[j] != INT32_MIN) {
+        *s1 = (double)(c->lattice->i[j] - c->li) * c->lattice->dx * c->inv_delta;
+        *s2 = (double)(c->lattice->j[j] - c->lj) * c->lattice->dx * c->inv_delta;
+        return;
+    }
+    *s1 = (c->x[j] - c->xc) * c->inv_delta, *s2 = (c->y[j] - c->yc) * c->inv_delta;
+}
+
 /* The shape matrix (Eq. 14b) of the members nbr[0 .. count) of a family
- * around the centre (xc, yc), in scaled coordinates, with or without the
- * constant term, factored into Lf and scale (core/spd_small.h); its
- * condition number (the rule of operators.h), or INFINITY when the
- * factorisation fails. */
-static double shape_factor(const int32_t *nbr, int64_t count, const double *x, const double *y,
-                           const double *area, double xc, double yc, double inv_delta,
+ * around centre c, in scaled coordinates, with or without the constant
+ * term, factored into Lf and scale (core/spd_small.h); its condition
+ * number (the rule of operators.h), or INFINITY when the factorisation
+ * fails. */
+static double shape_factor(const int32_t *nbr, int64_t count, const Centre *ctr, const double *area,
                            bool constant, double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX],
                            double scale[SPD_SMALL_MAX]) {
     double M[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}}, p[SPD_SMALL_MAX] = {0};
-    const double inv_area = inv_delta * inv_delta;
+    const double inv_area = ctr->inv_delta * ctr->inv_delta;
     int terms = TERMS + (constant ? 1 : 0);
     for (int64_t m = 0; m < count; m++) {
         const int32_t j = nbr[m];
-        const double s1 = (x[j] - xc) * inv_delta, s2 = (y[j] - yc) * inv_delta;
+        double s1, s2;
+        offset(ctr, j, &s1, &s2);
         const double wa = weight(s1, s2) * area[j] * inv_area;
         terms = basis(constant, s1, s2, p);
         for (int r = 0; r < terms; r++)
@@ -83,27 +117,34 @@ static double shape_factor(const int32_t *nbr, int64_t count, const double *x, c
     return condition(M, Lf, scale, terms);
 }
 
+/* Where member m of node k is stored (before templates_build). */
+static int64_t slot_at(const PddoOps *ops, int64_t k, int64_t m) {
+    return ops->slice_first[k / PDDO_LANES] + (m - ops->first[k]) * PDDO_LANES + k % PDDO_LANES;
+}
+
 /* Node k's weights of every operator; its condition number in *cond, or
  * INFINITY when the factorisation fails (then no weight is written). */
 static void node_weights(PddoOps *ops, int64_t k, const double *x, const double *y,
-                         const double *area, double delta, bool weights, double *cond) {
+                         const double *area, double delta, const PddoLattice *lattice, bool weights,
+                         double *cond) {
     double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}};
     double p[SPD_SMALL_MAX] = {0}, scale[SPD_SMALL_MAX] = {0};
     const double inv_delta = 1.0 / delta, inv_area = inv_delta * inv_delta;
     const int64_t lo = ops->first[k], hi = ops->first[k + 1];
-    *cond =
-        shape_factor(ops->nbr + lo, hi - lo, x, y, area, x[k], y[k], inv_delta, false, Lf, scale);
+    const Centre ctr = centre_node(x, y, k, delta, lattice);
+    *cond = shape_factor(ops->nbr + lo, hi - lo, &ctr, area, false, Lf, scale);
     if (!isfinite(*cond) || !weights) return;
     /* b = diag(1, 1, 2, 2, 1) (Eq. 14c), then back to metres */
     const double b[TERMS] = {inv_delta, inv_delta, 2.0 * inv_area, 2.0 * inv_area, inv_area};
     for (int64_t m = lo; m < hi; m++) {
         const int32_t j = ops->nbr[m];
-        const double s1 = (x[j] - x[k]) * inv_delta, s2 = (y[j] - y[k]) * inv_delta;
+        double s1, s2;
+        offset(&ctr, j, &s1, &s2);
         const double wa = weight(s1, s2) * area[j] * inv_area;
         double z[SPD_SMALL_MAX] = {0};
         basis(false, s1, s2, p);
         spd_small_solve((const double(*)[SPD_SMALL_MAX])Lf, TERMS, scale, p, z);
-        const int64_t at = pddo_ops_slot(ops, k, m);
+        const int64_t at = slot_at(ops, k, m);
         ops->w[PDDO_D_X][at] = b[0] * wa * z[0];
         ops->w[PDDO_D_Y][at] = b[1] * wa * z[1];
         ops->w[PDDO_LAP][at] = b[2] * wa * z[2] + b[3] * wa * z[3];
@@ -140,8 +181,140 @@ static int slices_build(PddoOps *ops) {
     return NSPD_OK;
 }
 
+/* Whether slice s (base: its first slot, rows of them) matches template
+ * t: the same rows, offsets and weights, bit for bit. */
+static bool template_matches(const PddoOps *ops, int32_t t, int64_t s, int64_t base, int64_t rows) {
+    const int64_t tf = ops->tpl_first[t];
+    if (ops->tpl_first[t + 1] - tf != rows) return false;
+    for (int64_t r = 0; r < rows; r++) {
+        if (ops->tpl_off[tf + r] != ops->slot_nbr[base + r * PDDO_LANES] - s * PDDO_LANES)
+            return false;
+        for (int op = 0; op < PDDO_OPS; op++)
+            if (memcmp(&ops->tpl_w[op][tf + r], &ops->w[op][base + r * PDDO_LANES],
+                       sizeof(double)) != 0)
+                return false;
+    }
+    return true;
+}
+
+/* Whether slice s can be a template's: every lane a node with the same
+ * number of members, member r of lane l node s L + l + off[r], and the
+ * weights of a row the same bits in every lane. */
+static bool slice_uniform(const PddoOps *ops, int64_t s, int64_t base, int64_t rows) {
+    enum { L = PDDO_LANES };
+    if ((s + 1) * L > ops->n) return false;
+    for (int l = 0; l < L; l++)
+        if (ops->first[s * L + l + 1] - ops->first[s * L + l] != rows) return false;
+    for (int64_t r = 0; r < rows; r++) {
+        const int64_t at = base + r * L;
+        for (int l = 1; l < L; l++) {
+            if (ops->slot_nbr[at + l] != ops->slot_nbr[at] + l) return false;
+            for (int op = 0; op < PDDO_OPS; op++)
+                if (memcmp(&ops->w[op][at + l], &ops->w[op][at], sizeof(double)) != 0) return false;
+        }
+    }
+    return true;
+}
+
+/* The hash of slice s's rows (offsets and weights), to find its template. */
+static uint64_t slice_hash(const PddoOps *ops, int64_t s, int64_t base, int64_t rows) {
+    Hash64 h;
+    hash64_init(&h);
+    for (int64_t r = 0; r < rows; r++) {
+        const int32_t off = (int32_t)(ops->slot_nbr[base + r * PDDO_LANES] - s * PDDO_LANES);
+        hash64_add(&h, &off, sizeof off);
+        for (int op = 0; op < PDDO_OPS; op++)
+            hash64_add(&h, &ops->w[op][base + r * PDDO_LANES], sizeof(double));
+    }
+    return hash64_final(&h);
+}
+
+/* The template slice s matches, found by its hash in table (size a power
+ * of two, -1 empty), or a new one made of its rows. */
+static int32_t template_of(PddoOps *ops, int32_t *table, int64_t size, int64_t s, int64_t base,
+                           int64_t rows) {
+    enum { L = PDDO_LANES };
+    int64_t at = (int64_t)(slice_hash(ops, s, base, rows) & (uint64_t)(size - 1));
+    for (; table[at] >= 0; at = (at + 1) & (size - 1))
+        if (template_matches(ops, table[at], s, base, rows)) return table[at];
+    const int32_t t = ops->templates++;
+    const int64_t tf = ops->tpl_first[t];
+    for (int64_t r = 0; r < rows; r++) {
+        ops->tpl_off[tf + r] = (int32_t)(ops->slot_nbr[base + r * L] - s * L);
+        for (int op = 0; op < PDDO_OPS; op++) ops->tpl_w[op][tf + r] = ops->w[op][base + r * L];
+    }
+    ops->tpl_first[t + 1] = tf + rows;
+    table[at] = t;
+    return t;
+}
+
+/* The templates (operators.h): every uniform slice takes the template it
+ * matches, or makes one (a template of one slice still keeps an eighth
+ * of its slots); the slots of the slices that keep their own are then
+ * packed. */
+static int templates_build(PddoOps *ops) {
+    enum { L = PDDO_LANES };
+    const int64_t slices = pddo_ops_slices(ops);
+    TRY(nspd_alloc(&ops->slice_tpl, (size_t)slices + 1, sizeof(int32_t)));
+    int64_t uniform = 0, rows_room = 0;
+    for (int64_t s = 0; s < slices; s++) {
+        const int64_t base = ops->slice_first[s], rows = (ops->slice_first[s + 1] - base) / L;
+        ops->slice_tpl[s] = rows > 0 && slice_uniform(ops, s, base, rows) ? 0 : -1;
+        if (ops->slice_tpl[s] == 0) uniform++, rows_room += rows;
+    }
+    int64_t size = 2;
+    while (size < 2 * uniform) size *= 2;
+    int32_t *table = NULL;
+    int status = nspd_alloc(&table, (size_t)size, sizeof *table);
+    if (status == NSPD_OK)
+        status = nspd_alloc(&ops->tpl_first, (size_t)uniform + 1, sizeof(int64_t));
+    if (status == NSPD_OK)
+        status = nspd_alloc(&ops->tpl_off, (size_t)rows_room + 1, sizeof(int32_t));
+    for (int op = 0; op < PDDO_OPS && status == NSPD_OK; op++)
+        status = nspd_alloc(&ops->tpl_w[op], (size_t)rows_room + 1, sizeof(double));
+    if (status != NSPD_OK) {
+        nspd_free(&table);
+        return status;
+    }
+    for (int64_t q = 0; q < size; q++) table[q] = -1;
+    int64_t kept = 0;
+    for (int64_t s = 0; s < slices; s++) {
+        const int64_t base = ops->slice_first[s], rows = (ops->slice_first[s + 1] - base) / L;
+        if (ops->slice_tpl[s] == 0) {
+            ops->slice_tpl[s] = template_of(ops, table, size, s, base, rows);
+            ops->templated++;
+        } else {
+            kept += rows * L;
+        }
+    }
+    nspd_free(&table);
+    /* pack the slots of the slices without a template, in order (each
+     * moves down or stays, so in place), then give back the rest */
+    const size_t slots = (size_t)ops->slice_first[slices] + 1;
+    int64_t at = 0;
+    for (int64_t s = 0; s < slices; s++) {
+        const int64_t base = ops->slice_first[s], size_s = ops->slice_first[s + 1] - base;
+        ops->slice_first[s] = at;
+        if (ops->slice_tpl[s] >= 0) continue;
+        memmove(ops->slot_nbr + at, ops->slot_nbr + base, (size_t)size_s * sizeof(int32_t));
+        for (int op = 0; op < PDDO_OPS; op++)
+            memmove(ops->w[op] + at, ops->w[op] + base, (size_t)size_s * sizeof(double));
+        at += size_s;
+    }
+    ops->slice_first[slices] = at;
+    TRY(nspd_realloc(&ops->slot_nbr, slots, (size_t)kept + 1, sizeof(int32_t)));
+    for (int op = 0; op < PDDO_OPS; op++)
+        TRY(nspd_realloc(&ops->w[op], slots, (size_t)kept + 1, sizeof(double)));
+    const int64_t used = ops->tpl_first[ops->templates];
+    TRY(nspd_realloc(&ops->tpl_off, (size_t)rows_room + 1, (size_t)used + 1, sizeof(int32_t)));
+    for (int op = 0; op < PDDO_OPS; op++)
+        TRY(nspd_realloc(&ops->tpl_w[op], (size_t)rows_room + 1, (size_t)used + 1, sizeof(double)));
+    return NSPD_OK;
+}
+
 static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                 const int64_t *first, const int32_t *nbr, double delta, bool weights) {
+                 const int64_t *first, const int32_t *nbr, double delta, const PddoLattice *lattice,
+                 bool weights) {
     pddo_ops_free(ops);
     if (!(delta > 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO operators: horizon %g m; expected > 0", delta);
@@ -160,7 +333,8 @@ static int build(PddoOps *ops, int64_t n, const double *x, const double *y, cons
         return status;
     }
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < n; k++) node_weights(ops, k, x, y, area, delta, weights, &cond[k]);
+    for (int64_t k = 0; k < n; k++)
+        node_weights(ops, k, x, y, area, delta, lattice, weights, &cond[k]);
     /* the first node that breaks the rule, in node order whatever the threads */
     for (int64_t k = 0; k < n; k++) {
         if (!(cond[k] <= PDDO_COND_MAX)) {
@@ -175,18 +349,20 @@ static int build(PddoOps *ops, int64_t n, const double *x, const double *y, cons
         if (cond[k] > ops->cond_max) ops->cond_max = cond[k], ops->cond_node = k;
     }
     nspd_free(&cond);
+    if (status == NSPD_OK && weights) status = templates_build(ops);
     if (status != NSPD_OK) pddo_ops_free(ops);
     return status;
 }
 
 int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta) {
-    return build(ops, n, x, y, area, first, nbr, delta, true);
+                   const int64_t *first, const int32_t *nbr, double delta,
+                   const PddoLattice *lattice) {
+    return build(ops, n, x, y, area, first, nbr, delta, lattice, true);
 }
 
 int pddo_ops_check(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
                    const int64_t *first, const int32_t *nbr, double delta) {
-    return build(ops, n, x, y, area, first, nbr, delta, false);
+    return build(ops, n, x, y, area, first, nbr, delta, NULL, false);
 }
 
 /* The sums of `count` (operator, field) pairs at node k in one pass over
@@ -198,11 +374,16 @@ static inline __attribute__((always_inline)) void at_many(const PddoOps *ops, in
                                                           int64_t k, double *sum) {
     const double *w[PDDO_FUSED_MAX];
     double fk[PDDO_FUSED_MAX];
-    for (int o = 0; o < count; o++) w[o] = ops->w[op[o]], fk[o] = f[o][k], sum[o] = 0.0;
-    const int64_t at = pddo_ops_slot(ops, k, ops->first[k]);
+    /* a template's row r, or the slot of member r (stride PDDO_LANES) */
+    const int64_t s = k / PDDO_LANES;
+    const int32_t t = ops->slice_tpl[s];
+    const int64_t at = t >= 0 ? ops->tpl_first[t] : ops->slice_first[s] + k % PDDO_LANES;
+    const int64_t stride = t >= 0 ? 1 : PDDO_LANES;
+    for (int o = 0; o < count; o++)
+        w[o] = t >= 0 ? ops->tpl_w[op[o]] : ops->w[op[o]], fk[o] = f[o][k], sum[o] = 0.0;
     for (int64_t m = 0; m < ops->first[k + 1] - ops->first[k]; m++) {
         const int32_t j = ops->nbr[ops->first[k] + m];
-        for (int o = 0; o < count; o++) sum[o] += w[o][at + m * PDDO_LANES] * (f[o][j] - fk[o]);
+        for (int o = 0; o < count; o++) sum[o] += w[o][at + m * stride] * (f[o][j] - fk[o]);
     }
 }
 
@@ -234,6 +415,20 @@ static inline __attribute__((always_inline)) void slice_sums(const PddoOps *ops,
             fk[q][l] = F[q][k < last ? k : last];
         }
     for (int o = 0; o < count; o++) acc[o] = (Lanes){0};
+    const int32_t t = ops->slice_tpl[s];
+    if (t >= 0) {
+        /* a template's slice: member r of every lane one offset away, its
+         * weight the same in every lane (broadcast: the same products) */
+        const int64_t tf = ops->tpl_first[t], rows = ops->tpl_first[t + 1] - tf;
+        for (int64_t r = 0; r < rows; r++) {
+            const int64_t j0 = s * L + ops->tpl_off[tf + r];
+            Lanes d[PDDO_FUSED_MAX];
+            for (int q = 0; q < fields; q++) d[q] = lanes_load(F[q] + j0) - fk[q];
+            for (int o = 0; o < count; o++) acc[o] += ops->tpl_w[op[o]][tf + r] * d[of[o]];
+        }
+        for (int o = 0; o < count; o++) memcpy(sum + o * L, &acc[o], sizeof acc[o]);
+        return;
+    }
     const int64_t base = ops->slice_first[s], rows = (ops->slice_first[s + 1] - base) / L;
     for (int64_t r = 0; r < rows; r++) {
         const int32_t *j = ops->slot_nbr + base + r * L;
@@ -326,8 +521,11 @@ void pddo_ops_apply(const PddoOps *ops, PddoOp op, const double *f, double *out)
 }
 
 void pddo_ops_free(PddoOps *ops) {
-    for (int op = 0; op < PDDO_OPS; op++) nspd_free(&ops->w[op]);
+    for (int op = 0; op < PDDO_OPS; op++) nspd_free(&ops->w[op]), nspd_free(&ops->tpl_w[op]);
     nspd_free(&ops->slice_first);
+    nspd_free(&ops->slice_tpl);
+    nspd_free(&ops->tpl_first);
+    nspd_free(&ops->tpl_off);
     nspd_free(&ops->slot_nbr);
     memset(ops, 0, sizeof *ops);
 }
@@ -338,7 +536,8 @@ double pddo_ops_interpolation(double xc, double yc, int64_t count, const int32_t
     double Lf[SPD_SMALL_MAX][SPD_SMALL_MAX] = {{0}};
     double p[SPD_SMALL_MAX] = {0}, scale[SPD_SMALL_MAX] = {0};
     const double inv_delta = 1.0 / delta, inv_area = inv_delta * inv_delta;
-    const double cond = shape_factor(nbr, count, x, y, area, xc, yc, inv_delta, true, Lf, scale);
+    const Centre ctr = centre_at(x, y, xc, yc, delta);
+    const double cond = shape_factor(nbr, count, &ctr, area, true, Lf, scale);
     if (!isfinite(cond)) return cond;
     /* f(c) = a_0 of the weighted least-squares quadratic: w_j = wa P_j^T M^-1 e_0 */
     for (int64_t m = 0; m < count; m++) {

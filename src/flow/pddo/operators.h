@@ -53,8 +53,17 @@ typedef enum {
  * a node's members in its family's order, then padding: the node itself
  * with weight 0, which adds an exact zero), so that a slice's sums run
  * in SIMD lanes, one node a lane, each lane adding its node's members in
- * the family's order: the bits of the sum one node alone makes. Member m
- * of node k (first[k] <= m < first[k + 1]) is at pddo_ops_slot(ops, k, m). */
+ * the family's order: the bits of the sum one node alone makes.
+ *
+ * Templates: on a uniform lattice most slices are alike. Their 8 nodes
+ * have the same family in lattice offsets, so member r of lane l is node
+ * s PDDO_LANES + l + off[r], and (with xi taken from the lattice indices,
+ * PddoLattice) the same weights, bit for bit, in every lane and in every
+ * such slice. Such a slice keeps no slots: it names its template, one
+ * offset and one weight of each operator per row, and its sums broadcast
+ * the row's weight across the lanes: the same products, so the same bits,
+ * while the step streams no weights or neighbours there (docs/
+ * PERFORMANCE.md: on the paper's cylinder most of the operators' bytes). */
 enum { PDDO_LANES = 8 };
 
 typedef struct {
@@ -62,19 +71,33 @@ typedef struct {
     const int64_t *first; /* borrowed: the families the weights belong to (must outlive) */
     const int32_t *nbr;
     int64_t *slice_first; /* per slice of PDDO_LANES nodes, its first slot; the slots' count last */
+    int32_t *slice_tpl;   /* per slice, its template, or -1: its own slots */
     int32_t *slot_nbr;    /* per slot, the member's node (padding: the slot's own node) */
     double *w[PDDO_OPS];  /* per slot: c_kj in 1/m (D_X, D_Y) or 1/m^2; padding 0 */
-    double cond_max;      /* largest condition number met (the rule above) */
-    int64_t cond_node;    /* where */
+    int32_t templates;    /* template t: rows tpl_first[t] .. tpl_first[t + 1] */
+    int64_t *tpl_first;
+    int32_t *tpl_off;        /* per template row, the member's offset from the lane's node */
+    double *tpl_w[PDDO_OPS]; /* per template row, the weight of every lane */
+    int64_t templated;       /* slices that use a template */
+    double cond_max;         /* largest condition number met (the rule above) */
+    int64_t cond_node;       /* where */
 } PddoOps;
 
-static inline int64_t pddo_ops_slot(const PddoOps *ops, int64_t k, int64_t m) {
-    return ops->slice_first[k / PDDO_LANES] + (m - ops->first[k]) * PDDO_LANES + k % PDDO_LANES;
-}
+/* The nodes' lattice indices, so that xi between two lattice nodes is
+ * taken from them, (i_j - i_k) dx, the same bits wherever the pair lies
+ * (from the rounded coordinates x_j - x_k differs by an ulp from place
+ * to place, and no two slices' weights would be the same bits). */
+typedef struct {
+    const int32_t *i, *j; /* INT32_MIN: not a lattice node (a polar ring) */
+    double dx;
+} PddoLattice;
 
 /* The weight of member m of node k for operator op. */
 static inline double pddo_ops_weight(const PddoOps *ops, PddoOp op, int64_t k, int64_t m) {
-    return ops->w[op][pddo_ops_slot(ops, k, m)];
+    const int64_t s = k / PDDO_LANES, r = m - ops->first[k];
+    const int32_t t = ops->slice_tpl[s];
+    if (t >= 0) return ops->tpl_w[op][ops->tpl_first[t] + r];
+    return ops->w[op][ops->slice_first[s] + r * PDDO_LANES + k % PDDO_LANES];
 }
 
 static inline int64_t pddo_ops_slices(const PddoOps *ops) {
@@ -83,10 +106,13 @@ static inline int64_t pddo_ops_slices(const PddoOps *ops) {
 
 /* Builds the weights of the n nodes at (x, y) with areas `area` (only their
  * ratios matter) and families first/nbr (each node's neighbours, itself
- * excluded), horizon delta (m). ops is zeroed or freed before. Fails with
- * NSPD_ERR_INPUT for a node breaking the conditioning rule, NSPD_ERR_NOMEM. */
+ * excluded), horizon delta (m); lattice: the nodes' lattice indices, or
+ * NULL (xi from the coordinates only; no slice will match a template but
+ * by chance). ops is zeroed or freed before. Fails with NSPD_ERR_INPUT for
+ * a node breaking the conditioning rule, NSPD_ERR_NOMEM. */
 int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta);
+                   const int64_t *first, const int32_t *nbr, double delta,
+                   const PddoLattice *lattice);
 
 /* The conditioning rule of pddo_ops_build alone, with its refusal, and
  * ops->cond_max; no weights (`nspd check`: the per-member solves are most

@@ -40,7 +40,8 @@ static void build(PddoCloud *c, PddoOps *ops, PddoForces *f, double dx, double d
                        .nholes = 1,
                        .polar = &polar};
     assert_ok(pddo_cloud_build(c, &s));
-    assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+    assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             &(PddoLattice){c->i, c->j, c->dx}));
     assert_ok(pddo_forces_build(f, c, 0));
 }
 

@@ -176,7 +176,8 @@ static void test_paper_patch(void **state) {
     assert_close(closest[2], pddo_polar_radius(p, 0) * 2.0 * sin(0.5 * p->dtheta), 1e-12);
 
     PddoOps ops = {0};
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     const int64_t w = ops.cond_node;
     printf("largest shape-matrix condition %.4g at node %lld (r = %.4f m, kind %d, %lld "
            "neighbours)\n",
@@ -238,7 +239,8 @@ static void patch_errors(double h, int rings_inside, double err[SETS][PDDO_OPS])
     PddoCloud c = {0};
     cylinder_cloud(&c, h, 2.2, &polar);
     PddoOps ops = {0};
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     const PddoPolarPatch *p = &c.patch[0];
     double *f = calloc((size_t)c.n, sizeof(double)), d[PDDO_OPS];
     for (int64_t k = 0; k < c.n; k++) f[k] = trig(c.x[k], c.y[k], d);
@@ -354,7 +356,8 @@ static void test_two_patches(void **state) {
     int64_t njunction = 0;
     for (int64_t k = 0; k < c.n; k++) njunction += junction(&c, k);
     PddoOps ops = {0};
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     printf("two patches: %lld nodes, %d rings of %d per patch, %lld junction nodes, largest "
            "condition %.4g\n",
            (long long)c.n, p[0].rings, p[0].ntheta, (long long)njunction, ops.cond_max);
@@ -490,7 +493,8 @@ static void test_step_hook(void **state) {
     PddoCloud c = {0};
     PddoOps ops = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     const PddoPolarPatch *p = &c.patch[0];
     for (int anti = 0; anti < 2; anti++) {
         PddoPpe ppe = {0};

@@ -41,7 +41,8 @@ static TgResult taylor_green(int n, double amplitude, double dt, double t_end, b
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     const PddoStepParams par = {.rho = 1.0, .mu = nu, .dt = dt};
     assert_ok(pddo_step_init(&st, &c, &ops, &ppe, &par));
@@ -157,7 +158,8 @@ static double cavity_re1(double dt, double *div_max) {
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     PddoStepParams par = {.rho = 1000.0, .mu = 1e-3, .dt = dt};
     par.wall_u[PDDO_TOP] = U;
@@ -224,7 +226,8 @@ static double diffusion_growth(double number, int steps, int *taken) {
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     const PddoStepParams par = {.rho = 1.0, .mu = 1.0, .dt = number * s.dx * s.dx};
     assert_ok(pddo_step_init(&st, &c, &ops, &ppe, &par));
@@ -275,7 +278,8 @@ static void channel(PddoCloud *c, PddoOps *ops, PddoPpe *ppe, int n) {
         .lo = {0.0, 0.0}, .hi = {4.0 / n, 1.0}, .dx = 1.0 / n, .layers = 3, .horizon_factor = 3.0};
     s.side[PDDO_LEFT] = s.side[PDDO_RIGHT] = PDDO_SIDE_PERIODIC;
     assert_ok(pddo_cloud_build(c, &s));
-    assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+    assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             &(PddoLattice){c->i, c->j, c->dx}));
     assert_ok(pddo_ppe_build(ppe, c, ops));
 }
 
@@ -390,7 +394,8 @@ static double channel_flow(PddoWallGhosts walls, double *flux_ratio) {
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     assert_int_equal(ppe.pinned, -1); /* the outlet fixes the level */
     const PddoStepParams par = {.rho = 1.0,
