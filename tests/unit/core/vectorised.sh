@@ -2,10 +2,13 @@
 # The loops that must run in SIMD lanes stay vectorised (ctest
 # unit.core.vectorised).
 #
-#   vectorised.sh CC SOURCE_DIR WORK_DIR
+#   vectorised.sh CC SOURCE_DIR WORK_DIR [--from-build]
 #
-# Compiled as the release build compiles them (-O3 -march=native
-# -fno-math-errno), GCC's -fopt-info-vec must report as vectorised:
+# With --from-build the reports are those the release build wrote into
+# WORK_DIR as it compiled the files (CMakeLists.txt, NSPD_VEC_REPORTS);
+# without, each file is compiled here as the release build compiles it
+# (-O3 -march=native -fno-math-errno). GCC's -fopt-info-vec must report
+# as vectorised:
 # - each loop marked `NSPD_IVDEP /* vectorised: ... */` (the loop is on the
 #   next line): the GKS step's face fluxes, slopes and stable-step rates;
 # - for a mark `/* vectorised xN: ... */` on the line before a statement,
@@ -28,6 +31,7 @@ if ! echo "$macros" | grep -q '__GNUC__' || echo "$macros" | grep -q '__clang__'
     echo "$cc is not GCC: the vectorisation report is GCC's; skipped"
     exit 77
 fi
+from_build=${4:-}
 mkdir -p "$work" || exit 1
 status=0
 marked=0
@@ -35,10 +39,14 @@ for file in "$src"/src/flow/gks/*.c "$src"/src/solid/correspondence/*.c; do
     grep -q '/\* vectorised' "$file" || continue
     name=$(basename "$file")
     report="$work/${name%.c}.txt"
-    rm -f "$report"
-    "$cc" -O3 -march=native -fno-math-errno -fopenmp -std=c17 -D_DEFAULT_SOURCE \
-        -D_POSIX_C_SOURCE=200809L -I "$src/src" -fopt-info-vec-optimized="$report" \
-        -c "$file" -o "$work/${name%.c}.o" || { echo "FAIL: $name does not compile"; exit 1; }
+    if [ "$from_build" = --from-build ]; then
+        [ -f "$report" ] || { echo "FAIL: the build wrote no report $report (re-run cmake)"; exit 1; }
+    else
+        rm -f "$report"
+        "$cc" -O3 -march=native -fno-math-errno -fopenmp -std=c17 -D_DEFAULT_SOURCE \
+            -D_POSIX_C_SOURCE=200809L -I "$src/src" -fopt-info-vec-optimized="$report" \
+            -c "$file" -o "$work/${name%.c}.o" || { echo "FAIL: $name does not compile"; exit 1; }
+    fi
     for line in $(grep -n 'NSPD_IVDEP /\* vectorised' "$file" | cut -d: -f1); do
         marked=$((marked + 1))
         loop=$((line + 1))
