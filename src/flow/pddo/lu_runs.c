@@ -101,6 +101,91 @@ int lu_runs_build(LuRuns *r, LuRunsForm form, int64_t n, const int64_t *ptr, con
     return NSPD_OK;
 }
 
+/* Runs of fewer pivots than this take the short paths below: on the
+ * paper's cylinder 93 % of the runs, 9 % of the entries. */
+enum { SHORT_RUN = 16 };
+
+/* A GATHER run of NS < SHORT_RUN pivots (a constant where it is inlined):
+ * its sums in registers, read straight from y. Each sum runs over the
+ * block's columns in order from 0.0 and then over the triangle's pivots in
+ * order, as in solve_range's lanes: the same bits, without the sums' round
+ * trips through memory (a dependent load a column). */
+static inline __attribute__((always_inline)) void gather_short(const int NS, int64_t c,
+                                                               const int32_t *out, const double *B,
+                                                               const double *T, const double *diag,
+                                                               double *y, double *yk) {
+    double acc[SHORT_RUN] = {0.0};
+    for (int64_t m = 0; m < c; m++) {
+        const double gm = y[out[m]];
+        for (int q = 0; q < NS; q++) acc[q] += B[m * NS + q] * gm;
+    }
+    for (int q = 0; q < NS; q++) {
+        const double a = yk[q] - acc[q];
+        const double z = diag ? a / diag[q] : a;
+        yk[q] = z;
+        const double *col = T + tri_at(NS, q + 1, q);
+        for (int t = q + 1; t < NS; t++) acc[t] += col[t - q - 1] * z;
+    }
+}
+
+/* A SCATTER run of NS < SHORT_RUN pivots: its triangle, then each outside
+ * unknown's update summed over the pivots in order from 0.0 in a register
+ * (solve_range sums them in g, pivot by pivot: the same order, the same
+ * bits) and subtracted at once, the ones at or past `direct` logged. */
+static inline __attribute__((always_inline)) void
+scatter_short(const int NS, int64_t c, const int32_t *out, const double *B, const double *T,
+              const double *diag, double *y, double *yk, int64_t direct, double **log) {
+    double z[SHORT_RUN];
+    for (int q = 0; q < NS; q++) {
+        z[q] = diag ? yk[q] / diag[q] : yk[q];
+        yk[q] = z[q];
+        const double *col = T + tri_at(NS, q + 1, q);
+        for (int t = q + 1; t < NS; t++) yk[t] -= col[t - q - 1] * z[q];
+    }
+    for (int64_t m = 0; m < c; m++) {
+        double g = 0.0;
+        for (int q = 0; q < NS; q++) g += B[q * c + m] * z[q];
+        if (m < direct)
+            y[out[m]] -= g;
+        else
+            *(*log)++ = g;
+    }
+}
+
+/* The short paths with the run's length a constant, so that the sums stay
+ * in registers; 0 for a run they do not take. */
+static int run_short(const LuRuns *r, int64_t ns, int64_t c, const int32_t *out, const double *B,
+                     const double *T, const double *diag, double *y, double *yk, int64_t direct,
+                     double **log) {
+#define SHORT_CASE(N)                                                                              \
+    case N:                                                                                        \
+        if (r->form == LU_RUNS_GATHER)                                                             \
+            gather_short(N, c, out, B, T, diag, y, yk);                                            \
+        else                                                                                       \
+            scatter_short(N, c, out, B, T, diag, y, yk, direct, log);                              \
+        return 1;
+    switch (ns) {
+        SHORT_CASE(1)
+        SHORT_CASE(2)
+        SHORT_CASE(3)
+        SHORT_CASE(4)
+        SHORT_CASE(5)
+        SHORT_CASE(6)
+        SHORT_CASE(7)
+        SHORT_CASE(8)
+        SHORT_CASE(9)
+        SHORT_CASE(10)
+        SHORT_CASE(11)
+        SHORT_CASE(12)
+        SHORT_CASE(13)
+        SHORT_CASE(14)
+        SHORT_CASE(15)
+    default:
+        return 0;
+    }
+#undef SHORT_CASE
+}
+
 /* Runs [s0, s1) of the solve; SCATTER with a log: the updates of unknowns
  * at or past the run's tail go to *log in order instead of into y. */
 static void solve_range(const LuRuns *r, int64_t s0, int64_t s1, double *y, double *scratch,
@@ -110,6 +195,12 @@ static void solve_range(const LuRuns *r, int64_t s0, int64_t s1, double *y, doub
         const int64_t k0 = r->start[s], ns = r->start[s + 1] - k0, c = r->cp[s + 1] - r->cp[s];
         const int32_t *out = r->idx + r->cp[s];
         const double *B = r->bx + r->bp[s], *T = B + ns * c;
+        if (ns < SHORT_RUN) {
+            const int64_t direct = log && r->form == LU_RUNS_SCATTER ? r->tail[s] : c;
+            if (run_short(r, ns, c, out, B, T, r->diag ? r->diag + k0 : NULL, y, y + k0, direct,
+                          &log))
+                continue;
+        }
         if (r->form == LU_RUNS_GATHER) {
             for (int64_t m = 0; m < c; m++) g[m] = y[out[m]];
             for (int64_t q = 0; q < ns; q++) acc[q] = 0.0;

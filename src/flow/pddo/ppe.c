@@ -307,14 +307,19 @@ int pddo_ppe_use_runs(PddoPpe *ppe) {
 static void runs_solve(const PddoPpe *ppe, const double *b, double *x) {
     const int64_t n = ppe->n;
     double *y = ppe->runs_y;
+    /* the permutations and the scaling move or scale each value alone:
+     * the same bits on any number of threads */
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) y[k] = b[ppe->perm_col[k]];
     lu_runs_solve(&ppe->runs_u, y, ppe->runs_scratch);
     /* L^T's backward solve as a forward one in reversed numbering */
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n / 2; k++) {
         const double t = y[k];
         y[k] = y[n - 1 - k], y[n - 1 - k] = t;
     }
     lu_runs_solve(&ppe->runs_l, y, ppe->runs_scratch);
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++) {
         const int32_t r = ppe->perm_row[k];
         const double w = y[n - 1 - k];
