@@ -37,15 +37,15 @@ status=0
 marked=0
 for file in "$src"/src/flow/gks/*.c "$src"/src/solid/correspondence/*.c; do
     grep -q '/\* vectorised' "$file" || continue
-    name=$(basename "$file")
-    report="$work/${name%.c}.txt"
+    name=${file#"$src"/src/} # flow/gks/step.c: both folders have a step.c
+    report="$work/$(echo "${name%.c}" | tr / _).txt"
     if [ "$from_build" = --from-build ]; then
         [ -f "$report" ] || { echo "FAIL: the build wrote no report $report (re-run cmake)"; exit 1; }
     else
         rm -f "$report"
         "$cc" -O3 -march=native -fno-math-errno -fopenmp -std=c17 -D_DEFAULT_SOURCE \
             -D_POSIX_C_SOURCE=200809L -I "$src/src" -fopt-info-vec-optimized="$report" \
-            -c "$file" -o "$work/${name%.c}.o" || { echo "FAIL: $name does not compile"; exit 1; }
+            -c "$file" -o "${report%.txt}.o" || { echo "FAIL: $name does not compile"; exit 1; }
     fi
     for line in $(grep -n 'NSPD_IVDEP /\* vectorised' "$file" | cut -d: -f1); do
         marked=$((marked + 1))
