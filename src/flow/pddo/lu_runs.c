@@ -195,8 +195,9 @@ static void solve_range(const LuRuns *r, int64_t s0, int64_t s1, double *y, doub
         const int64_t k0 = r->start[s], ns = r->start[s + 1] - k0, c = r->cp[s + 1] - r->cp[s];
         const int32_t *out = r->idx + r->cp[s];
         const double *B = r->bx + r->bp[s], *T = B + ns * c;
+        /* SCATTER with a log: the updates from `direct` on are logged */
+        const int64_t direct = log ? r->tail[s] : c;
         if (ns < SHORT_RUN) {
-            const int64_t direct = log && r->form == LU_RUNS_SCATTER ? r->tail[s] : c;
             if (run_short(r, ns, c, out, B, T, r->diag ? r->diag + k0 : NULL, y, y + k0, direct,
                           &log))
                 continue;
@@ -229,7 +230,6 @@ static void solve_range(const LuRuns *r, int64_t s0, int64_t s1, double *y, doub
 #pragma omp simd
                 for (int64_t m = 0; m < c; m++) g[m] += row[m] * z;
             }
-            const int64_t direct = log ? r->tail[s] : c;
             for (int64_t m = 0; m < direct; m++) y[out[m]] -= g[m];
             for (int64_t m = direct; m < c; m++) *log++ = g[m];
         }

@@ -117,11 +117,6 @@ static double shape_factor(const int32_t *nbr, int64_t count, const Centre *ctr,
     return condition(M, Lf, scale, terms);
 }
 
-/* Where member m of node k is stored (before templates_build). */
-static int64_t slot_at(const PddoOps *ops, int64_t k, int64_t m) {
-    return ops->slice_first[k / PDDO_LANES] + (m - ops->first[k]) * PDDO_LANES + k % PDDO_LANES;
-}
-
 /* Node k's weights of every operator; its condition number in *cond, or
  * INFINITY when the factorisation fails (then no weight is written). */
 static void node_weights(PddoOps *ops, int64_t k, const double *x, const double *y,
@@ -144,7 +139,7 @@ static void node_weights(PddoOps *ops, int64_t k, const double *x, const double 
         double z[SPD_SMALL_MAX] = {0};
         basis(false, s1, s2, p);
         spd_small_solve((const double(*)[SPD_SMALL_MAX])Lf, TERMS, scale, p, z);
-        const int64_t at = slot_at(ops, k, m);
+        const int64_t at = pddo_ops_slot(ops, k, m);
         ops->w[PDDO_D_X][at] = b[0] * wa * z[0];
         ops->w[PDDO_D_Y][at] = b[1] * wa * z[1];
         ops->w[PDDO_LAP][at] = b[2] * wa * z[2] + b[3] * wa * z[3];
@@ -375,9 +370,8 @@ static inline __attribute__((always_inline)) void at_many(const PddoOps *ops, in
     const double *w[PDDO_FUSED_MAX];
     double fk[PDDO_FUSED_MAX];
     /* a template's row r, or the slot of member r (stride PDDO_LANES) */
-    const int64_t s = k / PDDO_LANES;
-    const int32_t t = ops->slice_tpl[s];
-    const int64_t at = t >= 0 ? ops->tpl_first[t] : ops->slice_first[s] + k % PDDO_LANES;
+    const int32_t t = ops->slice_tpl[k / PDDO_LANES];
+    const int64_t at = t >= 0 ? ops->tpl_first[t] : pddo_ops_slot(ops, k, ops->first[k]);
     const int64_t stride = t >= 0 ? 1 : PDDO_LANES;
     for (int o = 0; o < count; o++)
         w[o] = t >= 0 ? ops->tpl_w[op[o]] : ops->w[op[o]], fk[o] = f[o][k], sum[o] = 0.0;

@@ -92,12 +92,16 @@ typedef struct {
     double dx;
 } PddoLattice;
 
+/* The slot of member m of node k, in a slice that keeps its own slots. */
+static inline int64_t pddo_ops_slot(const PddoOps *ops, int64_t k, int64_t m) {
+    return ops->slice_first[k / PDDO_LANES] + (m - ops->first[k]) * PDDO_LANES + k % PDDO_LANES;
+}
+
 /* The weight of member m of node k for operator op. */
 static inline double pddo_ops_weight(const PddoOps *ops, PddoOp op, int64_t k, int64_t m) {
-    const int64_t s = k / PDDO_LANES, r = m - ops->first[k];
-    const int32_t t = ops->slice_tpl[s];
-    if (t >= 0) return ops->tpl_w[op][ops->tpl_first[t] + r];
-    return ops->w[op][ops->slice_first[s] + r * PDDO_LANES + k % PDDO_LANES];
+    const int32_t t = ops->slice_tpl[k / PDDO_LANES];
+    if (t >= 0) return ops->tpl_w[op][ops->tpl_first[t] + (m - ops->first[k])];
+    return ops->w[op][pddo_ops_slot(ops, k, m)];
 }
 
 static inline int64_t pddo_ops_slices(const PddoOps *ops) {
