@@ -2,12 +2,10 @@
 
 #include "core/out_file.h"
 #include "core/status.h"
+#include "io/cairo_lib.h"
 #include "io/colormap.h"
 #include "io/png.h"
 
-#include <cairo-svg.h>
-#include <cairo.h>
-#include <fontconfig/fontconfig.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -212,15 +210,18 @@ static void register_release(void) {
     (void)atexit(release_fonts);
 }
 
-/* Called before any text is drawn. */
-static void fonts_in_use(void) {
+/* Called before anything is drawn: cairo opened (io/cairo_lib.h), its
+ * fonts' release registered. */
+static int cairo_in_use(void) {
+    TRY(cairo_lib_load());
     static pthread_once_t once = PTHREAD_ONCE_INIT;
     (void)pthread_once(&once, register_release);
+    return NSPD_OK;
 }
 
 /* A cairo context on a scratch surface, for measuring text. */
 static int measure_context(cairo_surface_t **s, cairo_t **cr) {
-    fonts_in_use();
+    TRY(cairo_in_use());
     *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
     *cr = cairo_create(*s);
     if (cairo_status(*cr) != CAIRO_STATUS_SUCCESS) {
@@ -575,7 +576,7 @@ static void draw_line_plot(cairo_t *cr, const FigureLine *p) {
 }
 
 int figure_write_line_plot(const char *path, const FigureLine *p, bool svg) {
-    fonts_in_use();
+    TRY(cairo_in_use());
     if (svg) {
         OutFile out;
         TRY(out_file_open(&out, path));

@@ -18,11 +18,11 @@
 #include "core/parallel.h"
 #include "core/status.h"
 #include "core/timer.h"
+#include "flow/pddo/umfpack_lib.h"
 
 #include <math.h>
 #include <stdbool.h>
 #include <string.h>
-#include <umfpack.h>
 
 static int row_kind(const PddoCloud *c, int64_t k) {
     if (c->kind[k] == PDDO_NODE_GHOST || c->kind[k] == PDDO_NODE_BODY) return PDDO_ROW_IMAGE;
@@ -85,6 +85,7 @@ static int umf_fail(int status, const char *what) {
 }
 
 static int factorise(PddoPpe *p) {
+    TRY(umfpack_lib_load());
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
     umfpack_di_defaults(control);
     /* AMD on K_L + K_L^T, then METIS, the sparser kept: at the paper's
