@@ -6,7 +6,8 @@
 #include <pthread.h>
 #include <stdio.h>
 
-enum { LOADED = 1 }; /* SharedLib.status after a success (NSPD_OK is 0: not tried) */
+/* SharedLib.status once tried (0: not tried) */
+enum { LOADED = 1, REFUSED = 2 };
 
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 
@@ -15,16 +16,16 @@ static int open_lib(SharedLib *lib) {
     void *handle = dlopen(lib->soname, RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
         (void)snprintf(lib->failure, sizeof lib->failure,
-                       "%s need %s, which could not be opened (%s); scripts/deps.sh installs it",
-                       lib->purpose, lib->soname, dlerror());
-        return NSPD_ERR_IO;
+                       "%s, needed for %s, could not be opened (%s); scripts/deps.sh installs it",
+                       lib->soname, lib->purpose, dlerror());
+        return REFUSED;
     }
     for (size_t i = 0; i < lib->count; i++) {
         lib->slots[i] = dlsym(handle, lib->names[i]);
         if (!lib->slots[i]) {
-            (void)snprintf(lib->failure, sizeof lib->failure, "%s need %s from %s, which it lacks",
-                           lib->purpose, lib->names[i], lib->soname);
-            return NSPD_ERR_IO;
+            (void)snprintf(lib->failure, sizeof lib->failure, "%s, needed for %s, lacks %s",
+                           lib->soname, lib->purpose, lib->names[i]);
+            return REFUSED;
         }
     }
     /* never closed: the functions stay in use until the process ends */
@@ -40,5 +41,5 @@ int shared_lib_load(SharedLib *lib) {
     if (status != LOADED) (void)snprintf(text, sizeof text, "%s", lib->failure);
     (void)pthread_mutex_unlock(&lock);
     if (status == LOADED) return NSPD_OK;
-    return NSPD_FAIL(status, "%s", text);
+    return NSPD_FAIL(NSPD_ERR_IO, "%s", text);
 }

@@ -24,7 +24,7 @@ typedef struct {
     const char *const *names; /* the functions, in the order of slots */
     size_t count;
     void **slots;
-    int status;        /* 0: not tried yet; then loaded, or the failure, kept */
+    int status;        /* 0: not tried yet; then loaded or refused, kept */
     char failure[320]; /* the failure's text, repeated to later callers */
 } SharedLib;
 
