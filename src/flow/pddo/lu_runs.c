@@ -207,8 +207,8 @@ static void solve_range(const LuRuns *r, int64_t s0, int64_t s1, double *y, doub
         const int64_t k0 = r->start[s], ns = r->start[s + 1] - k0, c = r->cp[s + 1] - r->cp[s];
         const int32_t *out = r->idx + r->cp[s];
         const double *B = r->bx + r->bp[s], *T = B + ns * c;
-        const int64_t ahead = r->bp[s] + PREFETCH_AHEAD < r->bp[s1] ? r->bp[s] + PREFETCH_AHEAD
-                                                                    : r->bp[s1];
+        const int64_t ahead =
+            r->bp[s] + PREFETCH_AHEAD < r->bp[s1] ? r->bp[s] + PREFETCH_AHEAD : r->bp[s1];
         if (fetched < r->bp[s]) fetched = r->bp[s]; /* past a long run's block */
         for (; fetched < ahead; fetched += 8) __builtin_prefetch(r->bx + fetched);
         /* SCATTER with a log: the updates from `direct` on are logged */

@@ -15,6 +15,7 @@
 #include "core/status.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdbool.h>
 #include <string.h>
 
@@ -304,7 +305,35 @@ static int templates_build(PddoOps *ops) {
     TRY(nspd_realloc(&ops->tpl_off, (size_t)rows_room + 1, (size_t)used + 1, sizeof(int32_t)));
     for (int op = 0; op < PDDO_OPS; op++)
         TRY(nspd_realloc(&ops->tpl_w[op], (size_t)rows_room + 1, (size_t)used + 1, sizeof(double)));
+    TRY(nspd_alloc(&ops->cost_before, (size_t)slices + 1, sizeof(int64_t)));
+    ops->cost_before[0] = 0;
+    for (int64_t s = 0; s < slices; s++) {
+        const int32_t t = ops->slice_tpl[s];
+        const int64_t cost =
+            t >= 0 ? ops->tpl_first[t + 1] - ops->tpl_first[t]
+                   : PDDO_OWN_ROW_COST * (ops->slice_first[s + 1] - ops->slice_first[s]) / L;
+        ops->cost_before[s + 1] = ops->cost_before[s] + cost + 1;
+    }
     return NSPD_OK;
+}
+
+/* The first slice whose cost_before reaches `cost`. */
+static int64_t slice_at_cost(const PddoOps *ops, int64_t cost) {
+    int64_t lo = 0, hi = pddo_ops_slices(ops);
+    while (lo < hi) {
+        const int64_t mid = lo + (hi - lo) / 2;
+        if (ops->cost_before[mid] < cost)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi) {
+    const int64_t total = ops->cost_before[pddo_ops_slices(ops)];
+    *lo = t == 0 ? 0 : slice_at_cost(ops, total * t / nt);
+    *hi = t == nt - 1 ? pddo_ops_slices(ops) : slice_at_cost(ops, total * (t + 1) / nt);
 }
 
 static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
@@ -499,14 +528,18 @@ double pddo_ops_at(const PddoOps *ops, PddoOp op, const double *f, int64_t k) {
 
 void pddo_ops_apply_many(const PddoOps *ops, int count, const PddoOp *op, const double *const *f,
                          double *const *out) {
-    const int64_t n = ops->n, slices = pddo_ops_slices(ops);
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t s = 0; s < slices; s++) {
-        double sum[PDDO_FUSED_MAX * PDDO_LANES];
-        slice_counted(ops, count, op, f, s, sum);
-        for (int o = 0; o < count; o++)
-            for (int l = 0; l < PDDO_LANES && s * PDDO_LANES + l < n; l++)
-                out[o][s * PDDO_LANES + l] = sum[o * PDDO_LANES + l];
+    const int64_t n = ops->n;
+#pragma omp parallel if (n >= PARALLEL_MIN_ITEMS)
+    {
+        int64_t lo, hi;
+        pddo_ops_share(ops, omp_get_thread_num(), omp_get_num_threads(), &lo, &hi);
+        for (int64_t s = lo; s < hi; s++) {
+            double sum[PDDO_FUSED_MAX * PDDO_LANES];
+            slice_counted(ops, count, op, f, s, sum);
+            for (int o = 0; o < count; o++)
+                for (int l = 0; l < PDDO_LANES && s * PDDO_LANES + l < n; l++)
+                    out[o][s * PDDO_LANES + l] = sum[o * PDDO_LANES + l];
+        }
     }
 }
 
@@ -518,6 +551,7 @@ void pddo_ops_free(PddoOps *ops) {
     for (int op = 0; op < PDDO_OPS; op++) nspd_free(&ops->w[op]), nspd_free(&ops->tpl_w[op]);
     nspd_free(&ops->slice_first);
     nspd_free(&ops->slice_tpl);
+    nspd_free(&ops->cost_before);
     nspd_free(&ops->tpl_first);
     nspd_free(&ops->tpl_off);
     nspd_free(&ops->slot_nbr);

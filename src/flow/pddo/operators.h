@@ -79,6 +79,7 @@ typedef struct {
     int32_t *tpl_off;        /* per template row, the member's offset from the lane's node */
     double *tpl_w[PDDO_OPS]; /* per template row, the weight of every lane */
     int64_t templated;       /* slices that use a template */
+    int64_t *cost_before;    /* per slice, the cost of the slices before it; the total last */
     double cond_max;         /* largest condition number met (the rule above) */
     int64_t cond_node;       /* where */
 } PddoOps;
@@ -107,6 +108,19 @@ static inline double pddo_ops_weight(const PddoOps *ops, PddoOp op, int64_t k, i
 static inline int64_t pddo_ops_slices(const PddoOps *ops) {
     return (ops->n + PDDO_LANES - 1) / PDDO_LANES;
 }
+
+/* A row of a slice with its own slots costs this many rows of a
+ * template's slice (it streams a neighbour and a weight per lane and
+ * operator, where a template's row reads its weights from cache). */
+enum { PDDO_OWN_ROW_COST = 3 };
+
+/* Slices [*lo, *hi) of thread t of nt: contiguous ranges of about equal
+ * cost (cost_before), so that the threads of a loop over slices finish
+ * together: on the paper's cylinder the polar patch's slices, which keep
+ * their own slots, are the last third, and equal counts of slices left one
+ * thread waiting for the other (docs/PERFORMANCE.md). Each slice is
+ * computed alone, so the bits do not depend on the split. */
+void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi);
 
 /* Builds the weights of the n nodes at (x, y) with areas `area` (only their
  * ratios matter) and families first/nbr (each node's neighbours, itself

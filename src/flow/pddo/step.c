@@ -11,6 +11,7 @@
 #include "core/status.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdbool.h>
 #include <string.h>
 
@@ -246,26 +247,30 @@ int pddo_step_advance(PddoStep *ps) {
     /* r (Eq. 33b) on the PPE rows; the boundary rows' right-hand sides are
      * the paper's zeros (ppe.h) */
     const uint8_t *row = ps->ppe->row;
-    const int64_t slices = pddo_ops_slices(ops);
     enum { L = PDDO_LANES };
-    /* a slice of nodes at a time, the divergences in SIMD lanes */
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t s = 0; s < slices; s++) {
-        const PddoOp op[] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y};
-        const double *const f[] = {w[D1], w[D2], w[LU], w[LV]};
-        double d[4 * L];
-        pddo_ops_slice_many(ops, 4, op, f, s, d);
-        for (int l = 0; l < L && s * L + l < n; l++) {
-            const int64_t k = s * L + l;
-            if (row[k] != PDDO_ROW_PPE) {
-                w[R][k] = row[k] == PDDO_ROW_IMAGE && ps->image_rhs ? ps->image_rhs[k] : 0.0;
-                continue;
+    /* a slice of nodes at a time, the divergences in SIMD lanes; the
+     * threads' slices of equal cost (pddo_ops_share) */
+#pragma omp parallel if (n >= PARALLEL_MIN_ITEMS)
+    {
+        int64_t lo, hi;
+        pddo_ops_share(ops, omp_get_thread_num(), omp_get_num_threads(), &lo, &hi);
+        for (int64_t s = lo; s < hi; s++) {
+            const PddoOp op[] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y};
+            const double *const f[] = {w[D1], w[D2], w[LU], w[LV]};
+            double d[4 * L];
+            pddo_ops_slice_many(ops, 4, op, f, s, d);
+            for (int l = 0; l < L && s * L + l < n; l++) {
+                const int64_t k = s * L + l;
+                if (row[k] != PDDO_ROW_PPE) {
+                    w[R][k] = row[k] == PDDO_ROW_IMAGE && ps->image_rhs ? ps->image_rhs[k] : 0.0;
+                    continue;
+                }
+                const double div_u = w[UX][k] + w[VY][k];
+                const double div_d = d[l] + d[L + l], div_l = d[2 * L + l] + d[3 * L + l];
+                const bool feeds_back =
+                    ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
+                w[R][k] = (feeds_back ? rho / tau * div_u : 0.0) - rho * div_d + mu * div_l;
             }
-            const double div_u = w[UX][k] + w[VY][k];
-            const double div_d = d[l] + d[L + l], div_l = d[2 * L + l] + d[3 * L + l];
-            const bool feeds_back =
-                ps->par.divergence == PDDO_DIVERGENCE_ALL_ROWS || ps->rule[k] == PDDO_VEL_FREE;
-            w[R][k] = (feeds_back ? rho / tau * div_u : 0.0) - rho * div_d + mu * div_l;
         }
     }
     /* 7.3 */
@@ -273,24 +278,25 @@ int pddo_step_advance(PddoStep *ps) {
     /* 7.4 (Eq. 8); grad p only where the velocity is updated */
     int64_t bad = n;
     double rate = 0.0; /* max |du/dt|: a max is exact, so any thread count gives these bits */
-#pragma omp parallel for schedule(static) reduction(min                                            \
-                                                    : bad)                                         \
-    reduction(max                                                                                  \
-              : rate) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t s = 0; s < slices; s++) {
-        const PddoOp op[] = {PDDO_D_X, PDDO_D_Y};
-        const double *const f[] = {p, p};
-        double grad_p[2 * L];
-        pddo_ops_slice_many(ops, 2, op, f, s, grad_p);
-        for (int l = 0; l < L && s * L + l < n; l++) {
-            const int64_t k = s * L + l;
-            if (ps->rule[k] != PDDO_VEL_FREE) continue;
-            const double du = -w[D1][k] - grad_p[l] / rho + nu * w[LU][k] + ps->par.force_x;
-            const double dv = -w[D2][k] - grad_p[L + l] / rho + nu * w[LV][k] + ps->par.force_y;
-            u[k] += dt * du;
-            v[k] += dt * dv;
-            rate = fmax(rate, fmax(fabs(du), fabs(dv)));
-            if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
+#pragma omp parallel reduction(min : bad) reduction(max : rate) if (n >= PARALLEL_MIN_ITEMS)
+    {
+        int64_t lo, hi;
+        pddo_ops_share(ops, omp_get_thread_num(), omp_get_num_threads(), &lo, &hi);
+        for (int64_t s = lo; s < hi; s++) {
+            const PddoOp op[] = {PDDO_D_X, PDDO_D_Y};
+            const double *const f[] = {p, p};
+            double grad_p[2 * L];
+            pddo_ops_slice_many(ops, 2, op, f, s, grad_p);
+            for (int l = 0; l < L && s * L + l < n; l++) {
+                const int64_t k = s * L + l;
+                if (ps->rule[k] != PDDO_VEL_FREE) continue;
+                const double du = -w[D1][k] - grad_p[l] / rho + nu * w[LU][k] + ps->par.force_x;
+                const double dv = -w[D2][k] - grad_p[L + l] / rho + nu * w[LV][k] + ps->par.force_y;
+                u[k] += dt * du;
+                v[k] += dt * dv;
+                rate = fmax(rate, fmax(fabs(du), fabs(dv)));
+                if (!isfinite(u[k]) || !isfinite(v[k])) bad = k < bad ? k : bad;
+            }
         }
     }
     ps->dudt_max = rate;

@@ -418,6 +418,50 @@ static void test_templates(void **state) {
     pddo_cloud_free(&c);
 }
 
+/* pddo_ops_share on a cloud of templated and own slices (the jittered
+ * points keep their own, the lattice's share templates): 1 to 4 threads'
+ * ranges follow each other from the first slice to the last, and each
+ * costs at most its part of the total and one slice more. */
+static void check_share(const PddoOps *ops) {
+    const int64_t slices = pddo_ops_slices(ops), total = ops->cost_before[slices];
+    int64_t widest = 0;
+    for (int64_t s = 0; s < slices; s++)
+        if (ops->cost_before[s + 1] - ops->cost_before[s] > widest)
+            widest = ops->cost_before[s + 1] - ops->cost_before[s];
+    for (int nt = 1; nt <= 4; nt++) {
+        int64_t next = 0;
+        for (int t = 0; t < nt; t++) {
+            int64_t lo, hi;
+            pddo_ops_share(ops, t, nt, &lo, &hi);
+            assert_int_equal(lo, next);
+            assert_true(hi >= lo);
+            assert_true(ops->cost_before[hi] - ops->cost_before[lo] <= total / nt + widest);
+            next = hi;
+        }
+        assert_int_equal(next, slices);
+    }
+}
+
+static void test_share(void **state) {
+    (void)state;
+    PddoCloudSpec s = square_spec(0.02);
+    PddoCloud c = {0};
+    PddoOps ops = {0}, plain = {0};
+    assert_ok(pddo_cloud_build(&c, &s));
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+                             &(PddoLattice){c.i, c.j, c.dx}));
+    assert_ok(pddo_ops_build(&plain, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, NULL));
+    check_share(&ops);
+    check_share(&plain);
+    /* a templated slice costs its rows, an own one PDDO_OWN_ROW_COST times
+     * them: the cloud with templates costs less in all */
+    const int64_t slices = pddo_ops_slices(&ops);
+    assert_true(ops.cost_before[slices] < plain.cost_before[slices]);
+    pddo_ops_free(&plain);
+    pddo_ops_free(&ops);
+    pddo_cloud_free(&c);
+}
+
 /* The error of every operator at node k for sin x cos 2y. */
 static void errors_at(const Points *p, const PddoOps *ops, int64_t k, double e[PDDO_OPS]) {
     double *v = calloc((size_t)p->n, sizeof(double)), d[PDDO_OPS];
@@ -497,6 +541,7 @@ int main(void) {
         cmocka_unit_test(test_refuses_degenerate_family),
         cmocka_unit_test(test_fused_equals_single),
         cmocka_unit_test(test_templates),
+        cmocka_unit_test(test_share),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
