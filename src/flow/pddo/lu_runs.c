@@ -2,6 +2,7 @@
 #include "flow/pddo/lu_runs.h"
 
 #include "core/mem.h"
+#include "core/search.h"
 #include "core/status.h"
 
 #include <omp.h>
@@ -31,19 +32,6 @@ static void outside(LuRunsForm form, const int64_t *ptr, int64_t k0, int64_t k1,
  * strictly lower triangle stored column by column. */
 static inline int64_t tri_at(int64_t ns, int64_t q, int64_t t) {
     return t * (2 * ns - t - 1) / 2 + (q - t - 1);
-}
-
-/* The first of list[0 .. len) (ascending) at or past v: its position. */
-static int64_t first_at_least(const int32_t *list, int64_t len, int64_t v) {
-    int64_t lo = 0, hi = len;
-    while (lo < hi) {
-        const int64_t mid = lo + (hi - lo) / 2;
-        if (list[mid] < v)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
 }
 
 int lu_runs_build(LuRuns *r, LuRunsForm form, int64_t n, const int64_t *ptr, const int32_t *idx,
@@ -351,14 +339,7 @@ static Reach heap_pop(Reach *h, int64_t *n) {
 
 /* The run that starts at pivot k of r's own order (-1: none). */
 static int64_t run_at(const LuRuns *r, int64_t k) {
-    int64_t lo = 0, hi = r->count;
-    while (lo < hi) {
-        const int64_t mid = lo + (hi - lo) / 2;
-        if (r->start[mid] < k)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    const int64_t lo = search_first_at_least(r->start, r->count, k);
     return lo < r->count && r->start[lo] == k ? lo : k == r->n ? r->count : -1;
 }
 
@@ -366,7 +347,7 @@ static int64_t run_at(const LuRuns *r, int64_t k) {
 static int apart(const LuRuns *r, int64_t s0, int64_t s1, int64_t a, int64_t b) {
     for (int64_t s = s0; s < s1; s++) {
         const int64_t c = r->cp[s + 1] - r->cp[s];
-        const int64_t m = first_at_least(r->idx + r->cp[s], c, a);
+        const int64_t m = search_first_at_least_i32(r->idx + r->cp[s], c, a);
         if (m < c && r->idx[r->cp[s] + m] < b) return 0;
     }
     return 1;
@@ -410,7 +391,7 @@ static int set_stages(LuRuns *r, const int64_t *cuts, int64_t m) {
             int64_t logged = 0;
             for (int64_t s = t[1]; s < t[2]; s++) {
                 const int64_t c = r->cp[s + 1] - r->cp[s];
-                r->tail[s] = first_at_least(r->idx + r->cp[s], c, b);
+                r->tail[s] = search_first_at_least_i32(r->idx + r->cp[s], c, b);
                 logged += c - r->tail[s];
             }
             if (logged > r->logged) r->logged = logged;

@@ -11,6 +11,7 @@
 #include "core/hash.h"
 #include "core/mem.h"
 #include "core/parallel.h"
+#include "core/search.h"
 #include "core/spd_small.h"
 #include "core/status.h"
 
@@ -317,23 +318,11 @@ static int templates_build(PddoOps *ops) {
     return NSPD_OK;
 }
 
-/* The first slice whose cost_before reaches `cost`. */
-static int64_t slice_at_cost(const PddoOps *ops, int64_t cost) {
-    int64_t lo = 0, hi = pddo_ops_slices(ops);
-    while (lo < hi) {
-        const int64_t mid = lo + (hi - lo) / 2;
-        if (ops->cost_before[mid] < cost)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi) {
-    const int64_t total = ops->cost_before[pddo_ops_slices(ops)];
-    *lo = t == 0 ? 0 : slice_at_cost(ops, total * t / nt);
-    *hi = t == nt - 1 ? pddo_ops_slices(ops) : slice_at_cost(ops, total * (t + 1) / nt);
+    const int64_t slices = pddo_ops_slices(ops), total = ops->cost_before[slices];
+    *lo = t == 0 ? 0 : search_first_at_least(ops->cost_before, slices, total * t / nt);
+    *hi = t == nt - 1 ? slices
+                      : search_first_at_least(ops->cost_before, slices, total * (t + 1) / nt);
 }
 
 static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,

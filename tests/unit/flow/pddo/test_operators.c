@@ -380,6 +380,16 @@ static void test_fused_equals_single(void **state) {
     points_free(&p);
 }
 
+/* The square cloud of spacing 0.02, its weights with xi from the lattice
+ * indices (templates) and from the coordinates (plain: every slice its own). */
+static void square_with_and_without_lattice(PddoCloud *c, PddoOps *ops, PddoOps *plain) {
+    PddoCloudSpec s = square_spec(0.02);
+    assert_ok(pddo_cloud_build(c, &s));
+    assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             &(PddoLattice){c->i, c->j, c->dx}));
+    assert_ok(pddo_ops_build(plain, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta, NULL));
+}
+
 /* Templates (operators.h) on a lattice cloud: most slices
  * share one, each weight is the one the node's own family gives (xi from
  * the coordinates: the same to round-off; a slice given the wrong
@@ -390,13 +400,9 @@ static void test_fused_equals_single(void **state) {
  * other compilers, and a wrong template is off by 0.9 (checked). */
 static void test_templates(void **state) {
     (void)state;
-    PddoCloudSpec s = square_spec(0.02);
     PddoCloud c = {0};
     PddoOps ops = {0}, plain = {0};
-    assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
-                             &(PddoLattice){c.i, c.j, c.dx}));
-    assert_ok(pddo_ops_build(&plain, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, NULL));
+    square_with_and_without_lattice(&c, &ops, &plain);
     const int64_t slices = pddo_ops_slices(&ops);
     double big = 0.0, diff = 0.0;
     for (int op = 0; op < PDDO_OPS; op++)
@@ -444,13 +450,9 @@ static void check_share(const PddoOps *ops) {
 
 static void test_share(void **state) {
     (void)state;
-    PddoCloudSpec s = square_spec(0.02);
     PddoCloud c = {0};
     PddoOps ops = {0}, plain = {0};
-    assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
-                             &(PddoLattice){c.i, c.j, c.dx}));
-    assert_ok(pddo_ops_build(&plain, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, NULL));
+    square_with_and_without_lattice(&c, &ops, &plain);
     check_share(&ops);
     check_share(&plain);
     /* a templated slice costs its rows, an own one PDDO_OWN_ROW_COST times
