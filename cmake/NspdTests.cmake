@@ -143,16 +143,26 @@ if(NSPD_MPI)
     # tests/mpi/vtk_same.c: a grid written in pieces against the whole one
     add_executable(vtk_same ${PROJECT_SOURCE_DIR}/tests/mpi/vtk_same.c)
     target_link_libraries(vtk_same PRIVATE nspdlib)
-    add_test(NAME mpi.run
-        COMMAND sh ${PROJECT_SOURCE_DIR}/tests/mpi/run.sh $<TARGET_FILE:nspd> ${PROJECT_SOURCE_DIR}
-            ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:vtk_same>
-        WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
-    # the longest test (about 2.5 minutes alone): run alone, first (a fresh
-    # build has no timings yet); its up to 4 ranks beside another test on 2
-    # cores took 2.6 times as long (370 s in a fresh make test on an AMD
-    # EPYC), more than the others gain from running beside it
-    set_tests_properties(mpi.run PROPERTIES LABELS "mpi;release" SKIP_RETURN_CODE 77 COST 1000
-        RUN_SERIAL TRUE)
+    # make test's layouts of each case (mode suite), and the rest of them
+    # in `make validate` (mode more, labelled slow; tests/mpi/run.sh)
+    foreach(mode suite more)
+        set(name mpi.run)
+        if(mode STREQUAL more)
+            set(name mpi.run_more)
+        endif()
+        add_test(NAME ${name}
+            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/mpi/run.sh $<TARGET_FILE:nspd>
+                ${PROJECT_SOURCE_DIR} ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:vtk_same> ${mode}
+            WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+        # the longest test (about 1.3 minutes alone): run alone, first (a
+        # fresh build has no timings yet); its up to 4 ranks beside another
+        # test on 2 cores took 2.6 times as long (370 s in a fresh make test
+        # on an AMD EPYC, with twice the layouts), more than the others gain
+        # from running beside it
+        set_tests_properties(${name} PROPERTIES LABELS "mpi;release" SKIP_RETURN_CODE 77
+            COST 1000 RUN_SERIAL TRUE)
+    endforeach()
+    set_tests_properties(mpi.run_more PROPERTIES LABELS "mpi;release;slow")
     # the sanitized build: a few of those cases under ASan and UBSan
     # (tests/mpi/sanitized.sh), in make test-asan's selection ("cli")
     if(NSPD_SANITIZE)
