@@ -1,6 +1,6 @@
 #!/bin/sh
 # Installs the Debian packages a make target needs, and nothing else.
-#   scripts/deps.sh build      compiler, CMake, libyaml, libpng, cairo and a font for the
+#   scripts/deps.sh build      compiler, CMake, Ninja, libyaml, libpng, cairo and a font for the
 #                              pictures' text, cmocka, VTK for Python (the tests open our
 #                              .vtu/.vtr files with VTK's own readers), PyYAML (the mutation
 #                              test walks the case files' keys), ffmpeg (movies),
@@ -21,7 +21,7 @@
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev libopenmpi-dev openmpi-bin"
+want="gcc make cmake ninja-build pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev libopenmpi-dev openmpi-bin"
 for group in "$@"; do
     case "$group" in
     build) ;;
