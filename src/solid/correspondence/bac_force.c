@@ -345,41 +345,6 @@ static inline __attribute__((always_inline)) void pairs_plane_stress(const PairV
         for (int64_t p = p0; p < p1; p++) v->Fb[c * v->np + p] = Fb[c * BAC_BLOCK + p - p0];
 }
 
-/* The pair passes below, each a function of its own inside the team's
- * region (orphaned `omp for`): inlined into one, they made a function GCC's
- * combiner took 22 s of this file's 46 s to compile (make test builds it
- * twice). */
-static __attribute__((noinline)) void pairs_unscaled(const PairView *v, int plane_stress,
-                                                     int given) {
-#pragma omp for schedule(static)
-    for (int64_t p = 0; p < v->np; p++)
-        pair_j2_2d(v, p, plane_stress, 0, 0, given, &v->state, p, v->Fb, v->np, p);
-}
-
-static inline __attribute__((always_inline)) void pairs_stress(const PairView *v, const int given) {
-#pragma omp for schedule(static)
-    for (int64_t b = 0; b < v->np; b += BAC_BLOCK)
-        pairs_plane_stress(v, b, b + BAC_BLOCK < v->np ? b + BAC_BLOCK : v->np, given);
-}
-static __attribute__((noinline)) void pairs_stress_given(const PairView *v) {
-    pairs_stress(v, 1);
-}
-static __attribute__((noinline)) void pairs_stress_formed(const PairView *v) {
-    pairs_stress(v, 0);
-}
-
-static inline __attribute__((always_inline)) void pairs_strain(const PairView *v, const int given) {
-#pragma omp for simd schedule(simd : static)
-    for (int64_t p = 0; p < v->np; p++)
-        pair_j2_2d(v, p, 0, 1, 0, given, &v->state, p, v->Fb, v->np, p);
-}
-static __attribute__((noinline)) void pairs_strain_given(const PairView *v) {
-    pairs_strain(v, 1);
-}
-static __attribute__((noinline)) void pairs_strain_formed(const PairView *v) {
-    pairs_strain(v, 0);
-}
-
 /* Per pair, the J2 P_b and state update (2D), in SIMD lanes across pairs
  * (each pair's arithmetic is its own, so the lanes give the scalar bits);
  * plane stress block by block (pairs_plane_stress). A system without
@@ -393,16 +358,28 @@ static void pairs_j2_2d(const BacSystem *s, const BacState *st, const double *co
 #pragma omp parallel if (np >= PARALLEL_MIN_ITEMS)
     {
         const PairView v = pair_view(s, st, u, F, Pb, todo);
-        if (!scaled)
-            pairs_unscaled(&v, plane_stress, given);
-        else if (plane_stress && given)
-            pairs_stress_given(&v);
-        else if (plane_stress)
-            pairs_stress_formed(&v);
-        else if (given)
-            pairs_strain_given(&v);
-        else
-            pairs_strain_formed(&v);
+        if (!scaled) {
+#pragma omp for schedule(static)
+            for (int64_t p = 0; p < np; p++)
+                pair_j2_2d(&v, p, plane_stress, 0, 0, given, &v.state, p, v.Fb, np, p);
+        } else if (plane_stress) {
+#pragma omp for schedule(static)
+            for (int64_t b = 0; b < np; b += BAC_BLOCK) {
+                const int64_t e = b + BAC_BLOCK < np ? b + BAC_BLOCK : np;
+                if (given)
+                    pairs_plane_stress(&v, b, e, 1);
+                else
+                    pairs_plane_stress(&v, b, e, 0);
+            }
+        } else if (given) {
+#pragma omp for simd schedule(simd : static)
+            for (int64_t p = 0; p < np; p++)
+                pair_j2_2d(&v, p, 0, 1, 0, 1, &v.state, p, v.Fb, np, p);
+        } else {
+#pragma omp for simd schedule(simd : static)
+            for (int64_t p = 0; p < np; p++)
+                pair_j2_2d(&v, p, 0, 1, 0, 0, &v.state, p, v.Fb, np, p);
+        }
     }
 }
 
