@@ -83,6 +83,14 @@ foreach(script ${cli_tests})
     set_tests_properties(cli.${topic} PROPERTIES LABELS "cli;${extra}" SKIP_RETURN_CODE 77
         ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=passive")
 endforeach()
+# The longest after mpi.run (60-85 s each in make test) start first: a fresh
+# build has no timings, and in declaration order cli.resume began late and
+# ran alone at the end of the release pass
+set_tests_properties(cli.golden cli.resume cli.mutations PROPERTIES COST 300)
+# ... and the sanitised pass's longest (12-25 s each there)
+set_tests_properties(cli.bad_input cli.report cli.cases_check cli.run unit.flow.pddo.step
+    unit.couple.penalty.gap unit.couple.penalty.coupling unit.flow.pddo.polar
+    unit.flow.iga.solver PROPERTIES COST 100)
 
 # The kernels (src/**/*_kernel.h) compiled as CUDA, compile only: no GPU is
 # needed, only nvcc; without it the test reports itself skipped.
