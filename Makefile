@@ -2,7 +2,7 @@
 # (scripts/deps.sh: Debian packages, as root) and builds with CMake.
 #
 #   make demo       set up, build, run the flagship case into out/
-#   make test       set up, build, run the whole test suite (ctest), 7-11 min on 2 cores
+#   make test       set up, build, run the whole test suite (ctest), 7-10 min on 2 cores
 #   make bench      benchmarks (never part of make test); results in bench/results/
 #   make validate   full-resolution paper cases and their plots (long)
 #   make format     clang-format every C file;  make tidy: clang-tidy
