@@ -16,7 +16,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 # Ninja (installed by scripts/deps.sh) packs the two cores better than
 # make's recursive Makefiles: the release build in 59 s against 78 s
-# (docs/PERFORMANCE.md, "make test"). A build directory keeps the generator
+# (docs/PERFORMANCE.md, "make test on 2 cores"). A build directory keeps the generator
 # it was configured with.
 GENERATOR  ?= Ninja
 NSPD        = $(BUILD)/nspd

@@ -31,7 +31,7 @@
 # validate` (mpi.run_more, MODE more, labelled slow; those layouts only,
 # nothing after them): together the 2, 3 and 4 ranks and the process grids
 # each case had in one test of 56 launches, 2 minutes of make test's 12
-# on 2 cores (docs/ARCHITECTURE.md, "Tests").
+# on 2 cores (docs/PERFORMANCE.md, "make test on 2 cores").
 #   usage: run.sh NSPD SOURCE_DIR MPIEXEC VTK_SAME [suite|more]
 set -u
 . "$2/tests/mpi/checks.sh"
