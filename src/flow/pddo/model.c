@@ -234,7 +234,7 @@ static int build(PddoFlow *f) {
         TRY(pddo_ops_check(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
     } else {
         TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
-                           &(PddoLattice){c->i, c->j, c->dx}));
+                           &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
         TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
         if (f->cfg.pressure_runs) TRY(pddo_ppe_use_runs(&f->ppe));
     }
@@ -558,6 +558,17 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
            "%.1f neighbours per node\n",
            (long long)c->n, (long long)f->physical, c->layers, cfg->cloud.horizon_factor,
            (double)c->first[c->n] / (double)c->n);
+    {
+        const PddoOps *ops = &f->ops;
+        const int64_t slices = pddo_ops_slices(ops);
+        int64_t turned = 0;
+        for (int64_t s = 0; s < slices; s++)
+            turned += ops->slice_tpl[s] >= 0 && ops->tpl_turned[ops->slice_tpl[s]];
+        APPEND("operators            %lld of %lld slices of %d nodes on %d templates (%lld of "
+               "them turned on polar rings), %.1f MB of weights in the rest\n",
+               (long long)ops->templated, (long long)slices, PDDO_LANES, ops->templates,
+               (long long)turned, 36e-6 * (double)ops->slice_first[slices]);
+    }
     APPEND("sides                left %s, right %s, bottom %s, top %s; wall ghosts %s; "
            "(rho/dt) div u on %s\n",
            KIND[c->side[0]], KIND[c->side[1]], KIND[c->side[2]], KIND[c->side[3]],

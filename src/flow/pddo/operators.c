@@ -67,16 +67,39 @@ typedef struct {
     double xc, yc, inv_delta;
     const PddoLattice *lattice;
     int32_t li, lj;
+    const PddoPolarPatch *patch; /* a turned node's patch (its ring q, angle t), or NULL */
+    int32_t q, t;
 } Centre;
 
 static Centre centre_at(const double *x, const double *y, double xc, double yc, double delta) {
     return (Centre){.x = x, .y = y, .xc = xc, .yc = yc, .inv_delta = 1.0 / delta, .li = INT32_MIN};
 }
 
+/* The patch whose ring holds node k and all of its members nbr[0 ..
+ * count), or NULL (then k's weights are not turned: operators.h). */
+static const PddoPolarPatch *turned_patch(const PddoLattice *lattice, int64_t k, const int32_t *nbr,
+                                          int64_t count) {
+    if (!lattice) return NULL;
+    for (int h = 0; h < lattice->patches; h++) {
+        const PddoPolarPatch *p = &lattice->patch[h];
+        const int64_t lo = p->first, hi = p->first + pddo_polar_count(p);
+        if (k < lo || k >= hi) continue;
+        for (int64_t m = 0; m < count; m++)
+            if (nbr[m] < lo || nbr[m] >= hi) return NULL;
+        return p;
+    }
+    return NULL;
+}
+
 static Centre centre_node(const double *x, const double *y, int64_t k, double delta,
-                          const PddoLattice *lattice) {
+                          const PddoLattice *lattice, const PddoPolarPatch *patch) {
     Centre c = centre_at(x, y, x[k], y[k], delta);
     if (lattice) c.lattice = lattice, c.li = lattice->i[k], c.lj = lattice->j[k];
+    if (patch) {
+        c.patch = patch;
+        c.q = (int32_t)((k - patch->first) / patch->ntheta);
+        c.t = (int32_t)((k - patch->first) % patch->ntheta);
+    }
     return c;
 }
 
@@ -84,6 +107,19 @@ static Centre centre_node(const double *x, const double *y, int64_t k, double de
  * nodes (the same bits for the same offset anywhere), else from the
  * coordinates. */
 static void offset(const Centre *c, int32_t j, double *s1, double *s2) {
+    if (c->patch) {
+        /* in the centre's frame, from the polar layout: the same bits for
+         * the same ring and angle difference at every angle */
+        const PddoPolarPatch *p = c->patch;
+        const int32_t n = p->ntheta, qj = (int32_t)((j - p->first) / n);
+        int32_t dt = (int32_t)((j - p->first) % n) - c->t;
+        if (dt > n / 2) dt -= n;
+        if (dt < -n / 2) dt += n;
+        const double a = dt * p->dtheta, r = pddo_polar_radius(p, c->q);
+        const double rj = pddo_polar_radius(p, qj);
+        *s1 = (rj * cos(a) - r) * c->inv_delta, *s2 = rj * sin(a) * c->inv_delta;
+        return;
+    }
     if (c->li != INT32_MIN && c->lattice->i[j] != INT32_MIN) {
         *s1 = (double)(c->lattice->i[j] - c->li) * c->lattice->dx * c->inv_delta;
         *s2 = (double)(c->lattice->j[j] - c->lj) * c->lattice->dx * c->inv_delta;
@@ -128,9 +164,14 @@ static void node_weights(PddoOps *ops, int64_t k, const double *x, const double 
     double p[SPD_SMALL_MAX] = {0}, scale[SPD_SMALL_MAX] = {0};
     const double inv_delta = 1.0 / delta, inv_area = inv_delta * inv_delta;
     const int64_t lo = ops->first[k], hi = ops->first[k + 1];
-    const Centre ctr = centre_node(x, y, k, delta, lattice);
+    const PddoPolarPatch *patch = turned_patch(lattice, k, ops->nbr + lo, hi - lo);
+    const Centre ctr = centre_node(x, y, k, delta, lattice, patch);
     *cond = shape_factor(ops->nbr + lo, hi - lo, &ctr, area, false, Lf, scale);
     if (!isfinite(*cond) || !weights) return;
+    if (patch) {
+        ops->turned[k] = 1;
+        pddo_polar_angle(patch, ctr.t, &ops->turn_c[k], &ops->turn_s[k]);
+    }
     /* b = diag(1, 1, 2, 2, 1) (Eq. 14c), then back to metres */
     const double b[TERMS] = {inv_delta, inv_delta, 2.0 * inv_area, 2.0 * inv_area, inv_area};
     for (int64_t m = lo; m < hi; m++) {
@@ -146,13 +187,14 @@ static void node_weights(PddoOps *ops, int64_t k, const double *x, const double 
         ops->w[PDDO_D_Y][at] = b[1] * wa * z[1];
         ops->w[PDDO_LAP][at] = b[2] * wa * z[2] + b[3] * wa * z[3];
         ops->w[PDDO_D_XY][at] = b[4] * wa * z[4];
+        if (patch) ops->dif[at] = b[2] * wa * z[2] - b[3] * wa * z[3];
     }
 }
 
 /* The slices' layout (operators.h): each slice as many rows as its
  * largest family, the members' nodes placed, padding with the slot's own
  * node (the last node for the lanes past it) and weight 0. */
-static int slices_build(PddoOps *ops) {
+static int slices_build(PddoOps *ops, bool patches) {
     const int64_t n = ops->n, slices = pddo_ops_slices(ops);
     TRY(nspd_alloc(&ops->slice_first, (size_t)slices + 1, sizeof(int64_t)));
     for (int64_t s = 0; s < slices; s++) {
@@ -165,6 +207,12 @@ static int slices_build(PddoOps *ops) {
     const size_t slots = (size_t)ops->slice_first[slices] + 1;
     TRY(nspd_alloc(&ops->slot_nbr, slots, sizeof(int32_t)));
     for (int op = 0; op < PDDO_OPS; op++) TRY(nspd_alloc(&ops->w[op], slots, sizeof(double)));
+    /* every node unturned (angle 0) until node_weights turns it */
+    TRY(nspd_alloc(&ops->turn_c, (size_t)(slices * PDDO_LANES), sizeof(double)));
+    TRY(nspd_alloc(&ops->turn_s, (size_t)(slices * PDDO_LANES), sizeof(double)));
+    TRY(nspd_alloc(&ops->turned, (size_t)(slices * PDDO_LANES), 1));
+    for (int64_t k = 0; k < slices * PDDO_LANES; k++) ops->turn_c[k] = 1.0;
+    if (patches) TRY(nspd_alloc(&ops->dif, slots, sizeof(double)));
     for (int64_t s = 0; s < slices; s++) {
         const int64_t rows = (ops->slice_first[s + 1] - ops->slice_first[s]) / PDDO_LANES;
         for (int l = 0; l < PDDO_LANES; l++) {
@@ -178,36 +226,47 @@ static int slices_build(PddoOps *ops) {
     return NSPD_OK;
 }
 
+/* g^20 - g^02 of slot at (turned nodes only; 0 else). */
+static double slot_dif(const PddoOps *ops, int64_t at) {
+    return ops->dif ? ops->dif[at] : 0.0;
+}
+
 /* Whether slice s (base: its first slot, rows of them) matches template
- * t: the same rows, offsets and weights, bit for bit. */
+ * t: the same rows, offsets and weights, bit for bit, both turned or not. */
 static bool template_matches(const PddoOps *ops, int32_t t, int64_t s, int64_t base, int64_t rows) {
     const int64_t tf = ops->tpl_first[t];
     if (ops->tpl_first[t + 1] - tf != rows) return false;
+    if (ops->tpl_turned[t] != ops->turned[s * PDDO_LANES]) return false;
     for (int64_t r = 0; r < rows; r++) {
-        if (ops->tpl_off[tf + r] != ops->slot_nbr[base + r * PDDO_LANES] - s * PDDO_LANES)
-            return false;
+        const int64_t at = base + r * PDDO_LANES;
+        if (ops->tpl_off[tf + r] != ops->slot_nbr[at] - s * PDDO_LANES) return false;
         for (int op = 0; op < PDDO_OPS; op++)
-            if (memcmp(&ops->tpl_w[op][tf + r], &ops->w[op][base + r * PDDO_LANES],
-                       sizeof(double)) != 0)
-                return false;
+            if (memcmp(&ops->tpl_w[op][tf + r], &ops->w[op][at], sizeof(double)) != 0) return false;
+        const double dif = slot_dif(ops, at);
+        if (memcmp(&ops->tpl_dif[tf + r], &dif, sizeof(double)) != 0) return false;
     }
     return true;
 }
 
 /* Whether slice s can be a template's: every lane a node with the same
- * number of members, member r of lane l node s L + l + off[r], and the
- * weights of a row the same bits in every lane. */
+ * number of members, all turned or none, member r of lane l node s L + l
+ * + off[r], and the weights of a row the same bits in every lane (turned:
+ * in the lanes' own frames). */
 static bool slice_uniform(const PddoOps *ops, int64_t s, int64_t base, int64_t rows) {
     enum { L = PDDO_LANES };
     if ((s + 1) * L > ops->n) return false;
     for (int l = 0; l < L; l++)
-        if (ops->first[s * L + l + 1] - ops->first[s * L + l] != rows) return false;
+        if (ops->first[s * L + l + 1] - ops->first[s * L + l] != rows ||
+            ops->turned[s * L + l] != ops->turned[s * L])
+            return false;
     for (int64_t r = 0; r < rows; r++) {
         const int64_t at = base + r * L;
         for (int l = 1; l < L; l++) {
             if (ops->slot_nbr[at + l] != ops->slot_nbr[at] + l) return false;
             for (int op = 0; op < PDDO_OPS; op++)
                 if (memcmp(&ops->w[op][at + l], &ops->w[op][at], sizeof(double)) != 0) return false;
+            const double a = slot_dif(ops, at + l), b = slot_dif(ops, at);
+            if (memcmp(&a, &b, sizeof(double)) != 0) return false;
         }
     }
     return true;
@@ -222,6 +281,8 @@ static uint64_t slice_hash(const PddoOps *ops, int64_t s, int64_t base, int64_t 
         hash64_add(&h, &off, sizeof off);
         for (int op = 0; op < PDDO_OPS; op++)
             hash64_add(&h, &ops->w[op][base + r * PDDO_LANES], sizeof(double));
+        const double dif = slot_dif(ops, base + r * PDDO_LANES);
+        hash64_add(&h, &dif, sizeof dif);
     }
     return hash64_final(&h);
 }
@@ -236,13 +297,37 @@ static int32_t template_of(PddoOps *ops, int32_t *table, int64_t size, int64_t s
         if (template_matches(ops, table[at], s, base, rows)) return table[at];
     const int32_t t = ops->templates++;
     const int64_t tf = ops->tpl_first[t];
+    ops->tpl_turned[t] = ops->turned[s * L];
     for (int64_t r = 0; r < rows; r++) {
         ops->tpl_off[tf + r] = (int32_t)(ops->slot_nbr[base + r * L] - s * L);
         for (int op = 0; op < PDDO_OPS; op++) ops->tpl_w[op][tf + r] = ops->w[op][base + r * L];
+        ops->tpl_dif[tf + r] = slot_dif(ops, base + r * L);
     }
     ops->tpl_first[t + 1] = tf + rows;
     table[at] = t;
     return t;
+}
+
+/* The turned nodes of the slices that keep their own slots: their weights
+ * turned once, as pddo_ops_turned turns a template's row. */
+static void turn_own_slots(PddoOps *ops) {
+    const int64_t slices = pddo_ops_slices(ops);
+    for (int64_t s = 0; s < slices; s++) {
+        if (ops->slice_tpl[s] >= 0) continue;
+        for (int l = 0; l < PDDO_LANES && s * PDDO_LANES + l < ops->n; l++) {
+            const int64_t k = s * PDDO_LANES + l;
+            if (!ops->turned[k]) continue;
+            const double c = ops->turn_c[k], sn = ops->turn_s[k];
+            for (int64_t m = ops->first[k]; m < ops->first[k + 1]; m++) {
+                const int64_t at = pddo_ops_slot(ops, k, m);
+                const double g10 = ops->w[PDDO_D_X][at], g01 = ops->w[PDDO_D_Y][at];
+                const double g11 = ops->w[PDDO_D_XY][at];
+                ops->w[PDDO_D_X][at] = c * g10 - sn * g01;
+                ops->w[PDDO_D_Y][at] = sn * g10 + c * g01;
+                ops->w[PDDO_D_XY][at] = (c * sn) * ops->dif[at] + (c * c - sn * sn) * g11;
+            }
+        }
+    }
 }
 
 /* The templates (operators.h): every uniform slice takes the template it
@@ -267,6 +352,9 @@ static int templates_build(PddoOps *ops) {
         status = nspd_alloc(&ops->tpl_first, (size_t)uniform + 1, sizeof(int64_t));
     if (status == NSPD_OK)
         status = nspd_alloc(&ops->tpl_off, (size_t)rows_room + 1, sizeof(int32_t));
+    if (status == NSPD_OK)
+        status = nspd_alloc(&ops->tpl_dif, (size_t)rows_room + 1, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&ops->tpl_turned, (size_t)uniform + 1, 1);
     for (int op = 0; op < PDDO_OPS && status == NSPD_OK; op++)
         status = nspd_alloc(&ops->tpl_w[op], (size_t)rows_room + 1, sizeof(double));
     if (status != NSPD_OK) {
@@ -285,6 +373,8 @@ static int templates_build(PddoOps *ops) {
         }
     }
     nspd_free(&table);
+    turn_own_slots(ops);
+    nspd_free(&ops->dif);
     /* pack the slots of the slices without a template, in order (each
      * moves down or stays, so in place), then give back the rest */
     const size_t slots = (size_t)ops->slice_first[slices] + 1;
@@ -304,6 +394,7 @@ static int templates_build(PddoOps *ops) {
         TRY(nspd_realloc(&ops->w[op], slots, (size_t)kept + 1, sizeof(double)));
     const int64_t used = ops->tpl_first[ops->templates];
     TRY(nspd_realloc(&ops->tpl_off, (size_t)rows_room + 1, (size_t)used + 1, sizeof(int32_t)));
+    TRY(nspd_realloc(&ops->tpl_dif, (size_t)rows_room + 1, (size_t)used + 1, sizeof(double)));
     for (int op = 0; op < PDDO_OPS; op++)
         TRY(nspd_realloc(&ops->tpl_w[op], (size_t)rows_room + 1, (size_t)used + 1, sizeof(double)));
     TRY(nspd_alloc(&ops->cost_before, (size_t)slices + 1, sizeof(int64_t)));
@@ -333,7 +424,7 @@ static int build(PddoOps *ops, int64_t n, const double *x, const double *y, cons
         return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO operators: horizon %g m; expected > 0", delta);
     ops->n = n, ops->first = first, ops->nbr = nbr;
     if (weights) {
-        const int status = slices_build(ops);
+        const int status = slices_build(ops, lattice && lattice->patches > 0);
         if (status != NSPD_OK) {
             pddo_ops_free(ops);
             return status;
@@ -389,6 +480,17 @@ static inline __attribute__((always_inline)) void at_many(const PddoOps *ops, in
     double fk[PDDO_FUSED_MAX];
     /* a template's row r, or the slot of member r (stride PDDO_LANES) */
     const int32_t t = ops->slice_tpl[k / PDDO_LANES];
+    if (t >= 0 && ops->tpl_turned[t]) {
+        const int64_t tf = ops->tpl_first[t];
+        const double c = ops->turn_c[k], s = ops->turn_s[k];
+        for (int o = 0; o < count; o++) fk[o] = f[o][k], sum[o] = 0.0;
+        for (int64_t m = 0; m < ops->first[k + 1] - ops->first[k]; m++) {
+            const int32_t j = ops->nbr[ops->first[k] + m];
+            for (int o = 0; o < count; o++)
+                sum[o] += pddo_ops_turned(ops, op[o], tf + m, c, s) * (f[o][j] - fk[o]);
+        }
+        return;
+    }
     const int64_t at = t >= 0 ? ops->tpl_first[t] : pddo_ops_slot(ops, k, ops->first[k]);
     const int64_t stride = t >= 0 ? 1 : PDDO_LANES;
     for (int o = 0; o < count; o++)
@@ -403,6 +505,12 @@ static inline __attribute__((always_inline)) void at_many(const PddoOps *ops, in
  * compiler keeps it in registers, where arrays of lanes it spilled to
  * the stack between the rows). */
 typedef double Lanes __attribute__((vector_size(PDDO_LANES * sizeof(double))));
+
+static inline Lanes lanes_set(double v) {
+    Lanes l;
+    for (int q = 0; q < PDDO_LANES; q++) l[q] = v;
+    return l;
+}
 
 static inline Lanes lanes_load(const double *p) {
     Lanes v;
@@ -432,6 +540,39 @@ static inline __attribute__((always_inline)) void slice_sums(const PddoOps *ops,
         /* a template's slice: member r of every lane one offset away, its
          * weight the same in every lane (broadcast: the same products) */
         const int64_t tf = ops->tpl_first[t], rows = ops->tpl_first[t + 1] - tf;
+        if (ops->tpl_turned[t]) {
+            /* each lane turns the row's weights by its node's angle:
+             * pddo_ops_turned's products, so at_many's bits */
+            const Lanes c = lanes_load(ops->turn_c + s * L), sn = lanes_load(ops->turn_s + s * L);
+            const Lanes cs = c * sn, cc = c * c - sn * sn;
+            const double *const *w = (const double *const *)ops->tpl_w;
+            for (int64_t r = 0; r < rows; r++) {
+                const int64_t j0 = s * L + ops->tpl_off[tf + r];
+                Lanes d[PDDO_FUSED_MAX];
+                for (int q = 0; q < fields; q++) d[q] = lanes_load(F[q] + j0) - fk[q];
+                const double g10 = w[PDDO_D_X][tf + r], g01 = w[PDDO_D_Y][tf + r];
+                for (int o = 0; o < count; o++) {
+                    Lanes wl;
+                    switch (op[o]) {
+                    case PDDO_D_X:
+                        wl = c * g10 - sn * g01;
+                        break;
+                    case PDDO_D_Y:
+                        wl = sn * g10 + c * g01;
+                        break;
+                    case PDDO_D_XY:
+                        wl = cs * ops->tpl_dif[tf + r] + cc * w[PDDO_D_XY][tf + r];
+                        break;
+                    default:
+                        wl = lanes_set(w[op[o]][tf + r]);
+                        break;
+                    }
+                    acc[o] += wl * d[of[o]];
+                }
+            }
+            for (int o = 0; o < count; o++) memcpy(sum + o * L, &acc[o], sizeof acc[o]);
+            return;
+        }
         for (int64_t r = 0; r < rows; r++) {
             const int64_t j0 = s * L + ops->tpl_off[tf + r];
             Lanes d[PDDO_FUSED_MAX];
@@ -484,13 +625,23 @@ static void slice_counted(const PddoOps *ops, int count, const PddoOp *op, const
     const double *F[PDDO_FUSED_MAX];
     int of[PDDO_FUSED_MAX];
     const int fields = distinct_fields(count, f, F, of);
-    /* the maps as constants too: an index known only at run time keeps
-     * the differences in memory */
+    /* the maps and the step's operators as constants too: an index known
+     * only at run time keeps the differences in memory, and an operator
+     * known only at run time leaves a turned row's choice in the loop */
     static const int step6[6] = {0, 0, 1, 1, 0, 1}, each[4] = {0, 1, 2, 3}, one[2] = {0, 0};
-    if (fields == 2 && count == 6 && !memcmp(of, step6, sizeof step6))
+    static const PddoOp velocity[6] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y, PDDO_LAP, PDDO_LAP};
+    static const PddoOp gradients[4] = {PDDO_D_X, PDDO_D_Y, PDDO_D_X, PDDO_D_Y};
+    if (fields == 2 && count == 6 && !memcmp(of, step6, sizeof step6) &&
+        !memcmp(op, velocity, sizeof velocity))
+        slice_sums(ops, 2, F, 6, velocity, step6, s, sum);
+    else if (fields == 2 && count == 6 && !memcmp(of, step6, sizeof step6))
         slice_sums(ops, 2, F, 6, op, step6, s, sum);
+    else if (fields == 4 && count == 4 && !memcmp(op, gradients, sizeof gradients))
+        slice_sums(ops, 4, F, 4, gradients, each, s, sum);
     else if (fields == 4 && count == 4)
         slice_sums(ops, 4, F, 4, op, each, s, sum);
+    else if (fields == 1 && count == 2 && !memcmp(op, gradients, 2 * sizeof *op))
+        slice_sums(ops, 1, F, 2, gradients, one, s, sum);
     else if (fields == 1 && count == 2)
         slice_sums(ops, 1, F, 2, op, one, s, sum);
     else if (fields == 1 && count == 1)
@@ -543,6 +694,12 @@ void pddo_ops_free(PddoOps *ops) {
     nspd_free(&ops->cost_before);
     nspd_free(&ops->tpl_first);
     nspd_free(&ops->tpl_off);
+    nspd_free(&ops->tpl_dif);
+    nspd_free(&ops->tpl_turned);
+    nspd_free(&ops->turn_c);
+    nspd_free(&ops->turn_s);
+    nspd_free(&ops->turned);
+    nspd_free(&ops->dif);
     nspd_free(&ops->slot_nbr);
     memset(ops, 0, sizeof *ops);
 }

@@ -35,6 +35,8 @@
 #ifndef NSPD_FLOW_PDDO_OPERATORS_H
 #define NSPD_FLOW_PDDO_OPERATORS_H
 
+#include "flow/pddo/polar.h"
+
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -63,7 +65,21 @@ typedef enum {
  * offset and one weight of each operator per row, and its sums broadcast
  * the row's weight across the lanes: the same products, so the same bits,
  * while the step streams no weights or neighbours there (docs/
- * PERFORMANCE.md: on the paper's cylinder most of the operators' bytes). */
+ * PERFORMANCE.md: on the paper's cylinder most of the operators' bytes).
+ *
+ * Turned templates: on a polar patch's ring (polar.h) a node's family,
+ * seen in its own frame (xi along the radius, eta along the ring), is the
+ * same at every angle. A ring node whose members are all of its patch
+ * takes its weights in that frame, from the exact polar offsets (g^10,
+ * g^01, the Laplacian, g^11 and g^20 - g^02), and turns them by its angle
+ * (c, s) whenever they are read:
+ *     d/dx = c g^10 - s g^01,   d/dy = s g^10 + c g^01,
+ *     d2/dxdy = (c s) (g^20 - g^02) + (c c - s s) g^11,
+ * the Laplacian unturned. So 8 consecutive nodes of one ring share one
+ * template as a lattice slice does, each lane turning the row's weights
+ * by its own angle: the patch's slices stream no weights either. The
+ * slices that cross a ring's end, or the angle's wrap within their
+ * families, keep their own slots, turned once when built. */
 enum { PDDO_LANES = 8 };
 
 typedef struct {
@@ -78,6 +94,12 @@ typedef struct {
     int64_t *tpl_first;
     int32_t *tpl_off;        /* per template row, the member's offset from the lane's node */
     double *tpl_w[PDDO_OPS]; /* per template row, the weight of every lane */
+    uint8_t *tpl_turned;     /* per template: 1 when its weights are in the nodes' polar frame */
+    double *tpl_dif;         /* per template row: g^20 - g^02 (turned templates; else 0) */
+    double *turn_c, *turn_s; /* per node (padded to whole slices): its angle's cos and sin on a
+                                polar patch whose weights are turned, else 1 and 0 */
+    uint8_t *turned;         /* per node (padded): 1 when its weights are turned */
+    double *dif;             /* while building: per slot, g^20 - g^02 of a turned node */
     int64_t templated;       /* slices that use a template */
     int64_t *cost_before;    /* per slice, the cost of the slices before it; the total last */
     double cond_max;         /* largest condition number met (the rule above) */
@@ -87,10 +109,14 @@ typedef struct {
 /* The nodes' lattice indices, so that xi between two lattice nodes is
  * taken from them, (i_j - i_k) dx, the same bits wherever the pair lies
  * (from the rounded coordinates x_j - x_k differs by an ulp from place
- * to place, and no two slices' weights would be the same bits). */
+ * to place, and no two slices' weights would be the same bits), and the
+ * polar patches, whose ring nodes take their weights in their own frame
+ * (turned templates, above). */
 typedef struct {
     const int32_t *i, *j; /* INT32_MIN: not a lattice node (a polar ring) */
     double dx;
+    const PddoPolarPatch *patch; /* the polar patches (their nodes: polar.h), or NULL */
+    int patches;
 } PddoLattice;
 
 /* The slot of member m of node k, in a slice that keeps its own slots. */
@@ -98,11 +124,28 @@ static inline int64_t pddo_ops_slot(const PddoOps *ops, int64_t k, int64_t m) {
     return ops->slice_first[k / PDDO_LANES] + (m - ops->first[k]) * PDDO_LANES + k % PDDO_LANES;
 }
 
+/* Template row r's weight of op turned by (c, s) (turned templates, above). */
+static inline double pddo_ops_turned(const PddoOps *ops, PddoOp op, int64_t r, double c, double s) {
+    const double *const *w = (const double *const *)ops->tpl_w;
+    switch (op) {
+    case PDDO_D_X:
+        return c * w[PDDO_D_X][r] - s * w[PDDO_D_Y][r];
+    case PDDO_D_Y:
+        return s * w[PDDO_D_X][r] + c * w[PDDO_D_Y][r];
+    case PDDO_D_XY:
+        return (c * s) * ops->tpl_dif[r] + (c * c - s * s) * w[PDDO_D_XY][r];
+    default:
+        return w[op][r];
+    }
+}
+
 /* The weight of member m of node k for operator op. */
 static inline double pddo_ops_weight(const PddoOps *ops, PddoOp op, int64_t k, int64_t m) {
     const int32_t t = ops->slice_tpl[k / PDDO_LANES];
-    if (t >= 0) return ops->tpl_w[op][ops->tpl_first[t] + (m - ops->first[k])];
-    return ops->w[op][pddo_ops_slot(ops, k, m)];
+    if (t < 0) return ops->w[op][pddo_ops_slot(ops, k, m)];
+    const int64_t r = ops->tpl_first[t] + (m - ops->first[k]);
+    return ops->tpl_turned[t] ? pddo_ops_turned(ops, op, r, ops->turn_c[k], ops->turn_s[k])
+                              : ops->tpl_w[op][r];
 }
 
 static inline int64_t pddo_ops_slices(const PddoOps *ops) {
@@ -116,10 +159,11 @@ enum { PDDO_OWN_ROW_COST = 3 };
 
 /* Slices [*lo, *hi) of thread t of nt: contiguous ranges of about equal
  * cost (cost_before), so that the threads of a loop over slices finish
- * together: on the paper's cylinder the polar patch's slices, which keep
- * their own slots, are the last third, and equal counts of slices left one
- * thread waiting for the other (docs/PERFORMANCE.md). Each slice is
- * computed alone, so the bits do not depend on the split. */
+ * together: on the paper's cylinder the polar patch's slices, the last
+ * third, kept their own slots before the turned templates, and equal
+ * counts of slices left one thread waiting for the other (docs/
+ * PERFORMANCE.md). Each slice is computed alone, so the bits do not
+ * depend on the split. */
 void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi);
 
 /* Builds the weights of the n nodes at (x, y) with areas `area` (only their

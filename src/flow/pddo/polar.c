@@ -53,16 +53,22 @@ double pddo_polar_radius(const PddoPolarPatch *p, int q) {
     return p->radius + (q - p->rings_inside) * p->dr;
 }
 
-void pddo_polar_node(const PddoPolarPatch *p, int q, int t, double *x, double *y, double *area) {
-    const double r = pddo_polar_radius(p, q);
+void pddo_polar_angle(const PddoPolarPatch *p, int t, double *c, double *s) {
     /* angles past pi from their mirror t' = ntheta - t: the same cos, sin negated */
     const int half = p->ntheta / 2;
     const int tt = t <= half ? t : p->ntheta - t;
     const double a = tt * p->dtheta;
     /* 0 and pi lie on the line: their sine is exactly 0 (sin(pi) is not) */
     const double sa = tt == 0 || tt == half ? 0.0 : sin(a);
-    const double s = t <= half ? sa : -sa;
-    *x = p->x + r * cos(a);
+    *c = cos(a);
+    *s = t <= half ? sa : -sa;
+}
+
+void pddo_polar_node(const PddoPolarPatch *p, int q, int t, double *x, double *y, double *area) {
+    const double r = pddo_polar_radius(p, q);
+    double c, s;
+    pddo_polar_angle(p, t, &c, &s);
+    *x = p->x + r * c;
     *y = p->y + r * s;
     *area = r * p->dr * p->dtheta;
 }

@@ -71,6 +71,11 @@ int pddo_polar_layout(PddoPolarPatch *patch, double x, double y, double radius,
 /* Radius of ring q, m. */
 double pddo_polar_radius(const PddoPolarPatch *patch, int q);
 
+/* cos and sin of the angle of index t (exactly mirrored about the
+ * centre's horizontal line between t and ntheta - t: the same cos, sin
+ * negated). */
+void pddo_polar_angle(const PddoPolarPatch *patch, int t, double *c, double *s);
+
 /* Position and area of the node of ring q at angle index t (exactly
  * mirrored about the centre's horizontal line between t and ntheta - t). */
 void pddo_polar_node(const PddoPolarPatch *patch, int q, int t, double *x, double *y, double *area);
