@@ -390,6 +390,23 @@ static void square_with_and_without_lattice(PddoCloud *c, PddoOps *ops, PddoOps 
     assert_ok(pddo_ops_build(plain, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta, NULL));
 }
 
+/* The largest difference of any weight of ops from plain's on cloud c's
+ * families, and in *big the largest of plain's weights. */
+static double weights_apart(const PddoOps *ops, const PddoOps *plain, const PddoCloud *c,
+                            double *big) {
+    double diff = 0.0;
+    *big = 0.0;
+    for (int op = 0; op < PDDO_OPS; op++)
+        for (int64_t k = 0; k < c->n; k++)
+            for (int64_t m = c->first[k]; m < c->first[k + 1]; m++) {
+                const double a = pddo_ops_weight(ops, (PddoOp)op, k, m);
+                const double b = pddo_ops_weight(plain, (PddoOp)op, k, m);
+                *big = fmax(*big, fabs(b));
+                diff = fmax(diff, fabs(a - b));
+            }
+    return diff;
+}
+
 /* Templates (operators.h) on a lattice cloud: most slices
  * share one, each weight is the one the node's own family gives (xi from
  * the coordinates: the same to round-off; a slice given the wrong
@@ -404,15 +421,8 @@ static void test_templates(void **state) {
     PddoOps ops = {0}, plain = {0};
     square_with_and_without_lattice(&c, &ops, &plain);
     const int64_t slices = pddo_ops_slices(&ops);
-    double big = 0.0, diff = 0.0;
-    for (int op = 0; op < PDDO_OPS; op++)
-        for (int64_t k = 0; k < c.n; k++)
-            for (int64_t m = c.first[k]; m < c.first[k + 1]; m++) {
-                const double a = pddo_ops_weight(&ops, (PddoOp)op, k, m);
-                const double b = pddo_ops_weight(&plain, (PddoOp)op, k, m);
-                big = fmax(big, fabs(b));
-                diff = fmax(diff, fabs(a - b));
-            }
+    double big = 0.0;
+    const double diff = weights_apart(&ops, &plain, &c, &big);
     printf("templates: %lld of %lld slices in %d templates; weights within %.2e of the largest "
            "(%.3g)\n",
            (long long)ops.templated, (long long)slices, ops.templates, diff / big, big);
@@ -459,15 +469,8 @@ static void test_turned_templates(void **state) {
     int64_t turned = 0;
     for (int64_t sl = 0; sl < slices; sl++)
         turned += ops.slice_tpl[sl] >= 0 && ops.tpl_turned[ops.slice_tpl[sl]];
-    double big = 0.0, diff = 0.0;
-    for (int op = 0; op < PDDO_OPS; op++)
-        for (int64_t k = 0; k < c.n; k++)
-            for (int64_t m = c.first[k]; m < c.first[k + 1]; m++) {
-                const double a = pddo_ops_weight(&ops, (PddoOp)op, k, m);
-                const double b = pddo_ops_weight(&plain, (PddoOp)op, k, m);
-                big = fmax(big, fabs(b));
-                diff = fmax(diff, fabs(a - b));
-            }
+    double big = 0.0;
+    const double diff = weights_apart(&ops, &plain, &c, &big);
     printf("turned templates: %lld of %lld slices on templates, %lld turned of the patch's %lld; "
            "weights within %.2e of the largest (%.3g)\n",
            (long long)ops.templated, (long long)slices, (long long)turned, (long long)ring_slices,
