@@ -14,6 +14,7 @@ enum { T_WALL, T_LID, T_INLET, T_OUTLET, T_PERIODIC };
 static const char *const PROFILES[] = {"uniform", "parabolic", NULL};
 static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const DIVERGENCE_TERM[] = {"paper", "updated", NULL};
+static const char *const WALL_PRESSURE[] = {"zero_gradient", "momentum", NULL};
 static const char *const PRESSURE_SOLVES[] = {"umfpack", "runs", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
@@ -329,6 +330,10 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     TRY(cfg_check_range(
         flow, "divergence_time", c->step.divergence_time, 0.0, 1e30,
         "tau of the PPE's (rho/tau) div u in s, at least dt; 0 for dt (the paper)"));
+    int wall_pressure;
+    TRY(cfg_opt_enum(flow, "wall_pressure", WALL_PRESSURE, PDDO_WALL_PRESSURE_ZERO_GRADIENT,
+                     &wall_pressure));
+    c->step.wall_pressure = (PddoWallPressure)wall_pressure;
     int solve;
     TRY(cfg_opt_enum(flow, "pressure_solve", PRESSURE_SOLVES, 1, &solve)); /* runs */
     c->pressure_runs = solve == 1;

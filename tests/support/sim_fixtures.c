@@ -62,3 +62,12 @@ double fixture_coupling_summary(Sim *sim, const char *name) {
     if (!it) fail_msg("the coupling reports no '%s'", name);
     return it->kind == REPORT_INT ? (double)it->count : it->real;
 }
+
+double fixture_flow_history(const Sim *sim, const char *name) {
+    static Report row; /* large for the stack of a test; tests are single-threaded */
+    report_clear(&row);
+    flow_history(sim->flow, &row);
+    const ReportItem *it = report_find(&row, name);
+    if (!it) fail_msg("the flow has no history column '%s'", name);
+    return it->real;
+}

@@ -32,4 +32,7 @@ void fixture_flow_state_at(Sim *sim, double x, double y, double out[5]);
 /* The value of summary key `name` of the coupling (fails if absent). */
 double fixture_coupling_summary(Sim *sim, const char *name);
 
+/* The value of history column `name` of the flow now (fails if absent). */
+double fixture_flow_history(const Sim *sim, const char *name);
+
 #endif

@@ -35,6 +35,7 @@
 #define NSPD_FLOW_PDDO_STEP_H
 
 #include "flow/pddo/cloud.h"
+#include "flow/pddo/forces.h"
 #include "flow/pddo/operators.h"
 #include "flow/pddo/ppe.h"
 
@@ -66,6 +67,27 @@ typedef enum {
                                middle */
 } PddoInletProfile;
 
+/* The pressure at walls and bodies. The paper's images p_g = p(image)
+ * make dp/dn = 0 there, where a no-slip wall has dp/dn = mu n . lap u, and
+ * its PPE source takes rho F = -rho u.grad u + mu lap u on the prescribed
+ * and fictitious members of a family, where at a steady state the updated
+ * nodes have G p instead. Both leave a steady flow a divergence next to the
+ * wall that does not fall with the spacing at a fixed tau (docs/
+ * VALIDATION.md: 5.1 to 5.6 per s at the cylinder's front, dx 0.1 to
+ * 0.025 m), and with it forces that depend on tau and converge at an order
+ * of 0.57. */
+typedef enum {
+    PDDO_WALL_PRESSURE_ZERO_GRADIENT = 0, /* the paper (Eqs. 56, 69) */
+    PDDO_WALL_PRESSURE_MOMENTUM,          /* each polar body's fictitious pressures from the
+                                             momentum equation's dp/dr = -mu d(omega)/ds on its
+                                             wall ring (omega from the fluid-side operators,
+                                             d/ds centred along the ring), and the PPE source's
+                                             prescribed and fictitious nodes taking the last
+                                             step's G p in place of rho F, so that a steady
+                                             state's divergence is (tau/rho) (L - D G) p alone;
+                                             the rectangle's sides keep dp/dn = 0 */
+} PddoWallPressure;
+
 typedef struct {
     double rho, mu;            /* kg/m^3, Pa s */
     double dt;                 /* s */
@@ -84,6 +106,7 @@ typedef struct {
      * (docs/VALIDATION.md), with a fixed tau they do not depend on dt at
      * all. At least dt (1 - dt/tau > -1 needs tau > dt/2). */
     double divergence_time;
+    PddoWallPressure wall_pressure;
     double force_x, force_y; /* uniform body acceleration, m/s^2 (divergence-free, so
                                 Eq. 33 is unchanged) */
     double spin_speed;       /* a start-up seed: every polar body's wall turns counterclockwise
@@ -98,13 +121,21 @@ typedef struct {
     const PddoOps *ops;
     PddoPpe *ppe;
     PddoStepParams par;
-    double *u, *v, *p;       /* the state, n each (p of the last step) */
-    uint8_t *rule;           /* PDDO_VEL_* per node */
-    int32_t *source;         /* COPY / PERIODIC / ANTI: the node read; else -1 */
-    double *fix_u, *fix_v;   /* FIXED: the values; ANTI: the wall velocity */
-    double *scratch[9];      /* ux, uy, vx, vy, lu, lv, d1, d2, r */
-    const double *image_rhs; /* NULL, or n: the right-hand side of each fictitious node's
-                                pressure row p_g - s p_image (a Neumann datum; borrowed) */
+    double *u, *v, *p;     /* the state, n each (p of the last step) */
+    uint8_t *rule;         /* PDDO_VEL_* per node */
+    int32_t *source;       /* COPY / PERIODIC / ANTI: the node read; else -1 */
+    double *fix_u, *fix_v; /* FIXED: the values; ANTI: the wall velocity */
+    double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
+    double *image_rhs;     /* NULL, or n: the right-hand side of each fictitious node's pressure
+                              row p_g - s p_image (PDDO_WALL_PRESSURE_MOMENTUM: the bodies'
+                              Neumann data, else 0) */
+    /* PDDO_WALL_PRESSURE_MOMENTUM: each polar patch's fluid-side operators
+     * and wall vorticity, and the nodes whose velocity is prescribed (not
+     * periodic copies), ascending */
+    PddoForces *wall;
+    double *omega;
+    int64_t *held;
+    int64_t nheld;
     double time;
     bool spinning; /* the bodies' walls turn now (spin_speed, spin_until) */
     int64_t steps;

@@ -25,18 +25,6 @@
 
 static const char *const CASE = "cylinders_tandem_re10.yaml";
 
-/* The value of history column `name` of the flow now (fails if absent). */
-static double history_value(const Flow *flow, const char *name) {
-    Report *row = calloc(1, sizeof *row);
-    assert_non_null(row);
-    flow_history(flow, row);
-    const ReportItem *it = report_find(row, name);
-    if (!it) fail_msg("no history column %s", name);
-    const double v = it->real;
-    free(row);
-    return v;
-}
-
 /* Side by side about y = 4 in a 15 m x 8 m channel (dx 0.2, patches to
  * 1 m), 50 steps of 2e-3 s from rest; probes at (6.1, 2.05) and
  * (6.1, 5.95), between nodes.
@@ -64,10 +52,10 @@ static void test_mirror_symmetry(void **state) {
     Sim sim;
     fixture_sim(CASE, sets, sizeof sets / sizeof *sets, &sim);
     assert_ok(sim_advance(&sim, 50));
-    const double d0 = history_value(sim.flow, "drag_n"),
-                 d1 = history_value(sim.flow, "body1_drag_n"),
-                 l0 = history_value(sim.flow, "lift_n"),
-                 l1 = history_value(sim.flow, "body1_lift_n");
+    const double d0 = fixture_flow_history(&sim, "drag_n"),
+                 d1 = fixture_flow_history(&sim, "body1_drag_n"),
+                 l0 = fixture_flow_history(&sim, "lift_n"),
+                 l1 = fixture_flow_history(&sim, "body1_lift_n");
     double a[5], b[5];
     flow_probe_state(sim.flow, sim.probes[0].point, a);
     flow_probe_state(sim.flow, sim.probes[1].point, b);
@@ -112,13 +100,13 @@ static void test_spin_seed(void **state) {
         if (seeded) {
             flow_probe_state(sim.flow, sim.probes[0].point, top_during);
             printf("spinning, 3 steps: top node u %.6g v %.3g m/s, lift %.6g N/m\n", top_during[1],
-                   top_during[2], history_value(sim.flow, "lift_n"));
-            assert_true(history_value(sim.flow, "lift_n") < 0.0); /* Magnus: down */
+                   top_during[2], fixture_flow_history(&sim, "lift_n"));
+            assert_true(fixture_flow_history(&sim, "lift_n") < 0.0); /* Magnus: down */
         }
         assert_ok(sim_advance(&sim, 2));
         flow_probe_state(sim.flow, sim.probes[0].point, top_after);
-        lift[seeded] = history_value(sim.flow, "lift_n");
-        drag[seeded] = history_value(sim.flow, "drag_n");
+        lift[seeded] = fixture_flow_history(&sim, "lift_n");
+        drag[seeded] = fixture_flow_history(&sim, "drag_n");
         sim_destroy(&sim);
     }
     printf("5 steps: lift %.3g N/m unseeded (drag %.6g), %.6g N/m seeded (drag %.6g); top node "

@@ -46,14 +46,13 @@
  * zero ghosts 192.9 Pa, 384.7 N/m (149.4 + 235.3). On the paper's lattice
  * (dx 0.03, `nspd run cases/cylinder_confined_re10.yaml` with antisymmetric
  * ghosts, updated, dt 1e-3): front 212.4 Pa, side -29.0 Pa, 16.57 and
- * 13.47 m/s, drag 292.2 N/m (160.7 + 131.5). Tried and not kept
- * (PCYL_NEUMANN=1, with PCYL_DIV=1): the body's fictitious pressures from
- * the momentum equation's dp/dn = -mu d(omega)/ds instead of dp/dr = 0.
- * It removes the dip (rays 223.6, 213.2, 190.6 at dx 0.1; 235.8, 217.7,
- * 207.0 at dx 0.05) but the front pressure overshoots icoFoam's 226.5 at
- * dx 0.05 (235.8 Pa, side -46.2 against -37.2) and the viscous drag falls
- * to 100.5 and 103.1 N/m (icoFoam 119.0; drag 273.7 and 278.9 N/m): not
- * better overall. The
+ * 13.47 m/s, drag 292.2 N/m (160.7 + 131.5). The body's fictitious
+ * pressures from the momentum equation's dp/dn = -mu d(omega)/ds alone
+ * (an experiment of 2026-12-04) removed the dip (rays 223.6, 213.2, 190.6
+ * at dx 0.1) but left the drag's dependence on tau (dx 0.05, dt 4e-4: 274.6
+ * and 283.6 N/m at tau 1.6e-3 and 4e-4 s); with the PPE source's prescribed
+ * nodes taking G p as well it became flow.wall_pressure: momentum
+ * (PCYL_MOMENTUM=1; step.h, docs/VALIDATION.md's grid study). The
  * viscous drag differs by a factor 1.8 between the two ghost treatments
  * (zero: first order at walls, notes V6). Stability (notes 1.5 left the
  * patch unmeasured): at dx 0.1 dt 1e-2 is stable (nu dt / dx^2 = 1.0; on
@@ -64,7 +63,8 @@
  * with the dt trend above. The default runs both at dx 0.1,
  * dt 1e-3 (about 40 s each) as a regression; PCYL_DX, PCYL_DT, PCYL_T,
  * PCYL_RP, PCYL_ANTI (0 or 1: one treatment only), PCYL_DIV (1: the
- * divergence term on the updated rows only) make studies. */
+ * divergence term on the updated rows only), PCYL_TAU (flow.divergence_time),
+ * PCYL_MOMENTUM (1: flow.wall_pressure momentum) make studies. */
 #include "test_support.h"
 
 #include "core/timer.h"
@@ -94,26 +94,6 @@ static double probe(const PddoCloud *c, const PddoOps *ops, const double *f, dou
     *dist = bd;
     return f[best] + pddo_ops_at(ops, PDDO_D_X, f, best) * (x - c->x[best]) +
            pddo_ops_at(ops, PDDO_D_Y, f, best) * (y - c->y[best]);
-}
-
-/* Experiment (PCYL_NEUMANN=1): the body's fictitious pressures from the
- * momentum equation's wall-normal gradient, dp/dn = mu lap u . n =
- * -mu d(omega)/ds on a no-slip wall at rest (s counterclockwise), instead
- * of dp/dn = 0: p_g = p_image - (r_image - r_g) dp/dn. */
-static void momentum_neumann(const PddoCloud *c, const PddoForces *f, const PddoStep *st, double mu,
-                             double *omega, double *rhs) {
-    const PddoPolarPatch *p = &c->patch[0];
-    const int m = p->ntheta;
-    const double ds = p->radius * p->dtheta;
-    pddo_forces_wall_vorticity(f, st->u, st->v, omega);
-    for (int q = 0; q < p->rings_inside; q++)
-        for (int t = 0; t < m; t++) {
-            const int64_t g = p->first + (int64_t)q * m + t, im = c->image[g];
-            const double dist =
-                hypot(c->x[im] - p->x, c->y[im] - p->y) - hypot(c->x[g] - p->x, c->y[g] - p->y);
-            const double dwds = (omega[(t + 1) % m] - omega[(t + m - 1) % m]) / (2.0 * ds);
-            rhs[g] = -dist * (-mu * dwds);
-        }
 }
 
 static double env_or(const char *name, double fallback) {
@@ -154,14 +134,17 @@ static void run(int anti, bool study) {
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     assert_ok(pddo_forces_build(&forces, &c, 0));
-    const PddoStepParams par = {.rho = rho,
-                                .mu = mu,
-                                .dt = dt,
-                                .inlet_u = u0,
-                                .walls = anti ? PDDO_WALL_ANTISYMMETRIC : PDDO_WALL_ZERO,
-                                .divergence = env_or("PCYL_DIV", 0.0) != 0.0
-                                                  ? PDDO_DIVERGENCE_UPDATED
-                                                  : PDDO_DIVERGENCE_ALL_ROWS};
+    const PddoStepParams par = {
+        .rho = rho,
+        .mu = mu,
+        .dt = dt,
+        .inlet_u = u0,
+        .walls = anti ? PDDO_WALL_ANTISYMMETRIC : PDDO_WALL_ZERO,
+        .divergence =
+            env_or("PCYL_DIV", 0.0) != 0.0 ? PDDO_DIVERGENCE_UPDATED : PDDO_DIVERGENCE_ALL_ROWS,
+        .divergence_time = env_or("PCYL_TAU", 0.0),
+        .wall_pressure = env_or("PCYL_MOMENTUM", 0.0) != 0.0 ? PDDO_WALL_PRESSURE_MOMENTUM
+                                                             : PDDO_WALL_PRESSURE_ZERO_GRADIENT};
     assert_ok(pddo_step_init(&st, &c, &ops, &ppe, &par));
     const double setup_s = nspd_wall_time() - t0;
     const PddoPolarPatch *p = &c.patch[0];
@@ -173,11 +156,7 @@ static void run(int anti, bool study) {
     const int64_t front = p->first + (int64_t)p->rings_inside * p->ntheta + p->ntheta / 2;
     const double t1 = nspd_wall_time();
     PddoForce F = {0};
-    const bool neumann = env_or("PCYL_NEUMANN", 0.0) != 0.0;
-    double *rhs = calloc((size_t)c.n, sizeof(double)), *omega = calloc((size_t)p->ntheta, 8);
-    if (neumann) st.image_rhs = rhs;
     for (int i = 1; i <= steps; i++) {
-        if (neumann) momentum_neumann(&c, &forces, &st, mu, omega, rhs);
         assert_ok(pddo_step_advance(&st));
         if (i % (steps / 20) == 0 || i == steps) {
             F = pddo_forces_eval(&forces, PDDO_TRACTION_FLUID_SIDE, NULL, st.u, st.v, st.p, mu);
@@ -244,12 +223,16 @@ static void run(int anti, bool study) {
     printf("  p on the ray theta = pi, rings f0 .. f7:");
     for (int q = p->rings_inside; q < p->rings_inside + 8; q++)
         printf(" %.1f", st.p[p->first + (int64_t)q * p->ntheta + p->ntheta / 2]);
-    printf(" Pa\n  p on the wall ring, t = ntheta/2 - 3 .. + 3:");
+    printf(" Pa\n  div u on the ray theta = pi, rings f1 .. f4:");
+    for (int q = p->rings_inside + 1; q < p->rings_inside + 5; q++) {
+        const int64_t k = p->first + (int64_t)q * p->ntheta + p->ntheta / 2;
+        printf(" %.3f",
+               pddo_ops_at(&ops, PDDO_D_X, st.u, k) + pddo_ops_at(&ops, PDDO_D_Y, st.v, k));
+    }
+    printf(" 1/s\n  p on the wall ring, t = ntheta/2 - 3 .. + 3:");
     for (int t = -3; t <= 3; t++) printf(" %.1f", st.p[front + t]);
     printf(" Pa\n");
     free(speed);
-    free(rhs);
-    free(omega);
     pddo_forces_free(&forces);
     pddo_step_free(&st);
     pddo_ppe_free(&ppe);
@@ -260,7 +243,8 @@ static void run(int anti, bool study) {
 static void test_re10(void **state) {
     (void)state;
     const bool study = getenv("PCYL_DX") || getenv("PCYL_DT") || getenv("PCYL_T") ||
-                       getenv("PCYL_RP") || getenv("PCYL_DIV") || getenv("PCYL_NEUMANN");
+                       getenv("PCYL_RP") || getenv("PCYL_DIV") || getenv("PCYL_MOMENTUM") ||
+                       getenv("PCYL_TAU");
     const char *only = getenv("PCYL_ANTI"); /* "0" or "1": one treatment only */
     for (int anti = 0; anti < 2; anti++)
         if (!only || atoi(only) == anti) run(anti, study);
