@@ -180,7 +180,9 @@ static void body_pressure_rows(PddoStep *ps) {
  * walls. The prescribed nodes are not updated, so nothing else reads these
  * values. */
 static void held_source(const PddoStep *ps, double *const *w) {
-    for (int64_t h = 0; h < ps->nheld; h++) {
+    const int64_t n = ps->nheld;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t h = 0; h < n; h++) {
         const int64_t k = ps->held[h];
         w[D1][k] = -pddo_ops_at(ps->ops, PDDO_D_X, ps->p, k) / ps->par.rho;
         w[D2][k] = -pddo_ops_at(ps->ops, PDDO_D_Y, ps->p, k) / ps->par.rho;
