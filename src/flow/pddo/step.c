@@ -184,8 +184,12 @@ static void held_source(const PddoStep *ps, double *const *w) {
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t h = 0; h < n; h++) {
         const int64_t k = ps->held[h];
-        w[D1][k] = -pddo_ops_at(ps->ops, PDDO_D_X, ps->p, k) / ps->par.rho;
-        w[D2][k] = -pddo_ops_at(ps->ops, PDDO_D_Y, ps->p, k) / ps->par.rho;
+        const PddoOp op[] = {PDDO_D_X, PDDO_D_Y};
+        const double *const f[] = {ps->p, ps->p};
+        double grad_p[2];
+        pddo_ops_at_many(ps->ops, 2, op, f, k, grad_p);
+        w[D1][k] = -grad_p[0] / ps->par.rho;
+        w[D2][k] = -grad_p[1] / ps->par.rho;
         w[LU][k] = w[LV][k] = 0.0;
     }
 }
