@@ -8,10 +8,10 @@
  * whose last arrival issues a futex wake-up system call, with nobody to
  * wake. That costs 1.1-1.4 us a region on this project's machines
  * (virtual, where a system call is dear), and a PDDO step has 21 regions:
- * 0.29 -> 0.24 s of the Re 100 cavity's flow at 30 x 30 (docs/
- * PERFORMANCE.md, 2026-12-05). The `if (n >= PARALLEL_MIN_ITEMS)` clauses
- * (parallel.h) were meant to make small loops cheap, and without this they
- * did not.
+ * the Re 100 cavity's flow at 30 x 30 on one thread took 0.205 s with
+ * them and takes 0.171 s without (docs/PERFORMANCE.md, 2026-12-05). The `if (n >=
+ * PARALLEL_MIN_ITEMS)` clauses (parallel.h) were meant to make small loops cheap, and without this
+ * they did not.
  *
  * So nspd defines GOMP_parallel itself: where the team would have one
  * thread and no team is active around it, it calls fn(data) on the calling

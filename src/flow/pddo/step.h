@@ -77,7 +77,7 @@ typedef enum {
  * 0.025 m), and with it forces that depend on tau and converge at an order
  * of 0.57. */
 typedef enum {
-    PDDO_WALL_PRESSURE_ZERO_GRADIENT = 0, /* the paper (Eqs. 56, 69) */
+    PDDO_WALL_PRESSURE_ZERO_GRADIENT = 0, /* the paper (Eqs. 40-43, 56, 69) */
     PDDO_WALL_PRESSURE_MOMENTUM,          /* each polar body's fictitious pressures from the
                                              momentum equation's dp/dr = -mu d(omega)/ds on its
                                              wall ring (omega from the fluid-side operators,
@@ -126,9 +126,9 @@ typedef struct {
     int32_t *source;       /* COPY / PERIODIC / ANTI: the node read; else -1 */
     double *fix_u, *fix_v; /* FIXED: the values; ANTI: the wall velocity */
     double *scratch[9];    /* ux, uy, vx, vy, lu, lv, d1, d2, r */
-    double *image_rhs;     /* NULL, or n: the right-hand side of each fictitious node's pressure
-                              row p_g - s p_image (PDDO_WALL_PRESSURE_MOMENTUM: the bodies'
-                              Neumann data, else 0) */
+    double *image_rhs;     /* NULL (the paper's zeros), or n: the right-hand side of each
+                              fictitious node's pressure row p_g - s p_image
+                              (PDDO_WALL_PRESSURE_MOMENTUM: the bodies' Neumann data) */
     /* PDDO_WALL_PRESSURE_MOMENTUM: each polar patch's fluid-side operators
      * and wall vorticity, and the nodes whose velocity is prescribed (not
      * periodic copies), ascending */
