@@ -18,6 +18,9 @@ static const char *const WALL_PRESSURE[] = {"zero_gradient", "momentum", NULL};
 static const char *const PRESSURE_SOLVES[] = {"umfpack", "runs", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
+/* a patch's horizon: the cloud's one (the paper), or its rings' own
+ * (flow/pddo/polar.h) */
+static const char *const PATCH_HORIZONS[] = {"lattice", "local", NULL};
 
 /* A `name` (default `fallback`) into out (PDDO_LINE_NAME chars): letters,
  * digits, _ (a file or column name), unlike the k names before it, which
@@ -106,7 +109,13 @@ static int read_bodies(CfgNode *flow, PddoFlowConfig *c) {
         TRY(cfg_check_range(m, "dr_over_spacing", dr, 0.1, 2.0,
                             "the rings' radial spacing over the lattice spacing (the paper: "
                             "0.69)"));
-        c->polar[b] = (PddoPolarSpec){.dtheta = dtheta, .dr = dr * dx, .r_patch = r_patch};
+        int patch_horizon;
+        TRY(cfg_opt_enum(m, "horizon", PATCH_HORIZONS, 0, &patch_horizon));
+        c->polar[b] =
+            (PddoPolarSpec){.dtheta = dtheta,
+                            .dr = dr * dx,
+                            .r_patch = r_patch,
+                            .local_horizon = patch_horizon ? c->cloud.horizon_factor : 0.0};
         PddoPolarPatch *patch = &patches[b];
         if (pddo_polar_layout(patch, h->x, h->y, h->radius, &c->polar[b], dx) != NSPD_OK)
             return cfg_fail_at(m, "radius",
@@ -376,7 +385,7 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
                            "%g s exceeds the PDDO flow's stable limit %.4g s = min(1.6 dx^2/nu, "
                            "2 nu/U^2) with dx %g m, nu %g m^2/s, U %g m/s; expected at most "
                            "%.4g s (or no dt: half the limit)",
-                           dt, limit, c->cloud.dx, nu, c->velocity_scale, limit);
+                           dt, limit, pddo_flow_smallest_spacing(c), nu, c->velocity_scale, limit);
     c->step.dt = dt_given ? dt : 0.5 * limit;
     if (c->step.divergence_time != 0.0 && !(c->step.divergence_time >= c->step.dt))
         return cfg_fail_at(flow, "divergence_time",

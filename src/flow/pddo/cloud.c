@@ -130,6 +130,37 @@ static int layout_patches(PddoCloud *c, const PddoCloudSpec *s, int64_t first) {
     return NSPD_OK;
 }
 
+/* Every node's horizon: the cloud's, or its ring's local one (polar.h). */
+static void node_horizons(PddoCloud *c) {
+    for (int64_t k = 0; k < c->n; k++) c->node_delta[k] = c->delta;
+    for (int h = 0; h < c->npatches; h++) {
+        const PddoPolarPatch *p = &c->patch[h];
+        for (int q = 0; q < p->rings; q++) {
+            const double d = pddo_polar_horizon(p, q, c->delta);
+            for (int t = 0; t < p->ntheta; t++)
+                c->node_delta[p->first + (int64_t)q * p->ntheta + t] = d;
+        }
+    }
+}
+
+/* The families of the nodes with a horizon below the cloud's cut to it,
+ * in place (each family's members in order; the same margin). */
+static void local_families(PddoCloud *c) {
+    int64_t at = 0;
+    for (int64_t k = 0; k < c->n; k++) {
+        const int64_t lo = c->first[k], hi = c->first[k + 1];
+        const double d = c->node_delta[k] * (1.0 + 1e-9);
+        c->first[k] = at;
+        for (int64_t q = lo; q < hi; q++) {
+            const int32_t j = c->nbr[q];
+            if (d < c->delta * (1.0 + 1e-9) && hypot(c->x[j] - c->x[k], c->y[j] - c->y[k]) > d)
+                continue;
+            c->nbr[at++] = j;
+        }
+    }
+    c->first[c->n] = at;
+}
+
 /* The ring nodes of every patch, after the lattice's (cloud.h). */
 static void place_rings(PddoCloud *c) {
     for (int h = 0; h < c->npatches; h++) {
@@ -232,6 +263,7 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     if (status == NSPD_OK) status = nspd_alloc(&c->sides, (size_t)n, 1);
     if (status == NSPD_OK) status = nspd_alloc(&c->image, (size_t)n, sizeof(int32_t));
     if (status == NSPD_OK) status = nspd_alloc(&c->image_sign, (size_t)n, 1);
+    if (status == NSPD_OK) status = nspd_alloc(&c->node_delta, (size_t)n, sizeof(double));
     if (status != NSPD_OK) {
         pddo_cloud_free(c);
         return status;
@@ -239,6 +271,7 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     const bool px = s->side[PDDO_LEFT] == PDDO_SIDE_PERIODIC;
     const bool py = s->side[PDDO_BOTTOM] == PDDO_SIDE_PERIODIC;
     place_rings(c);
+    node_horizons(c);
     for (int64_t q = 0; q < wi * wj; q++) {
         const int32_t k = c->slot[q];
         if (k < 0) continue;
@@ -282,6 +315,7 @@ int pddo_cloud_build(PddoCloud *c, const PddoCloudSpec *s) {
     const double *const xyz[3] = {c->x, c->y, NULL};
     /* the margin decides the lattice nodes at exactly delta: they are in */
     status = neighbours_find(n, 2, xyz, c->delta * (1.0 + 1e-9), &c->first, &c->nbr);
+    if (status == NSPD_OK) local_families(c);
     if (status != NSPD_OK) pddo_cloud_free(c);
     return status;
 }
@@ -296,6 +330,7 @@ void pddo_cloud_free(PddoCloud *c) {
     nspd_free(&c->sides);
     nspd_free(&c->image);
     nspd_free(&c->image_sign);
+    nspd_free(&c->node_delta);
     nspd_free(&c->first);
     nspd_free(&c->nbr);
     nspd_free(&c->slot);

@@ -37,7 +37,9 @@
  * all nodes within delta (1 + 1e-9) from core/neighbours.h; the margin
  * keeps the four lattice nodes at exactly 3 dx that round-off would decide
  * (28 neighbours with them, 24 without: notes 1.2). Nodes on the outermost
- * fictitious layers have truncated (one-sided) families. */
+ * fictitious layers have truncated (one-sided) families. A polar patch
+ * with a local horizon (polar.h) gives its ring nodes a smaller one,
+ * node_delta: their families hold the nodes within it (the same margin). */
 #ifndef NSPD_FLOW_PDDO_CLOUD_H
 #define NSPD_FLOW_PDDO_CLOUD_H
 
@@ -95,6 +97,7 @@ typedef struct {
     int8_t *image_sign;     /* +1 even image, -1 odd (outlet); 0 for non-fictitious */
     int32_t nx, ny, layers; /* intervals along x and y; fictitious layers */
     double dx, delta;       /* spacing and horizon, m */
+    double *node_delta;     /* per node, its own horizon (delta but on local-horizon rings), m */
     PddoSideKind side[PDDO_SIDES];
     int64_t *first; /* families: nbr[first[k] .. first[k+1]), ascending */
     int32_t *nbr;

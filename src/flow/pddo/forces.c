@@ -51,7 +51,9 @@ int pddo_forces_build(PddoForces *f, const PddoCloud *c, int patch) {
     memcpy(f->xs + m, c->x, (size_t)n * sizeof(double));
     memcpy(f->ys + m, c->y, (size_t)n * sizeof(double));
     memcpy(f->as + m, c->area, (size_t)n * sizeof(double));
-    status = pddo_ops_build(&f->side, m, f->xs, f->ys, f->as, f->first, f->nbr, c->delta, NULL);
+    /* the wall ring's own horizon (a local one on such a patch, polar.h) */
+    status = pddo_ops_build(&f->side, m, f->xs, f->ys, f->as, f->first, f->nbr, c->node_delta[wall],
+                            NULL, NULL);
     if (status != NSPD_OK) pddo_forces_free(f);
     return status;
 }

@@ -62,8 +62,23 @@ typedef struct {
     PddoSample probes; /* the driver's point probes (flow/pddo/sample.h) */
 } PddoFlow;
 
+double pddo_flow_smallest_spacing(const PddoFlowConfig *c) {
+    const PddoCloudSpec *s = &c->cloud;
+    double h = s->dx;
+    for (int b = 0; b < c->body_count; b++) {
+        PddoPolarPatch p;
+        if (pddo_polar_layout(&p, c->bodies[b].x, c->bodies[b].y, c->bodies[b].radius, &c->polar[b],
+                              s->dx) != NSPD_OK)
+            continue;
+        const double delta = s->horizon_factor * s->dx;
+        h = fmin(h, pddo_polar_horizon(&p, p.rings_inside, delta) / s->horizon_factor);
+    }
+    return h;
+}
+
 double pddo_flow_dt_limit(const PddoFlowConfig *c) {
-    return 2.0 * pddo_step_stable_dt(c->step.mu / c->step.rho, c->cloud.dx, c->velocity_scale);
+    return 2.0 * pddo_step_stable_dt(c->step.mu / c->step.rho, pddo_flow_smallest_spacing(c),
+                                     c->velocity_scale);
 }
 
 /* Nodes and family members of a configuration, counted as the cloud
@@ -231,9 +246,11 @@ static int build(PddoFlow *f) {
         /* `nspd check`: the operators' conditioning without their weights,
          * no pressure matrix (its assembly and factors cannot fail on a
          * cloud that passes; the run checks them) */
-        TRY(pddo_ops_check(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta));
+        TRY(pddo_ops_check(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                           c->node_delta));
     } else {
         TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                           c->node_delta,
                            &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
         TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
         if (f->cfg.pressure_runs) TRY(pddo_ppe_use_runs(&f->ppe));

@@ -55,8 +55,14 @@ typedef struct {
     PddoLine lines[PDDO_MAX_LINES];
 } PddoFlowConfig;
 
+/* The spacing the stable step sees: the lattice's dx, or the smaller one
+ * of a polar patch's wall ring with a local horizon (its horizon over the
+ * horizon factor; flow/pddo/polar.h). */
+double pddo_flow_smallest_spacing(const PddoFlowConfig *c);
+
 /* The largest stable step of a configuration (notes/pddo.md 1.5):
- * min(1.61 dx^2 / nu, 2 nu / U^2) with U its velocity scale. */
+ * min(1.61 h^2 / nu, 2 nu / U^2) with U its velocity scale, h the smallest
+ * spacing. */
 double pddo_flow_dt_limit(const PddoFlowConfig *c);
 
 extern const struct FlowOps PDDO_FLOW_OPS;

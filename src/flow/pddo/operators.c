@@ -417,11 +417,16 @@ void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi)
 }
 
 static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                 const int64_t *first, const int32_t *nbr, double delta, const PddoLattice *lattice,
-                 bool weights) {
+                 const int64_t *first, const int32_t *nbr, double delta, const double *node_delta,
+                 const PddoLattice *lattice, bool weights) {
     pddo_ops_free(ops);
-    if (!(delta > 0.0))
-        return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO operators: horizon %g m; expected > 0", delta);
+    for (int64_t k = 0; k < (node_delta ? n : 1); k++) {
+        const double d = node_delta ? node_delta[k] : delta;
+        if (!(d > 0.0))
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "PDDO operators: horizon %g m at node %lld; expected > 0", d,
+                             (long long)k);
+    }
     ops->n = n, ops->first = first, ops->nbr = nbr;
     if (weights) {
         const int status = slices_build(ops, lattice && lattice->patches > 0);
@@ -438,7 +443,8 @@ static int build(PddoOps *ops, int64_t n, const double *x, const double *y, cons
     }
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < n; k++)
-        node_weights(ops, k, x, y, area, delta, lattice, weights, &cond[k]);
+        node_weights(ops, k, x, y, area, node_delta ? node_delta[k] : delta, lattice, weights,
+                     &cond[k]);
     /* the first node that breaks the rule, in node order whatever the threads */
     for (int64_t k = 0; k < n; k++) {
         if (!(cond[k] <= PDDO_COND_MAX)) {
@@ -459,14 +465,15 @@ static int build(PddoOps *ops, int64_t n, const double *x, const double *y, cons
 }
 
 int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta,
+                   const int64_t *first, const int32_t *nbr, double delta, const double *node_delta,
                    const PddoLattice *lattice) {
-    return build(ops, n, x, y, area, first, nbr, delta, lattice, true);
+    return build(ops, n, x, y, area, first, nbr, delta, node_delta, lattice, true);
 }
 
 int pddo_ops_check(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta) {
-    return build(ops, n, x, y, area, first, nbr, delta, NULL, false);
+                   const int64_t *first, const int32_t *nbr, double delta,
+                   const double *node_delta) {
+    return build(ops, n, x, y, area, first, nbr, delta, node_delta, NULL, false);
 }
 
 /* The sums of `count` (operator, field) pairs at node k in one pass over

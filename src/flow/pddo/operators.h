@@ -168,19 +168,21 @@ void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi)
 
 /* Builds the weights of the n nodes at (x, y) with areas `area` (only their
  * ratios matter) and families first/nbr (each node's neighbours, itself
- * excluded), horizon delta (m); lattice: the nodes' lattice indices, or
+ * excluded), horizon delta (m), or node k's own node_delta[k] where
+ * node_delta is not NULL (a local horizon, polar.h); lattice: the nodes' lattice indices, or
  * NULL (xi from the coordinates only; no slice will match a template but
  * by chance). ops is zeroed or freed before. Fails with NSPD_ERR_INPUT for
  * a node breaking the conditioning rule, NSPD_ERR_NOMEM. */
 int pddo_ops_build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta,
+                   const int64_t *first, const int32_t *nbr, double delta, const double *node_delta,
                    const PddoLattice *lattice);
 
 /* The conditioning rule of pddo_ops_build alone, with its refusal, and
  * ops->cond_max; no weights (`nspd check`: the per-member solves are most
  * of the build's time and cannot fail once the rule holds). */
 int pddo_ops_check(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,
-                   const int64_t *first, const int32_t *nbr, double delta);
+                   const int64_t *first, const int32_t *nbr, double delta,
+                   const double *node_delta);
 
 /* out[k] = sum_j c_kj (f_j - f_k) for operator op at every node (Eq. 10);
  * parallel, the same bits at any thread count. out must not alias f. */

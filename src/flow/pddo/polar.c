@@ -11,19 +11,25 @@ int pddo_polar_layout(PddoPolarPatch *p, double x, double y, double radius, cons
     const double dr = s->dr > 0.0 ? s->dr : PDDO_POLAR_DR_OVER_DX * dx;
     const double r_patch = s->r_patch > 0.0 ? s->r_patch : dx / dtheta;
     const double gap = s->gap > 0.0 ? s->gap : 0.5 * dx;
-    const int inside = s->rings_inside > 0 ? s->rings_inside : 3;
     if (!(dx > 0.0) || !(radius > 0.0) || s->dtheta < 0.0 || s->dr < 0.0 || s->gap < 0.0 ||
-        s->r_patch < 0.0 || s->rings_inside < 0)
+        s->r_patch < 0.0 || s->rings_inside < 0 || !(s->local_horizon >= 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "PDDO polar patch: dx %g, radius %g, dtheta %g, dr %g, r_patch %g, gap "
-                         "%g, rings inside %d; expected positive (or 0 for the default)",
-                         dx, radius, s->dtheta, s->dr, s->r_patch, s->gap, s->rings_inside);
+                         "%g, rings inside %d, local horizon %g; expected positive (or 0 for "
+                         "the default)",
+                         dx, radius, s->dtheta, s->dr, s->r_patch, s->gap, s->rings_inside,
+                         s->local_horizon);
     const double half = round(M_PI / dtheta);
     if (!(half >= 4.0 && half < 1e7))
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "PDDO polar patch: dtheta %g rad gives %.0f nodes per ring; expected "
                          "8 to 2e7",
                          dtheta, 2.0 * half);
+    /* the wall ring's local horizon over dr, rounded up: its family whole */
+    const double wall_reach = s->local_horizon * fmax(1.0, radius * (M_PI / half) / dr);
+    int inside = s->rings_inside > 0 ? s->rings_inside : 3;
+    if (s->rings_inside == 0 && s->local_horizon > 0.0 && wall_reach < 1e6)
+        inside = (int)fmax(3.0, ceil(wall_reach * (1.0 - 1e-12)));
     if (gap < 0.25 * dx * (1.0 - 1e-12))
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "PDDO polar patch: gap %g m is under dx/4 = %g m; expected a junction "
@@ -45,12 +51,22 @@ int pddo_polar_layout(PddoPolarPatch *p, double x, double y, double radius, cons
     p->rings = inside + 1 + outside;
     p->r_out = pddo_polar_radius(p, p->rings - 1);
     p->r_cut = p->r_out + gap;
+    p->local_horizon = s->local_horizon;
     p->first = 0;
     return NSPD_OK;
 }
 
 double pddo_polar_radius(const PddoPolarPatch *p, int q) {
     return p->radius + (q - p->rings_inside) * p->dr;
+}
+
+double pddo_polar_horizon(const PddoPolarPatch *p, int q, double delta) {
+    if (!(p->local_horizon > 0.0)) return delta;
+    const double r = pddo_polar_radius(p, q);
+    const double h = fmax(p->dr, fmax(r, p->radius) * p->dtheta);
+    /* towards the junction it grows to the lattice's: the outer rings'
+     * families reach the lattice beyond the gap as the lattice's reach them */
+    return fmin(delta, fmax(p->local_horizon * h, delta - (p->r_out - r)));
 }
 
 void pddo_polar_angle(const PddoPolarPatch *p, int t, double *c, double *s) {

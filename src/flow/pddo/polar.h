@@ -34,7 +34,22 @@
  * first order (orders 1.50, 1.20 for h halved twice), like the lattice's
  * one-sided families; rings_inside = ceil(delta / dr) = 5 gives 2.05,
  * 1.91. First derivatives are second order everywhere, the junction's
- * Laplacian tends to first order (irregular families). */
+ * Laplacian tends to first order (irregular families).
+ *
+ * The local horizon (not the paper; spec.local_horizon > 0): ring q's
+ * nodes take the horizon delta_q = local_horizon h_q, h_q = max(dr,
+ * max(r_q, R) dtheta) their own spacing, rising to the cloud's one delta
+ * over the last delta before the outermost ring (delta_q >= delta - (r_out
+ * - r_q)), so that the junction's families are the lattice's (measured:
+ * without the ramp a patch of dr = dx/6 under a lattice of dx 0.1 m blew
+ * up within 10 steps), and never above delta.
+ * With the paper's one horizon the rings' spacing does not matter: the
+ * operators' error is that of delta = 3 dx (measured: dr and dtheta
+ * halved together at dx 0.1 m move the Re 10 cylinder's drag by 0.25 %,
+ * dx halved by 3.8 %; docs/VALIDATION.md). With it, a patch finer than
+ * the lattice gives the wall operators of its own spacing, and the
+ * fictitious rings default to enough to hold the wall ring's whole
+ * family, ceil(delta_wall / dr), at least three. */
 #ifndef NSPD_FLOW_PDDO_POLAR_H
 #define NSPD_FLOW_PDDO_POLAR_H
 
@@ -45,11 +60,13 @@
 #define PDDO_POLAR_DR_OVER_DX 0.69
 
 typedef struct {
-    double dtheta;    /* target angular spacing, rad (0: 0.0149); rounded to 2 pi / ntheta */
-    double dr;        /* radial spacing, m (0: 0.69 dx) */
-    double r_patch;   /* outermost ring at most here, m (0: dx / dtheta) */
-    double gap;       /* lattice nodes removed within r_out + gap, m (0: dx / 2; >= dx / 4) */
-    int rings_inside; /* fictitious rings (0: 3, the paper) */
+    double dtheta;        /* target angular spacing, rad (0: 0.0149); rounded to 2 pi / ntheta */
+    double dr;            /* radial spacing, m (0: 0.69 dx) */
+    double r_patch;       /* outermost ring at most here, m (0: dx / dtheta) */
+    double gap;           /* lattice nodes removed within r_out + gap, m (0: dx / 2; >= dx / 4) */
+    int rings_inside;     /* fictitious rings (0: 3, the paper; with local_horizon, enough for the
+                             wall ring's horizon) */
+    double local_horizon; /* > 0: the rings' horizon over their spacing (above); 0: the cloud's */
 } PddoPolarSpec;
 
 typedef struct {
@@ -58,6 +75,7 @@ typedef struct {
     int32_t ntheta;              /* nodes per ring, even */
     int32_t rings_inside, rings; /* fictitious rings; all rings (fictitious, wall, fluid) */
     double r_out, r_cut;         /* outermost ring; lattice nodes removed with r < r_cut, m */
+    double local_horizon;        /* the rings' horizon over their spacing, or 0 (above) */
     int64_t first;               /* the cloud's node of ring q, angle t: first + q ntheta + t */
 } PddoPolarPatch;
 
@@ -70,6 +88,10 @@ int pddo_polar_layout(PddoPolarPatch *patch, double x, double y, double radius,
 
 /* Radius of ring q, m. */
 double pddo_polar_radius(const PddoPolarPatch *patch, int q);
+
+/* The horizon of ring q's nodes in a cloud whose one horizon is delta, m
+ * (the local horizon above, else delta). */
+double pddo_polar_horizon(const PddoPolarPatch *patch, int q, double delta);
 
 /* cos and sin of the angle of index t (exactly mirrored about the
  * centre's horizontal line between t and ntheta - t: the same cos, sin

@@ -130,7 +130,7 @@ static void run(int anti, bool study) {
     PddoForces forces = {0};
     const double t0 = nspd_wall_time();
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     assert_ok(pddo_forces_build(&forces, &c, 0));

@@ -41,6 +41,7 @@ static void build(PddoCloud *c, PddoOps *ops, PddoForces *f, double dx, double d
                        .polar = &polar};
     assert_ok(pddo_cloud_build(c, &s));
     assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             c->node_delta,
                              &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
     assert_ok(pddo_forces_build(f, c, 0));
 }

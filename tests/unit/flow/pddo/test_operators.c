@@ -186,7 +186,7 @@ static void test_lattice_weights(void **state) {
     PddoCloud c = {0};
     PddoOps ops = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     const int64_t k = pddo_cloud_node(&c, 6, 6);
     const int off[6][2] = {{0, 1}, {1, 1}, {0, 2}, {1, 2}, {2, 2}, {0, 3}};
@@ -229,7 +229,7 @@ static void test_lattice_exactness(void **state) {
     PddoCloud c = {0};
     PddoOps ops = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     uint64_t seed = 7;
     for (int trial = 0; trial < 5; trial++) {
@@ -296,7 +296,7 @@ static void test_jittered_exactness(void **state) {
     Points p = {0};
     points_make(&p, 0.05, 0.0, 1.0, 0.0, 1.0, 0.3);
     PddoOps ops = {0};
-    assert_ok(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.15, NULL));
+    assert_ok(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.15, NULL, NULL));
     uint64_t seed = 3;
     double q[9];
     for (int t = 0; t < 9; t++) q[t] = uniform(&seed);
@@ -373,7 +373,7 @@ static void test_fused_equals_single(void **state) {
     Points p = {0};
     points_make(&p, 0.1, 0.0, 1.0, 0.0, 1.0, 0.3);
     PddoOps ops = {0};
-    assert_ok(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.3, NULL));
+    assert_ok(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.3, NULL, NULL));
     assert_int_equal(ops.templated, 0);
     check_fused(&ops, p.n);
     pddo_ops_free(&ops);
@@ -386,8 +386,10 @@ static void square_with_and_without_lattice(PddoCloud *c, PddoOps *ops, PddoOps 
     PddoCloudSpec s = square_spec(0.02);
     assert_ok(pddo_cloud_build(c, &s));
     assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             c->node_delta,
                              &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
-    assert_ok(pddo_ops_build(plain, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta, NULL));
+    assert_ok(pddo_ops_build(plain, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             c->node_delta, NULL));
 }
 
 /* The largest difference of any weight of ops from plain's on cloud c's
@@ -461,9 +463,10 @@ static void test_turned_templates(void **state) {
     PddoCloud c = {0};
     assert_ok(pddo_cloud_build(&c, &s));
     PddoOps ops = {0}, plain = {0};
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
-    assert_ok(pddo_ops_build(&plain, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, NULL));
+    assert_ok(
+        pddo_ops_build(&plain, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta, NULL));
     const int64_t slices = pddo_ops_slices(&ops);
     const int64_t ring_slices = pddo_polar_count(&c.patch[0]) / PDDO_LANES;
     int64_t turned = 0;
@@ -551,7 +554,8 @@ static void test_convergence(void **state) {
             Points p = {0};
             points_make(&p, h, 0.0, 1.0, side ? 0.5 : 0.0, 1.0, 0.0);
             PddoOps ops = {0};
-            assert_ok(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 3.0 * h, NULL));
+            assert_ok(
+                pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 3.0 * h, NULL, NULL));
             int64_t k = -1;
             for (int64_t m = 0; m < p.n; m++)
                 if (fabs(p.x[m] - 0.5) < 1e-9 && fabs(p.y[m] - 0.5) < 1e-9) k = m;
@@ -585,7 +589,7 @@ static void test_refuses_degenerate_family(void **state) {
     Points p = {0};
     points_make(&p, 0.1, 0.0, 1.0, 0.0, 0.0, 0.0);
     PddoOps ops = {0};
-    assert_int_equal(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.3, NULL),
+    assert_int_equal(pddo_ops_build(&ops, p.n, p.x, p.y, p.area, p.first, p.nbr, 0.3, NULL, NULL),
                      NSPD_ERR_INPUT);
     assert_non_null(strstr(nspd_error_message(), "node 0"));
     assert_null(ops.w[PDDO_D_X]);

@@ -38,6 +38,7 @@ static void problem_build(Problem *p, int n, PddoSideKind kind) {
     assert_ok(pddo_cloud_build(&p->cloud, &s));
     const PddoCloud *c = &p->cloud;
     assert_ok(pddo_ops_build(&p->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             c->node_delta,
                              &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
     assert_ok(pddo_ppe_build(&p->ppe, c, &p->ops));
     p->setup_s = nspd_wall_time() - t0;

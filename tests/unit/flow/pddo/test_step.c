@@ -41,7 +41,7 @@ static TgResult taylor_green(int n, double amplitude, double dt, double t_end, b
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     const PddoStepParams par = {.rho = 1.0, .mu = nu, .dt = dt};
@@ -158,7 +158,7 @@ static double cavity_re1(double dt, double *div_max) {
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     PddoStepParams par = {.rho = 1000.0, .mu = 1e-3, .dt = dt};
@@ -226,7 +226,7 @@ static double diffusion_growth(double number, int steps, int *taken) {
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     const PddoStepParams par = {.rho = 1.0, .mu = 1.0, .dt = number * s.dx * s.dx};
@@ -279,6 +279,7 @@ static void channel(PddoCloud *c, PddoOps *ops, PddoPpe *ppe, int n) {
     s.side[PDDO_LEFT] = s.side[PDDO_RIGHT] = PDDO_SIDE_PERIODIC;
     assert_ok(pddo_cloud_build(c, &s));
     assert_ok(pddo_ops_build(ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
+                             c->node_delta,
                              &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
     assert_ok(pddo_ppe_build(ppe, c, ops));
 }
@@ -394,7 +395,7 @@ static double channel_flow(PddoWallGhosts walls, double *flux_ratio) {
     PddoPpe ppe = {0};
     PddoStep st = {0};
     assert_ok(pddo_cloud_build(&c, &s));
-    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta,
+    assert_ok(pddo_ops_build(&ops, c.n, c.x, c.y, c.area, c.first, c.nbr, c.delta, c.node_delta,
                              &(PddoLattice){c.i, c.j, c.dx, c.patch, c.npatches}));
     assert_ok(pddo_ppe_build(&ppe, &c, &ops));
     assert_int_equal(ppe.pinned, -1); /* the outlet fixes the level */
