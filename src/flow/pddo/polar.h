@@ -46,7 +46,7 @@
  * With the paper's one horizon the rings' spacing does not matter: the
  * operators' error is that of delta = 3 dx (measured: dr and dtheta
  * halved together at dx 0.1 m move the Re 10 cylinder's drag by 0.25 %,
- * dx halved by 3.8 %; docs/VALIDATION.md). With it, a patch finer than
+ * dx halved by 3.8 %; docs/VALIDATION.md). With the local one a patch finer than
  * the lattice gives the wall operators of its own spacing, and the
  * fictitious rings default to enough to hold the wall ring's whole
  * family, ceil(delta_wall / dr), at least three. */
