@@ -382,8 +382,9 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     const double limit = pddo_flow_dt_limit(c);
     if (dt_given && dt > limit)
         return cfg_fail_at(time_map, "dt",
-                           "%g s exceeds the PDDO flow's stable limit %.4g s = min(1.6 dx^2/nu, "
-                           "2 nu/U^2) with dx %g m, nu %g m^2/s, U %g m/s; expected at most "
+                           "%g s exceeds the PDDO flow's stable limit %.4g s = min(1.6 h^2/nu, "
+                           "2 nu/U^2) with h %g m (the smallest horizon over 3), nu %g m^2/s, U "
+                           "%g m/s; expected at most "
                            "%.4g s (or no dt: half the limit)",
                            dt, limit, pddo_flow_smallest_spacing(c), nu, c->velocity_scale, limit);
     c->step.dt = dt_given ? dt : 0.5 * limit;

@@ -137,6 +137,9 @@ check "steps past the limit" "^--set time.end=1e3: time.end = 1000 s needs 7.48e
 cav="$src/cases/cavity_re1.yaml"
 check "PDDO step above the limit" "^--set time.dt=2e-4: time.dt: 0.0002 s exceeds the PDDO flow's stable limit 0.00016 s" \
     "$nspd" run "$cav" -o "$work/result" --set time.dt=2e-4
+# the limit follows the horizon: 2 spacings cut it to (2/3)^2 of 3's
+check "PDDO step above a shorter horizon's limit" "^--set time.dt=1e-4: time.dt: 0.0001 s exceeds the PDDO flow's stable limit 7.111e-05 s" \
+    "$nspd" run "$cav" -o "$work/result" --set flow.horizon_factor=2 --set time.dt=1e-4
 check "PDDO spacing" "flow.spacing: 3e-05 m gives 33.33333333 spacings along x" \
     "$nspd" check "$cav" --set flow.spacing=3e-5
 check "PDDO lone periodic side" "flow.boundaries.x_max: the opposite side x_min is periodic; expected both" \

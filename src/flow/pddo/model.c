@@ -64,14 +64,17 @@ typedef struct {
 
 double pddo_flow_smallest_spacing(const PddoFlowConfig *c) {
     const PddoCloudSpec *s = &c->cloud;
-    double h = s->dx;
+    /* the limit is the Laplacian's, whose weights scale with the horizon:
+     * notes 1.5's 1.61 dx^2 is for delta = 3 dx (dx (h / 3) is dx itself
+     * there, the same bits) */
+    double h = s->dx * (s->horizon_factor / 3.0);
     for (int b = 0; b < c->body_count; b++) {
         PddoPolarPatch p;
         if (pddo_polar_layout(&p, c->bodies[b].x, c->bodies[b].y, c->bodies[b].radius, &c->polar[b],
                               s->dx) != NSPD_OK)
             continue;
         const double delta = s->horizon_factor * s->dx;
-        h = fmin(h, pddo_polar_horizon(&p, p.rings_inside, delta) / s->horizon_factor);
+        h = fmin(h, pddo_polar_horizon(&p, p.rings_inside, delta) / 3.0);
     }
     return h;
 }

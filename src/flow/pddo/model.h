@@ -55,9 +55,13 @@ typedef struct {
     PddoLine lines[PDDO_MAX_LINES];
 } PddoFlowConfig;
 
-/* The spacing the stable step sees: the lattice's dx, or the smaller one
- * of a polar patch's wall ring with a local horizon (its horizon over the
- * horizon factor; flow/pddo/polar.h). */
+/* The spacing the stable step sees, the smallest horizon over 3: notes
+ * 1.5's limit is for the paper's delta = 3 dx, and the Laplacian's largest
+ * symbol scales as 1/delta^2 (measured on the Re 10 cylinder at dx 0.05 m:
+ * with horizon_factor 2 a step of 2.5e-3 s blew up and 1.5e-3 s did not,
+ * against 1.78e-3 s from delta / 3; with 3, 3.5e-3 s is stable against
+ * 4e-3). The lattice's, or a polar patch's wall ring's with a local
+ * horizon (flow/pddo/polar.h). */
 double pddo_flow_smallest_spacing(const PddoFlowConfig *c);
 
 /* The largest stable step of a configuration (notes/pddo.md 1.5):

@@ -285,8 +285,8 @@ static int blow_up(const PddoStep *ps, int64_t bad) {
     double umax = 0.0;
     for (int64_t k = 0; k < c->n; k++)
         if (ps->rule[k] == PDDO_VEL_FIXED) umax = fmax(umax, hypot(ps->fix_u[k], ps->fix_v[k]));
-    double h = c->dx; /* the smallest spacing: a local horizon's (polar.h) */
-    for (int64_t k = 0; k < c->n; k++) h = fmin(h, c->node_delta[k] * (c->dx / c->delta));
+    double h = c->dx; /* the smallest horizon over 3 (pddo_flow_smallest_spacing) */
+    for (int64_t k = 0; k < c->n; k++) h = fmin(h, c->node_delta[k] / 3.0);
     const double limit = 2.0 * pddo_step_stable_dt(nu, h, umax);
     if (dt > limit)
         return NSPD_FAIL(NSPD_ERR_NUMERIC,
