@@ -13,8 +13,11 @@
 # cylinder (NT cells along it) and NR = NT/2 cells from the box to the
 # wall, shrinking 4-fold towards the wall (the first cell about H/4 thick).
 #
-#   make_cylinder.sh DIR NT DT [END] [NU] [U0] [EVERY]
-# (END 4 s, the paper's; NU 1, U0 10: Re 10; U0 100 is Re 100)
+#   make_cylinder.sh DIR NT DT [END] [NU] [U0] [EVERY] [TOL]
+# (END 4 s, the paper's; NU 1, U0 10: Re 10; U0 100 is Re 100). With TOL
+# the run stops before END at steady state by nspd's criterion
+# (flow.steady_tolerance), as make_cavity.sh does: the largest |dU/dt| over
+# the cells below TOL m/s^2.
 # Sampled after the run (postProcess -func sample -latestTime), cellPoint:
 # p in front (4.5, 3), beside (5, 3.5), |u| at (5, 4.2), (5, 1.8) and at the
 # outlet (15, 3) (just inside each boundary); the forces function object
@@ -27,6 +30,7 @@ end=${4:-4}
 nu=${5:-1}
 u0=${6:-10}
 every=${7:-50}
+tol=${8:-}
 nr=$((nt / 2))
 mkdir -p "$dir/system" "$dir/constant" "$dir/0"
 header() { # class object
@@ -116,8 +120,20 @@ functions
         rho rhoInf; rhoInf 1; CofR (5 3 0.5); log false;
         executeControl timeStep; executeInterval $every; writeControl timeStep; writeInterval $every;
     }
-}
 EOT
+    [ -z "$tol" ] || cat <<EOT
+    dUdt { type ddt2; libs ("libfieldFunctionObjects.so"); fields (U); mag true; result dUdt; log false; writeControl writeTime; }
+    dUdtMax { type fieldMinMax; libs ("libfieldFunctionObjects.so"); fields (dUdt); mode magnitude; log false; writeToFile false; }
+    steady
+    {
+        type runTimeControl; libs ("libutilityFunctionObjects.so");
+        conditions
+        {
+            dudt { type minMax; functionObject dUdtMax; fields (max(dUdt)); mode minimum; value $tol; }
+        }
+    }
+EOT
+    echo "}"
 } >"$dir/system/controlDict"
 {
     header dictionary fvSchemes
