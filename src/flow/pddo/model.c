@@ -578,6 +578,14 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
            "%.1f neighbours per node\n",
            (long long)c->n, (long long)f->physical, c->layers, cfg->cloud.horizon_factor,
            (double)c->first[c->n] / (double)c->n);
+    for (int b = 0; b < c->npatches; b++) {
+        const PddoPolarPatch *p = &c->patch[b];
+        const double wall = c->node_delta[p->first + (int64_t)p->rings_inside * p->ntheta];
+        APPEND("polar patch %-8d %d rings of %d (%d fictitious), dr %.4g m, dtheta %.4g rad, to "
+               "%.4g m; horizon %s, %.4g m on the wall ring\n",
+               b, p->rings, p->ntheta, p->rings_inside, p->dr, p->dtheta, p->r_out,
+               p->local_horizon > 0.0 ? "local" : "the lattice's", wall);
+    }
     {
         const PddoOps *ops = &f->ops;
         const int64_t slices = pddo_ops_slices(ops);
