@@ -175,6 +175,27 @@ static void test_alloc_aligned_zeroed_counted(void **state) {
     double *none;
     assert_ok(nspd_alloc(&none, 0, 8));
     assert_null(none);
+    /* a block large enough to ask for huge pages, written all over, freed
+     * and taken again: zeroed again (calloc's pages, not a stale block) */
+    enum { BIG = 1 << 20 };
+    for (int round = 0; round < 2; round++) {
+        double *big;
+        assert_ok(nspd_alloc(&big, BIG, sizeof(double)));
+        assert_int_equal((uintptr_t)big % 64, 0);
+        for (int i = 0; i < BIG; i += 4099) assert_true(big[i] == 0.0);
+        assert_true(big[BIG - 1] == 0.0);
+        for (int i = 0; i < BIG; i++) big[i] = 1.0 + i;
+        nspd_free(&big);
+    }
+    /* odd sizes keep the alignment and the count */
+    for (size_t n = 1; n < 200; n += 7) {
+        char *c;
+        assert_ok(nspd_alloc(&c, n, 1));
+        assert_int_equal((uintptr_t)c % 64, 0);
+        assert_int_equal(nspd_mem_live_bytes() - before, n);
+        memset(c, 0xff, n);
+        nspd_free(&c);
+    }
 }
 
 static void test_alloc_failure_injection_and_overflow(void **state) {
