@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include "case/case_read.h"
+#include "flow/flow.h"
 
 #include <stdio.h>
 
@@ -70,4 +71,25 @@ double fixture_flow_history(const Sim *sim, const char *name) {
     const ReportItem *it = report_find(&row, name);
     if (!it) fail_msg("the flow has no history column '%s'", name);
     return it->real;
+}
+
+double fixture_coarse_cylinder_drag(const char *const *sets, int count, const char *label) {
+    enum { BASE = 6, MAX_SETS = 16 };
+    const char *all[BASE + MAX_SETS] = {
+        "flow.spacing=0.2", "flow.walls=antisymmetric",   "flow.divergence_term=updated",
+        "time.end=4.0",     "flow.steady_tolerance=1e-4", "output.average_from=0",
+    };
+    assert_true(count <= MAX_SETS);
+    for (int i = 0; i < count; i++) all[BASE + i] = sets[i];
+    Sim sim;
+    fixture_sim("cylinder_confined_re10.yaml", all, BASE + count, &sim);
+    SimRunOptions opt = {NULL, false, NULL};
+    assert_ok(sim_run(&sim, &opt));
+    assert_true(flow_finished(sim.flow)); /* steady before time.end */
+    const double drag = fixture_flow_history(&sim, "drag_n");
+    printf("%s: steady after %lld steps, drag %.6f N/m (pressure %.6f, viscous %.6f)\n", label,
+           (long long)sim.step, drag, fixture_flow_history(&sim, "drag_pressure_n"),
+           fixture_flow_history(&sim, "drag_viscous_n"));
+    sim_destroy(&sim);
+    return drag;
 }

@@ -35,4 +35,12 @@ double fixture_coupling_summary(Sim *sim, const char *name);
 /* The value of history column `name` of the flow now (fails if absent). */
 double fixture_flow_history(const Sim *sim, const char *name);
 
+/* cases/cylinder_confined_re10.yaml coarse (dx 0.2 m, antisymmetric
+ * ghosts, divergence_term updated, to t = 4 s at most, steady to 1e-4
+ * m/s^2, forces averaged from 0), then the `count` overrides `sets`, run
+ * to its steady state (fails the test if it is not steady before the
+ * end); prints `label`, the steps and the drag's parts, and returns the
+ * steady drag, N/m. */
+double fixture_coarse_cylinder_drag(const char *const *sets, int count, const char *label);
+
 #endif

@@ -16,40 +16,23 @@
 #include "sim_fixtures.h"
 #include "test_support.h"
 
-#include "flow/flow.h"
-
 #include <math.h>
 #include <stdio.h>
 
 /* The steady drag (N/m) of the coarse cylinder with the patch `body`. */
 static double steady_drag(const char *body) {
-    char body_set[256];
+    char body_set[256], label[160];
     snprintf(body_set, sizeof body_set,
              "flow.bodies=[{shape: circle, center: [5.0, 3.0], radius: 0.5, patch_radius: 1.0%s}]",
              body);
+    snprintf(label, sizeof label, "patch {%s}", body);
     const char *sets[] = {
         body_set,
         "flow.wall_pressure=momentum",
         "flow.divergence_time=2e-3",
-        "flow.spacing=0.2",
-        "flow.walls=antisymmetric",
-        "flow.divergence_term=updated",
         "time.dt=2e-3",
-        "time.end=4.0",
-        "flow.steady_tolerance=1e-4",
-        "output.average_from=0",
     };
-    Sim sim;
-    fixture_sim("cylinder_confined_re10.yaml", sets, sizeof sets / sizeof *sets, &sim);
-    SimRunOptions opt = {NULL, false, NULL};
-    assert_ok(sim_run(&sim, &opt));
-    assert_true(flow_finished(sim.flow)); /* steady before time.end */
-    const double drag = fixture_flow_history(&sim, "drag_n");
-    printf("patch {%s}: steady after %lld steps, drag %.6f N/m (pressure %.6f, viscous %.6f)\n",
-           body, (long long)sim.step, drag, fixture_flow_history(&sim, "drag_pressure_n"),
-           fixture_flow_history(&sim, "drag_viscous_n"));
-    sim_destroy(&sim);
-    return drag;
+    return fixture_coarse_cylinder_drag(sets, (int)(sizeof sets / sizeof *sets), label);
 }
 
 static void test_refined_patch(void **state) {

@@ -21,41 +21,22 @@
 #include "sim_fixtures.h"
 #include "test_support.h"
 
-#include "flow/flow.h"
-
 #include <math.h>
 #include <stdio.h>
 
 /* The steady drag (N/m) of the coarse cylinder. */
 static double steady_drag(const char *wall_pressure, const char *tau) {
-    char pressure_set[64], tau_set[64];
+    char pressure_set[64], tau_set[64], label[96];
     snprintf(pressure_set, sizeof pressure_set, "flow.wall_pressure=%s", wall_pressure);
     snprintf(tau_set, sizeof tau_set, "flow.divergence_time=%s", tau);
+    snprintf(label, sizeof label, "wall_pressure %-13s tau %s s", wall_pressure, tau);
     const char *sets[] = {
         tau_set,
         pressure_set,
-        "flow.spacing=0.2",
-        "flow.walls=antisymmetric",
-        "flow.divergence_term=updated",
         "time.dt=2e-3",
-        "time.end=4.0",
-        "flow.steady_tolerance=1e-4",
         "flow.bodies=[{shape: circle, center: [5.0, 3.0], radius: 0.5, patch_radius: 1.0}]",
-        "output.average_from=0",
     };
-    Sim sim;
-    fixture_sim("cylinder_confined_re10.yaml", sets, sizeof sets / sizeof *sets, &sim);
-    SimRunOptions opt = {NULL, false, NULL};
-    assert_ok(sim_run(&sim, &opt));
-    assert_true(flow_finished(sim.flow)); /* steady before time.end */
-    const double drag = fixture_flow_history(&sim, "drag_n");
-    printf("wall_pressure %-13s tau %s s: steady after %lld steps, drag %.6f N/m (pressure "
-           "%.6f, viscous %.6f)\n",
-           wall_pressure, tau, (long long)sim.step, drag,
-           fixture_flow_history(&sim, "drag_pressure_n"),
-           fixture_flow_history(&sim, "drag_viscous_n"));
-    sim_destroy(&sim);
-    return drag;
+    return fixture_coarse_cylinder_drag(sets, (int)(sizeof sets / sizeof *sets), label);
 }
 
 static void test_drag_against_tau(void **state) {

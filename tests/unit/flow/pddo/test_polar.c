@@ -85,6 +85,22 @@ static double poly(const double *q, int cubic, double x, double y, double d[PDDO
 
 static const char *const OP_NAME[PDDO_OPS] = {"d/dx", "d/dy", "lap", "d2/dxdy"};
 
+/* The largest error of operator op over every node of c for the quadratic
+ * q (poly), relative to the largest exact value; f and out are n-node
+ * scratch. */
+static double quadratic_error(const PddoOps *ops, const PddoCloud *c, const double *q, PddoOp op,
+                              double *f, double *out) {
+    double d[PDDO_OPS], err = 0.0, size = 0.0;
+    for (int64_t k = 0; k < c->n; k++) f[k] = poly(q, 0, c->x[k], c->y[k], d);
+    pddo_ops_apply(ops, op, f, out);
+    for (int64_t k = 0; k < c->n; k++) {
+        poly(q, 0, c->x[k], c->y[k], d);
+        err = fmax(err, fabs(out[k] - d[op]));
+        size = fmax(size, fabs(d[op]));
+    }
+    return err / size;
+}
+
 /* The paper's patch (Sec. 5.3: dx = L_x/500 = 0.03 m, dtheta 0.0149, dr =
  * 0.69 dx, three fictitious rings; r_patch = dx/dtheta = 2.01 m, gap dx/2,
  * our junction) in a 4.8 m box.
@@ -367,18 +383,12 @@ static void test_two_patches(void **state) {
     double *f = calloc((size_t)c.n, sizeof(double)), *out = calloc((size_t)c.n, sizeof(double));
     double q[9], d[PDDO_OPS];
     for (int t = 0; t < 9; t++) q[t] = uniform();
-    for (int64_t k = 0; k < c.n; k++) f[k] = poly(q, 0, c.x[k], c.y[k], d);
     for (int op = 0; op < PDDO_OPS; op++) {
-        pddo_ops_apply(&ops, (PddoOp)op, f, out);
-        double err = 0.0, size = 0.0;
-        for (int64_t k = 0; k < c.n; k++) {
-            poly(q, 0, c.x[k], c.y[k], d);
-            err = fmax(err, fabs(out[k] - d[op]));
-            size = fmax(size, fabs(d[op]));
-        }
-        printf("two patches, quadratic %-8s: all nodes %.2e (relative)\n", OP_NAME[op], err / size);
-        assert_true(err / size < 1e-10);
+        const double err = quadratic_error(&ops, &c, q, (PddoOp)op, f, out);
+        printf("two patches, quadratic %-8s: all nodes %.2e (relative)\n", OP_NAME[op], err);
+        assert_true(err < 1e-10);
     }
+    for (int64_t k = 0; k < c.n; k++) f[k] = poly(q, 0, c.x[k], c.y[k], d);
 
     /* the probes' interpolation: points of each kind around patch b */
     enum { LATTICE_PT, PATCH_PT, JUNCTION_PT, WALL_PT, SIDE_PT, KINDS };
@@ -546,19 +556,12 @@ static void test_local_horizon(void **state) {
            (long long)c.n, p->rings, p->rings_inside,
            c.node_delta[p->first + (int64_t)p->rings_inside * p->ntheta], ops.cond_max);
     double *f = calloc((size_t)c.n, sizeof(double)), *out = calloc((size_t)c.n, sizeof(double));
-    double q[9], d[PDDO_OPS];
+    double q[9];
     for (int t = 0; t < 9; t++) q[t] = uniform();
     for (int op = 0; op < PDDO_OPS; op++) {
-        for (int64_t k = 0; k < c.n; k++) f[k] = poly(q, 0, c.x[k], c.y[k], d);
-        pddo_ops_apply(&ops, (PddoOp)op, f, out);
-        double err = 0.0, size = 0.0;
-        for (int64_t k = 0; k < c.n; k++) {
-            poly(q, 0, c.x[k], c.y[k], d);
-            err = fmax(err, fabs(out[k] - d[op]));
-            size = fmax(size, fabs(d[op]));
-        }
-        printf("local horizon, quadratic %-8s: %.2e (relative)\n", OP_NAME[op], err / size);
-        assert_true(err / size < (op == PDDO_D_XY ? 1e-9 : 1e-10));
+        const double err = quadratic_error(&ops, &c, q, (PddoOp)op, f, out);
+        printf("local horizon, quadratic %-8s: %.2e (relative)\n", OP_NAME[op], err);
+        assert_true(err < (op == PDDO_D_XY ? 1e-9 : 1e-10));
     }
     free(f);
     free(out);
