@@ -43,18 +43,9 @@ writeControl timeStep; writeInterval 1000000000; writeFormat binary; writePrecis
 runTimeModifiable false;
 functions
 {
-    dUdt { type ddt2; libs ("libfieldFunctionObjects.so"); fields (U); mag true; result dUdt; log false; writeControl writeTime; }
-    dUdtMax { type fieldMinMax; libs ("libfieldFunctionObjects.so"); fields (dUdt); mode magnitude; log false; writeToFile false; }
-    steady
-    {
-        type runTimeControl; libs ("libutilityFunctionObjects.so");
-        conditions
-        {
-            dudt { type minMax; functionObject dUdtMax; fields (max(dUdt)); mode minimum; value $tol; }
-        }
-    }
-}
 EOT
+    sh "$(dirname "$0")/steady_stop.sh" "$tol"
+    echo "}"
 } >"$dir/system/controlDict"
 {
     header dictionary fvSchemes

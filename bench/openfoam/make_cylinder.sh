@@ -121,18 +121,7 @@ functions
         executeControl timeStep; executeInterval $every; writeControl timeStep; writeInterval $every;
     }
 EOT
-    [ -z "$tol" ] || cat <<EOT
-    dUdt { type ddt2; libs ("libfieldFunctionObjects.so"); fields (U); mag true; result dUdt; log false; writeControl writeTime; }
-    dUdtMax { type fieldMinMax; libs ("libfieldFunctionObjects.so"); fields (dUdt); mode magnitude; log false; writeToFile false; }
-    steady
-    {
-        type runTimeControl; libs ("libutilityFunctionObjects.so");
-        conditions
-        {
-            dudt { type minMax; functionObject dUdtMax; fields (max(dUdt)); mode minimum; value $tol; }
-        }
-    }
-EOT
+    [ -z "$tol" ] || sh "$(dirname "$0")/steady_stop.sh" "$tol"
     echo "}"
 } >"$dir/system/controlDict"
 {
