@@ -144,17 +144,21 @@ static void node_horizons(PddoCloud *c) {
 }
 
 /* The families of the nodes with a horizon below the cloud's cut to it,
- * in place (each family's members in order; the same margin). */
+ * in place (each family's members in order; the same margin); nothing to
+ * do without a local-horizon patch (the paper's one horizon). */
 static void local_families(PddoCloud *c) {
+    bool any = false;
+    for (int h = 0; h < c->npatches; h++) any = any || c->patch[h].local_horizon > 0.0;
+    if (!any) return;
     int64_t at = 0;
     for (int64_t k = 0; k < c->n; k++) {
         const int64_t lo = c->first[k], hi = c->first[k + 1];
         const double d = c->node_delta[k] * (1.0 + 1e-9);
+        const bool cut = c->node_delta[k] < c->delta;
         c->first[k] = at;
         for (int64_t q = lo; q < hi; q++) {
             const int32_t j = c->nbr[q];
-            if (d < c->delta * (1.0 + 1e-9) && hypot(c->x[j] - c->x[k], c->y[j] - c->y[k]) > d)
-                continue;
+            if (cut && hypot(c->x[j] - c->x[k], c->y[j] - c->y[k]) > d) continue;
             c->nbr[at++] = j;
         }
     }
