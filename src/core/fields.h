@@ -54,7 +54,8 @@ typedef struct {
     uint32_t short_cols;
 } TableRef;
 
-enum { FIELDSET_MAX_FIELDS = 12, FIELDSET_MAX_PICTURES = 4, FIELDSET_MAX_TABLES = 2 };
+/* tables: the PDDO flow's two lines and a wall table for each of its 8 bodies */
+enum { FIELDSET_MAX_FIELDS = 12, FIELDSET_MAX_PICTURES = 4, FIELDSET_MAX_TABLES = 10 };
 
 /* This process's part of a mesh that several processes share (issue 28).
  * Each writes its piece as a file of its own (<series>_NNNNN_pPPPP.vtr or

@@ -67,30 +67,43 @@ static double side_derivative(const PddoForces *f, PddoOp op, const double *g, i
     return sum;
 }
 
+PddoWallTraction pddo_forces_traction(const PddoForces *f, PddoTraction traction,
+                                      const PddoOps *ops, const double *u, const double *v,
+                                      const double *p, double mu, int32_t t) {
+    const PddoPolarPatch *pp = &f->cloud->patch[f->patch];
+    const int64_t k = f->wall + t;
+    double ux, uy, vx, vy;
+    if (traction == PDDO_TRACTION_FULL_FAMILY) {
+        ux = pddo_ops_at(ops, PDDO_D_X, u, k), uy = pddo_ops_at(ops, PDDO_D_Y, u, k);
+        vx = pddo_ops_at(ops, PDDO_D_X, v, k), vy = pddo_ops_at(ops, PDDO_D_Y, v, k);
+    } else {
+        ux = side_derivative(f, PDDO_D_X, u, t), uy = side_derivative(f, PDDO_D_Y, u, t);
+        vx = side_derivative(f, PDDO_D_X, v, t), vy = side_derivative(f, PDDO_D_Y, v, t);
+    }
+    /* the outward normal from the node's position (Eq. 72, the paper's n
+     * per wall node) */
+    const double inv_r = 1.0 / pp->radius;
+    const double nx = (f->cloud->x[k] - pp->x) * inv_r, ny = (f->cloud->y[k] - pp->y) * inv_r;
+    const double shear = mu * (uy + vx);
+    return (PddoWallTraction){.nx = nx,
+                              .ny = ny,
+                              .p = p[k],
+                              .viscous_x = 2.0 * mu * ux * nx + shear * ny,
+                              .viscous_y = shear * nx + 2.0 * mu * vy * ny};
+}
+
 /* Eqs. 75-76. */
 PddoForce pddo_forces_eval(const PddoForces *f, PddoTraction traction, const PddoOps *ops,
                            const double *u, const double *v, const double *p, double mu) {
     const PddoPolarPatch *pp = &f->cloud->patch[f->patch];
-    const double ds = pp->radius * pp->dtheta, inv_r = 1.0 / pp->radius;
+    const double ds = pp->radius * pp->dtheta;
     PddoForce out = {0};
     for (int32_t t = 0; t < f->m; t++) {
-        const int64_t k = f->wall + t;
-        double ux, uy, vx, vy;
-        if (traction == PDDO_TRACTION_FULL_FAMILY) {
-            ux = pddo_ops_at(ops, PDDO_D_X, u, k), uy = pddo_ops_at(ops, PDDO_D_Y, u, k);
-            vx = pddo_ops_at(ops, PDDO_D_X, v, k), vy = pddo_ops_at(ops, PDDO_D_Y, v, k);
-        } else {
-            ux = side_derivative(f, PDDO_D_X, u, t), uy = side_derivative(f, PDDO_D_Y, u, t);
-            vx = side_derivative(f, PDDO_D_X, v, t), vy = side_derivative(f, PDDO_D_Y, v, t);
-        }
-        /* the outward normal from the node's position (Eq. 72, the paper's
-         * n per wall node) */
-        const double nx = (f->cloud->x[k] - pp->x) * inv_r, ny = (f->cloud->y[k] - pp->y) * inv_r;
-        const double shear = mu * (uy + vx);
-        out.fx_pressure -= p[k] * nx * ds;
-        out.fy_pressure -= p[k] * ny * ds;
-        out.fx_viscous += (2.0 * mu * ux * nx + shear * ny) * ds;
-        out.fy_viscous += (shear * nx + 2.0 * mu * vy * ny) * ds;
+        const PddoWallTraction w = pddo_forces_traction(f, traction, ops, u, v, p, mu, t);
+        out.fx_pressure -= w.p * w.nx * ds;
+        out.fy_pressure -= w.p * w.ny * ds;
+        out.fx_viscous += w.viscous_x * ds;
+        out.fy_viscous += w.viscous_y * ds;
     }
     out.fx = out.fx_pressure + out.fx_viscous;
     out.fy = out.fy_pressure + out.fy_viscous;

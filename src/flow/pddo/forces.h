@@ -59,9 +59,23 @@ typedef struct {
  * quadratic fit (operators.h's rule); NSPD_ERR_NOMEM. */
 int pddo_forces_build(PddoForces *f, const PddoCloud *cloud, int patch);
 
+/* The traction sigma n on the body at wall node t (the integrand of Eq.
+ * 75): n the outward unit normal, p the node's pressure, viscous the mu
+ * (grad u + grad u^T) n part (N/m^2), so sigma n = -p n + viscous. At a
+ * no-slip wall viscous is tangential: the wall shear stress is viscous .
+ * (-ny, nx), along the counterclockwise tangent. */
+typedef struct {
+    double nx, ny, p, viscous_x, viscous_y;
+} PddoWallTraction;
+
+PddoWallTraction pddo_forces_traction(const PddoForces *f, PddoTraction traction,
+                                      const PddoOps *ops, const double *u, const double *v,
+                                      const double *p, double mu, int32_t t);
+
 /* The force from the nodal fields u, v (m/s), p (Pa) of the cloud with
- * viscosity mu (Pa s). traction picks the derivatives; ops (the cloud's
- * operators) is needed for PDDO_TRACTION_FULL_FAMILY only (else NULL). */
+ * viscosity mu (Pa s): the traction above summed in ring order, ds = R
+ * dtheta. traction picks the derivatives; ops (the cloud's operators) is
+ * needed for PDDO_TRACTION_FULL_FAMILY only (else NULL). */
 PddoForce pddo_forces_eval(const PddoForces *f, PddoTraction traction, const PddoOps *ops,
                            const double *u, const double *v, const double *p, double mu);
 

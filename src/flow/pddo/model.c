@@ -24,6 +24,8 @@ enum { OX, OY, OU, OV, OP, OW, OD, OS, OK_KIND, OUT_ARRAYS };
  * sum's terms. */
 enum { GUX, GUY, GVX, GVY, TERM, NODE_ARRAYS };
 enum { LINE_COLS = 5 };
+/* a body's wall table: theta (deg), x, y, p, wall shear, traction x, y */
+enum { WALL_COLS = 7 };
 
 /* A force's record: the last step's force, the dt-weighted sums from
  * average_from on (fx, fy, fx_p, fx_v, fy_p, fy_v) and the lift's upward
@@ -58,6 +60,8 @@ typedef struct {
     /* the bodies' forces: each body's operators and record */
     PddoForces forces[PDDO_MAX_BODIES];
     BodyRecord body[PDDO_MAX_BODIES];
+    double *wall_col[PDDO_MAX_BODIES][WALL_COLS]; /* each body's wall table (pddo_fields) */
+    char wall_file[PDDO_MAX_BODIES][PDDO_LINE_NAME + 8];
     double averaged_s; /* the time summed in the records */
     PddoSample probes; /* the driver's point probes (flow/pddo/sample.h) */
 } PddoFlow;
@@ -164,7 +168,10 @@ static int pddo_validate(const FlowConfig *fc) {
 
 static void pddo_destroy(void *impl) {
     PddoFlow *f = impl;
-    for (int b = 0; b < PDDO_MAX_BODIES; b++) pddo_forces_free(&f->forces[b]);
+    for (int b = 0; b < PDDO_MAX_BODIES; b++) {
+        pddo_forces_free(&f->forces[b]);
+        for (int k = 0; k < WALL_COLS; k++) nspd_free(&f->wall_col[b][k]);
+    }
     pddo_sample_free(&f->probes);
     pddo_step_free(&f->step);
     pddo_ppe_free(&f->ppe);
@@ -259,7 +266,17 @@ static int build(PddoFlow *f) {
         if (f->cfg.pressure_runs) TRY(pddo_ppe_use_runs(&f->ppe));
     }
     TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
-    for (int b = 0; b < c->npatches; b++) TRY(pddo_forces_build(&f->forces[b], c, b));
+    for (int b = 0; b < c->npatches; b++) {
+        TRY(pddo_forces_build(&f->forces[b], c, b));
+        for (int k = 0; k < WALL_COLS; k++)
+            TRY(nspd_alloc(&f->wall_col[b][k], (size_t)f->forces[b].m, sizeof(double)));
+        char file[sizeof f->wall_file[b]]; /* through a local, as build_line's */
+        if (b == 0)
+            snprintf(file, sizeof file, "wall");
+        else
+            snprintf(file, sizeof file, "wall_%s", f->cfg.body_name[b]);
+        memcpy(f->wall_file[b], file, sizeof file);
+    }
     f->setup_s = nspd_wall_time() - t0;
     for (int64_t k = 0; k < c->n; k++)
         if (pddo_node_physical(c->kind[k])) f->physical++;
@@ -658,6 +675,31 @@ static void range(PddoFlow *f, const double *v, int64_t n, double *lo, double *h
     if (!(*hi > *lo)) *hi = *lo + 1.0;
 }
 
+/* Body b's wall table: per wall node, counterclockwise from theta = 0
+ * (the +x side), its angle, position, pressure, wall shear stress and
+ * traction sigma n on the body (forces.h; the forces' fluid-side
+ * derivatives). */
+static void wall_table(PddoFlow *f, int b, TableRef *t) {
+    const PddoForces *F = &f->forces[b];
+    const PddoPolarPatch *pp = &f->cloud.patch[b];
+    double *const *col = f->wall_col[b];
+    for (int32_t r = 0; r < F->m; r++) {
+        const PddoWallTraction w = pddo_forces_traction(
+            F, PDDO_TRACTION_FLUID_SIDE, NULL, f->step.u, f->step.v, f->step.p, f->cfg.step.mu, r);
+        const int64_t k = F->wall + r;
+        col[0][r] = (double)r * pp->dtheta * (180.0 / M_PI);
+        col[1][r] = f->cloud.x[k], col[2][r] = f->cloud.y[k];
+        col[3][r] = w.p;
+        col[4][r] = w.viscous_y * w.nx - w.viscous_x * w.ny;
+        col[5][r] = w.viscous_x - w.p * w.nx, col[6][r] = w.viscous_y - w.p * w.ny;
+    }
+    *t = (TableRef){.file = f->wall_file[b],
+                    .header = "theta_deg,x,y,p,wall_shear,traction_x,traction_y",
+                    .rows = F->m,
+                    .ncol = WALL_COLS};
+    for (int k = 0; k < WALL_COLS; k++) t->col[k] = col[k];
+}
+
 static void pddo_fields(void *impl, FieldSet *out) {
     PddoFlow *f = impl;
     const PddoCloud *c = &f->cloud;
@@ -730,6 +772,7 @@ static void pddo_fields(void *impl, FieldSet *out) {
                         .ncol = LINE_COLS};
         for (int k = 0; k < LINE_COLS; k++) t->col[k] = col[k];
     }
+    for (int b = 0; b < c->npatches; b++) wall_table(f, b, &out->table[out->table_count++]);
 }
 
 /* A body's force record. */
