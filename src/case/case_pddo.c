@@ -12,6 +12,7 @@ static const char *const SIDE_KEYS[PDDO_SIDES] = {"x_min", "x_max", "y_min", "y_
 static const char *const SIDE_TYPES[] = {"wall", "lid", "inlet", "outlet", "periodic", NULL};
 enum { T_WALL, T_LID, T_INLET, T_OUTLET, T_PERIODIC };
 static const char *const PROFILES[] = {"uniform", "parabolic", NULL};
+static const char *const INLET_CORNERS[] = {"wall", "inlet", NULL};
 static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const DIVERGENCE_TERM[] = {"paper", "updated", NULL};
 static const char *const WALL_PRESSURE[] = {"zero_gradient", "momentum", NULL};
@@ -182,6 +183,9 @@ static int read_side(CfgNode *bcs, int s, PddoFlowConfig *c, int *type, double *
         int profile;
         TRY(cfg_opt_enum(m, "profile", PROFILES, PDDO_INLET_UNIFORM, &profile));
         p->inlet_profile = (PddoInletProfile)profile;
+        int corners;
+        TRY(cfg_opt_enum(m, "corners", INLET_CORNERS, PDDO_INLET_CORNERS_WALL, &corners));
+        p->inlet_corners = (PddoInletCorners)corners;
         if (normal == 0)
             p->inlet_u = into * *inlet;
         else

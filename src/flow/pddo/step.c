@@ -49,6 +49,9 @@ static void node_rule(PddoStep *ps, int64_t k) {
         if (r < best_rank) best_rank = r, best = s;
     }
     if (best < 0) return; /* a periodic axis' node 0: not on any side */
+    if (ps->par.inlet_corners == PDDO_INLET_CORNERS_INLET && c->kind[k] == PDDO_NODE_SIDE)
+        for (int s = 0; s < PDDO_SIDES; s++) /* the inlet's own corner nodes, not its ghosts */
+            if (((unsigned)c->sides[k] >> s & 1u) && c->side[s] == PDDO_SIDE_INLET) best = s;
     switch (c->side[best]) {
     case PDDO_SIDE_WALL:
         /* the wall's own nodes hold its velocity; its fictitious ones too
