@@ -20,7 +20,9 @@
 # the cells below TOL m/s^2.
 # Sampled after the run (postProcess -func sample -latestTime), cellPoint:
 # p in front (4.5, 3), beside (5, 3.5), |u| at (5, 4.2), (5, 1.8) and at the
-# outlet (15, 3) (just inside each boundary); the forces function object
+# outlet (15, 3) (just inside each boundary); the cylinder's face pressures
+# by `postProcess -func wallSample -latestTime` (postProcessing/wallSample/
+# TIME/p_cylinder.raw: x y z p a face); the forces function object
 # writes drag and lift on the cylinder every EVERY steps (default 50).
 set -eu
 dir=$1
@@ -162,6 +164,14 @@ sets
 );
 EOT
 } >"$dir/system/sample"
+{
+    header dictionary wallSample
+    cat <<'EOT'
+type surfaces; libs ("libsampling.so");
+interpolationScheme cell; surfaceFormat raw; fields (p);
+surfaces ( cylinder { type patch; patches (cylinder); interpolate false; } );
+EOT
+} >"$dir/system/wallSample"
 {
     header dictionary transportProperties
     echo "nu $nu;"
