@@ -490,6 +490,25 @@ static void history_force(Report *row, const char *prefix, const PddoForce *F, c
 #undef COLUMN
 }
 
+/* The flow rate per metre of depth (m^2/s) through side s into the
+ * rectangle: the normal velocity over the side's nodes by the trapezoid
+ * rule (the side's end nodes half weight), the same rule the line tables'
+ * users apply. */
+static double side_flow_rate(const PddoFlow *f, int s) {
+    const PddoCloud *c = &f->cloud;
+    const int across = s < PDDO_BOTTOM ? c->ny : c->nx; /* intervals along the side */
+    const int at = s == PDDO_LEFT || s == PDDO_BOTTOM ? 0 : (s == PDDO_RIGHT ? c->nx : c->ny);
+    const double into = s % 2 == 0 ? 1.0 : -1.0;
+    const double *vel = s < PDDO_BOTTOM ? f->step.u : f->step.v;
+    double q = 0.0;
+    for (int t = 0; t <= across; t++) {
+        const int64_t k = s < PDDO_BOTTOM ? pddo_cloud_node(c, at, t) : pddo_cloud_node(c, t, at);
+        if (k < 0) continue;
+        q += (t == 0 || t == across ? 0.5 : 1.0) * vel[k];
+    }
+    return into * q * c->dx;
+}
+
 static void pddo_history(const void *impl, Report *row) {
     const PddoFlow *f = impl;
     double totals[4];
@@ -501,6 +520,15 @@ static void pddo_history(const void *impl, Report *row) {
     report_precise(row, "momentum_y_kg_per_s", totals[2]);
     report_real(row, "div_max_per_s", max_divergence(f));
     report_real(row, "ppe_shift", f->ppe.shift);
+    /* the inlet's and the outlets' flow rates: the scheme's mass balance */
+    double in = 0.0, out = 0.0;
+    bool has_in = false, has_out = false;
+    for (int s = 0; s < PDDO_SIDES; s++) {
+        if (f->cloud.side[s] == PDDO_SIDE_INLET) in += side_flow_rate(f, s), has_in = true;
+        if (f->cloud.side[s] == PDDO_SIDE_OUTLET) out -= side_flow_rate(f, s), has_out = true;
+    }
+    if (has_in) report_precise(row, "inflow_m2_per_s", in);
+    if (has_out) report_precise(row, "outflow_m2_per_s", out);
     for (int b = 0; b < f->cloud.npatches; b++) {
         char prefix[PDDO_LINE_NAME + 1];
         body_prefix(f, b, prefix, sizeof prefix);

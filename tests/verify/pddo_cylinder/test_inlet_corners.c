@@ -16,8 +16,9 @@
  * 279.62 and 286.33 N/m (+2.40 %). Asserted: the inlet column's flow rate
  * to 1e-9 of 58 and 60, the rate at x = 12 m within 2 % of the inlet's
  * and higher with `inlet` by more than 1 %, and the drag with `inlet`
- * higher by 1.5-3.5 % (a viscous flow's drag follows its flow rate).
- * About 1 s. */
+ * higher by 1.5-3.5 % (a viscous flow's drag follows its flow rate);
+ * the history's inflow_m2_per_s equal to the inlet line's to 1e-12, its
+ * outflow_m2_per_s (x = 15 m) within 0.2 % of the section's. About 1 s. */
 #include "sim_fixtures.h"
 #include "test_support.h"
 
@@ -77,6 +78,13 @@ static Result steady(const char *corners) {
     flow_fields(sim.flow, &fs);
     const Result r = {flow_rate(&fs, "line_inlet"), flow_rate(&fs, "line_section"),
                       fixture_flow_history(&sim, "drag_n")};
+    /* the history's inflow is the same trapezoid rule over the same nodes;
+     * its outflow at x = 15 m is near the section's at 12 m */
+    const double in = fixture_flow_history(&sim, "inflow_m2_per_s");
+    const double out = fixture_flow_history(&sim, "outflow_m2_per_s");
+    printf("history: inflow %.9f, outflow %.6f m^2/s\n", in, out);
+    assert_true(fabs(in - r.inlet) < 1e-12 * r.inlet);
+    assert_true(fabs(out - r.section) < 2e-3 * r.section);
     printf("corners: %-5s flow rate %.9f m^2/s at the inlet, %.6f at x = 12 m; drag %.4f N/m\n",
            corners, r.inlet, r.section, r.drag);
     sim_destroy(&sim);
