@@ -73,8 +73,11 @@ typedef enum {
 typedef enum {
     PDDO_INLET_CORNERS_WALL = 0, /* the wall (u = 0): the inlet's nodes carry the flow rate
                                     velocity x (length - spacing), a first-order deficit (the
-                                    Re 10 cylinder's drag -0.83 % at dx 0.05 m from it alone) */
-    PDDO_INLET_CORNERS_INLET,    /* the inflow: velocity x length, as posed (trapezoid rule) */
+                                    Re 10 cylinder's channel -0.83 % at dx 0.05 m, its drag
+                                    -0.77 %) */
+    PDDO_INLET_CORNERS_INLET,    /* the inflow: velocity x length, as posed (trapezoid rule);
+                                    the scheme still loses some near the corners
+                                    (docs/VALIDATION.md) */
 } PddoInletCorners;
 
 /* The pressure at walls and bodies. The paper's images p_g = p(image)
