@@ -50,7 +50,8 @@ int bond_bench(long points, long steps, Report *out) {
     double seconds = nspd_wall_time() - t0;
     if (status == NSPD_OK) {
         size_t bytes = nspd_mem_live_bytes();
-        double bond_bytes = (double)body.bond_count * PD_BYTES_PER_BOND;
+        const double per_bond = bond_bytes_per_bond(&body);
+        const double bond_bytes = (double)body.bond_count * per_bond;
         report_text(out, "bench", "pd");
         report_int(out, "points", body.n);
         report_int(out, "bonds", body.bond_count); /* once from each end, as LAMMPS counts */
@@ -58,7 +59,7 @@ int bond_bench(long points, long steps, Report *out) {
         report_int(out, "threads", omp_get_max_threads());
         report_real(out, "seconds", seconds);
         report_real(out, "bond_updates_per_s", (double)body.bond_count * (double)steps / seconds);
-        report_real(out, "bytes_per_bond", PD_BYTES_PER_BOND);
+        report_real(out, "bytes_per_bond", per_bond);
         report_real(out, "bytes_per_point", ((double)bytes - bond_bytes) / (double)body.n);
         report_real(out, "setup_s", setup_s);
         report_real(out, "peak_rss_mb", nspd_peak_rss_mb());

@@ -9,7 +9,8 @@
  *  3. bonds within the horizon |xi| <= delta (core/neighbours.c). The family is the
  *     horizon itself, as in Madenci and Oterkus' code (28 neighbours in 2D and
  *     122 in 3D for delta = 3.015 dx); the partial-volume factor nu_ij then
- *     weighs the bonds whose neighbour cell the horizon cuts;
+ *     weighs the bonds whose neighbour cell the horizon cuts. Each row is
+ *     put in offset order (stencil.h);
  *  4. surface correction factors on the intact body (corrections.c);
  *  5. bond coefficients k_ij = c beta_ij nu_ij V_j / |xi_ij|, stored as
  *     float32 relative to coef_scale = c V_ref / dx so that they are O(1);
@@ -25,6 +26,7 @@
 #include "core/neighbours.h"
 #include "solid/bond/corrections.h"
 #include "solid/bond/halo.h"
+#include "solid/bond/stencil.h"
 #include "solid/pd/lattice.h"
 #include "solid/pd/precrack.h"
 
@@ -145,6 +147,7 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     TRY(pd_boundary_table_build(&body->boundary, cfg));
 
     TRY(find_bonds(body, part));
+    bond_rows_in_offset_order(body);
     body->bond_count = body->bond_first[body->n];
     TRY(nspd_alloc(&body->bond_coef, (size_t)body->bond_count, sizeof(float)));
 
@@ -167,15 +170,14 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     return NSPD_OK;
 }
 
-/* The force's packed copy of the points (body.h), for the part kept. */
-static int alloc_packed(BondBody *body) {
-    const size_t width = body->dim == 2 ? 4 : 8; /* 3D: x, y, z, 0, ux, uy, uz, 0 */
-    return nspd_alloc(&body->packed, width * (size_t)(body->n + body->ghosts + 1), sizeof(double));
+/* The lattice view the force reads (stencil.h), for the part kept. */
+static int create_view(BondBody *body) {
+    return bond_stencil_create(body, &body->stencil);
 }
 
 int bond_body_create(BondBody *body, PdConfig *cfg) {
     int status = build(body, cfg, NULL);
-    if (status == NSPD_OK) status = alloc_packed(body);
+    if (status == NSPD_OK) status = create_view(body);
     if (status != NSPD_OK) bond_body_destroy(body);
     return status;
 }
@@ -183,9 +185,16 @@ int bond_body_create(BondBody *body, PdConfig *cfg) {
 int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm) {
     int status = build(body, cfg, comm);
     if (status == NSPD_OK) status = bond_body_divide(body, comm);
-    if (status == NSPD_OK) status = alloc_packed(body);
+    if (status == NSPD_OK) status = create_view(body);
     if (status != NSPD_OK) bond_body_destroy(body);
     return status;
+}
+
+double bond_bytes_per_bond(const BondBody *body) {
+    const BondStencil *s = body->stencil;
+    if (!s || body->bond_count == 0) return PD_BYTES_PER_BOND;
+    const double view = (double)s->chunks * s->offsets * 8 * sizeof(float);
+    return PD_BYTES_PER_BOND + view / (double)body->bond_count;
 }
 
 void bond_body_destroy(BondBody *body) {
@@ -204,7 +213,7 @@ void bond_body_destroy(BondBody *body) {
     nspd_free(&body->bond_first);
     nspd_free(&body->bond_nbr);
     nspd_free(&body->bond_coef);
-    nspd_free(&body->packed);
+    bond_stencil_free(&body->stencil);
     pd_config_free(&body->cfg);
     bond_halo_free(&body->halo);
     memset(body, 0, sizeof *body);

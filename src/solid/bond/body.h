@@ -11,7 +11,9 @@
  * so that a point's neighbours sit close to it in memory.
  *
  * Bonds are compressed rows: the bonds of point i are
- * bond_nbr[bond_first[i] .. bond_first[i+1]). Each point owns the full list
+ * bond_nbr[bond_first[i] .. bond_first[i+1]), in offset order (dz, dy,
+ * then dx, of the lattice indices: the order the force sums in,
+ * stencil.h). Each point owns the full list
  * of its bonds, so bond i-j is stored (and evaluated) once from each end:
  * the force loop writes only to point i and needs no atomics, and results do
  * not depend on the thread count. Per bond, 8 bytes:
@@ -36,6 +38,7 @@
 #include <stdint.h>
 
 struct BondHalo;
+struct BondStencil;
 
 typedef struct {
     PdConfig cfg; /* owned copy of the configuration (shapes included) */
@@ -68,10 +71,10 @@ typedef struct {
     int64_t step;
     double time;
     bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
-    /* x, y, ux, uy of each point (ghosts too) side by side (3D: x, y, z,
-     * 0, ux, uy, uz, 0), 32-byte aligned, refreshed by pd_force_compute:
-     * the force reads a neighbour's in one or two loads (force.c) */
-    double *packed;
+    /* The lattice view the force runs on (stencil.h), or NULL (a box too
+     * sparse). Whoever writes bond_coef other than the force sets
+     * stencil->stale. */
+    struct BondStencil *stencil;
 
     /* On several processes (halo.h): the ghosts after the n points this
      * process holds (their displacements from their owners, no bonds of
@@ -93,8 +96,12 @@ int bond_body_create(BondBody *body, PdConfig *cfg);
 int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm);
 void bond_body_destroy(BondBody *body);
 
-/* Bytes of bond storage per bond (neighbour index + coefficient), and of
- * row offsets per point. */
+/* Bytes of bond storage per bond in the rows (neighbour index +
+ * coefficient). */
 enum { PD_BYTES_PER_BOND = (int)(sizeof(int32_t) + sizeof(float)) };
+/* All of a body's bond storage per bond: the rows' and the lattice view's
+ * copy of the coefficients (stencil.h: 4 bytes a bond, and the chunks'
+ * cells with no bond). */
+double bond_bytes_per_bond(const BondBody *body);
 
 #endif

@@ -16,14 +16,17 @@
  * (break, then take the force) made one crack tip branch at x = -17 mm while
  * the reference (and this order) runs straight to +-22 mm.
  *
- * The point body, its SIMD reduction over the bonds and the conditional
- * store that breaks a bond are in force_kernel.h. */
+ * The point body (the reference, a sequential sum over the row) and the
+ * conditional store that breaks a bond are in force_kernel.h; what the CPU
+ * runs is the same arithmetic on the body's lattice view (stencil.h),
+ * eight points at a time, below. */
 #include "solid/bond/force.h"
 #include "core/parallel.h"
 #include "solid/bond/force_kernel.h"
+#include "solid/bond/stencil.h"
 
 #include <math.h>
-#if defined(__AVX2__)
+#if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
 
@@ -36,207 +39,6 @@ void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const 
         bond_force_point_2d(i, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
 }
 
-#if defined(__AVX2__)
-/* Four bonds b .. b + 3 of point (xi, yi, uxi, uyi) in 256-bit lanes:
- * the neighbours' packed rows loaded whole and transposed in registers
- * (four loads and eight shuffles where the plain kernel gathers four
- * arrays), their terms f rx and f ry added to (sx, sy), the bonds the step
- * stretched past s_c broken. The arithmetic of bond_force_point_2d, op
- * for op. */
-static inline __attribute__((always_inline)) void
-four_bonds(const double *restrict p, const int32_t *restrict nbr, float *restrict coef, int64_t b,
-           __m256d xi, __m256d yi, __m256d uxi, __m256d uyi, __m256d lim, __m256d *sx,
-           __m256d *sy) {
-    const __m256d r0 = _mm256_load_pd(p + 4 * (int64_t)nbr[b]);
-    const __m256d r1 = _mm256_load_pd(p + 4 * (int64_t)nbr[b + 1]);
-    const __m256d r2 = _mm256_load_pd(p + 4 * (int64_t)nbr[b + 2]);
-    const __m256d r3 = _mm256_load_pd(p + 4 * (int64_t)nbr[b + 3]);
-    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
-    const __m256d xj = _mm256_permute2f128_pd(t0, t2, 0x20);
-    const __m256d yj = _mm256_permute2f128_pd(t1, t3, 0x20);
-    const __m256d uxj = _mm256_permute2f128_pd(t0, t2, 0x31);
-    const __m256d uyj = _mm256_permute2f128_pd(t1, t3, 0x31);
-    const __m128 kf = _mm_loadu_ps(coef + b);
-    const __m256d k = _mm256_cvtps_pd(_mm_andnot_ps(_mm_set1_ps(-0.0f), kf)); /* |k| */
-    const __m256d ex = _mm256_sub_pd(xj, xi), ey = _mm256_sub_pd(yj, yi);
-    const __m256d rx = _mm256_add_pd(ex, _mm256_sub_pd(uxj, uxi));
-    const __m256d ry = _mm256_add_pd(ey, _mm256_sub_pd(uyj, uyi));
-    const __m256d e2 = _mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey));
-    const __m256d r2s = _mm256_add_pd(_mm256_mul_pd(rx, rx), _mm256_mul_pd(ry, ry));
-    const __m256d root = _mm256_sqrt_pd(_mm256_div_pd(e2, r2s));
-    const __m256d f = _mm256_mul_pd(k, _mm256_sub_pd(_mm256_set1_pd(1.0), root));
-    /* a breakable bond (k > 0) stretched past s_c: its coefficient to 0 */
-    const __m128 live = _mm_cmpgt_ps(kf, _mm_setzero_ps());
-    const __m256d over = _mm256_cmp_pd(r2s, _mm256_mul_pd(lim, e2), _CMP_GT_OQ);
-    const __m128 broken = _mm_and_ps(live, _mm256_cvtpd_ps(over)); /* the mask, narrowed */
-    if (_mm_movemask_ps(broken)) _mm_storeu_ps(coef + b, _mm_andnot_ps(broken, kf));
-    *sx = _mm256_add_pd(*sx, _mm256_mul_pd(f, rx));
-    *sy = _mm256_add_pd(*sy, _mm256_mul_pd(f, ry));
-}
-#endif
-
-void pd_force_kernel_2d_packed(int64_t lo, int64_t hi, const double *restrict x,
-                               const double *restrict y, const double *restrict ux,
-                               const double *restrict uy, const double *restrict p,
-                               const int64_t *restrict first, const int32_t *restrict nbr,
-                               float *restrict coef, double scale, double limit2,
-                               double *restrict fx, double *restrict fy) {
-#if defined(__AVX2__)
-    (void)x, (void)y, (void)ux, (void)uy;
-    const __m256d lim = _mm256_set1_pd(limit2);
-    for (int64_t i = lo; i < hi; i++) {
-        const double *pi = p + 4 * i;
-        const __m256d xi = _mm256_set1_pd(pi[0]), yi = _mm256_set1_pd(pi[1]);
-        const __m256d uxi = _mm256_set1_pd(pi[2]), uyi = _mm256_set1_pd(pi[3]);
-        __m256d sx0 = _mm256_setzero_pd(), sy0 = sx0, sx1 = sx0, sy1 = sx0;
-        const int64_t b0 = first[i], b1 = first[i + 1];
-        int64_t b = b0;
-        /* GCC's omp simd reduction in bond_force_point_2d (-O3, AVX-512
-         * with 256-bit vectors: tests/unit/solid/bond/test_force.c holds
-         * this to it bit for bit) keeps 8 lanes, bond b0 + 8 t + l in lane
-         * l, while 8 bonds are left; adds the rest of the row (all of a
-         * row of fewer than 8) into lane 0 in order; and sums the lanes 0
-         * to 7 onto 0.0 */
-        if (b1 - b0 >= 8)
-            for (; b + 8 <= b1; b += 8) {
-                four_bonds(p, nbr, coef, b, xi, yi, uxi, uyi, lim, &sx0, &sy0);
-                four_bonds(p, nbr, coef, b + 4, xi, yi, uxi, uyi, lim, &sx1, &sy1);
-            }
-        double lx[8], ly[8];
-        _mm256_storeu_pd(lx, sx0), _mm256_storeu_pd(lx + 4, sx1);
-        _mm256_storeu_pd(ly, sy0), _mm256_storeu_pd(ly + 4, sy1);
-        for (; b + 4 <= b1; b += 4) { /* terms in lanes, added into lane 0 in order */
-            __m256d tx = _mm256_setzero_pd(), ty = tx;
-            four_bonds(p, nbr, coef, b, xi, yi, uxi, uyi, lim, &tx, &ty);
-            double ax[4], ay[4];
-            _mm256_storeu_pd(ax, tx), _mm256_storeu_pd(ay, ty);
-            for (int q = 0; q < 4; q++) lx[0] += ax[q], ly[0] += ay[q];
-        }
-        for (; b < b1; b++) {
-            const int64_t j = nbr[b];
-            const float k = coef[b];
-            const double ex = p[4 * j] - pi[0], ey = p[4 * j + 1] - pi[1];
-            const double rx = ex + (p[4 * j + 2] - pi[2]), ry = ey + (p[4 * j + 3] - pi[3]);
-            const double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
-            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
-            if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
-            lx[0] += f * rx;
-            ly[0] += f * ry;
-        }
-        double sx = 0.0, sy = 0.0;
-        for (int l = 0; l < 8; l++) sx += lx[l], sy += ly[l];
-        fx[i] = scale * sx;
-        fy[i] = scale * sy;
-    }
-#else
-    (void)p; /* no AVX2: the plain kernel */
-    pd_force_kernel_2d(lo, hi, x, y, ux, uy, first, nbr, coef, scale, limit2, fx, fy);
-#endif
-}
-
-#if defined(__AVX2__)
-/* The 3D form of four_bonds: packed rows of 8 (x, y, z, 0, ux, uy, uz,
- * 0), two 256-bit loads a bond. */
-static inline __attribute__((always_inline)) void
-four_bonds_3d(const double *restrict p, const int32_t *restrict nbr, float *restrict coef,
-              int64_t b, const __m256d c[6], __m256d lim, __m256d s[3]) {
-    __m256d col[8]; /* x, y, z, -, ux, uy, uz, - of the four */
-    for (int half = 0; half < 2; half++) {
-        const __m256d r0 = _mm256_load_pd(p + 8 * (int64_t)nbr[b] + 4 * half);
-        const __m256d r1 = _mm256_load_pd(p + 8 * (int64_t)nbr[b + 1] + 4 * half);
-        const __m256d r2 = _mm256_load_pd(p + 8 * (int64_t)nbr[b + 2] + 4 * half);
-        const __m256d r3 = _mm256_load_pd(p + 8 * (int64_t)nbr[b + 3] + 4 * half);
-        const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-        const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
-        col[4 * half] = _mm256_permute2f128_pd(t0, t2, 0x20);
-        col[4 * half + 1] = _mm256_permute2f128_pd(t1, t3, 0x20);
-        col[4 * half + 2] = _mm256_permute2f128_pd(t0, t2, 0x31);
-    }
-    const __m128 kf = _mm_loadu_ps(coef + b);
-    const __m256d k = _mm256_cvtps_pd(_mm_andnot_ps(_mm_set1_ps(-0.0f), kf)); /* |k| */
-    __m256d e[3], r[3];
-    for (int a = 0; a < 3; a++) {
-        e[a] = _mm256_sub_pd(col[a], c[a]);
-        r[a] = _mm256_add_pd(e[a], _mm256_sub_pd(col[4 + a], c[3 + a]));
-    }
-    const __m256d e2 =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e[0], e[0]), _mm256_mul_pd(e[1], e[1])),
-                      _mm256_mul_pd(e[2], e[2]));
-    const __m256d r2s =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r[0], r[0]), _mm256_mul_pd(r[1], r[1])),
-                      _mm256_mul_pd(r[2], r[2]));
-    const __m256d root = _mm256_sqrt_pd(_mm256_div_pd(e2, r2s));
-    const __m256d f = _mm256_mul_pd(k, _mm256_sub_pd(_mm256_set1_pd(1.0), root));
-    const __m128 live = _mm_cmpgt_ps(kf, _mm_setzero_ps());
-    const __m256d over = _mm256_cmp_pd(r2s, _mm256_mul_pd(lim, e2), _CMP_GT_OQ);
-    const __m128 broken = _mm_and_ps(live, _mm256_cvtpd_ps(over));
-    if (_mm_movemask_ps(broken)) _mm_storeu_ps(coef + b, _mm_andnot_ps(broken, kf));
-    for (int a = 0; a < 3; a++) s[a] = _mm256_add_pd(s[a], _mm256_mul_pd(f, r[a]));
-}
-#endif
-
-void pd_force_kernel_3d_packed(int64_t lo, int64_t hi, const double *const x[3],
-                               const double *const u[3], const double *restrict p,
-                               const int64_t *restrict first, const int32_t *restrict nbr,
-                               float *restrict coef, double scale, double limit2,
-                               double *const force[3]) {
-#if defined(__AVX2__)
-    (void)x, (void)u;
-    const __m256d lim = _mm256_set1_pd(limit2);
-    for (int64_t i = lo; i < hi; i++) {
-        const double *pi = p + 8 * i;
-        const __m256d c[6] = {_mm256_set1_pd(pi[0]), _mm256_set1_pd(pi[1]), _mm256_set1_pd(pi[2]),
-                              _mm256_set1_pd(pi[4]), _mm256_set1_pd(pi[5]), _mm256_set1_pd(pi[6])};
-        __m256d s0[3], s1[3];
-        for (int a = 0; a < 3; a++) s0[a] = s1[a] = _mm256_setzero_pd();
-        const int64_t b0 = first[i], b1 = first[i + 1];
-        int64_t b = b0;
-        /* the 2D kernel's lanes and order (pd_force_kernel_2d_packed) */
-        if (b1 - b0 >= 8)
-            for (; b + 8 <= b1; b += 8) {
-                four_bonds_3d(p, nbr, coef, b, c, lim, s0);
-                four_bonds_3d(p, nbr, coef, b + 4, c, lim, s1);
-            }
-        double lane[3][8];
-        for (int a = 0; a < 3; a++)
-            _mm256_storeu_pd(lane[a], s0[a]), _mm256_storeu_pd(lane[a] + 4, s1[a]);
-        for (; b + 4 <= b1; b += 4) {
-            __m256d t[3] = {_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd()};
-            four_bonds_3d(p, nbr, coef, b, c, lim, t);
-            for (int a = 0; a < 3; a++) {
-                double v[4];
-                _mm256_storeu_pd(v, t[a]);
-                for (int q = 0; q < 4; q++) lane[a][0] += v[q];
-            }
-        }
-        for (; b < b1; b++) {
-            const int64_t j = nbr[b];
-            const float k = coef[b];
-            const double *pj = p + 8 * j;
-            const double ex = pj[0] - pi[0], ey = pj[1] - pi[1], ez = pj[2] - pi[2];
-            const double rx = ex + (pj[4] - pi[4]), ry = ey + (pj[5] - pi[5]),
-                         rz = ez + (pj[6] - pi[6]);
-            const double e2 = ex * ex + ey * ey + ez * ez, r2 = rx * rx + ry * ry + rz * rz;
-            const double f = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
-            if ((k > 0.0f) & (r2 > limit2 * e2)) coef[b] = 0.0f;
-            lane[0][0] += f * rx;
-            lane[1][0] += f * ry;
-            lane[2][0] += f * rz;
-        }
-        for (int a = 0; a < 3; a++) {
-            double sum = 0.0;
-            for (int l = 0; l < 8; l++) sum += lane[a][l];
-            force[a][i] = scale * sum;
-        }
-    }
-#else
-    (void)p; /* no AVX2: the plain kernel */
-    pd_force_kernel_3d(lo, hi, x[0], x[1], x[2], u[0], u[1], u[2], first, nbr, coef, scale, limit2,
-                       force[0], force[1], force[2]);
-#endif
-}
-
 void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
                         const double *restrict z, const double *restrict ux,
                         const double *restrict uy, const double *restrict uz,
@@ -247,42 +49,179 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
         bond_force_point_3d(i, x, y, z, ux, uy, uz, first, nbr, coef, scale, limit2, fx, fy, fz);
 }
 
-/* Rows per OpenMP chunk: large enough to amortise scheduling, small enough
- * to balance two threads on a body of a few thousand points (the panel's
- * 3,224: 13 blocks). The team is taken by the bond count (core/parallel.h). */
+/* Breaks, in the body's rows, the bond of the point in `cell` to the one
+ * `shift` cells on (the view's copy is already 0): rare, so found by a
+ * walk along the row. */
+static void break_in_row(int64_t cell, int64_t shift, const int32_t *restrict cell_point,
+                         const int64_t *restrict first, const int32_t *restrict nbr,
+                         float *restrict bond_coef) {
+    const int32_t i = cell_point[cell], j = cell_point[cell + shift];
+    for (int64_t e = first[i]; e < first[i + 1]; e++)
+        if (nbr[e] == j) {
+            bond_coef[e] = 0.0f;
+            return;
+        }
+}
+
+/* The sums of a chunk's eight cells (sum[axis][lane]) to the forces of
+ * its held points. */
+static void store_chunk(int dim, int64_t cell, double sum[3][8], const int32_t *restrict cell_point,
+                        int64_t held, double scale, double *const force[3]) {
+    for (int l = 0; l < 8; l++) {
+        const int32_t i = cell_point[cell + l];
+        if (i >= 0 && i < held)
+            for (int a = 0; a < dim; a++) force[a][i] = scale * sum[a][l];
+    }
+}
+
+/* Chunks [lo, hi) of a view of DIM axes (2 or 3, a constant in each
+ * instance below): per chunk, its eight cells' bonds offset by offset,
+ * bond_force_point_2d / _3d's arithmetic op for op, a lane a point. */
+static inline __attribute__((always_inline)) void
+stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict chunk_cell,
+               int offsets, const int64_t *restrict shift, const double *const x[3],
+               const double *const u[3], float *restrict coef, const int32_t *restrict cell_point,
+               int64_t held, const int64_t *restrict first, const int32_t *restrict nbr,
+               float *restrict bond_coef, double scale, double limit2, double *const force[3]) {
+#if defined(__AVX512F__) && defined(__AVX512VL__)
+    const __m512d lim = _mm512_set1_pd(limit2), one = _mm512_set1_pd(1.0);
+    const __m256 zero = _mm256_setzero_ps(), sign = _mm256_set1_ps(-0.0f);
+    for (int64_t q = lo; q < hi; q++) {
+        const int64_t c = chunk_cell[q];
+        float *kq = coef + q * offsets * 8;
+        __m512d xi[3], ui[3], s[3];
+        for (int a = 0; a < DIM; a++) {
+            xi[a] = _mm512_load_pd(x[a] + c), ui[a] = _mm512_load_pd(u[a] + c);
+            s[a] = _mm512_setzero_pd();
+        }
+        for (int o = 0; o < offsets; o++) {
+            const int64_t j = c + shift[o];
+            float *k8 = kq + 8 * o;
+            const __m256 kf = _mm256_load_ps(k8);
+            const __mmask8 bonded = _mm256_cmp_ps_mask(kf, zero, _CMP_NEQ_UQ);
+            const __m512d k = _mm512_cvtps_pd(_mm256_andnot_ps(sign, kf)); /* |k| */
+            __m512d e[3], r[3];
+            for (int a = 0; a < DIM; a++) {
+                e[a] = _mm512_sub_pd(_mm512_loadu_pd(x[a] + j), xi[a]);
+                r[a] = _mm512_add_pd(e[a], _mm512_sub_pd(_mm512_loadu_pd(u[a] + j), ui[a]));
+            }
+            __m512d e2 = _mm512_add_pd(_mm512_mul_pd(e[0], e[0]), _mm512_mul_pd(e[1], e[1]));
+            __m512d r2 = _mm512_add_pd(_mm512_mul_pd(r[0], r[0]), _mm512_mul_pd(r[1], r[1]));
+            if (DIM == 3) {
+                e2 = _mm512_add_pd(e2, _mm512_mul_pd(e[2], e[2]));
+                r2 = _mm512_add_pd(r2, _mm512_mul_pd(r[2], r[2]));
+            }
+            const __m512d root = _mm512_sqrt_pd(_mm512_div_pd(e2, r2));
+            /* no bond (0): no force, whatever the cells hold */
+            const __m512d f = _mm512_maskz_mul_pd(bonded, k, _mm512_sub_pd(one, root));
+            /* a breakable bond (k > 0) stretched past s_c: its coefficient to 0 */
+            const __mmask8 live = _mm256_cmp_ps_mask(kf, zero, _CMP_GT_OQ);
+            const __mmask8 over =
+                _mm512_mask_cmp_pd_mask(live, r2, _mm512_mul_pd(lim, e2), _CMP_GT_OQ);
+            if (over) {
+                _mm256_mask_store_ps(k8, over, zero);
+                for (int l = 0; l < 8; l++)
+                    if (over >> l & 1)
+                        break_in_row(c + l, shift[o], cell_point, first, nbr, bond_coef);
+            }
+            for (int a = 0; a < DIM; a++) s[a] = _mm512_add_pd(s[a], _mm512_mul_pd(f, r[a]));
+        }
+        double sum[3][8];
+        for (int a = 0; a < DIM; a++) _mm512_storeu_pd(sum[a], s[a]);
+        store_chunk(DIM, c, sum, cell_point, held, scale, force);
+    }
+#else
+    for (int64_t q = lo; q < hi; q++) {
+        const int64_t c = chunk_cell[q];
+        float *kq = coef + q * offsets * 8;
+        double sum[3][8] = {{0}};
+        for (int o = 0; o < offsets; o++) {
+            const int64_t sh = shift[o];
+            float *k8 = kq + 8 * o;
+            unsigned broke = 0;
+#pragma omp simd reduction(| : broke)
+            for (int l = 0; l < 8; l++) {
+                const int64_t i = c + l, j = i + sh;
+                const float k = k8[l];
+                double e[3], r[3];
+                for (int a = 0; a < DIM; a++) {
+                    e[a] = x[a][j] - x[a][i];
+                    r[a] = e[a] + (u[a][j] - u[a][i]);
+                }
+                double e2 = e[0] * e[0] + e[1] * e[1], r2 = r[0] * r[0] + r[1] * r[1];
+                if (DIM == 3) e2 += e[2] * e[2], r2 += r[2] * r[2];
+                const double f = k != 0.0f ? (double)fabsf(k) * (1.0 - sqrt(e2 / r2)) : 0.0;
+                const unsigned over = (k > 0.0f) & (r2 > limit2 * e2);
+                if (over) k8[l] = 0.0f;
+                broke |= over << l;
+                for (int a = 0; a < DIM; a++) sum[a][l] += f * r[a];
+            }
+            for (int l = 0; broke && l < 8; l++)
+                if (broke >> l & 1) break_in_row(c + l, sh, cell_point, first, nbr, bond_coef);
+        }
+        store_chunk(DIM, c, sum, cell_point, held, scale, force);
+    }
+#endif
+}
+
+void pd_force_kernel_stencil(int dim, int64_t lo, int64_t hi, const int64_t *restrict chunk_cell,
+                             int offsets, const int64_t *restrict shift, const double *const x[3],
+                             const double *const u[3], float *restrict coef,
+                             const int32_t *restrict cell_point, int64_t held,
+                             const int64_t *restrict first, const int32_t *restrict nbr,
+                             float *restrict bond_coef, double scale, double limit2,
+                             double *const force[3]) {
+    if (dim == 2)
+        stencil_chunks(2, lo, hi, chunk_cell, offsets, shift, x, u, coef, cell_point, held, first,
+                       nbr, bond_coef, scale, limit2, force);
+    else
+        stencil_chunks(3, lo, hi, chunk_cell, offsets, shift, x, u, coef, cell_point, held, first,
+                       nbr, bond_coef, scale, limit2, force);
+}
+
+/* Points (chunks: 8 a chunk) per OpenMP block: large enough to amortise
+ * scheduling, small enough to balance two threads on a body of a few
+ * thousand points (the panel's 3,224: 13 blocks). The team is taken by
+ * the bond count (core/parallel.h). */
 enum { FORCE_BLOCK = 256 };
 
+/* The force without a view (stencil.h: too sparse a box): the plain
+ * kernels, whose bits are the view's. */
+static void force_plain(BondBody *b, double scale, double limit2) {
+    const int64_t n = b->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
+#pragma omp parallel for schedule(static) if (b->bond_count >= PARALLEL_MIN_ITEMS)
+    for (int64_t blk = 0; blk < blocks; blk++) {
+        int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
+        if (b->dim == 2)
+            pd_force_kernel_2d(lo, hi, b->x[0], b->x[1], b->u[0], b->u[1], b->bond_first,
+                               b->bond_nbr, b->bond_coef, scale, limit2, b->force[0], b->force[1]);
+        else
+            pd_force_kernel_3d(lo, hi, b->x[0], b->x[1], b->x[2], b->u[0], b->u[1], b->u[2],
+                               b->bond_first, b->bond_nbr, b->bond_coef, scale, limit2, b->force[0],
+                               b->force[1], b->force[2]);
+    }
+}
+
 void pd_force_compute(BondBody *body) {
-    const int64_t n = body->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
-    if (body->dim == 2) {
-        const int64_t all = n + body->ghosts;
-        double *p = body->packed;
+    BondStencil *s = body->stencil;
+    if (!s) {
+        force_plain(body, scale, limit2);
+        return;
+    }
+    if (s->stale) bond_stencil_take_coef(s, body);
+    const int64_t all = body->n + body->ghosts;
+    const int dim = body->dim;
 #pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
-        for (int64_t i = 0; i < all; i++) {
-            p[4 * i] = body->x[0][i], p[4 * i + 1] = body->x[1][i];
-            p[4 * i + 2] = body->u[0][i], p[4 * i + 3] = body->u[1][i];
-        }
+    for (int64_t i = 0; i < all; i++)
+        for (int a = 0; a < dim; a++) s->u[a][s->point_cell[i]] = body->u[a][i];
+    const int64_t per = FORCE_BLOCK / 8, blocks = (s->chunks + per - 1) / per;
 #pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
-        for (int64_t blk = 0; blk < blocks; blk++) {
-            int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
-            pd_force_kernel_2d_packed(lo, hi, body->x[0], body->x[1], body->u[0], body->u[1], p,
-                                      body->bond_first, body->bond_nbr, body->bond_coef, scale,
-                                      limit2, body->force[0], body->force[1]);
-        }
-    } else {
-        const int64_t all = n + body->ghosts;
-        double *p = body->packed;
-#pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
-        for (int64_t i = 0; i < all; i++)
-            for (int a = 0; a < 3; a++)
-                p[8 * i + a] = body->x[a][i], p[8 * i + 4 + a] = body->u[a][i];
-#pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
-        for (int64_t blk = 0; blk < blocks; blk++) {
-            int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
-            pd_force_kernel_3d_packed(lo, hi, (const double *const *)body->x,
-                                      (const double *const *)body->u, p, body->bond_first,
-                                      body->bond_nbr, body->bond_coef, scale, limit2, body->force);
-        }
+    for (int64_t blk = 0; blk < blocks; blk++) {
+        int64_t lo = blk * per, hi = lo + per < s->chunks ? lo + per : s->chunks;
+        pd_force_kernel_stencil(dim, lo, hi, s->chunk_cell, s->offsets, s->shift,
+                                (const double *const *)s->x, (const double *const *)s->u, s->coef,
+                                s->cell_point, body->n, body->bond_first, body->bond_nbr,
+                                body->bond_coef, scale, limit2, body->force);
     }
 }

@@ -13,18 +13,6 @@ void pd_force_kernel_2d(int64_t lo, int64_t hi, const double *restrict x, const 
                         const int64_t *restrict first, const int32_t *restrict nbr,
                         float *restrict coef, double scale, double limit2, double *restrict fx,
                         double *restrict fy);
-/* The same force in 2D from the points' packed rows p[4 i ..] = (x, y,
- * ux, uy), the copy of x, y, ux, uy (32-byte aligned; BondBody.packed):
- * with AVX2, four bonds at a time loaded whole instead of gathered, the
- * bits of pd_force_kernel_2d as GCC 12 vectorises it with AVX-512 (its
- * reduction's order kept: force.c); without AVX2, pd_force_kernel_2d on
- * x, y, ux, uy. What pd_force_compute runs in 2D. */
-void pd_force_kernel_2d_packed(int64_t lo, int64_t hi, const double *restrict x,
-                               const double *restrict y, const double *restrict ux,
-                               const double *restrict uy, const double *restrict p,
-                               const int64_t *restrict first, const int32_t *restrict nbr,
-                               float *restrict coef, double scale, double limit2,
-                               double *restrict fx, double *restrict fy);
 void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const double *restrict y,
                         const double *restrict z, const double *restrict ux,
                         const double *restrict uy, const double *restrict uz,
@@ -32,14 +20,20 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
                         float *restrict coef, double scale, double limit2, double *restrict fx,
                         double *restrict fy, double *restrict fz);
 
-/* The same in 3D from packed rows of 8, p[8 i ..] = (x, y, z, 0, ux, uy,
- * uz, 0) (BondBody.packed), as pd_force_kernel_2d_packed: the bits of
- * pd_force_kernel_3d. */
-void pd_force_kernel_3d_packed(int64_t lo, int64_t hi, const double *const x[3],
-                               const double *const u[3], const double *restrict p,
-                               const int64_t *restrict first, const int32_t *restrict nbr,
-                               float *restrict coef, double scale, double limit2,
-                               double *const force[3]);
+/* The same force on chunks [lo, hi) of a body's lattice view (stencil.h:
+ * the arrays of BondStencil, x and u per cell, `held` the points of this
+ * process; dim 2 or 3): eight points a chunk in SIMD lanes, each summing
+ * its bonds in offset order, the bits of pd_force_kernel_2d / _3d on rows
+ * in that order. A bond it breaks is broken in the view (coef) and in the
+ * body's rows (bond_coef). Writes force[.][i] of the chunks' held points
+ * only. What pd_force_compute runs. */
+void pd_force_kernel_stencil(int dim, int64_t lo, int64_t hi, const int64_t *restrict chunk_cell,
+                             int offsets, const int64_t *restrict shift, const double *const x[3],
+                             const double *const u[3], float *restrict coef,
+                             const int32_t *restrict cell_point, int64_t held,
+                             const int64_t *restrict first, const int32_t *restrict nbr,
+                             float *restrict bond_coef, double scale, double limit2,
+                             double *const force[3]);
 
 /* Operator: the force of the whole body into body->force (OpenMP over
  * points, static schedule; bitwise the same at any thread count). */

@@ -12,12 +12,12 @@
  * and writes only its own force and its own row of coef (each point holds
  * its own copy of a bond), so one CUDA thread per point needs no atomics.
  *
- * The loop over a point's bonds is an `omp simd` reduction: on the CPU the
- * lanes are summed in an order fixed by the vector width, so a point's force
- * is the same whichever thread computes it. (A CUDA thread sums in bond
- * order: the same to round-off, not bitwise.) The store that breaks a bond
- * is conditional: an unconditional one costs 25 % on the 2D plate
- * (measured). */
+ * A point sums its bonds one after another in row order, which is offset
+ * order (body.c sorts the rows: dz, then dy, then dx): the order of the
+ * lattice view's SIMD lanes (stencil.h, what the CPU runs), so this kernel,
+ * the view's and a CUDA thread give the same bits, on any machine and at
+ * any thread count. The store that breaks a bond is conditional: an
+ * unconditional one costs 25 % on the 2D plate (measured). */
 #ifndef NSPD_SOLID_BOND_FORCE_KERNEL_H
 #define NSPD_SOLID_BOND_FORCE_KERNEL_H
 
@@ -38,8 +38,7 @@ NSPD_KERNEL void bond_force_point_2d(int64_t i, const double *NSPD_RESTRICT x,
     const double xi = x[i], yi = y[i], uxi = ux[i], uyi = uy[i];
     double sx = 0.0, sy = 0.0;
     const int64_t b0 = first[i], b1 = first[i + 1];
-#pragma omp simd reduction(+ : sx, sy)
-    for (int64_t b = b0; b < b1; b++) {
+    for (int64_t b = b0; b < b1; b++) { /* in order: no reduction in lanes */
         const int32_t j = nbr[b];
         float k = coef[b];
         const double ex = x[j] - xi, ey = y[j] - yi;
@@ -66,8 +65,7 @@ NSPD_KERNEL void bond_force_point_3d(int64_t i, const double *NSPD_RESTRICT x,
     const double xi = x[i], yi = y[i], zi = z[i], uxi = ux[i], uyi = uy[i], uzi = uz[i];
     double sx = 0.0, sy = 0.0, sz = 0.0;
     const int64_t b0 = first[i], b1 = first[i + 1];
-#pragma omp simd reduction(+ : sx, sy, sz)
-    for (int64_t b = b0; b < b1; b++) {
+    for (int64_t b = b0; b < b1; b++) { /* in order: no reduction in lanes */
         const int32_t j = nbr[b];
         float k = coef[b];
         const double ex = x[j] - xi, ey = y[j] - yi, ez = z[j] - zi;

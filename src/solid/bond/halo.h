@@ -14,11 +14,12 @@
  * diagnostics, which loop over the first n points, run unchanged.
  *
  * Bitwise the one-process run: a point's bonds keep their order (only the
- * neighbour indices are renumbered), the kernel's SIMD lanes group the
- * bonds by their position in the row, not by address (checked with
- * -fopt-info-vec: no peeling), and each point reads the same neighbour
- * values. Both ends of a crossing bond break together, as they do on one
- * process, because both evaluate the same stretch.
+ * neighbour indices are renumbered), the force sums them by their place in
+ * the row (2D: one after another in offset order, the lattice view's
+ * lanes being points, stencil.h; 3D: SIMD lanes by position in the row,
+ * not by address, checked with -fopt-info-vec: no peeling), and each
+ * point reads the same neighbour values. Both ends of a crossing bond break together, as they do on
+ * one process, because both evaluate the same stretch.
  *
  * Every rank places the whole body's points (lattice, order, regions:
  * some 150 bytes a point) but finds the bonds only of its run and of its

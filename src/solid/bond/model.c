@@ -4,6 +4,7 @@
 #include "core/status.h"
 #include "solid/bond/body.h"
 #include "solid/bond/halo.h"
+#include "solid/bond/stencil.h"
 #include "solid/pd/lattice.h"
 #include "solid/bond/diagnostics.h"
 #include "solid/bond/integrate.h"
@@ -65,9 +66,11 @@ void bond_solid_points_of(BondBody *b, PdPoints *pts) {
  * point (an upper bound: surface points have fewer). Bytes: what
  * body.c allocates per point (158: positions, displacements,
  * velocities, forces, external forces, lattice indices, volume, region,
- * damage denominator, row offsets; 32 more in 2D and 64 in 3D, the
- * force's packed copy of x and u) and per bond (8), plus the building's
- * peak (a byte per lattice site and 16 per point while ordering them, or
+ * damage denominator, row offsets; and the lattice view's cell of x and
+ * u with its maps, taking a cell a point: 45 more in 2D, 61 in 3D) and
+ * per bond (12: the rows' 8 and the view's copy of the coefficient),
+ * plus the building's peak (a byte per lattice site and 16 per point
+ * while ordering them, or
  * 24 per point of surface factors). */
 static SolidEstimate bond_estimate(const SolidConfig *sc) {
     const PdConfig *cfg = sc->model;
@@ -83,9 +86,9 @@ static SolidEstimate bond_estimate(const SolidConfig *sc) {
             for (int i = -reach; i <= reach; i++)
                 if ((i || j || k) && (double)(i * i + j * j + k * k) <= m * m) family += 1;
     e.bonds = e.points * family;
-    const double per_point = cfg->dim == 2 ? 190.0 : 222.0,
+    const double per_point = cfg->dim == 2 ? 203.0 : 219.0, per_bond = PD_BYTES_PER_BOND + 4.0,
                  build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
-    e.bytes = per_point * e.points + (double)PD_BYTES_PER_BOND * e.bonds + build;
+    e.bytes = per_point * e.points + per_bond * e.bonds + build;
     e.check_s = BOND_CHECK_S_PER_BOND * e.bonds;
     e.stable_dt = pd_interior_stable_dt(cfg);
     return e;
@@ -168,6 +171,7 @@ static int bond_checkpoint(void *impl, Checkpoint *ck) {
         TRY(io_whole(b, ck, NAMES[3][d], b->external[d], sizeof(double), false));
     }
     TRY(io_whole(b, ck, "bond.coef", b->bond_coef, sizeof(float), true));
+    if (b->stencil) b->stencil->stale = true; /* read, perhaps: the view takes them again */
     TRY(checkpoint_io_int64(ck, "bond.step", &b->step));
     TRY(checkpoint_io_double(ck, "bond.time", &b->time));
     int valid = b->force_valid;
@@ -241,9 +245,10 @@ static void bond_info(const void *impl, size_t memory, char *buf, size_t size) {
     APPEND("bar wave speed       %.6g m/s (Rayleigh %.6g m/s)\n", pd_bar_wave_speed(&b->cfg),
            pd_rayleigh_wave_speed(&b->cfg));
     APPEND("stable time step     %.6g s\n", ((const BondSolid *)impl)->initial_stable_dt);
-    APPEND("memory               %.1f MB in solver arrays (%d bytes per bond + %.0f per point)\n",
-           (double)memory / 1e6, PD_BYTES_PER_BOND,
-           ((double)memory - (double)b->bond_count * PD_BYTES_PER_BOND) / (double)b->n);
+    const double per_bond = bond_bytes_per_bond(b);
+    APPEND("memory               %.1f MB in solver arrays (%.1f bytes per bond + %.0f per point)\n",
+           (double)memory / 1e6, per_bond,
+           ((double)memory - (double)b->bond_count * per_bond) / (double)b->n);
 #undef APPEND
 }
 

@@ -65,8 +65,15 @@ static void check_neighbours(int dim, int n, int interior_expected) {
             count += j != i && d2 <= delta * delta;
         }
         assert_int_equal(body.bond_first[i + 1] - body.bond_first[i], count);
-        for (int64_t b = body.bond_first[i] + 1; b < body.bond_first[i + 1]; b++)
-            assert_true(body.bond_nbr[b] > body.bond_nbr[b - 1]); /* ascending rows */
+        for (int64_t b = body.bond_first[i] + 1; b < body.bond_first[i + 1]; b++) {
+            /* rows in offset order: dz, then dy, then dx (stencil.h) */
+            int64_t key[2] = {0, 0};
+            for (int e = 0; e < 2; e++)
+                for (int d = dim - 1; d >= 0; d--)
+                    key[e] = key[e] * 64 + body.lattice[d][body.bond_nbr[b - e]] -
+                             body.lattice[d][i] + 32;
+            assert_true(key[0] > key[1]);
+        }
         bool inside = true;
         for (int d = 0; d < dim; d++)
             inside = inside && body.lattice[d][i] >= 3 && body.lattice[d][i] < n - 3;

@@ -1,0 +1,197 @@
+/* The lattice view of a bond-based body (stencil.h). */
+#include "solid/bond/stencil.h"
+
+#include "core/mem.h"
+#include "core/parallel.h"
+#include "core/status.h"
+
+#include <stdlib.h>
+
+enum { LANES = 8, MAX_CELLS_A_POINT = 8 };
+
+/* The lattice offset of bond i-j, axis by axis (0 past dim). */
+static void bond_offset(const BondBody *b, int64_t i, int32_t j, int64_t d[3]) {
+    for (int a = 0; a < 3; a++)
+        d[a] = a < b->dim ? (int64_t)b->lattice[a][j] - b->lattice[a][i] : 0;
+}
+
+/* Offset order: dz, then dy, then dx. */
+static int64_t offset_key(const BondBody *b, int64_t i, int32_t j) {
+    int64_t d[3];
+    bond_offset(b, i, j, d);
+    const int64_t span = (int64_t)1 << 21; /* |d| < 2^20 a lattice axis */
+    return (d[2] * span + d[1]) * span + d[0];
+}
+
+void bond_rows_in_offset_order(BondBody *body) {
+    const int64_t n = body->n;
+#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < n; i++) { /* insertion sort: rows of tens of bonds */
+        int32_t *row = body->bond_nbr + body->bond_first[i];
+        const int64_t len = body->bond_first[i + 1] - body->bond_first[i];
+        for (int64_t a = 1; a < len; a++) {
+            const int32_t j = row[a];
+            const int64_t key = offset_key(body, i, j);
+            int64_t c = a;
+            for (; c > 0 && offset_key(body, i, row[c - 1]) > key; c--) row[c] = row[c - 1];
+            row[c] = j;
+        }
+    }
+}
+
+/* The slot of offset d in offset_of (stencil.h). */
+static int64_t offset_slot(const BondStencil *s, const int64_t d[3]) {
+    const int64_t side = 2 * s->reach + 1, dz = s->dim == 3 ? d[2] + s->reach : 0;
+    return (dz * side + d[1] + s->reach) * side + d[0] + s->reach;
+}
+
+/* The reach and the offsets of the held points' bonds, in offset order. */
+static int find_offsets(const BondBody *b, BondStencil *s) {
+    int64_t reach = 0, d[3];
+    for (int64_t i = 0; i < b->n; i++)
+        for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++) {
+            bond_offset(b, i, b->bond_nbr[k], d);
+            for (int a = 0; a < 3; a++) reach = llabs(d[a]) > reach ? llabs(d[a]) : reach;
+        }
+    if (reach > 64) return NSPD_OK; /* a horizon of more than 64 spacings: no view */
+    s->reach = (int)reach;
+    const int64_t side = 2 * reach + 1, slots = side * side * (b->dim == 3 ? side : 1);
+    TRY(nspd_alloc(&s->offset_of, (size_t)slots, sizeof(int32_t)));
+    for (int64_t i = 0; i < b->n; i++)
+        for (int64_t k = b->bond_first[i]; k < b->bond_first[i + 1]; k++) {
+            bond_offset(b, i, b->bond_nbr[k], d);
+            s->offset_of[offset_slot(s, d)] = 1;
+        }
+    int m = 0;
+    for (int64_t q = 0; q < slots; q++) /* q runs in offset order */
+        s->offset_of[q] = s->offset_of[q] ? m++ : -1;
+    s->offsets = m;
+    return NSPD_OK;
+}
+
+/* The cells, their positions and maps, and the active chunks. */
+static int fill(const BondBody *b, BondStencil *s) {
+    const int64_t all = b->n + b->ghosts, cells = s->size[0] * s->size[1] * s->size[2];
+    const int dim = s->dim == 3 ? 3 : 2;
+    const size_t nc = (size_t)cells;
+    for (int a = 0; a < dim; a++) {
+        TRY(nspd_alloc(&s->x[a], nc, sizeof(double)));
+        TRY(nspd_alloc(&s->u[a], nc, sizeof(double)));
+    }
+    TRY(nspd_alloc(&s->shift, (size_t)s->offsets, sizeof(int64_t)));
+    TRY(nspd_alloc(&s->cell_point, nc, sizeof(int32_t)));
+    TRY(nspd_alloc(&s->point_cell, (size_t)all, sizeof(int64_t)));
+    TRY(nspd_alloc(&s->chunk_index, nc / LANES, sizeof(int32_t)));
+    const int64_t side = 2 * s->reach + 1, slots = side * side * (dim == 3 ? side : 1);
+    for (int64_t q = 0; q < slots; q++)
+        if (s->offset_of[q] >= 0) {
+            const int64_t dx = q % side - s->reach, dy = q / side % side - s->reach,
+                          dz = dim == 3 ? q / (side * side) - s->reach : 0;
+            s->shift[s->offset_of[q]] = (dz * s->size[1] + dy) * s->size[0] + dx;
+        }
+    /* every cell at its lattice position (from point 0's), then the points */
+    const double dx = b->spacing;
+    for (int64_t c = 0; c < cells; c++) {
+        const int64_t idx[3] = {c % s->size[0], c / s->size[0] % s->size[1],
+                                c / (s->size[0] * s->size[1])};
+        for (int a = 0; a < dim; a++)
+            s->x[a][c] = b->x[a][0] + (double)(idx[a] + s->origin[a] - b->lattice[a][0]) * dx;
+        s->cell_point[c] = -1;
+    }
+    for (int64_t i = 0; i < all; i++) {
+        int64_t c = 0;
+        for (int a = dim - 1; a >= 0; a--) c = c * s->size[a] + b->lattice[a][i] - s->origin[a];
+        s->point_cell[i] = c;
+        s->cell_point[c] = (int32_t)i;
+        for (int a = 0; a < dim; a++) s->x[a][c] = b->x[a][i];
+    }
+    for (int64_t k = 0; k < cells / LANES; k++) s->chunk_index[k] = -1;
+    for (int64_t i = 0; i < b->n; i++) s->chunk_index[s->point_cell[i] / LANES] = 0;
+    for (int64_t k = 0; k < cells / LANES; k++)
+        if (s->chunk_index[k] == 0) s->chunk_index[k] = (int32_t)s->chunks++;
+    TRY(nspd_alloc(&s->chunk_cell, (size_t)s->chunks, sizeof(int64_t)));
+    TRY(nspd_alloc(&s->coef, (size_t)s->chunks * (size_t)s->offsets * LANES, sizeof(float)));
+    for (int64_t k = 0; k < cells / LANES; k++)
+        if (s->chunk_index[k] >= 0) s->chunk_cell[s->chunk_index[k]] = k * LANES;
+    return NSPD_OK;
+}
+
+int bond_stencil_create(const BondBody *b, BondStencil **out) {
+    *out = NULL;
+    const int64_t all = b->n + b->ghosts;
+    if (b->n == 0) return NSPD_OK;
+    int32_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int a = 0; a < b->dim; a++) lo[a] = hi[a] = b->lattice[a][0];
+    for (int64_t i = 0; i < all; i++)
+        for (int a = 0; a < b->dim; a++) {
+            if (b->lattice[a][i] < lo[a]) lo[a] = b->lattice[a][i];
+            if (b->lattice[a][i] > hi[a]) hi[a] = b->lattice[a][i];
+        }
+    BondStencil *s = NULL;
+    TRY(nspd_alloc(&s, 1, sizeof *s));
+    s->dim = b->dim;
+    int status = find_offsets(b, s);
+    if (status != NSPD_OK || !s->offset_of) {
+        bond_stencil_free(&s);
+        return status;
+    }
+    /* a chunk's lanes reach 7 cells past its last point along x, and every
+     * lane R cells further on each axis */
+    const int64_t r = s->reach;
+    double cells = 1;
+    for (int a = 0; a < 3; a++) {
+        const int64_t span = (int64_t)hi[a] - lo[a] + 1, pad = a < b->dim ? r : 0;
+        s->size[a] = a == 0 ? (span + 2 * pad + 2 * (LANES - 1)) / LANES * LANES : span + 2 * pad;
+        s->origin[a] = (int32_t)(lo[a] - pad);
+        cells *= (double)s->size[a];
+    }
+    if (cells > (double)(MAX_CELLS_A_POINT * all + 4096) || cells > (double)INT32_MAX) {
+        bond_stencil_free(&s);
+        return NSPD_OK;
+    }
+    status = fill(b, s);
+    if (status != NSPD_OK) {
+        bond_stencil_free(&s);
+        return status;
+    }
+    s->stale = true;
+    *out = s;
+    return NSPD_OK;
+}
+
+void bond_stencil_take_coef(BondStencil *s, const BondBody *b) {
+    const int m = s->offsets;
+    float *coef = s->coef;
+#pragma omp parallel for schedule(static) if (s->chunks >= PARALLEL_MIN_ITEMS / LANES)
+    for (int64_t k = 0; k < s->chunks; k++) {
+        float *chunk = coef + k * m * LANES;
+        for (int q = 0; q < m * LANES; q++) chunk[q] = 0.0f;
+        for (int l = 0; l < LANES; l++) {
+            const int32_t i = s->cell_point[s->chunk_cell[k] + l];
+            if (i < 0 || i >= b->n) continue; /* no point, or a ghost: no bonds */
+            for (int64_t e = b->bond_first[i]; e < b->bond_first[i + 1]; e++) {
+                int64_t d[3];
+                bond_offset(b, i, b->bond_nbr[e], d);
+                chunk[s->offset_of[offset_slot(s, d)] * LANES + l] = b->bond_coef[e];
+            }
+        }
+    }
+    s->stale = false;
+}
+
+void bond_stencil_free(BondStencil **sp) {
+    BondStencil *s = *sp;
+    if (!s) return;
+    for (int a = 0; a < 3; a++) {
+        nspd_free(&s->x[a]);
+        nspd_free(&s->u[a]);
+    }
+    nspd_free(&s->shift);
+    nspd_free(&s->offset_of);
+    nspd_free(&s->chunk_cell);
+    nspd_free(&s->chunk_index);
+    nspd_free(&s->coef);
+    nspd_free(&s->cell_point);
+    nspd_free(&s->point_cell);
+    nspd_free(sp);
+}
