@@ -18,7 +18,9 @@ int64_t pd_broken_bonds(const BondBody *body);
 double pd_kinetic_energy(const BondBody *body);
 
 /* Elastic (bond) energy sum_i V_i W_i with W_i = (1/4) sum_j k_ij (|y|-|xi|)^2
- * over intact bonds, J: the energy whose negative gradient is pd_force. */
+ * over intact bonds, J: the energy whose negative gradient is pd_force.
+ * Read from the lattice view where the body has one (stencil.h; its
+ * displacements refreshed), with the bits of the rows' sum. */
 double pd_elastic_energy(const BondBody *body);
 
 /* Linear momentum sum_i rho V_i v_i, kg m/s. */

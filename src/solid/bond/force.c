@@ -150,7 +150,8 @@ stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict ch
                 }
                 double e2 = e[0] * e[0] + e[1] * e[1], r2 = r[0] * r[0] + r[1] * r[1];
                 if (DIM == 3) e2 += e[2] * e[2], r2 += r[2] * r[2];
-                const double f = k != 0.0f ? (double)fabsf(k) * (1.0 - sqrt(e2 / r2)) : 0.0;
+                const double g = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
+                const double f = k != 0.0f ? g : 0.0; /* a select: g is formed either way */
                 const unsigned over = (k > 0.0f) & (r2 > limit2 * e2);
                 if (over) k8[l] = 0.0f;
                 broke |= over << l;
@@ -209,12 +210,8 @@ void pd_force_compute(BondBody *body) {
         force_plain(body, scale, limit2);
         return;
     }
-    if (s->stale) bond_stencil_take_coef(s, body);
-    const int64_t all = body->n + body->ghosts;
+    bond_stencil_refresh(s, body);
     const int dim = body->dim;
-#pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < all; i++)
-        for (int a = 0; a < dim; a++) s->u[a][s->point_cell[i]] = body->u[a][i];
     const int64_t per = FORCE_BLOCK / 8, blocks = (s->chunks + per - 1) / per;
 #pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
     for (int64_t blk = 0; blk < blocks; blk++) {

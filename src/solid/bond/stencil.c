@@ -179,6 +179,15 @@ void bond_stencil_take_coef(BondStencil *s, const BondBody *b) {
     s->stale = false;
 }
 
+void bond_stencil_refresh(BondStencil *s, const BondBody *b) {
+    if (s->stale) bond_stencil_take_coef(s, b);
+    const int64_t all = b->n + b->ghosts;
+    const int dim = s->dim == 3 ? 3 : 2;
+#pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < all; i++)
+        for (int a = 0; a < dim; a++) s->u[a][s->point_cell[i]] = b->u[a][i];
+}
+
 void bond_stencil_free(BondStencil **sp) {
     BondStencil *s = *sp;
     if (!s) return;

@@ -69,5 +69,9 @@ void bond_stencil_free(BondStencil **s);
 
 /* Takes the coefficients of the body's bonds into the view (when stale). */
 void bond_stencil_take_coef(BondStencil *s, const BondBody *body);
+/* Brings the view up to the body: the coefficients when stale, and the
+ * displacements of every point, held and ghosts (what the force and the
+ * elastic energy do first). */
+void bond_stencil_refresh(BondStencil *s, const BondBody *body);
 
 #endif
