@@ -71,7 +71,7 @@ static int find_offsets(const BondBody *b, BondStencil *s) {
 
 /* The cells, their positions and maps, and the active chunks. */
 static int fill(const BondBody *b, BondStencil *s) {
-    const int64_t all = b->n + b->ghosts, cells = s->size[0] * s->size[1] * s->size[2];
+    const int64_t all = b->n + b->ghosts, cells = s->cells;
     const int dim = s->dim == 3 ? 3 : 2;
     const size_t nc = (size_t)cells;
     for (int a = 0; a < dim; a++) {
@@ -87,20 +87,20 @@ static int fill(const BondBody *b, BondStencil *s) {
         if (s->offset_of[q] >= 0) {
             const int64_t dx = q % side - s->reach, dy = q / side % side - s->reach,
                           dz = dim == 3 ? q / (side * side) - s->reach : 0;
-            s->shift[s->offset_of[q]] = (dz * s->size[1] + dy) * s->size[0] + dx;
+            s->shift[s->offset_of[q]] = dz * s->stride[2] + dy * s->stride[1] + dx * s->stride[0];
         }
     /* every cell at its lattice position (from point 0's), then the points */
     const double dx = b->spacing;
     for (int64_t c = 0; c < cells; c++) {
-        const int64_t idx[3] = {c % s->size[0], c / s->size[0] % s->size[1],
-                                c / (s->size[0] * s->size[1])};
-        for (int a = 0; a < dim; a++)
-            s->x[a][c] = b->x[a][0] + (double)(idx[a] + s->origin[a] - b->lattice[a][0]) * dx;
+        for (int a = 0; a < dim; a++) {
+            const int64_t idx = c / s->stride[a] % s->extent[a];
+            s->x[a][c] = b->x[a][0] + (double)(idx + s->origin[a] - b->lattice[a][0]) * dx;
+        }
         s->cell_point[c] = -1;
     }
     for (int64_t i = 0; i < all; i++) {
         int64_t c = 0;
-        for (int a = dim - 1; a >= 0; a--) c = c * s->size[a] + b->lattice[a][i] - s->origin[a];
+        for (int a = 0; a < dim; a++) c += (b->lattice[a][i] - s->origin[a]) * s->stride[a];
         s->point_cell[i] = c;
         s->cell_point[c] = (int32_t)i;
         for (int a = 0; a < dim; a++) s->x[a][c] = b->x[a][i];
@@ -135,16 +135,24 @@ int bond_stencil_create(const BondBody *b, BondStencil **out) {
         bond_stencil_free(&s);
         return status;
     }
-    /* a chunk's lanes reach 7 cells past its last point along x, and every
-     * lane R cells further on each axis */
+    /* a chunk's lanes reach 7 cells past its last point along the major
+     * axis, and every lane R cells further on each axis */
     const int64_t r = s->reach;
+    for (int a = 1; a < b->dim; a++)
+        if (hi[a] - lo[a] > hi[s->major] - lo[s->major]) s->major = a;
     double cells = 1;
     for (int a = 0; a < 3; a++) {
         const int64_t span = (int64_t)hi[a] - lo[a] + 1, pad = a < b->dim ? r : 0;
-        s->size[a] = a == 0 ? (span + 2 * pad + 2 * (LANES - 1)) / LANES * LANES : span + 2 * pad;
+        s->extent[a] = span + 2 * pad;
+        if (a == s->major) s->extent[a] = (s->extent[a] + 2 * (LANES - 1)) / LANES * LANES;
         s->origin[a] = (int32_t)(lo[a] - pad);
-        cells *= (double)s->size[a];
+        cells *= (double)s->extent[a];
     }
+    int64_t step = 1; /* the major axis, then the others in order */
+    s->stride[s->major] = step, step *= s->extent[s->major];
+    for (int a = 0; a < 3; a++)
+        if (a != s->major) s->stride[a] = step, step *= s->extent[a];
+    s->cells = step;
     if (cells > (double)(MAX_CELLS_A_POINT * all + 4096) || cells > (double)INT32_MAX) {
         bond_stencil_free(&s);
         return NSPD_OK;

@@ -4,16 +4,19 @@
  * Every body is a set of lattice points (solid/pd/lattice.h), so a point's
  * bonds reach its neighbours at a few fixed lattice offsets (28 in 2D and
  * 122 in 3D for a horizon of 3.015 dx). The view copies the points into a
- * box of lattice cells, x fastest, then y, then z, padded by the reach of
- * the offsets: eight cells side by side along x are eight points, and
- * their neighbours at one offset are eight cells side by side too, read by
- * one contiguous load (no gather, no transpose). Each point sums its bonds
+ * box of lattice cells, padded by the reach of the offsets, whose fastest
+ * axis is the body's longest (the major axis; then the others in order):
+ * eight cells side by side along it are eight points, and their
+ * neighbours at one offset are eight cells side by side too, read by one
+ * contiguous load (no gather, no transpose). A thin panel standing along
+ * y so fills its lanes. Each point sums its bonds
  * in offset order (dz, then dy, then dx), and the rows of the body's bonds
  * are kept in the same order (body.c), so the plain kernels
  * (bond_force_point_2d / _3d, a sequential sum over the row) give the same
  * bits: they stay the reference, and the CUDA back end's kernels.
  *
- * Cells are grouped in chunks of eight along x (aligned to the box); the
+ * Cells are grouped in chunks of eight along the major axis (aligned to
+ * the box); the
  * chunks holding a point of this process are the active ones, the only
  * ones the force visits. Per active chunk the bond coefficients of its
  * eight cells, offset by offset (coef[(chunk offsets + o) 8 + lane]), a
@@ -43,7 +46,10 @@ typedef struct BondStencil {
     int64_t *shift;       /* m: cell index of the neighbour minus the cell's, in offset order */
     int32_t *offset_of;   /* (2R + 1)^dim: offset index of (dx, dy, dz) at
                              ((dz + R)(2R + 1) + dy + R)(2R + 1) + dx + R (dz = 0 in 2D); -1 */
-    int64_t size[3];      /* cells along x (a multiple of 8), y, z (1 in 2D) */
+    int major;            /* the axis along which a chunk's cells lie: the body's longest */
+    int64_t extent[3];    /* cells along each axis (major: a multiple of 8; 1 past dim) */
+    int64_t stride[3];    /* cell index step along each axis (1 along major) */
+    int64_t cells;        /* extent[0] extent[1] extent[2] */
     int32_t origin[3];    /* lattice indices of cell 0 */
     int64_t chunks;       /* active chunks */
     int64_t *chunk_cell;  /* first cell of each active chunk */

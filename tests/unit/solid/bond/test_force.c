@@ -215,8 +215,9 @@ static int64_t view_against_plain(BondBody *b) {
  * for bit: in 2D on a block with a hole (cells with no point inside the
  * box), a failure region (breakable and unbreakable bonds) and a
  * pre-crack (bonds broken from the start); in 3D on a block with a
- * spherical hole; and a thin ring, whose box is too sparse for a view,
- * runs the plain kernel. */
+ * spherical hole; on blocks longest along y and z (the view's chunks then
+ * lie along that axis); and a thin ring, whose box is too sparse for a
+ * view, runs the plain kernel. */
 static void test_lattice_view_is_the_plain_kernel(void **state) {
     (void)state;
     PdConfig cfg = fixture_block(2, 37, 21, 0, 1e-3);
@@ -254,6 +255,19 @@ static void test_lattice_view_is_the_plain_kernel(void **state) {
     assert_non_null(b.stencil);
     assert_true(view_against_plain(&b) > 100);
     bond_body_destroy(&b);
+
+    /* bodies longest along y and along z: the chunks lie along that axis */
+    for (int dim = 2; dim <= 3; dim++) {
+        PdConfig tall =
+            dim == 2 ? fixture_block(2, 7, 30, 0, 1e-3) : fixture_block(3, 5, 6, 14, 1e-3);
+        tall.failure = true;
+        tall.critical_stretch = 0.004;
+        assert_ok(bond_body_create(&b, &tall));
+        assert_non_null(b.stencil);
+        assert_int_equal(b.stencil->major, dim - 1);
+        assert_true(view_against_plain(&b) > 100);
+        bond_body_destroy(&b);
+    }
 
     PdConfig ring = fixture_block(2, 400, 400, 0, 1e-3);
     ring.geometry.shapes[0] = (Shape){.kind = SHAPE_ANNULUS,
