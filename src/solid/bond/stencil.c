@@ -162,7 +162,7 @@ int bond_stencil_create(const BondBody *b, BondStencil **out) {
         bond_stencil_free(&s);
         return status;
     }
-    s->stale = true;
+    bond_stencil_take_coef(s, b); /* now, with the build, not in the first step */
     *out = s;
     return NSPD_OK;
 }

@@ -67,9 +67,9 @@ typedef struct BondStencil {
  * view sums in. */
 void bond_rows_in_offset_order(BondBody *body);
 
-/* Builds the view of a body (held points and ghosts) into *out, or leaves
- * *out NULL when the box would hold more than 8 cells a point or 2^31
- * cells. Coefficients stale. NSPD_ERR_NOMEM. */
+/* Builds the view of a body (held points and ghosts, their bonds'
+ * coefficients taken) into *out, or leaves *out NULL when the box would
+ * hold more than 8 cells a point or 2^31 cells. NSPD_ERR_NOMEM. */
 int bond_stencil_create(const BondBody *body, BondStencil **out);
 void bond_stencil_free(BondStencil **s);
 
