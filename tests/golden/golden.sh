@@ -24,7 +24,8 @@ threads=${4:-2}
 data="$src/tests/golden/data"
 
 # The bits depend on the instructions the compiler chose (-march=native: the
-# SIMD width sets the lane order of the force sums), so the golden set holds
+# SIMD width sets the lane order of reductions in the flow and correspondence
+# kernels, fused multiply-adds their last bits), so the golden set holds
 # for machines whose native target is the one it was recorded on. Elsewhere
 # the check is skipped (exit 77), saying so, rather than failing on a
 # difference no code change made.
