@@ -8,25 +8,25 @@
  * axis is the body's longest (the major axis; then the others in order):
  * eight cells side by side along it are eight points, and their
  * neighbours at one offset are eight cells side by side too, read by one
- * contiguous load (no gather, no transpose). A thin panel standing along
- * y so fills its lanes. Each point sums its bonds
- * in offset order (dz, then dy, then dx), and the rows of the body's bonds
- * are kept in the same order (body.c), so the plain kernels
- * (bond_force_point_2d / _3d, a sequential sum over the row) give the same
- * bits: they stay the reference, and the CUDA back end's kernels.
+ * contiguous load (no gather, no transpose). A thin panel standing along y
+ * so fills its lanes. Each point sums its bonds in offset order (dz, then
+ * dy, then dx), and the rows of the body's bonds are kept in the same
+ * order (body.c), so the plain kernels (bond_force_point_2d / _3d, a
+ * sequential sum over the row) give the same bits: they stay the
+ * reference, and the CUDA back end's kernels.
  *
  * Cells are grouped in chunks of eight along the major axis (aligned to
- * the box); the
- * chunks holding a point of this process are the active ones, the only
- * ones the force visits. Per active chunk the bond coefficients of its
- * eight cells, offset by offset (coef[(chunk offsets + o) 8 + lane]), a
- * copy of the bonds' own (body.h: sign = failure state), taken whenever
- * `stale`. A cell with no point, or a point's missing bond, has 0 there (a
- * broken bond: no force). Cells with no point hold their lattice position
- * and no displacement, so that every load is of a finite number.
+ * the box); the chunks holding a point of this process are the active
+ * ones, the only ones the force visits. Per active chunk the bond
+ * coefficients of its eight cells, offset by offset (coef[(chunk offsets
+ * + o) 8 + lane]), a copy of the bonds' own (body.h: sign = failure
+ * state), taken with the build and again whenever `stale`. A cell with no
+ * point, or a point's missing bond, has 0 there (a broken bond: no force).
+ * Cells with no point hold their lattice position and no displacement, so
+ * that every load is of a finite number.
  *
- * Memory: 8 bytes an axis and 2 a cell (x and u; in 3D 48), 4 for the map
- * to the points and 0.5 to the chunks, 8 a point for the map back, and 4
+ * Memory: a cell's x and u (32 bytes in 2D, 48 in 3D), 4 bytes for its
+ * point and half a byte for its chunk, 8 a point for the map back, and 4
  * bytes an offset of an active chunk's cell (about 4 a bond). A body
  * whose box holds more than 8 cells a point (a thin ring, a shell, a
  * scattered set) gets no view: pd_force_compute then runs the plain
