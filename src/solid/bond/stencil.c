@@ -81,7 +81,6 @@ static int fill(const BondBody *b, BondStencil *s) {
     TRY(nspd_alloc(&s->shift, (size_t)s->offsets, sizeof(int64_t)));
     TRY(nspd_alloc(&s->cell_point, nc, sizeof(int32_t)));
     TRY(nspd_alloc(&s->point_cell, (size_t)all, sizeof(int64_t)));
-    TRY(nspd_alloc(&s->chunk_index, nc / LANES, sizeof(int32_t)));
     const int64_t side = 2 * s->reach + 1, slots = side * side * (dim == 3 ? side : 1);
     for (int64_t q = 0; q < slots; q++)
         if (s->offset_of[q] >= 0) {
@@ -105,15 +104,40 @@ static int fill(const BondBody *b, BondStencil *s) {
         s->cell_point[c] = (int32_t)i;
         for (int a = 0; a < dim; a++) s->x[a][c] = b->x[a][i];
     }
-    for (int64_t k = 0; k < cells / LANES; k++) s->chunk_index[k] = -1;
-    for (int64_t i = 0; i < b->n; i++) s->chunk_index[s->point_cell[i] / LANES] = 0;
-    for (int64_t k = 0; k < cells / LANES; k++)
-        if (s->chunk_index[k] == 0) s->chunk_index[k] = (int32_t)s->chunks++;
-    TRY(nspd_alloc(&s->chunk_cell, (size_t)s->chunks, sizeof(int64_t)));
-    TRY(nspd_alloc(&s->coef, (size_t)s->chunks * (size_t)s->offsets * LANES, sizeof(float)));
-    for (int64_t k = 0; k < cells / LANES; k++)
-        if (s->chunk_index[k] >= 0) s->chunk_cell[s->chunk_index[k]] = k * LANES;
-    return NSPD_OK;
+    /* the active chunks: those holding a point of this process */
+    uint8_t *active = NULL;
+    TRY(nspd_alloc(&active, nc / LANES, 1));
+    for (int64_t i = 0; i < b->n; i++) active[s->point_cell[i] / LANES] = 1;
+    for (int64_t k = 0; k < cells / LANES; k++) s->chunks += active[k];
+    int status = nspd_alloc(&s->chunk_cell, (size_t)s->chunks, sizeof(int64_t));
+    if (status == NSPD_OK)
+        status =
+            nspd_alloc(&s->coef, (size_t)s->chunks * (size_t)s->offsets * LANES, sizeof(float));
+    for (int64_t k = 0, q = 0; status == NSPD_OK && k < cells / LANES; k++)
+        if (active[k]) s->chunk_cell[q++] = k * LANES;
+    nspd_free(&active);
+    return status;
+}
+
+/* Takes the coefficients of the body's bonds into the view. */
+static void take_coef(BondStencil *s, const BondBody *b) {
+    const int m = s->offsets;
+    float *coef = s->coef;
+#pragma omp parallel for schedule(static) if (s->chunks >= PARALLEL_MIN_ITEMS / LANES)
+    for (int64_t k = 0; k < s->chunks; k++) {
+        float *chunk = coef + k * m * LANES;
+        for (int q = 0; q < m * LANES; q++) chunk[q] = 0.0f;
+        for (int l = 0; l < LANES; l++) {
+            const int32_t i = s->cell_point[s->chunk_cell[k] + l];
+            if (i < 0 || i >= b->n) continue; /* no point, or a ghost: no bonds */
+            for (int64_t e = b->bond_first[i]; e < b->bond_first[i + 1]; e++) {
+                int64_t d[3];
+                bond_offset(b, i, b->bond_nbr[e], d);
+                chunk[s->offset_of[offset_slot(s, d)] * LANES + l] = b->bond_coef[e];
+            }
+        }
+    }
+    s->stale = false;
 }
 
 int bond_stencil_create(const BondBody *b, BondStencil **out) {
@@ -162,33 +186,13 @@ int bond_stencil_create(const BondBody *b, BondStencil **out) {
         bond_stencil_free(&s);
         return status;
     }
-    bond_stencil_take_coef(s, b); /* now, with the build, not in the first step */
+    take_coef(s, b); /* now, with the build, not in the first step */
     *out = s;
     return NSPD_OK;
 }
 
-void bond_stencil_take_coef(BondStencil *s, const BondBody *b) {
-    const int m = s->offsets;
-    float *coef = s->coef;
-#pragma omp parallel for schedule(static) if (s->chunks >= PARALLEL_MIN_ITEMS / LANES)
-    for (int64_t k = 0; k < s->chunks; k++) {
-        float *chunk = coef + k * m * LANES;
-        for (int q = 0; q < m * LANES; q++) chunk[q] = 0.0f;
-        for (int l = 0; l < LANES; l++) {
-            const int32_t i = s->cell_point[s->chunk_cell[k] + l];
-            if (i < 0 || i >= b->n) continue; /* no point, or a ghost: no bonds */
-            for (int64_t e = b->bond_first[i]; e < b->bond_first[i + 1]; e++) {
-                int64_t d[3];
-                bond_offset(b, i, b->bond_nbr[e], d);
-                chunk[s->offset_of[offset_slot(s, d)] * LANES + l] = b->bond_coef[e];
-            }
-        }
-    }
-    s->stale = false;
-}
-
 void bond_stencil_refresh(BondStencil *s, const BondBody *b) {
-    if (s->stale) bond_stencil_take_coef(s, b);
+    if (s->stale) take_coef(s, b);
     const int64_t all = b->n + b->ghosts;
     const int dim = s->dim == 3 ? 3 : 2;
 #pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
@@ -206,7 +210,6 @@ void bond_stencil_free(BondStencil **sp) {
     nspd_free(&s->shift);
     nspd_free(&s->offset_of);
     nspd_free(&s->chunk_cell);
-    nspd_free(&s->chunk_index);
     nspd_free(&s->coef);
     nspd_free(&s->cell_point);
     nspd_free(&s->point_cell);

@@ -26,7 +26,7 @@
  * that every load is of a finite number.
  *
  * Memory: a cell's x and u (32 bytes in 2D, 48 in 3D), 4 bytes for its
- * point and half a byte for its chunk, 8 a point for the map back, and 4
+ * point, 8 a point for the map back, and 4
  * bytes an offset of an active chunk's cell (about 4 a bond). A body
  * whose box holds more than 8 cells a point (a thin ring, a shell, a
  * scattered set) gets no view: pd_force_compute then runs the plain
@@ -41,25 +41,24 @@
 
 typedef struct BondStencil {
     int dim;
-    int reach;            /* R: every offset within [-R, R]^dim lattice spacings */
-    int offsets;          /* m: the offsets any bond of the body takes */
-    int64_t *shift;       /* m: cell index of the neighbour minus the cell's, in offset order */
-    int32_t *offset_of;   /* (2R + 1)^dim: offset index of (dx, dy, dz) at
-                             ((dz + R)(2R + 1) + dy + R)(2R + 1) + dx + R (dz = 0 in 2D); -1 */
-    int major;            /* the axis along which a chunk's cells lie: the body's longest */
-    int64_t extent[3];    /* cells along each axis (major: a multiple of 8; 1 past dim) */
-    int64_t stride[3];    /* cell index step along each axis (1 along major) */
-    int64_t cells;        /* extent[0] extent[1] extent[2] */
-    int32_t origin[3];    /* lattice indices of cell 0 */
-    int64_t chunks;       /* active chunks */
-    int64_t *chunk_cell;  /* first cell of each active chunk */
-    int32_t *chunk_index; /* per chunk of the box: its active index, or -1 */
-    double *x[3];         /* per cell: reference position (z: NULL in 2D) */
-    double *u[3];         /* per cell: displacement (pd_force_compute refreshes) */
-    float *coef;          /* per active chunk, offsets x 8: the bonds' coefficients */
-    int32_t *cell_point;  /* per cell: the point there (held or ghost), or -1 */
-    int64_t *point_cell;  /* per point, held and ghosts: its cell */
-    bool stale;           /* coef to be taken from the bonds before the next force */
+    int reach;           /* R: every offset within [-R, R]^dim lattice spacings */
+    int offsets;         /* m: the offsets any bond of the body takes */
+    int64_t *shift;      /* m: cell index of the neighbour minus the cell's, in offset order */
+    int32_t *offset_of;  /* (2R + 1)^dim: offset index of (dx, dy, dz) at
+                            ((dz + R)(2R + 1) + dy + R)(2R + 1) + dx + R (dz = 0 in 2D); -1 */
+    int major;           /* the axis along which a chunk's cells lie: the body's longest */
+    int64_t extent[3];   /* cells along each axis (major: a multiple of 8; 1 past dim) */
+    int64_t stride[3];   /* cell index step along each axis (1 along major) */
+    int64_t cells;       /* extent[0] extent[1] extent[2] */
+    int32_t origin[3];   /* lattice indices of cell 0 */
+    int64_t chunks;      /* active chunks */
+    int64_t *chunk_cell; /* first cell of each active chunk */
+    double *x[3];        /* per cell: reference position (z: NULL in 2D) */
+    double *u[3];        /* per cell: displacement (pd_force_compute refreshes) */
+    float *coef;         /* per active chunk, offsets x 8: the bonds' coefficients */
+    int32_t *cell_point; /* per cell: the point there (held or ghost), or -1 */
+    int64_t *point_cell; /* per point, held and ghosts: its cell */
+    bool stale;          /* coef to be taken from the bonds before the next force */
 } BondStencil;
 
 /* Sorts each row of the body's bonds into offset order (dz, then dy, then
@@ -73,8 +72,6 @@ void bond_rows_in_offset_order(BondBody *body);
 int bond_stencil_create(const BondBody *body, BondStencil **out);
 void bond_stencil_free(BondStencil **s);
 
-/* Takes the coefficients of the body's bonds into the view (when stale). */
-void bond_stencil_take_coef(BondStencil *s, const BondBody *body);
 /* Brings the view up to the body: the coefficients when stale, and the
  * displacements of every point, held and ghosts (what the force and the
  * elastic energy do first). */
