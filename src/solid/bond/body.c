@@ -193,7 +193,11 @@ int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm
 double bond_bytes_per_bond(const BondBody *body) {
     const BondStencil *s = body->stencil;
     if (!s || body->bond_count == 0) return PD_BYTES_PER_BOND;
-    const double view = (double)s->chunks * s->offsets * 8 * sizeof(float);
+    int64_t blocks = 1;
+    for (int64_t q = 0; q < s->chunks; q++) blocks += s->block[q] != 0;
+    const double view = (double)s->chunks * s->offsets * sizeof(uint16_t) +
+                        (double)s->chunks * sizeof(int32_t) +
+                        (double)blocks * s->offsets * 8 * sizeof(float);
     return PD_BYTES_PER_BOND + view / (double)body->bond_count;
 }
 

@@ -72,8 +72,8 @@ typedef struct {
     double time;
     bool force_valid; /* force[] holds the force at the current u (velocity Verlet) */
     /* The lattice view the force runs on (stencil.h), or NULL (a box too
-     * sparse). Whoever writes bond_coef other than the force sets
-     * stencil->stale. */
+     * sparse). Whoever writes bond_coef other than the force calls
+     * bond_stencil_take. */
     struct BondStencil *stencil;
 
     /* On several processes (halo.h): the ghosts after the n points this
@@ -100,8 +100,8 @@ void bond_body_destroy(BondBody *body);
  * coefficient). */
 enum { PD_BYTES_PER_BOND = (int)(sizeof(int32_t) + sizeof(float)) };
 /* All of a body's bond storage per bond: the rows' and the lattice view's
- * copy of the coefficients (stencil.h: 4 bytes a bond, and the chunks'
- * cells with no bond). */
+ * (stencil.h: its state bits and magnitude blocks, the chunks' cells with
+ * no bond included). */
 double bond_bytes_per_bond(const BondBody *body);
 
 #endif

@@ -95,18 +95,17 @@ static double elastic_term(const BondBody *body, const double *terms, int64_t i)
 static inline __attribute__((always_inline)) void
 elastic_chunk(const int DIM, const BondBody *body, const BondStencil *s, int64_t q, double *terms) {
     const int64_t c = s->chunk_cell[q];
-    const float *kq = s->coef + q * s->offsets * 8;
+    const uint16_t *sq = s->state + q * s->offsets;
+    const float *kq = s->magnitude + (int64_t)s->block[q] * s->offsets * 8;
     const double *x0 = s->x[0], *x1 = s->x[1], *x2 = s->x[DIM - 1];
     const double *u0 = s->u[0], *u1 = s->u[1], *u2 = s->u[DIM - 1];
     double w[8] = {0};
 #if defined(__AVX512F__) && defined(__AVX512VL__)
     /* the loop below in 512-bit lanes (GCC leaves it scalar) */
-    const __m256 zero = _mm256_setzero_ps(), sign = _mm256_set1_ps(-0.0f);
     __m512d acc = _mm512_setzero_pd();
     for (int o = 0; o < s->offsets; o++) {
         const int64_t j = c + s->shift[o];
-        const __m256 kf = _mm256_load_ps(kq + 8 * o);
-        const __m512d k = _mm512_cvtps_pd(_mm256_andnot_ps(sign, kf));
+        const __m512d k = _mm512_cvtps_pd(_mm256_load_ps(kq + 8 * o));
         const __m512d ex = _mm512_sub_pd(_mm512_loadu_pd(x0 + j), _mm512_load_pd(x0 + c));
         const __m512d ey = _mm512_sub_pd(_mm512_loadu_pd(x1 + j), _mm512_load_pd(x1 + c));
         const __m512d rx =
@@ -123,8 +122,8 @@ elastic_chunk(const int DIM, const BondBody *body, const BondStencil *s, int64_t
             r2 = _mm512_add_pd(r2, _mm512_mul_pd(rz, rz));
         }
         const __m512d stretch = _mm512_sub_pd(_mm512_sqrt_pd(r2), _mm512_sqrt_pd(e2));
-        const __mmask8 bonded = _mm256_cmp_ps_mask(kf, zero, _CMP_NEQ_UQ);
-        const __m512d term = _mm512_maskz_mul_pd(bonded, _mm512_mul_pd(k, stretch), stretch);
+        const __m512d term =
+            _mm512_maskz_mul_pd((__mmask8)sq[o], _mm512_mul_pd(k, stretch), stretch);
         acc = _mm512_add_pd(acc, term);
     }
     _mm512_storeu_pd(w, acc);
@@ -132,10 +131,11 @@ elastic_chunk(const int DIM, const BondBody *body, const BondStencil *s, int64_t
     for (int o = 0; o < s->offsets; o++) {
         const int64_t sh = s->shift[o];
         const float *k8 = kq + 8 * o;
+        const unsigned bonded = sq[o];
 #pragma omp simd
         for (int l = 0; l < 8; l++) {
             const int64_t i = c + l, j = i + sh;
-            const double k = fabs((double)k8[l]);
+            const double k = (double)k8[l];
             const double ex = x0[j] - x0[i], rx = ex + u0[j] - u0[i];
             const double ey = x1[j] - x1[i], ry = ey + u1[j] - u1[i];
             double e2 = ex * ex + ey * ey, r2 = rx * rx + ry * ry;
@@ -144,7 +144,7 @@ elastic_chunk(const int DIM, const BondBody *body, const BondStencil *s, int64_t
                 e2 += ez * ez, r2 += rz * rz;
             }
             const double stretch = sqrt(r2) - sqrt(e2), term = k * stretch * stretch;
-            w[l] += k != 0.0 ? term : 0.0; /* a select: term is formed either way */
+            w[l] += bonded >> l & 1 ? term : 0.0; /* a select: term is formed either way */
         }
     }
 #endif

@@ -80,15 +80,16 @@ static void store_chunk(int dim, int64_t cell, double sum[3][8], const int32_t *
 static inline __attribute__((always_inline)) void
 stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict chunk_cell,
                int offsets, const int64_t *restrict shift, const double *const x[3],
-               const double *const u[3], float *restrict coef, const int32_t *restrict cell_point,
-               int64_t held, const int64_t *restrict first, const int32_t *restrict nbr,
+               const double *const u[3], uint16_t *restrict state, const int32_t *restrict block,
+               const float *restrict magnitude, const int32_t *restrict cell_point, int64_t held,
+               const int64_t *restrict first, const int32_t *restrict nbr,
                float *restrict bond_coef, double scale, double limit2, double *const force[3]) {
 #if defined(__AVX512F__) && defined(__AVX512VL__)
     const __m512d lim = _mm512_set1_pd(limit2), one = _mm512_set1_pd(1.0);
-    const __m256 zero = _mm256_setzero_ps(), sign = _mm256_set1_ps(-0.0f);
     for (int64_t q = lo; q < hi; q++) {
         const int64_t c = chunk_cell[q];
-        float *kq = coef + q * offsets * 8;
+        uint16_t *sq = state + q * offsets;
+        const float *kq = magnitude + (int64_t)block[q] * offsets * 8;
         __m512d xi[3], ui[3], s[3];
         for (int a = 0; a < DIM; a++) {
             xi[a] = _mm512_load_pd(x[a] + c), ui[a] = _mm512_load_pd(u[a] + c);
@@ -96,10 +97,9 @@ stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict ch
         }
         for (int o = 0; o < offsets; o++) {
             const int64_t j = c + shift[o];
-            float *k8 = kq + 8 * o;
-            const __m256 kf = _mm256_load_ps(k8);
-            const __mmask8 bonded = _mm256_cmp_ps_mask(kf, zero, _CMP_NEQ_UQ);
-            const __m512d k = _mm512_cvtps_pd(_mm256_andnot_ps(sign, kf)); /* |k| */
+            const unsigned st = sq[o];
+            const __mmask8 bonded = (__mmask8)st, live = (__mmask8)(st >> 8 & st);
+            const __m512d k = _mm512_cvtps_pd(_mm256_load_ps(kq + 8 * o));
             __m512d e[3], r[3];
             for (int a = 0; a < DIM; a++) {
                 e[a] = _mm512_sub_pd(_mm512_loadu_pd(x[a] + j), xi[a]);
@@ -112,14 +112,13 @@ stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict ch
                 r2 = _mm512_add_pd(r2, _mm512_mul_pd(r[2], r[2]));
             }
             const __m512d root = _mm512_sqrt_pd(_mm512_div_pd(e2, r2));
-            /* no bond (0): no force, whatever the cells hold */
+            /* no bond: no force, whatever the cells hold */
             const __m512d f = _mm512_maskz_mul_pd(bonded, k, _mm512_sub_pd(one, root));
-            /* a breakable bond (k > 0) stretched past s_c: its coefficient to 0 */
-            const __mmask8 live = _mm256_cmp_ps_mask(kf, zero, _CMP_GT_OQ);
+            /* a breakable bond stretched past s_c: broken */
             const __mmask8 over =
                 _mm512_mask_cmp_pd_mask(live, r2, _mm512_mul_pd(lim, e2), _CMP_GT_OQ);
             if (over) {
-                _mm256_mask_store_ps(k8, over, zero);
+                sq[o] = (uint16_t)(st & ~(unsigned)over);
                 for (int l = 0; l < 8; l++)
                     if (over >> l & 1)
                         break_in_row(c + l, shift[o], cell_point, first, nbr, bond_coef);
@@ -133,16 +132,17 @@ stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict ch
 #else
     for (int64_t q = lo; q < hi; q++) {
         const int64_t c = chunk_cell[q];
-        float *kq = coef + q * offsets * 8;
+        uint16_t *sq = state + q * offsets;
+        const float *kq = magnitude + (int64_t)block[q] * offsets * 8;
         double sum[3][8] = {{0}};
         for (int o = 0; o < offsets; o++) {
             const int64_t sh = shift[o];
-            float *k8 = kq + 8 * o;
+            const float *k8 = kq + 8 * o;
+            const unsigned st = sq[o];
             unsigned broke = 0;
 #pragma omp simd reduction(| : broke)
             for (int l = 0; l < 8; l++) {
                 const int64_t i = c + l, j = i + sh;
-                const float k = k8[l];
                 double e[3], r[3];
                 for (int a = 0; a < DIM; a++) {
                     e[a] = x[a][j] - x[a][i];
@@ -150,13 +150,13 @@ stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict ch
                 }
                 double e2 = e[0] * e[0] + e[1] * e[1], r2 = r[0] * r[0] + r[1] * r[1];
                 if (DIM == 3) e2 += e[2] * e[2], r2 += r[2] * r[2];
-                const double g = (double)fabsf(k) * (1.0 - sqrt(e2 / r2));
-                const double f = k != 0.0f ? g : 0.0; /* a select: g is formed either way */
-                const unsigned over = (k > 0.0f) & (r2 > limit2 * e2);
-                if (over) k8[l] = 0.0f;
-                broke |= over << l;
+                const double g = (double)k8[l] * (1.0 - sqrt(e2 / r2));
+                const double f = st >> l & 1 ? g : 0.0; /* a select: g is formed either way */
+                const unsigned live = st >> (8 + l) & st >> l & 1u;
+                broke |= (live & (unsigned)(r2 > limit2 * e2)) << l;
                 for (int a = 0; a < DIM; a++) sum[a][l] += f * r[a];
             }
+            if (broke) sq[o] = (uint16_t)(st & ~broke);
             for (int l = 0; broke && l < 8; l++)
                 if (broke >> l & 1) break_in_row(c + l, sh, cell_point, first, nbr, bond_coef);
         }
@@ -167,17 +167,18 @@ stencil_chunks(const int DIM, int64_t lo, int64_t hi, const int64_t *restrict ch
 
 void pd_force_kernel_stencil(int dim, int64_t lo, int64_t hi, const int64_t *restrict chunk_cell,
                              int offsets, const int64_t *restrict shift, const double *const x[3],
-                             const double *const u[3], float *restrict coef,
+                             const double *const u[3], uint16_t *restrict state,
+                             const int32_t *restrict block, const float *restrict magnitude,
                              const int32_t *restrict cell_point, int64_t held,
                              const int64_t *restrict first, const int32_t *restrict nbr,
                              float *restrict bond_coef, double scale, double limit2,
                              double *const force[3]) {
     if (dim == 2)
-        stencil_chunks(2, lo, hi, chunk_cell, offsets, shift, x, u, coef, cell_point, held, first,
-                       nbr, bond_coef, scale, limit2, force);
+        stencil_chunks(2, lo, hi, chunk_cell, offsets, shift, x, u, state, block, magnitude,
+                       cell_point, held, first, nbr, bond_coef, scale, limit2, force);
     else
-        stencil_chunks(3, lo, hi, chunk_cell, offsets, shift, x, u, coef, cell_point, held, first,
-                       nbr, bond_coef, scale, limit2, force);
+        stencil_chunks(3, lo, hi, chunk_cell, offsets, shift, x, u, state, block, magnitude,
+                       cell_point, held, first, nbr, bond_coef, scale, limit2, force);
 }
 
 /* Points (chunks: 8 a chunk) per OpenMP block: large enough to amortise
@@ -210,15 +211,16 @@ void pd_force_compute(BondBody *body) {
         force_plain(body, scale, limit2);
         return;
     }
-    bond_stencil_refresh(s, body);
+    if (!s->u_current) bond_stencil_refresh(s, body);
+    s->u_current = false; /* whoever writes u next need not know of the view */
     const int dim = body->dim;
     const int64_t per = FORCE_BLOCK / 8, blocks = (s->chunks + per - 1) / per;
 #pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
     for (int64_t blk = 0; blk < blocks; blk++) {
         int64_t lo = blk * per, hi = lo + per < s->chunks ? lo + per : s->chunks;
         pd_force_kernel_stencil(dim, lo, hi, s->chunk_cell, s->offsets, s->shift,
-                                (const double *const *)s->x, (const double *const *)s->u, s->coef,
-                                s->cell_point, body->n, body->bond_first, body->bond_nbr,
-                                body->bond_coef, scale, limit2, body->force);
+                                (const double *const *)s->x, (const double *const *)s->u, s->state,
+                                s->block, s->magnitude, s->cell_point, body->n, body->bond_first,
+                                body->bond_nbr, body->bond_coef, scale, limit2, body->force);
     }
 }

@@ -24,12 +24,13 @@ void pd_force_kernel_3d(int64_t lo, int64_t hi, const double *restrict x, const 
  * the arrays of BondStencil, x and u per cell, `held` the points of this
  * process; dim 2 or 3): eight points a chunk in SIMD lanes, each summing
  * its bonds in offset order, the bits of pd_force_kernel_2d / _3d on rows
- * in that order. A bond it breaks is broken in the view (coef) and in the
- * body's rows (bond_coef). Writes force[.][i] of the chunks' held points
+ * in that order. A bond it breaks is broken in the view (state) and in
+ * the body's rows (bond_coef). Writes force[.][i] of the chunks' held points
  * only. What pd_force_compute runs. */
 void pd_force_kernel_stencil(int dim, int64_t lo, int64_t hi, const int64_t *restrict chunk_cell,
                              int offsets, const int64_t *restrict shift, const double *const x[3],
-                             const double *const u[3], float *restrict coef,
+                             const double *const u[3], uint16_t *restrict state,
+                             const int32_t *restrict block, const float *restrict magnitude,
                              const int32_t *restrict cell_point, int64_t held,
                              const int64_t *restrict first, const int32_t *restrict nbr,
                              float *restrict bond_coef, double scale, double limit2,

@@ -5,12 +5,14 @@
 #include "core/timer.h"
 #include "solid/bond/force.h"
 #include "solid/bond/halo.h"
+#include "solid/bond/stencil.h"
 
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 
-/* The body's arrays as the shared kick and drift read them. */
+/* The body's arrays as the shared kick and drift read them; the drift
+ * writes the lattice view's displacements too (stencil.h). */
 static PdMotion motion_of(BondBody *body) {
     PdMotion m = {.dim = body->dim,
                   .n = body->n,
@@ -23,7 +25,9 @@ static PdMotion motion_of(BondBody *body) {
         m.v[d] = body->v[d];
         m.force[d] = body->force[d];
         m.external[d] = body->external[d];
+        if (body->stencil) m.mirror[d] = body->stencil->u[d];
     }
+    if (body->stencil) m.mirror_at = body->stencil->point_cell;
     return m;
 }
 
@@ -51,6 +55,15 @@ static int report_non_finite(const BondBody *body) {
     return NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
 }
 
+/* After the drift: the ghosts' displacements from their owners, into the
+ * view too, whose cells the drift brought up to date (stencil.h). */
+static void exchange_and_mark(BondBody *body) {
+    bond_halo_exchange(body);
+    if (!body->stencil) return;
+    bond_stencil_refresh_ghosts(body->stencil, body);
+    body->stencil->u_current = true;
+}
+
 int pd_step(BondBody *body, double dt) {
     bool bad;
     const PdMotion m = motion_of(body);
@@ -58,15 +71,14 @@ int pd_step(BondBody *body, double dt) {
         if (!body->force_valid) pd_force_compute(body);
         pd_kick(&m, 0.5 * dt);
         bad = pd_drift(&m, dt);
-        bond_halo_exchange(body);
+        exchange_and_mark(body);
         pd_force_compute(body);
         pd_kick(&m, 0.5 * dt);
         body->force_valid = true;
     } else {
         pd_force_compute(body);
-        pd_kick(&m, dt);
-        bad = pd_drift(&m, dt);
-        bond_halo_exchange(body);
+        bad = pd_kick_drift(&m, dt);
+        exchange_and_mark(body);
         body->force_valid = false;
     }
     /* on several processes all fail together (integers: exact) */

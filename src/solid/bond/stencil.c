@@ -5,6 +5,8 @@
 #include "core/parallel.h"
 #include "core/status.h"
 
+#include <math.h>
+#include <stdbool.h>
 #include <stdlib.h>
 
 enum { LANES = 8, MAX_CELLS_A_POINT = 8 };
@@ -111,33 +113,104 @@ static int fill(const BondBody *b, BondStencil *s) {
     for (int64_t k = 0; k < cells / LANES; k++) s->chunks += active[k];
     int status = nspd_alloc(&s->chunk_cell, (size_t)s->chunks, sizeof(int64_t));
     if (status == NSPD_OK)
-        status =
-            nspd_alloc(&s->coef, (size_t)s->chunks * (size_t)s->offsets * LANES, sizeof(float));
+        status = nspd_alloc(&s->state, (size_t)s->chunks * (size_t)s->offsets, sizeof(uint16_t));
+    if (status == NSPD_OK) status = nspd_alloc(&s->block, (size_t)s->chunks, sizeof(int32_t));
     for (int64_t k = 0, q = 0; status == NSPD_OK && k < cells / LANES; k++)
         if (active[k]) s->chunk_cell[q++] = k * LANES;
     nspd_free(&active);
     return status;
 }
 
-/* Takes the coefficients of the body's bonds into the view. */
-static void take_coef(BondStencil *s, const BondBody *b) {
-    const int m = s->offsets;
-    float *coef = s->coef;
-#pragma omp parallel for schedule(static) if (s->chunks >= PARALLEL_MIN_ITEMS / LANES)
-    for (int64_t k = 0; k < s->chunks; k++) {
-        float *chunk = coef + k * m * LANES;
-        for (int q = 0; q < m * LANES; q++) chunk[q] = 0.0f;
+/* The held point in lane l of active chunk q, or -1 (no point, or a
+ * ghost: no bonds of its own). */
+static int32_t held_point(const BondStencil *s, const BondBody *b, int64_t q, int l) {
+    const int32_t i = s->cell_point[s->chunk_cell[q] + l];
+    return i < b->n ? i : -1;
+}
+
+/* The offset index of bond e of point i. */
+static int bond_offset_index(const BondStencil *s, const BondBody *b, int32_t i, int64_t e) {
+    int64_t d[3];
+    bond_offset(b, i, b->bond_nbr[e], d);
+    return s->offset_of[offset_slot(s, d)];
+}
+
+/* The magnitude most bonds of each offset have (a majority vote over the
+ * intact ones; any value is correct, the most common saves the most). */
+static int shared_magnitudes(const BondStencil *s, const BondBody *b, float *shared) {
+    int64_t *votes = NULL;
+    TRY(nspd_alloc(&votes, (size_t)s->offsets, sizeof *votes));
+    for (int64_t q = 0; q < s->chunks; q++)
         for (int l = 0; l < LANES; l++) {
-            const int32_t i = s->cell_point[s->chunk_cell[k] + l];
-            if (i < 0 || i >= b->n) continue; /* no point, or a ghost: no bonds */
+            const int32_t i = held_point(s, b, q, l);
+            if (i < 0) continue;
             for (int64_t e = b->bond_first[i]; e < b->bond_first[i + 1]; e++) {
-                int64_t d[3];
-                bond_offset(b, i, b->bond_nbr[e], d);
-                chunk[s->offset_of[offset_slot(s, d)] * LANES + l] = b->bond_coef[e];
+                const float k = fabsf(b->bond_coef[e]);
+                const int o = bond_offset_index(s, b, i, e);
+                if (k == 0.0f) continue; /* broken (body.h) */
+                if (votes[o] == 0) shared[o] = k;
+                votes[o] += k == shared[o] ? 1 : -1;
+            }
+        }
+    nspd_free(&votes);
+    return NSPD_OK;
+}
+
+/* Whether a bond of chunk q has a magnitude other than the shared one. */
+static bool needs_own_block(const BondStencil *s, const BondBody *b, const float *shared,
+                            int64_t q) {
+    for (int l = 0; l < LANES; l++) {
+        const int32_t i = held_point(s, b, q, l);
+        if (i < 0) continue;
+        for (int64_t e = b->bond_first[i]; e < b->bond_first[i + 1]; e++) {
+            const float k = fabsf(b->bond_coef[e]);
+            if (k != 0.0f && k != shared[bond_offset_index(s, b, i, e)]) return true;
+        }
+    }
+    return false;
+}
+
+int bond_stencil_take(BondStencil *s, const BondBody *b) {
+    const int m = s->offsets;
+    float *shared = NULL, *magnitude = NULL;
+    TRY(nspd_alloc(&shared, (size_t)m, sizeof *shared));
+    int status = shared_magnitudes(s, b, shared);
+    int64_t own = 0; /* the chunks with a bond of another magnitude: a block of their own */
+    for (int64_t q = 0; status == NSPD_OK && q < s->chunks; q++)
+        own += needs_own_block(s, b, shared, q);
+    if (status == NSPD_OK)
+        status = nspd_alloc(&magnitude, (size_t)(1 + own) * (size_t)m * LANES, sizeof(float));
+    if (status != NSPD_OK) {
+        nspd_free(&shared);
+        return status;
+    }
+    int32_t blocks = 1;
+    for (int64_t q = 0; q < s->chunks; q++)
+        s->block[q] = needs_own_block(s, b, shared, q) ? blocks++ : 0;
+    for (int o = 0; o < m; o++)
+        for (int l = 0; l < LANES; l++) magnitude[o * LANES + l] = shared[o];
+    nspd_free(&shared);
+#pragma omp parallel for schedule(static) if (s->chunks >= PARALLEL_MIN_ITEMS / LANES)
+    for (int64_t q = 0; q < s->chunks; q++) {
+        uint16_t *state = s->state + q * m;
+        float *mine = s->block[q] ? magnitude + (int64_t)s->block[q] * m * LANES : NULL;
+        for (int o = 0; o < m; o++) state[o] = 0;
+        for (int l = 0; l < LANES; l++) {
+            const int32_t i = held_point(s, b, q, l);
+            if (i < 0) continue;
+            for (int64_t e = b->bond_first[i]; e < b->bond_first[i + 1]; e++) {
+                const float k = b->bond_coef[e];
+                const int o = bond_offset_index(s, b, i, e);
+                if (k == 0.0f) continue; /* broken */
+                state[o] |= (uint16_t)(1u << l | (k > 0.0f ? 1u << (LANES + l) : 0u));
+                if (mine) mine[o * LANES + l] = fabsf(k);
             }
         }
     }
-    s->stale = false;
+    nspd_free(&s->magnitude);
+    s->magnitude = magnitude;
+    s->u_current = false;
+    return NSPD_OK;
 }
 
 int bond_stencil_create(const BondBody *b, BondStencil **out) {
@@ -186,18 +259,29 @@ int bond_stencil_create(const BondBody *b, BondStencil **out) {
         bond_stencil_free(&s);
         return status;
     }
-    take_coef(s, b); /* now, with the build, not in the first step */
+    status = bond_stencil_take(s, b); /* now, with the build, not in the first step */
+    if (status != NSPD_OK) {
+        bond_stencil_free(&s);
+        return status;
+    }
     *out = s;
     return NSPD_OK;
 }
 
-void bond_stencil_refresh(BondStencil *s, const BondBody *b) {
-    if (s->stale) take_coef(s, b);
-    const int64_t all = b->n + b->ghosts;
+/* The displacements of points [from, to) into their cells. */
+static void copy_u(BondStencil *s, const BondBody *b, int64_t from, int64_t to) {
     const int dim = s->dim == 3 ? 3 : 2;
-#pragma omp parallel for schedule(static) if (all >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < all; i++)
+#pragma omp parallel for schedule(static) if (to - from >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = from; i < to; i++)
         for (int a = 0; a < dim; a++) s->u[a][s->point_cell[i]] = b->u[a][i];
+}
+
+void bond_stencil_refresh(BondStencil *s, const BondBody *b) {
+    copy_u(s, b, 0, b->n + b->ghosts);
+}
+
+void bond_stencil_refresh_ghosts(BondStencil *s, const BondBody *b) {
+    copy_u(s, b, b->n, b->n + b->ghosts);
 }
 
 void bond_stencil_free(BondStencil **sp) {
@@ -210,7 +294,9 @@ void bond_stencil_free(BondStencil **sp) {
     nspd_free(&s->shift);
     nspd_free(&s->offset_of);
     nspd_free(&s->chunk_cell);
-    nspd_free(&s->coef);
+    nspd_free(&s->state);
+    nspd_free(&s->block);
+    nspd_free(&s->magnitude);
     nspd_free(&s->cell_point);
     nspd_free(&s->point_cell);
     nspd_free(sp);

@@ -17,17 +17,28 @@
  *
  * Cells are grouped in chunks of eight along the major axis (aligned to
  * the box); the chunks holding a point of this process are the active
- * ones, the only ones the force visits. Per active chunk the bond
- * coefficients of its eight cells, offset by offset (coef[(chunk offsets
- * + o) 8 + lane]), a copy of the bonds' own (body.h: sign = failure
- * state), taken with the build and again whenever `stale`. A cell with no
- * point, or a point's missing bond, has 0 there (a broken bond: no force).
- * Cells with no point hold their lattice position and no displacement, so
- * that every load is of a finite number.
+ * ones, the only ones the force visits. Per active chunk and offset the
+ * bonds' state, two bytes (a bit a lane): bonded (the bond is there and
+ * intact) and breakable (body.h: the coefficient's sign). Their
+ * coefficients' magnitudes are a block of offsets x 8 floats: away from
+ * the body's surfaces the magnitude of a bond depends on its offset only
+ * (the corrections: surface.h), so most chunks share block 0, one value
+ * an offset repeated in the eight lanes, and only the chunks near a
+ * surface (9 % of the paper's plate) have a block of their own. The
+ * force so streams a quarter of a byte a bond, not the four of a float
+ * coefficient: that stream, not the arithmetic, had set the kernel's
+ * pace (a prototype of the loop on the plate: 1.3e9 bonds/s with a
+ * float a bond streamed, 2.0e9 with the coefficients in cache).
+ * Everything is taken from the bonds with the build and again by
+ * bond_stencil_take (after a checkpoint read). A cell with no point, or
+ * a point's missing or broken bond, is not bonded: no force. Cells with
+ * no point hold their lattice position and no displacement, so that
+ * every load is of a finite number.
  *
  * Memory: a cell's x and u (32 bytes in 2D, 48 in 3D), 4 bytes for its
- * point, 8 a point for the map back, and 4
- * bytes an offset of an active chunk's cell (about 4 a bond). A body
+ * point, 8 a point for the map back, 2 bytes an offset of an active
+ * chunk and 4 an offset of a cell of a chunk with its own block (about
+ * 0.6 a bond on the plate). A body
  * whose box holds more than 8 cells a point (a thin ring, a shell, a
  * scattered set) gets no view: pd_force_compute then runs the plain
  * kernel, with the same bits. */
@@ -55,10 +66,13 @@ typedef struct BondStencil {
     int64_t *chunk_cell; /* first cell of each active chunk */
     double *x[3];        /* per cell: reference position (z: NULL in 2D) */
     double *u[3];        /* per cell: displacement (pd_force_compute refreshes) */
-    float *coef;         /* per active chunk, offsets x 8: the bonds' coefficients */
+    uint16_t *state;     /* per active chunk, per offset: bit l bonded, bit 8 + l breakable */
+    int32_t *block;      /* per active chunk: its block of magnitudes (0: the shared one) */
+    float *magnitude;    /* blocks x offsets x 8: |coefficient| of each lane's bond */
     int32_t *cell_point; /* per cell: the point there (held or ghost), or -1 */
     int64_t *point_cell; /* per point, held and ghosts: its cell */
-    bool stale;          /* coef to be taken from the bonds before the next force */
+    bool u_current;      /* u holds the body's: pd_step's drift wrote both and the ghosts
+                            were copied; the next force takes it as it is, and clears this */
 } BondStencil;
 
 /* Sorts each row of the body's bonds into offset order (dz, then dy, then
@@ -66,15 +80,22 @@ typedef struct BondStencil {
  * view sums in. */
 void bond_rows_in_offset_order(BondBody *body);
 
-/* Builds the view of a body (held points and ghosts, their bonds'
- * coefficients taken) into *out, or leaves *out NULL when the box would
+/* Builds the view of a body (held points and ghosts, their bonds
+ * taken) into *out, or leaves *out NULL when the box would
  * hold more than 8 cells a point or 2^31 cells. NSPD_ERR_NOMEM. */
 int bond_stencil_create(const BondBody *body, BondStencil **out);
 void bond_stencil_free(BondStencil **s);
 
-/* Brings the view up to the body: the coefficients when stale, and the
- * displacements of every point, held and ghosts (what the force and the
- * elastic energy do first). */
+/* Takes the bonds' state and magnitudes from the body's rows again (after
+ * whoever writes bond_coef other than the force: a checkpoint read), and
+ * the displacements before the next force. NSPD_ERR_NOMEM (the view is
+ * then left as it was). */
+int bond_stencil_take(BondStencil *s, const BondBody *body);
+
+/* Brings the view's displacements up to the body's: every point's, held
+ * and ghosts (what the force does first, unless u_current, and the
+ * elastic energy), or the ghosts' only (after a halo exchange). */
 void bond_stencil_refresh(BondStencil *s, const BondBody *body);
+void bond_stencil_refresh_ghosts(BondStencil *s, const BondBody *body);
 
 #endif

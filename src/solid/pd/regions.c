@@ -56,39 +56,57 @@ void pd_boundary_table_free(PdBoundaryTable *t) {
     t->count = 0;
 }
 
-void pd_kick(const PdMotion *m, double h) {
-    const int dim = m->dim;
-    const double inv_rho = 1.0 / m->density;
+/* pd_kick's velocity of point i. */
+static inline void kick_point(const PdMotion *m, double inv_rho, double h, int64_t i) {
     const PdBoundaryTable *bt = m->boundary;
-#pragma omp parallel for schedule(static) if (m->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < m->n; i++) {
-        const int r = m->region[i];
-        for (int d = 0; d < dim; d++) {
-            const int k = 3 * r + d; /* read only when r >= 0 */
-            double b = m->external[d][i] + m->body_force[d];
-            if (r >= 0) b += bt->force_density[k];
-            m->v[d][i] += (m->force[d][i] + b) * inv_rho * h;
-            if (r >= 0) {
-                if (bt->velocity_given[k]) m->v[d][i] = bt->velocity[k];
-                if (bt->displacement_held[k]) m->v[d][i] = 0.0;
-            }
+    const int r = m->region[i];
+    for (int d = 0; d < m->dim; d++) {
+        const int k = 3 * r + d; /* read only when r >= 0 */
+        double b = m->external[d][i] + m->body_force[d];
+        if (r >= 0) b += bt->force_density[k];
+        m->v[d][i] += (m->force[d][i] + b) * inv_rho * h;
+        if (r >= 0) {
+            if (bt->velocity_given[k]) m->v[d][i] = bt->velocity[k];
+            if (bt->displacement_held[k]) m->v[d][i] = 0.0;
         }
     }
 }
 
-bool pd_drift(const PdMotion *m, double h) {
-    const int dim = m->dim;
+/* pd_drift's displacement of point i; false if it is not finite. */
+static inline bool drift_point(const PdMotion *m, double h, int64_t i) {
     const PdBoundaryTable *bt = m->boundary;
+    const int r = m->region[i];
+    bool finite = true;
+    for (int d = 0; d < m->dim; d++) {
+        double u = m->u[d][i] + m->v[d][i] * h;
+        if (r >= 0 && bt->displacement_held[3 * r + d]) u = bt->displacement[3 * r + d];
+        m->u[d][i] = u;
+        if (m->mirror_at) m->mirror[d][m->mirror_at[i]] = u;
+        finite = finite && isfinite(u);
+    }
+    return finite;
+}
+
+void pd_kick(const PdMotion *m, double h) {
+    const double inv_rho = 1.0 / m->density;
+#pragma omp parallel for schedule(static) if (m->n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < m->n; i++) kick_point(m, inv_rho, h, i);
+}
+
+bool pd_drift(const PdMotion *m, double h) {
+    bool bad = false;
+#pragma omp parallel for schedule(static) reduction(|| : bad) if (m->n >= PARALLEL_MIN_ITEMS)
+    for (int64_t i = 0; i < m->n; i++) bad = !drift_point(m, h, i) || bad;
+    return bad;
+}
+
+bool pd_kick_drift(const PdMotion *m, double h) {
+    const double inv_rho = 1.0 / m->density;
     bool bad = false;
 #pragma omp parallel for schedule(static) reduction(|| : bad) if (m->n >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < m->n; i++) {
-        const int r = m->region[i];
-        for (int d = 0; d < dim; d++) {
-            double u = m->u[d][i] + m->v[d][i] * h;
-            if (r >= 0 && bt->displacement_held[3 * r + d]) u = bt->displacement[3 * r + d];
-            m->u[d][i] = u;
-            bad = bad || !isfinite(u);
-        }
+        kick_point(m, inv_rho, h, i);
+        bad = !drift_point(m, h, i) || bad;
     }
     return bad;
 }

@@ -49,14 +49,23 @@ typedef struct {
     const double *force[3], *external[3];
     const int16_t *region;
     const PdBoundaryTable *boundary;
+    /* Optional (NULL: none): a second copy of u the drift keeps up too,
+     * point i's at mirror[d][mirror_at[i]] (the bond-based body's lattice
+     * view, which the force would otherwise copy from u every step). */
+    double *mirror[3];
+    const int64_t *mirror_at;
 } PdMotion;
 
 /* v += (force + external + body force + region force density) / rho * h,
  * then the regions' prescribed velocities (a held displacement: v = 0). */
 void pd_kick(const PdMotion *m, double h);
-/* u += v h, then the regions' held displacements. Returns true if any
+/* u += v h, then the regions' held displacements (into the mirror too,
+ * if any). Returns true if any
  * displacement is not finite (the NaN check rides on this pass, which reads
  * and writes u anyway: a NaN in v reaches u in the same step). */
 bool pd_drift(const PdMotion *m, double h);
+/* pd_kick then pd_drift, by h both, in one pass over the points (the
+ * Euler-Cromer step: the same bits, half the reads). */
+bool pd_kick_drift(const PdMotion *m, double h);
 
 #endif

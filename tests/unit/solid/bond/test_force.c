@@ -280,6 +280,47 @@ static void test_lattice_view_is_the_plain_kernel(void **state) {
     bond_body_destroy(&b);
 }
 
+/* Steps of a body through the view (the drift keeping the view's
+ * displacements, stencil.h; its chunks some on the shared magnitudes,
+ * some near the surface with their own) and of the same body on the
+ * plain path: the same bits, displacements and bonds, with both
+ * integrators. */
+static void test_steps_through_the_view(void **state) {
+    (void)state;
+    for (int integrator = 0; integrator < 2; integrator++) {
+        BondBody with, without;
+        for (int k = 0; k < 2; k++) {
+            PdConfig cfg = fixture_block(2, 48, 17, 0, 1e-3);
+            cfg.integrator = integrator ? PD_VELOCITY_VERLET : PD_EULER_CROMER;
+            cfg.failure = true;
+            cfg.critical_stretch = 0.002;
+            BondBody *b = k ? &without : &with;
+            assert_ok(bond_body_create(b, &cfg));
+            assert_non_null(b->stencil);
+            for (int64_t i = 0; i < b->n; i++) /* pulled apart along x: bonds break */
+                b->v[0][i] = 40.0 * (b->x[0][i] - 24e-3) / 24e-3;
+        }
+        int64_t shared = 0; /* chunks on the shared magnitudes, and with their own */
+        for (int64_t q = 0; q < with.stencil->chunks; q++) shared += with.stencil->block[q] == 0;
+        assert_true(shared > 0 && shared < with.stencil->chunks);
+        bond_stencil_free(&without.stencil);
+        const double dt = 0.8 * pd_stable_time_step(&with);
+        for (int s = 0; s < 60; s++) {
+            assert_ok(pd_step(&with, dt));
+            assert_ok(pd_step(&without, dt));
+        }
+        for (int d = 0; d < 2; d++)
+            assert_memory_equal(with.u[d], without.u[d], (size_t)with.n * sizeof(double));
+        assert_memory_equal(with.bond_coef, without.bond_coef,
+                            (size_t)with.bond_count * sizeof(float));
+        int64_t broken = 0;
+        for (int64_t k = 0; k < with.bond_count; k++) broken += with.bond_coef[k] == 0.0f;
+        assert_true(broken > 100);
+        bond_body_destroy(&with);
+        bond_body_destroy(&without);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rigid_motion_gives_no_force),
@@ -288,6 +329,7 @@ int main(void) {
         cmocka_unit_test(test_failure_is_history),
         cmocka_unit_test(test_stable_time_step),
         cmocka_unit_test(test_lattice_view_is_the_plain_kernel),
+        cmocka_unit_test(test_steps_through_the_view),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
