@@ -67,7 +67,7 @@ void bond_solid_points_of(BondBody *b, PdPoints *pts) {
  * body.c allocates per point (158: positions, displacements,
  * velocities, forces, external forces, lattice indices, volume, region,
  * damage denominator, row offsets; and the lattice view's cell of x and
- * u with its maps, taking a cell a point: 45 more in 2D, 61 in 3D) and
+ * u with its maps, taking a cell a point: 41 more in 2D, 57 in 3D) and
  * per bond (9: the rows' 8 and the view's state bits and magnitude
  * blocks, 0.56 on the paper's plate, up to 4.25 on a body all surface),
  * plus the building's peak (a byte per lattice site and 16 per point
@@ -87,7 +87,7 @@ static SolidEstimate bond_estimate(const SolidConfig *sc) {
             for (int i = -reach; i <= reach; i++)
                 if ((i || j || k) && (double)(i * i + j * j + k * k) <= m * m) family += 1;
     e.bonds = e.points * family;
-    const double per_point = cfg->dim == 2 ? 203.0 : 219.0, per_bond = PD_BYTES_PER_BOND + 1.0,
+    const double per_point = cfg->dim == 2 ? 199.0 : 215.0, per_bond = PD_BYTES_PER_BOND + 1.0,
                  build = fmax(sites + 16.0 * e.points, 24.0 * e.points);
     e.bytes = per_point * e.points + per_bond * e.bonds + build;
     e.check_s = BOND_CHECK_S_PER_BOND * e.bonds;

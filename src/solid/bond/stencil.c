@@ -82,7 +82,7 @@ static int fill(const BondBody *b, BondStencil *s) {
     }
     TRY(nspd_alloc(&s->shift, (size_t)s->offsets, sizeof(int64_t)));
     TRY(nspd_alloc(&s->cell_point, nc, sizeof(int32_t)));
-    TRY(nspd_alloc(&s->point_cell, (size_t)all, sizeof(int64_t)));
+    TRY(nspd_alloc(&s->point_cell, (size_t)all, sizeof(int32_t)));
     const int64_t side = 2 * s->reach + 1, slots = side * side * (dim == 3 ? side : 1);
     for (int64_t q = 0; q < slots; q++)
         if (s->offset_of[q] >= 0) {
@@ -102,7 +102,7 @@ static int fill(const BondBody *b, BondStencil *s) {
     for (int64_t i = 0; i < all; i++) {
         int64_t c = 0;
         for (int a = 0; a < dim; a++) c += (b->lattice[a][i] - s->origin[a]) * s->stride[a];
-        s->point_cell[i] = c;
+        s->point_cell[i] = (int32_t)c;
         s->cell_point[c] = (int32_t)i;
         for (int a = 0; a < dim; a++) s->x[a][c] = b->x[a][i];
     }

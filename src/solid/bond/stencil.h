@@ -36,7 +36,7 @@
  * every load is of a finite number.
  *
  * Memory: a cell's x and u (32 bytes in 2D, 48 in 3D), 4 bytes for its
- * point, 8 a point for the map back, 2 bytes an offset of an active
+ * point, 4 a point for the map back, 2 bytes an offset of an active
  * chunk and 4 an offset of a cell of a chunk with its own block (about
  * 0.6 a bond on the plate). A body
  * whose box holds more than 8 cells a point (a thin ring, a shell, a
@@ -70,7 +70,7 @@ typedef struct BondStencil {
     int32_t *block;      /* per active chunk: its block of magnitudes (0: the shared one) */
     float *magnitude;    /* blocks x offsets x 8: |coefficient| of each lane's bond */
     int32_t *cell_point; /* per cell: the point there (held or ghost), or -1 */
-    int64_t *point_cell; /* per point, held and ghosts: its cell */
+    int32_t *point_cell; /* per point, held and ghosts: its cell */
     bool u_current;      /* u holds the body's: pd_step's drift wrote both and the ghosts
                             were copied; the next force takes it as it is, and clears this */
 } BondStencil;

@@ -53,7 +53,7 @@ typedef struct {
      * point i's at mirror[d][mirror_at[i]] (the bond-based body's lattice
      * view, which the force would otherwise copy from u every step). */
     double *mirror[3];
-    const int64_t *mirror_at;
+    const int32_t *mirror_at;
 } PdMotion;
 
 /* v += (force + external + body force + region force density) / rho * h,
