@@ -172,7 +172,7 @@ static int bond_checkpoint(void *impl, Checkpoint *ck) {
         TRY(io_whole(b, ck, NAMES[3][d], b->external[d], sizeof(double), false));
     }
     TRY(io_whole(b, ck, "bond.coef", b->bond_coef, sizeof(float), true));
-    if (b->stencil) TRY(bond_stencil_take(b->stencil, b)); /* read, perhaps: taken again */
+    if (b->stencil && checkpoint_reading(ck)) TRY(bond_stencil_take(b->stencil, b));
     TRY(checkpoint_io_int64(ck, "bond.step", &b->step));
     TRY(checkpoint_io_double(ck, "bond.time", &b->time));
     int valid = b->force_valid;
