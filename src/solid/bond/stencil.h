@@ -25,8 +25,9 @@
  * (the corrections: surface.h), so most chunks share block 0, one value
  * an offset repeated in the eight lanes, and only the chunks near a
  * surface (9 % of the paper's plate) have a block of their own. The
- * force so streams a quarter of a byte a bond, not the four of a float
- * coefficient: that stream, not the arithmetic, had set the kernel's
+ * force so streams about half a byte a bond on the plate (a quarter of
+ * state, and the own blocks), not the four of a float coefficient: that
+ * stream, not the arithmetic, had set the kernel's
  * pace (a prototype of the loop on the plate: 1.3e9 bonds/s with a
  * float a bond streamed, 2.0e9 with the coefficients in cache).
  * Everything is taken from the bonds with the build and again by
@@ -65,7 +66,8 @@ typedef struct BondStencil {
     int64_t chunks;      /* active chunks */
     int64_t *chunk_cell; /* first cell of each active chunk */
     double *x[3];        /* per cell: reference position (z: NULL in 2D) */
-    double *u[3];        /* per cell: displacement (pd_force_compute refreshes) */
+    double *u[3];        /* per cell: displacement (pd_step's drift writes it beside the
+                            body's, or pd_force_compute copies it: u_current) */
     uint16_t *state;     /* per active chunk, per offset: bit l bonded, bit 8 + l breakable */
     int32_t *block;      /* per active chunk: its block of magnitudes (0: the shared one) */
     float *magnitude;    /* blocks x offsets x 8: |coefficient| of each lane's bond */
