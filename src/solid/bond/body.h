@@ -31,6 +31,7 @@
 #ifndef NSPD_SOLID_BOND_BODY_H
 #define NSPD_SOLID_BOND_BODY_H
 
+#include "core/balance.h"
 #include "core/comm.h"
 #include "solid/pd/config.h"
 #include "solid/pd/regions.h"
@@ -75,6 +76,9 @@ typedef struct {
      * sparse). Whoever writes bond_coef other than the force calls
      * bond_stencil_take. */
     struct BondStencil *stencil;
+    /* The threads' shares of the force's and of the kick and drift's
+     * loops (core/balance.h): scheduling only, no bits depend on them. */
+    Balance force_balance, motion_balance;
 
     /* On several processes (halo.h): the ghosts after the n points this
      * process holds (their displacements from their owners, no bonds of

@@ -21,11 +21,14 @@
  * runs is the same arithmetic on the body's lattice view (stencil.h),
  * eight points at a time, below. */
 #include "solid/bond/force.h"
+#include "core/balance.h"
 #include "core/parallel.h"
+#include "core/timer.h"
 #include "solid/bond/force_kernel.h"
 #include "solid/bond/stencil.h"
 
 #include <math.h>
+#include <omp.h>
 #if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
@@ -181,46 +184,42 @@ void pd_force_kernel_stencil(int dim, int64_t lo, int64_t hi, const int64_t *res
                        cell_point, held, first, nbr, bond_coef, scale, limit2, force);
 }
 
-/* Points (chunks: 8 a chunk) per OpenMP block: large enough to amortise
- * scheduling, small enough to balance two threads on a body of a few
- * thousand points (the panel's 3,224: 13 blocks). The team is taken by
- * the bond count (core/parallel.h). */
-enum { FORCE_BLOCK = 256 };
-
-/* The force without a view (stencil.h: too sparse a box): the plain
- * kernels, whose bits are the view's. */
-static void force_plain(BondBody *b, double scale, double limit2) {
-    const int64_t n = b->n, blocks = (n + FORCE_BLOCK - 1) / FORCE_BLOCK;
-#pragma omp parallel for schedule(static) if (b->bond_count >= PARALLEL_MIN_ITEMS)
-    for (int64_t blk = 0; blk < blocks; blk++) {
-        int64_t lo = blk * FORCE_BLOCK, hi = lo + FORCE_BLOCK < n ? lo + FORCE_BLOCK : n;
-        if (b->dim == 2)
-            pd_force_kernel_2d(lo, hi, b->x[0], b->x[1], b->u[0], b->u[1], b->bond_first,
-                               b->bond_nbr, b->bond_coef, scale, limit2, b->force[0], b->force[1]);
-        else
-            pd_force_kernel_3d(lo, hi, b->x[0], b->x[1], b->x[2], b->u[0], b->u[1], b->u[2],
-                               b->bond_first, b->bond_nbr, b->bond_coef, scale, limit2, b->force[0],
-                               b->force[1], b->force[2]);
-    }
+/* Points [lo, hi) by the plain kernels (no view: stencil.h, too sparse
+ * a box), whose bits are the view's. */
+static void force_plain(BondBody *b, int64_t lo, int64_t hi, double scale, double limit2) {
+    if (b->dim == 2)
+        pd_force_kernel_2d(lo, hi, b->x[0], b->x[1], b->u[0], b->u[1], b->bond_first, b->bond_nbr,
+                           b->bond_coef, scale, limit2, b->force[0], b->force[1]);
+    else
+        pd_force_kernel_3d(lo, hi, b->x[0], b->x[1], b->x[2], b->u[0], b->u[1], b->u[2],
+                           b->bond_first, b->bond_nbr, b->bond_coef, scale, limit2, b->force[0],
+                           b->force[1], b->force[2]);
 }
 
 void pd_force_compute(BondBody *body) {
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
     BondStencil *s = body->stencil;
-    if (!s) {
-        force_plain(body, scale, limit2);
-        return;
+    if (s && !s->u_current) bond_stencil_refresh(s, body);
+    if (s) s->u_current = false; /* whoever writes u next need not know of the view */
+    /* the view's active chunks, or the points; each thread a contiguous
+     * share, moved toward equal times step by step (core/balance.h: a
+     * point's force is its own arithmetic, whichever thread takes it) */
+    const int64_t items = s ? s->chunks : body->n;
+#pragma omp parallel if (body->bond_count >= PARALLEL_MIN_ITEMS)
+    {
+        const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+        int64_t lo, hi;
+        balance_range(&body->force_balance, t, threads, items, &lo, &hi);
+        const double t0 = nspd_wall_time();
+        if (s)
+            pd_force_kernel_stencil(body->dim, lo, hi, s->chunk_cell, s->offsets, s->shift,
+                                    (const double *const *)s->x, (const double *const *)s->u,
+                                    s->state, s->block, s->magnitude, s->cell_point, body->n,
+                                    body->bond_first, body->bond_nbr, body->bond_coef, scale,
+                                    limit2, body->force);
+        else
+            force_plain(body, lo, hi, scale, limit2);
+        balance_record(&body->force_balance, t, threads, nspd_wall_time() - t0);
     }
-    if (!s->u_current) bond_stencil_refresh(s, body);
-    s->u_current = false; /* whoever writes u next need not know of the view */
-    const int dim = body->dim;
-    const int64_t per = FORCE_BLOCK / 8, blocks = (s->chunks + per - 1) / per;
-#pragma omp parallel for schedule(static) if (body->bond_count >= PARALLEL_MIN_ITEMS)
-    for (int64_t blk = 0; blk < blocks; blk++) {
-        int64_t lo = blk * per, hi = lo + per < s->chunks ? lo + per : s->chunks;
-        pd_force_kernel_stencil(dim, lo, hi, s->chunk_cell, s->offsets, s->shift,
-                                (const double *const *)s->x, (const double *const *)s->u, s->state,
-                                s->block, s->magnitude, s->cell_point, body->n, body->bond_first,
-                                body->bond_nbr, body->bond_coef, scale, limit2, body->force);
-    }
+    balance_update(&body->force_balance);
 }

@@ -28,6 +28,7 @@ static PdMotion motion_of(BondBody *body) {
         if (body->stencil) m.mirror[d] = body->stencil->u[d];
     }
     if (body->stencil) m.mirror_at = body->stencil->point_cell;
+    m.balance = &body->motion_balance;
     return m;
 }
 

@@ -3,8 +3,10 @@
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/status.h"
+#include "core/timer.h"
 
 #include <math.h>
+#include <omp.h>
 
 void pd_regions_assign(const PdConfig *cfg, int64_t n, const double *const x[3], int16_t *region,
                        double *const v[3]) {
@@ -87,26 +89,45 @@ static inline bool drift_point(const PdMotion *m, double h, int64_t i) {
     return finite;
 }
 
-void pd_kick(const PdMotion *m, double h) {
+/* What motion_pass does to each point. */
+enum { MOTION_KICK, MOTION_DRIFT, MOTION_KICK_DRIFT };
+
+/* One pass over the points, each thread on its share (m->balance): the
+ * kick, the drift, or both point by point. Returns whether a drifted
+ * displacement is not finite. */
+static bool motion_pass(const PdMotion *m, double h, int what) {
     const double inv_rho = 1.0 / m->density;
-#pragma omp parallel for schedule(static) if (m->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < m->n; i++) kick_point(m, inv_rho, h, i);
+    bool bad = false;
+#pragma omp parallel reduction(|| : bad) if (m->n >= PARALLEL_MIN_ITEMS)
+    {
+        const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+        int64_t lo, hi;
+        balance_range(m->balance, t, threads, m->n, &lo, &hi);
+        const double t0 = nspd_wall_time();
+        if (what == MOTION_KICK) {
+            for (int64_t i = lo; i < hi; i++) kick_point(m, inv_rho, h, i);
+        } else if (what == MOTION_DRIFT) {
+            for (int64_t i = lo; i < hi; i++) bad = !drift_point(m, h, i) || bad;
+        } else {
+            for (int64_t i = lo; i < hi; i++) {
+                kick_point(m, inv_rho, h, i);
+                bad = !drift_point(m, h, i) || bad;
+            }
+        }
+        balance_record(m->balance, t, threads, nspd_wall_time() - t0);
+    }
+    balance_update(m->balance);
+    return bad;
+}
+
+void pd_kick(const PdMotion *m, double h) {
+    motion_pass(m, h, MOTION_KICK);
 }
 
 bool pd_drift(const PdMotion *m, double h) {
-    bool bad = false;
-#pragma omp parallel for schedule(static) reduction(|| : bad) if (m->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < m->n; i++) bad = !drift_point(m, h, i) || bad;
-    return bad;
+    return motion_pass(m, h, MOTION_DRIFT);
 }
 
 bool pd_kick_drift(const PdMotion *m, double h) {
-    const double inv_rho = 1.0 / m->density;
-    bool bad = false;
-#pragma omp parallel for schedule(static) reduction(|| : bad) if (m->n >= PARALLEL_MIN_ITEMS)
-    for (int64_t i = 0; i < m->n; i++) {
-        kick_point(m, inv_rho, h, i);
-        bad = !drift_point(m, h, i) || bad;
-    }
-    return bad;
+    return motion_pass(m, h, MOTION_KICK_DRIFT);
 }

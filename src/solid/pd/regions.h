@@ -7,6 +7,7 @@
 #ifndef NSPD_SOLID_PD_REGIONS_H
 #define NSPD_SOLID_PD_REGIONS_H
 
+#include "core/balance.h"
 #include "solid/pd/config.h"
 
 #include <stdbool.h>
@@ -54,6 +55,9 @@ typedef struct {
      * view, which the force would otherwise copy from u every step). */
     double *mirror[3];
     const int32_t *mirror_at;
+    /* Optional (NULL: equal shares): the threads' shares of the points,
+     * moved toward equal times after each pass (core/balance.h). */
+    Balance *balance;
 } PdMotion;
 
 /* v += (force + external + body force + region force density) / rho * h,
