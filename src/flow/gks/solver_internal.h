@@ -10,6 +10,7 @@
 #ifndef NSPD_FLOW_GKS_SOLVER_INTERNAL_H
 #define NSPD_FLOW_GKS_SOLVER_INTERNAL_H
 
+#include "core/balance.h"
 #include "flow/gks/solver.h"
 
 #include <stdbool.h>
@@ -57,6 +58,9 @@ struct GksSolver {
     uint8_t *wall[4];  /* per box face, per cell along it: WALL_* flags */
     int nthreads;
     FlowWork *work;
+    /* the threads' shares of the rows all threads step (the edge rows of
+     * an overlapped exchange go in equal shares), core/balance.h */
+    Balance row_balance;
     FlowGhostHook hook;
     void *hook_ctx;
     double *source[3]; /* per cell: x, y momentum (N/m^3) and energy (W/m^3) sources;

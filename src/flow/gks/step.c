@@ -471,8 +471,11 @@ static void add_sources(GksSolver *s, double dt) {
 
 /* Rows [j0, j1) of the step on the thread team, their failures and
  * fallbacks added to *bad and *nb. Each face's flux is its own, so any
- * division of the rows gives the same bits. */
-static void step_rows(GksSolver *s, int j0, int j1, double dt, int *bad, int64_t *nb) {
+ * division of the rows gives the same bits: the threads' shares follow
+ * their measured times (balance; NULL: equal shares), which also evens
+ * out rows that cost more (a body's ghost cells, fallbacks). */
+static void step_rows(GksSolver *s, int j0, int j1, double dt, Balance *balance, int *bad,
+                      int64_t *nb) {
     const int rows = j1 - j0;
     if (rows <= 0) return;
     int nt = team_size(s);
@@ -484,9 +487,14 @@ static void step_rows(GksSolver *s, int j0, int j1, double dt, int *bad, int64_t
         FlowWork *wk = &s->work[t];
         wk->bad = 0;
         wk->fallbacks = 0;
-        step_block(s, wk, j0 + (int)((int64_t)rows * t / n),
-                   j0 + (int)((int64_t)rows * (t + 1) / n), dt);
+        int64_t lo, hi;
+        balance_range(balance, t, n, rows, &lo, &hi);
+        const double t0 = nspd_wall_time();
+        /* no empty block: each block counts its first rows' fallbacks */
+        if (hi > lo) step_block(s, wk, j0 + (int)lo, j0 + (int)hi, dt);
+        balance_record(balance, t, n, nspd_wall_time() - t0);
     }
+    balance_update(balance);
     for (int t = 0; t < nt; t++) {
         *bad |= s->work[t].bad;
         *nb += s->work[t].fallbacks;
@@ -521,16 +529,16 @@ int gks_solver_step(GksSolver *s, double dt) {
         double t0 = nspd_wall_time();
         (void)exchange_rows_begin(s, &pending); /* a failed exchange is MPI's abort */
         s->comm_seconds += nspd_wall_time() - t0;
-        step_rows(s, GRID_NG, ny - GRID_NG, dt, &bad, &nb);
+        step_rows(s, GRID_NG, ny - GRID_NG, dt, &s->row_balance, &bad, &nb);
         t0 = nspd_wall_time();
         (void)comm_finish(&s->comm, &pending);
         s->comm_seconds += nspd_wall_time() - t0;
-        step_rows(s, 0, GRID_NG, dt, &bad, &nb);
-        step_rows(s, ny - GRID_NG, ny, dt, &bad, &nb);
+        step_rows(s, 0, GRID_NG, dt, NULL, &bad, &nb);
+        step_rows(s, ny - GRID_NG, ny, dt, NULL, &bad, &nb);
     } else {
         gks_solver_fill_boundaries(s);
         if (s->hook) s->hook(s->hook_ctx, s);
-        step_rows(s, 0, ny, dt, &bad, &nb);
+        step_rows(s, 0, ny, dt, &s->row_balance, &bad, &nb);
     }
     if (s->has_sources) add_sources(s, dt);
     if (comm_distributed(&s->comm)) { /* integers: exact on any ranks */
