@@ -30,17 +30,17 @@ void bac_gather(int dim, int64_t n, const int64_t *first, const int32_t *nbr,
                 const int64_t *reverse, const double *volume, const double *T,
                 double *const force[3]) {
     if (dim == 2) {
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (first[n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < n; i++) point_gather(2, i, first, nbr, reverse, volume, T, force);
     } else {
-#pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (first[n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < n; i++) point_gather(3, i, first, nbr, reverse, volume, T, force);
     }
 }
 
 int64_t bac_reverse_bonds(int64_t n, const int64_t *first, const int32_t *nbr, int64_t *reverse) {
     int64_t missing = 0;
-#pragma omp parallel for schedule(static) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) reduction(+ : missing) if (first[n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++)
         for (int64_t k = first[i]; k < first[i + 1]; k++) {
             const int32_t j = nbr[k];
@@ -518,7 +518,7 @@ void bac_coefficients(const BacSystem *s, const double *inv_w0, const uint8_t *o
                       double *phi_rev, double *phi_sum) {
     const int dim = s->dim;
     /* dynamic: a mask is sparse and uneven; each point's values are its own */
-#pragma omp parallel for schedule(dynamic, 256) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(dynamic, 256) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < s->n; i++) {
         if (only && !only[i]) continue;
         double sum[3] = {0, 0, 0};
@@ -538,7 +538,7 @@ void bac_coefficients(const BacSystem *s, const double *inv_w0, const uint8_t *o
 }
 
 void bac_inverse_weights(const BacSystem *s, const uint8_t *only, double *inv_w0) {
-#pragma omp parallel for schedule(dynamic, 256) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(dynamic, 256) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < s->n; i++) {
         if (only && !only[i]) continue;
         double w = 0.0;

@@ -257,7 +257,7 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
         TRY(nspd_alloc(&b->phi_sum, dim * n, sizeof(double)));
         TRY(cpd_body_pair_arrays(b));
     }
-#pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (b->first[b->n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++)
         for (int64_t k = b->first[i]; k < b->first[i + 1]; k++) {
             double xi[3] = {0, 0, 0};

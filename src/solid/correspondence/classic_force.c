@@ -136,7 +136,7 @@ static bool point_state(const ClassicSystem *s, ClassicState *st, int64_t i,
 
 int64_t classic_shape_check(const ClassicSystem *s, const uint8_t *redo, uint8_t *ok) {
     int64_t missing = 0;
-#pragma omp parallel for schedule(static) reduction(+ : missing) if (s->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) reduction(+ : missing) if (s->first[s->n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < s->n; i++) {
         if (redo && !redo[i]) continue;
         double K[9] = {0}, Kinv[9];
@@ -159,7 +159,7 @@ int64_t classic_force(const ClassicSystem *s, ClassicState *st, const double *co
                                (s->thickness > 0.0 ? s->thickness : 1.0);
     const double g = s->stabilisation * c / s->delta;
     int64_t singular = 0;
-#pragma omp parallel for schedule(static) reduction(+ : singular) if (n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) reduction(+ : singular) if (s->first[n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++)
         singular += point_state(s, st, i, u, g, F + 9 * i, P + 9 * i, T) ? 0 : 1;
     if (s->exchange_bonds) s->exchange_bonds(s->exchange_context, T);

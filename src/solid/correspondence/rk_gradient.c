@@ -104,8 +104,11 @@ int64_t rk_gradient_weights_of(int order, RkKernel kernel, int dim, int64_t n,
     if ((dim != 2 && dim != 3) || (order < 1 || order > 3)) return n;
     int64_t missing = 0;
     /* dynamic: a redo list is sparse and uneven; each point's weights are
-     * its own, so the bits do not depend on the schedule */
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (n >= PARALLEL_MIN_ITEMS)
+     * its own, so the bits do not depend on the schedule. A team by the
+     * bonds (core/parallel.h): a point's weights walk its family twice and
+     * solve its moment matrix (the coarse blast's 3,900 points ran on one
+     * thread, the other waiting 18 % of the step) */
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : missing) if (first[n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < n; i++) {
         if (redo && !redo[i]) continue;
         /* order 3 falls back to 2 where the family cannot fit a cubic

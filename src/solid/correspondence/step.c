@@ -244,7 +244,7 @@ int64_t cpd_settle_weights(CpdBody *b) {
         void *ok[1] = {b->ok};
         cpd_halo_exchange(b, ok, 1, 1); /* a bond breaks from both ends */
         int64_t broke = 0;
-#pragma omp parallel for schedule(static) reduction(+ : broke) if (b->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) reduction(+ : broke) if (b->first[b->n] >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < b->n; i++) {
             uint8_t redo = 0;
             for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
@@ -503,7 +503,7 @@ double cpd_stable_dt(CpdBody *b, int iterations, bool warm) {
 }
 
 void cpd_point_damage(const CpdBody *b, double *mean, double *broken) {
-#pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
+#pragma omp parallel for schedule(static) if (b->first[b->n] >= PARALLEL_MIN_ITEMS)
     for (int64_t i = 0; i < b->n; i++) {
         const int64_t lo = b->first[i], hi = b->first[i + 1];
         double sum = 0.0, gone = 0.0, all = 0.0;
