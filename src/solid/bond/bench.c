@@ -63,6 +63,11 @@ int bond_bench(long points, long steps, Report *out) {
         report_real(out, "bytes_per_point", ((double)bytes - bond_bytes) / (double)body.n);
         report_real(out, "setup_s", setup_s);
         report_real(out, "peak_rss_mb", nspd_peak_rss_mb());
+        /* each thread's share of the force's chunks at the end (core/balance.h):
+         * 1/threads on alike cores, less on a slower one */
+        const Balance *shares = &body.force_balance;
+        for (int t = 0; t < shares->threads; t++)
+            report_realf(out, shares->cut[t + 1] - shares->cut[t], "force_share_%d", t);
     }
     bond_body_destroy(&body);
     return status;
