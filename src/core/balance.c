@@ -2,8 +2,9 @@
 
 #include <math.h>
 
-/* No thread's share below this fraction of an equal one: every thread
- * keeps some items, so that its rate stays measured. */
+/* No thread's share below about this fraction of an equal one (the
+ * shares are normalised after the floor): every thread keeps some items,
+ * so that its rate stays measured. */
 static const double MIN_SHARE = 0.125;
 
 static int balanced(const Balance *b, int threads) {

@@ -52,7 +52,8 @@ int image_write_png(const Image *img, const char *path) {
     /* one filter (each row less the one above) and zlib level 3: libpng's
      * adaptive choice among all five filters at level 6 took half of a
      * small run's time (the Sod tube with its pictures 0.45 s, 0.21 s
-     * so), for files 30 % smaller (docs/PERFORMANCE.md, "Pictures") */
+     * so) for files a quarter smaller than these (docs/PERFORMANCE.md,
+     * "Pictures") */
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
     png_set_compression_level(png, 3);
     png_write_info(png, info);
