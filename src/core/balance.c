@@ -1,6 +1,8 @@
 #include "core/balance.h"
+#include "core/timer.h"
 
 #include <math.h>
+#include <omp.h>
 
 /* No thread's share below about this fraction of an equal one (the
  * shares are normalised after the floor): every thread keeps some items,
@@ -26,6 +28,15 @@ void balance_record(Balance *b, int t, int threads, double seconds) {
     if (!b || threads > BALANCE_MAX_THREADS) return;
     b->seconds[t] = seconds;
     if (t == 0) b->ran = threads;
+}
+
+double balance_begin(const Balance *b, int64_t n, int64_t *lo, int64_t *hi) {
+    balance_range(b, omp_get_thread_num(), omp_get_num_threads(), n, lo, hi);
+    return nspd_wall_time();
+}
+
+void balance_end(Balance *b, double started) {
+    balance_record(b, omp_get_thread_num(), omp_get_num_threads(), nspd_wall_time() - started);
 }
 
 void balance_update(Balance *b) {

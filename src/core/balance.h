@@ -20,10 +20,9 @@
  *     #pragma omp parallel if (...)
  *     {
  *         int64_t lo, hi;
- *         balance_range(b, omp_get_thread_num(), omp_get_num_threads(), n, &lo, &hi);
- *         const double t0 = nspd_wall_time();
+ *         const double started = balance_begin(b, n, &lo, &hi);
  *         ... items [lo, hi) ...
- *         balance_record(b, omp_get_thread_num(), omp_get_num_threads(), nspd_wall_time() - t0);
+ *         balance_end(b, started);
  *     }
  *     balance_update(b);
  */
@@ -50,6 +49,12 @@ void balance_range(const Balance *b, int t, int threads, int64_t n, int64_t *lo,
 
 /* Thread t's time on its range in this run (each thread its own slot). */
 void balance_record(Balance *b, int t, int threads, double seconds);
+
+/* In a parallel region: the calling thread's items [lo, hi) of n
+ * (balance_range for its number in its team), and the time it starts at,
+ * for balance_end to record (balance_record) when its items are done. */
+double balance_begin(const Balance *b, int64_t n, int64_t *lo, int64_t *hi);
+void balance_end(Balance *b, double started);
 
 /* After the run (outside the region): the new cuts. */
 void balance_update(Balance *b);

@@ -483,16 +483,14 @@ static void step_rows(GksSolver *s, int j0, int j1, double dt, Balance *balance,
     if ((int64_t)s->grid.nx * rows < PARALLEL_MIN_CELLS) nt = 1;
 #pragma omp parallel num_threads(nt)
     {
-        const int t = omp_get_thread_num(), n = omp_get_num_threads();
-        FlowWork *wk = &s->work[t];
+        FlowWork *wk = &s->work[omp_get_thread_num()];
         wk->bad = 0;
         wk->fallbacks = 0;
         int64_t lo, hi;
-        balance_range(balance, t, n, rows, &lo, &hi);
-        const double t0 = nspd_wall_time();
+        const double started = balance_begin(balance, rows, &lo, &hi);
         /* no empty block: each block counts its first rows' fallbacks */
         if (hi > lo) step_block(s, wk, j0 + (int)lo, j0 + (int)hi, dt);
-        balance_record(balance, t, n, nspd_wall_time() - t0);
+        balance_end(balance, started);
     }
     balance_update(balance);
     for (int t = 0; t < nt; t++) {

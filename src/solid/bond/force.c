@@ -23,12 +23,10 @@
 #include "solid/bond/force.h"
 #include "core/balance.h"
 #include "core/parallel.h"
-#include "core/timer.h"
 #include "solid/bond/force_kernel.h"
 #include "solid/bond/stencil.h"
 
 #include <math.h>
-#include <omp.h>
 #if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
@@ -199,18 +197,18 @@ static void force_plain(BondBody *b, int64_t lo, int64_t hi, double scale, doubl
 void pd_force_compute(BondBody *body) {
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
     BondStencil *s = body->stencil;
-    if (s && !s->u_current) bond_stencil_refresh(s, body);
-    if (s) s->u_current = false; /* whoever writes u next need not know of the view */
+    if (s) {
+        if (!s->u_current) bond_stencil_refresh(s, body);
+        s->u_current = false; /* whoever writes u next need not know of the view */
+    }
     /* the view's active chunks, or the points; each thread a contiguous
      * share, moved toward equal times step by step (core/balance.h: a
      * point's force is its own arithmetic, whichever thread takes it) */
     const int64_t items = s ? s->chunks : body->n;
 #pragma omp parallel if (body->bond_count >= PARALLEL_MIN_ITEMS)
     {
-        const int t = omp_get_thread_num(), threads = omp_get_num_threads();
         int64_t lo, hi;
-        balance_range(&body->force_balance, t, threads, items, &lo, &hi);
-        const double t0 = nspd_wall_time();
+        const double started = balance_begin(&body->force_balance, items, &lo, &hi);
         if (s)
             pd_force_kernel_stencil(body->dim, lo, hi, s->chunk_cell, s->offsets, s->shift,
                                     (const double *const *)s->x, (const double *const *)s->u,
@@ -219,7 +217,7 @@ void pd_force_compute(BondBody *body) {
                                     limit2, body->force);
         else
             force_plain(body, lo, hi, scale, limit2);
-        balance_record(&body->force_balance, t, threads, nspd_wall_time() - t0);
+        balance_end(&body->force_balance, started);
     }
     balance_update(&body->force_balance);
 }

@@ -3,10 +3,8 @@
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/status.h"
-#include "core/timer.h"
 
 #include <math.h>
-#include <omp.h>
 
 void pd_regions_assign(const PdConfig *cfg, int64_t n, const double *const x[3], int16_t *region,
                        double *const v[3]) {
@@ -100,10 +98,8 @@ static bool motion_pass(const PdMotion *m, double h, int what) {
     bool bad = false;
 #pragma omp parallel reduction(|| : bad) if (m->n >= PARALLEL_MIN_ITEMS)
     {
-        const int t = omp_get_thread_num(), threads = omp_get_num_threads();
         int64_t lo, hi;
-        balance_range(m->balance, t, threads, m->n, &lo, &hi);
-        const double t0 = nspd_wall_time();
+        const double started = balance_begin(m->balance, m->n, &lo, &hi);
         if (what == MOTION_KICK) {
             for (int64_t i = lo; i < hi; i++) kick_point(m, inv_rho, h, i);
         } else if (what == MOTION_DRIFT) {
@@ -114,7 +110,7 @@ static bool motion_pass(const PdMotion *m, double h, int what) {
                 bad = !drift_point(m, h, i) || bad;
             }
         }
-        balance_record(m->balance, t, threads, nspd_wall_time() - t0);
+        balance_end(m->balance, started);
     }
     balance_update(m->balance);
     return bad;
