@@ -11,6 +11,7 @@
 
 static const char *const INITS[] = {"lumped_l2", "nodal", "l2", NULL};
 static const char *const YDOT0S[] = {"zero", "consistent", NULL};
+static const char *const LIMITERS[] = {"none", "positivity", "convex", NULL};
 static const char *const FACE_KEYS[4] = {"x_min", "x_max", "y_min", "y_max"};
 
 /* flow.iga: the method's own keys, with the paper's code's values as
@@ -20,7 +21,7 @@ static int read_method(CfgNode *flow, IgaConfig *c) {
     CfgNode *m;
     TRY(cfg_opt_map(flow, "iga", &m));
     int64_t degree = 2, passes = 3, iterations = 10;
-    int init = IGA_INIT_LUMPED_L2, ydot0 = IGA_YDOT0_ZERO;
+    int init = IGA_INIT_LUMPED_L2, ydot0 = IGA_YDOT0_ZERO, limiter = IGA_LIMITER_DEFAULT;
     c->c_dc = 2.5, c->dc_cap = true, c->rho_inf = 0.5, c->tau_dt = 0.0, c->cfl = 0.3;
     if (m) {
         TRY(cfg_opt_int(m, "degree", 2, &degree));
@@ -51,10 +52,11 @@ static int read_method(CfgNode *flow, IgaConfig *c) {
                             "above about 0.6)"));
         TRY(cfg_opt_enum(m, "init", INITS, IGA_INIT_LUMPED_L2, &init));
         TRY(cfg_opt_enum(m, "ydot0", YDOT0S, IGA_YDOT0_ZERO, &ydot0));
+        TRY(cfg_opt_enum(m, "limiter", LIMITERS, IGA_LIMITER_DEFAULT, &limiter));
         TRY(cfg_end_map(m));
     }
     c->degree = (int)degree, c->passes = (int)passes, c->db_iterations = (int)iterations;
-    c->init = (IgaInit)init, c->ydot0 = (IgaYdot0)ydot0;
+    c->init = (IgaInit)init, c->ydot0 = (IgaYdot0)ydot0, c->limiter = (IgaLimiterKind)limiter;
     return NSPD_OK;
 }
 

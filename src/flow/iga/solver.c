@@ -35,6 +35,14 @@ struct IgaSolver {
     double time;
     int64_t steps;
     double nu_max;
+    /* convex limiting (limiter.h): its state, the invariant step at the
+     * last start, the sources per control point (3 a point) and the last
+     * step's substeps */
+    IgaLimiter lim;
+    double lim_bound;
+    double *node_src;
+    double *U0, *U1, *U2; /* conservative: the step's start, a stage, the next */
+    int substeps;
 };
 
 int iga_config_check(const IgaConfig *c) {
@@ -61,6 +69,9 @@ int iga_config_check(const IgaConfig *c) {
                          "iga: Courant number %g; expected (0, 0.5] (the explicit passes blow up "
                          "above about 0.6, iga_flow.md 3.6)",
                          c->cfl);
+    if ((int)c->limiter < IGA_LIMITER_NONE || (int)c->limiter > IGA_LIMITER_CONVEX)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "iga: limiter %d; expected none, positivity or convex",
+                         (int)c->limiter);
     if (c->passes < 1 || c->passes > 100 || !(c->rho_inf >= 0.0 && c->rho_inf <= 1.0) ||
         !(c->c_dc >= 0.0) || c->db_iterations < 1 || c->db_iterations > 50 || !(c->tau_dt >= 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT,
@@ -126,7 +137,8 @@ double iga_solver_stable_dt(const IgaSolver *s) {
         const double *y = s->Y + 4 * k;
         rate = fmax(rate, signal_speed(&s->cfg, y[1], y[2], y[3]));
     }
-    return step_of(&s->cfg, rate);
+    const double dt = step_of(&s->cfg, rate);
+    return s->cfg.limiter == IGA_LIMITER_NONE ? dt : fmin(dt, s->lim_bound);
 }
 
 double iga_config_stable_dt(const IgaConfig *c, const IgaRegion *regions, int count) {
@@ -298,7 +310,9 @@ static int check_range(const IgaSolver *s) {
     return NSPD_OK;
 }
 
-int iga_solver_step(IgaSolver *s, double dt) {
+/* The high-order step (notes 3.2): the predictor and the corrector
+ * passes. */
+static void high_order_step(IgaSolver *s, double dt) {
     const size_t bytes = sizeof(double) * 4 * (size_t)s->ncp;
     memcpy(s->Yn, s->Y, bytes);
     memcpy(s->Ydn, s->Yd, bytes);
@@ -314,6 +328,70 @@ int iga_solver_step(IgaSolver *s, double dt) {
         apply_sides(s);
         block_update(s, s->gam * dt);
     }
+}
+
+/* The point sources per control point (fx, fy, power), in point order:
+ * the low-order update's share of what add_sources gives the residual. */
+static const double *node_sources(IgaSolver *s) {
+    if (s->src_n == 0) return NULL;
+    memset(s->node_src, 0, sizeof(double) * 3 * (size_t)s->ncp);
+    for (int64_t q = 0; q < s->src_n; q++)
+        for (int l = 0; l < s->local; l++) {
+            double *n = s->node_src + 3 * s->src_cp[q * s->local + l];
+            for (int v = 0; v < 3; v++) n[v] += s->src_w[q * s->local + l] * s->src_f[3 * q + v];
+        }
+    return s->node_src;
+}
+
+/* One limited stage of h from `from` into `to` = a from0 + (1 - a) (the
+ * stage's result); false when h exceeds the stage state's invariant
+ * step (*bound: that step). */
+static bool limited_stage(IgaSolver *s, double h, const double *src, const double *from, double a,
+                          double *to, double *bound) {
+    *bound = iga_limiter_prepare(&s->lim, from);
+    if (h > *bound) return false;
+    iga_limiter_stage(&s->lim, h, src, to);
+    if (a > 0.0)
+        for (int64_t k = 0; k < 4 * s->ncp; k++) to[k] = a * s->U0[k] + (1.0 - a) * to[k];
+    return true;
+}
+
+/* The limited step (docs/IGA_LIMITER.md): the strong-stability-preserving
+ * Runge-Kutta scheme of order 3 (Shu & Osher 1988), each stage a limited
+ * forward-Euler update, so a convex combination of invariant states. A
+ * stage whose state allows less than the step restarts the step with 0.9
+ * of what it allows: the step of dt is taken in substeps, all of the same
+ * length, that each keep every stage invariant. */
+static void limited_step(IgaSolver *s, double dt) {
+    for (int64_t k = 0; k < s->ncp; k++)
+        idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
+    const double *src = node_sources(s);
+    double left = dt, h = dt;
+    s->substeps = 0;
+    while (left > 0.0) {
+        h = fmin(h, left);
+        double bound;
+        if (!limited_stage(s, h, src, s->U0, 0.0, s->U1, &bound) ||
+            !limited_stage(s, h, src, s->U1, 0.75, s->U2, &bound) ||
+            !limited_stage(s, h, src, s->U2, 1.0 / 3.0, s->U1, &bound)) {
+            h = 0.9 * bound;
+            continue;
+        }
+        memcpy(s->U0, s->U1, sizeof(double) * 4 * (size_t)s->ncp);
+        left = h >= left ? 0.0 : left - h;
+        s->substeps++;
+    }
+    s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+    for (int64_t k = 0; k < s->ncp; k++)
+        idp_to_primitive(s->cfg.R, s->qp.cv, s->U0 + 4 * k, s->Y + 4 * k);
+}
+
+int iga_solver_step(IgaSolver *s, double dt) {
+    s->substeps = 1;
+    if (s->cfg.limiter == IGA_LIMITER_NONE)
+        high_order_step(s, dt);
+    else
+        limited_step(s, dt);
     s->time += dt;
     s->steps++;
     return check_range(s);
@@ -530,8 +608,10 @@ void iga_solver_destroy(IgaSolver **sp) {
         nspd_free(&s->sup_e[a]);
         nspd_free(&s->sup_a[a]);
     }
-    double **arrays[] = {&s->Y, &s->Yd, &s->Yn, &s->Ydn, &s->Ya,   &s->Yda,   &s->R,
-                         &s->M, &s->eR, &s->eM, &s->eNu, &s->mass, &s->src_w, &s->src_f};
+    double **arrays[] = {&s->Y,     &s->Yd,    &s->Yn,       &s->Ydn, &s->Ya,  &s->Yda,
+                         &s->R,     &s->M,     &s->eR,       &s->eM,  &s->eNu, &s->mass,
+                         &s->src_w, &s->src_f, &s->node_src, &s->U0,  &s->U1,  &s->U2};
+    iga_limiter_destroy(&s->lim);
     nspd_free(&s->src_cp);
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) nspd_free(arrays[k]);
     nspd_free(sp);
@@ -609,6 +689,22 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
                     s->Y[4 * side_point(s, f, t) + 1 + f / 2] = 0.0;
         status = check_range(s);
     }
+    if (status == NSPD_OK && cfg->limiter != IGA_LIMITER_NONE) {
+        bool wall[4], fixed[4];
+        for (int f = 0; f < 4; f++)
+            wall[f] = cfg->side[f] == IGA_SIDE_SLIP, fixed[f] = cfg->side[f] == IGA_SIDE_FIXED;
+        status = iga_limiter_create(&s->lim, cfg->limiter, s->ax, wall, fixed, cfg->gamma, cfg->R);
+        if (status == NSPD_OK)
+            status = nspd_alloc(&s->node_src, (size_t)s->ncp * 3, sizeof(double));
+        double **cons[] = {&s->U0, &s->U1, &s->U2};
+        for (int k = 0; k < 3 && status == NSPD_OK; k++)
+            status = nspd_alloc(cons[k], (size_t)s->ncp * 4, sizeof(double));
+        if (status == NSPD_OK) {
+            for (int64_t k = 0; k < s->ncp; k++)
+                idp_from_primitive(cfg->R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
+            s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+        }
+    }
     if (status == NSPD_OK && cfg->ydot0 == IGA_YDOT0_CONSISTENT) {
         consistent_rate(s, dt0 > 0.0 ? dt0 : iga_solver_stable_dt(s));
         status = check_range(s);
@@ -655,25 +751,53 @@ double iga_solver_nu_max(const IgaSolver *s) {
     return s->nu_max;
 }
 
-void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
-    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
-    const int ex = iga_axis_element(ax, x), ey = iga_axis_element(ay, y), w = s->width;
-    double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
-    iga_axis_eval(ax, ex, x, bx, NULL);
-    iga_axis_eval(ay, ey, y, by, NULL);
-    for (int v = 0; v < 4; v++) out[v] = 0.0;
+void iga_solver_limiting(const IgaSolver *s, int64_t *limited, double *alpha_min, int *substeps) {
+    *limited = s->lim.limited;
+    *alpha_min = s->lim.alpha_min;
+    *substeps = s->substeps;
+}
+
+/* The field of element (ex, ey) with basis values bx, by: Y^h = sum N_k
+ * Y_k for the high-order scheme; U^h = sum N_k U(Y_k), the limited
+ * scheme's field (a convex combination of admissible states), into U
+ * when U is not NULL. */
+static void field_in(const IgaSolver *s, int ex, int ey, const double *bx, const double *by,
+                     double Y[4], double *U) {
+    const int w = s->width;
+    const bool cons = s->cfg.limiter != IGA_LIMITER_NONE;
+    double sum[4] = {0};
     for (int b = 0; b < w; b++)
         for (int a = 0; a < w; a++) {
             const int64_t k = control_index(s, ex, ey, a, b);
-            for (int v = 0; v < 4; v++) out[v] += bx[a] * by[b] * s->Y[4 * k + v];
+            double q[4];
+            if (cons)
+                idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, q);
+            else
+                for (int v = 0; v < 4; v++) q[v] = s->Y[4 * k + v];
+            for (int v = 0; v < 4; v++) sum[v] += bx[a] * by[b] * q[v];
         }
+    if (cons) {
+        idp_to_primitive(s->cfg.R, s->qp.cv, sum, Y);
+        if (U)
+            for (int v = 0; v < 4; v++) U[v] = sum[v];
+    } else {
+        for (int v = 0; v < 4; v++) Y[v] = sum[v];
+        if (U) idp_from_primitive(s->cfg.R, s->qp.cv, Y, U);
+    }
+}
+
+void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
+    const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
+    const int ex = iga_axis_element(ax, x), ey = iga_axis_element(ay, y);
+    double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
+    iga_axis_eval(ax, ex, x, bx, NULL);
+    iga_axis_eval(ay, ey, y, by, NULL);
+    field_in(s, ex, ey, bx, by, out, NULL);
 }
 
 /* Gauss sums over the rectangle: rho, rho u, rho v, rho E and p. */
 static void quadrature_sums(const IgaSolver *s, double sums[5]) {
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
-    const int w = s->width;
-    const double cv = s->qp.cv;
     for (int v = 0; v < 5; v++) sums[v] = 0.0;
     for (int64_t e = 0; e < s->nel; e++) {
         const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
@@ -681,18 +805,18 @@ static void quadrature_sums(const IgaSolver *s, double sums[5]) {
             for (int qx = 0; qx < ax->gauss; qx++) {
                 const double *nx = at_point(ax, ax->value, ex, qx),
                              *ny = at_point(ay, ay->value, ey, qy);
-                double Y[4] = {0};
-                for (int b = 0; b < w; b++)
-                    for (int a = 0; a < w; a++) {
-                        const int64_t k = control_index(s, ex, ey, a, b);
-                        for (int v = 0; v < 4; v++) Y[v] += nx[a] * ny[b] * s->Y[4 * k + v];
-                    }
+                double Y[4], U[4];
+                field_in(s, ex, ey, nx, ny, Y, U);
                 const double wq = ax->weight[qx] * ay->weight[qy];
-                const double rho = Y[0] / (s->cfg.R * Y[3]);
-                sums[0] += wq * rho;
-                sums[1] += wq * rho * Y[1];
-                sums[2] += wq * rho * Y[2];
-                sums[3] += wq * rho * (cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2]));
+                if (s->cfg.limiter != IGA_LIMITER_NONE)
+                    for (int v = 0; v < 4; v++) sums[v] += wq * U[v];
+                else { /* the products in the order the recorded outputs have */
+                    const double rho = Y[0] / (s->cfg.R * Y[3]);
+                    sums[0] += wq * rho;
+                    sums[1] += wq * rho * Y[1];
+                    sums[2] += wq * rho * Y[2];
+                    sums[3] += wq * rho * (s->qp.cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2]));
+                }
                 sums[4] += wq * Y[0];
             }
     }

@@ -12,6 +12,7 @@
 #include "core/checkpoint.h"
 #include "core/shape.h"
 #include "flow/iga/kernel.h"
+#include "flow/iga/limiter.h"
 #include "flow/iga/space.h"
 
 #include <stdint.h>
@@ -53,11 +54,12 @@ typedef struct {
     IgaYdot0 ydot0;
     double c_dc;
     bool dc_cap;
-    int passes;        /* corrector passes per step (3) */
-    double rho_inf;    /* spectral radius at infinity (0.5) */
-    int db_iterations; /* tau's Denman-Beavers iterations (10) */
-    double tau_dt;     /* s: tau's time step; 0: the step taken */
-    double cfl;        /* (|u| + c) dt / h of the stable step (0.3) */
+    int passes;             /* corrector passes per step (3) */
+    double rho_inf;         /* spectral radius at infinity (0.5) */
+    int db_iterations;      /* tau's Denman-Beavers iterations (10) */
+    double tau_dt;          /* s: tau's time step; 0: the step taken */
+    double cfl;             /* (|u| + c) dt / h of the stable step (0.3) */
+    IgaLimiterKind limiter; /* convex limiting of each step (limiter.h) */
 } IgaConfig;
 
 typedef struct IgaSolver IgaSolver;
@@ -71,7 +73,10 @@ void iga_solver_destroy(IgaSolver **s);
  * create). */
 int iga_config_check(const IgaConfig *cfg);
 
-/* cfl min(hx, hy) / max over control points of (|u| + c). */
+/* cfl min(hx, hy) / max over control points of (|u| + c); with a
+ * limiter, at most the low-order update's invariant step at the last
+ * step's start (a step longer than the current one is taken in equal
+ * substeps that each keep it). */
 double iga_solver_stable_dt(const IgaSolver *s);
 
 /* The same from the configuration alone: the initial and region states
@@ -104,6 +109,11 @@ double iga_solver_mean_pressure(const IgaSolver *s);
 
 /* The largest DC viscosity of the last residual, m^2/s. */
 double iga_solver_nu_max(const IgaSolver *s);
+
+/* The last step's limiting: control points blended below the high-order
+ * state, their smallest blending factor (1: none) and the substeps it
+ * took. */
+void iga_solver_limiting(const IgaSolver *s, int64_t *limited, double *alpha_min, int *substeps);
 
 /* Writes or reads what a step changes (values, rates, clock). */
 int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck);
