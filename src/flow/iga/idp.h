@@ -49,24 +49,42 @@ NSPD_KERNEL double idp_flux(double gamma, const double U[4], double nx, double n
     return p;
 }
 
+/* The per-state pieces of the wave-speed bound: normal velocity aside,
+ * pressure p, sound speed c and p^(-(gamma - 1) / (2 gamma)). */
+typedef struct {
+    double p, c, q;
+} IdpWaves;
+
+NSPD_KERNEL IdpWaves idp_waves(double gamma, const double U[4]) {
+    IdpWaves w;
+    w.p = (gamma - 1.0) * idp_internal(U);
+    w.c = sqrt(gamma * w.p / U[0]);
+    w.q = pow(w.p, -(gamma - 1.0) / (2.0 * gamma));
+    return w;
+}
+
 /* An upper bound of the largest wave speed of the Riemann problem between
- * a = U_i and b = U_j along the unit vector n: the two-rarefaction
- * pressure bounds p* from above for 1 < gamma <= 5/3 (Guermond & Popov
- * 2016, Lemma 4.3), and the outer waves' speeds are monotone in p. */
+ * a left state of normal velocity ul and a right one of ur: the
+ * two-rarefaction pressure bounds p* from above for 1 < gamma <= 5/3
+ * (Guermond & Popov 2016, Lemma 4.3), and the outer waves' speeds are
+ * monotone in p. Symmetric: (ul, a, ur, b) and (-ur, b, -ul, a) give the
+ * same bits. */
+NSPD_KERNEL double idp_lambda_waves(double gamma, double ul, IdpWaves a, double ur, IdpWaves b) {
+    const double ex = (gamma - 1.0) / (2.0 * gamma);
+    const double num = a.c + b.c - 0.5 * (gamma - 1.0) * (ur - ul);
+    double pstar = 0.0; /* num <= 0: a vacuum forms; the outer waves are the rarefactions' heads */
+    if (num > 0.0) pstar = pow(num / (a.c * a.q + b.c * b.q), 1.0 / ex);
+    const double k = (gamma + 1.0) / (2.0 * gamma);
+    const double l1 = ul - a.c * sqrt(1.0 + k * fmax(0.0, (pstar - a.p) / a.p));
+    const double l3 = ur + b.c * sqrt(1.0 + k * fmax(0.0, (pstar - b.p) / b.p));
+    return fmax(fmax(-l1, 0.0), fmax(l3, 0.0));
+}
+
+/* The same between the states a = U_i and b = U_j along the unit vector n. */
 NSPD_KERNEL double idp_lambda_max(double gamma, const double a[4], const double b[4], double nx,
                                   double ny) {
-    const double rl = a[0], rr = b[0];
-    const double ul = (a[1] * nx + a[2] * ny) / rl, ur = (b[1] * nx + b[2] * ny) / rr;
-    const double pl = (gamma - 1.0) * idp_internal(a), pr = (gamma - 1.0) * idp_internal(b);
-    const double cl = sqrt(gamma * pl / rl), cr = sqrt(gamma * pr / rr);
-    const double ex = (gamma - 1.0) / (2.0 * gamma);
-    const double num = cl + cr - 0.5 * (gamma - 1.0) * (ur - ul);
-    double pstar = 0.0; /* num <= 0: a vacuum forms; the outer waves are the rarefactions' heads */
-    if (num > 0.0) pstar = pow(num / (cl * pow(pl, -ex) + cr * pow(pr, -ex)), 1.0 / ex);
-    const double k = (gamma + 1.0) / (2.0 * gamma);
-    const double l1 = ul - cl * sqrt(1.0 + k * fmax(0.0, (pstar - pl) / pl));
-    const double l3 = ur + cr * sqrt(1.0 + k * fmax(0.0, (pstar - pr) / pr));
-    return fmax(fmax(-l1, 0.0), fmax(l3, 0.0));
+    const double ul = (a[1] * nx + a[2] * ny) / a[0], ur = (b[1] * nx + b[2] * ny) / b[0];
+    return idp_lambda_waves(gamma, ul, idp_waves(gamma, a), ur, idp_waves(gamma, b));
 }
 
 /* The bounds a limited state keeps at one control point. */

@@ -41,6 +41,9 @@ void iga_limiter_destroy(IgaLimiter *l) {
     nspd_free(&l->m);
     nspd_free(&l->U);
     nspd_free(&l->flux);
+    nspd_free(&l->waves);
+    nspd_free(&l->entropy);
+    nspd_free(&l->relax);
     nspd_free(&l->acc);
     nspd_free(&l->dsum);
     nspd_free(&l->bounds);
@@ -76,6 +79,9 @@ int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], 
     if (status == NSPD_OK) status = nspd_alloc(&l->m, ncp, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&l->U, 4 * ncp, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&l->flux, 8 * ncp, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&l->waves, ncp, sizeof(IdpWaves));
+    if (status == NSPD_OK) status = nspd_alloc(&l->entropy, ncp, sizeof(double));
+    if (status == NSPD_OK) status = nspd_alloc(&l->relax, ncp, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&l->acc, 4 * ncp, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&l->dsum, ncp, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&l->bounds, ncp, sizeof(IdpBounds));
@@ -88,11 +94,16 @@ int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], 
         iga_limiter_destroy(l);
         return status;
     }
+    /* the bounds are relaxed by r = (m_i / |domain|)^(1.5/2): a smooth
+     * extremum's high-order overshoot is O(h^2), so r > it on fine meshes
+     * and the order is kept (Guermond et al. 2018, Sec. 4.7) */
+    const double area = (ax[0].hi - ax[0].lo) * (ax[1].hi - ax[1].lo);
     for (int j = 0; j < l->n[1]; j++)
-        for (int i = 0; i < l->n[0]; i++)
-            l->m[i + (int64_t)l->n[0] * j] =
-                iga_axis_integral(&ax[0], i) * iga_axis_integral(&ax[1], j);
-    l->relax_scale = (ax[0].hi - ax[0].lo) * (ax[1].hi - ax[1].lo);
+        for (int i = 0; i < l->n[0]; i++) {
+            const int64_t k = i + (int64_t)l->n[0] * j;
+            l->m[k] = iga_axis_integral(&ax[0], i) * iga_axis_integral(&ax[1], j);
+            l->relax[k] = pow(l->m[k] / area, 0.75);
+        }
     return NSPD_OK;
 }
 
@@ -109,59 +120,95 @@ static int neighbour(const IgaLimiter *l, int axis, int i, int o) {
     return k >= 0 && k < n ? k : -1;
 }
 
+/* The graph viscosity of the pair (i, j) -> (jx, jy) at offset (ox, oy):
+ * d_ij = max(lambda_max(n_ij) |c_ij|, lambda_max(n_ji) |c_ji|), c_ij =
+ * int N_i grad N_j (Guermond & Popov 2016, Eq. 3.5); symmetric, so each
+ * pair is evaluated once. */
+static double pair_viscosity(const IgaLimiter *l, int i, int j, int ox, int oy, int jx, int jy) {
+    const int p = l->p, w = 2 * p + 1;
+    const int64_t k = i + (int64_t)l->n[0] * j, kj = jx + (int64_t)l->n[0] * jy;
+    const double *Ui = l->U + 4 * k, *Uj = l->U + 4 * kj;
+    const double cx = l->grad1[0][i * w + ox + p] * l->mass1[1][j * w + oy + p];
+    const double cy = l->mass1[0][i * w + ox + p] * l->grad1[1][j * w + oy + p];
+    const double bx = l->grad1[0][jx * w - ox + p] * l->mass1[1][jy * w - oy + p];
+    const double by = l->mass1[0][jx * w - ox + p] * l->grad1[1][jy * w - oy + p];
+    const double ni = hypot(cx, cy), nj = hypot(bx, by);
+    const IdpWaves wi = l->waves[k], wj = l->waves[kj];
+    double li = 0.0, lj = 0.0;
+    if (ni > 0.0)
+        li = ni * idp_lambda_waves(l->gamma, (Ui[1] * cx + Ui[2] * cy) / (ni * Ui[0]), wi,
+                                   (Uj[1] * cx + Uj[2] * cy) / (ni * Uj[0]), wj);
+    /* inside the domain c_ji = -c_ij, and the bound is the same bits from
+     * j's side (idp_lambda_waves) */
+    if (bx == -cx && by == -cy)
+        lj = li;
+    else if (nj > 0.0)
+        lj = nj * idp_lambda_waves(l->gamma, (Uj[1] * bx + Uj[2] * by) / (nj * Uj[0]), wj,
+                                   (Ui[1] * bx + Ui[2] * by) / (nj * Ui[0]), wi);
+    return fmax(li, lj);
+}
+
+/* Point (i, j)'s viscosities with the neighbours at the later half of the
+ * offsets, written to both points' rows (each pair has one writer); a
+ * fixed point's row stays 0. */
+static void viscosity_point(IgaLimiter *l, int i, int j) {
+    const int p = l->p, w = 2 * p + 1;
+    const int64_t k = i + (int64_t)l->n[0] * j;
+    const bool fi = is_fixed(l, i, j);
+    for (int oy = 0; oy <= p; oy++) {
+        const int jy = neighbour(l, 1, j, oy);
+        if (jy < 0) continue;
+        for (int ox = oy == 0 ? 1 : -p; ox <= p; ox++) {
+            const int jx = neighbour(l, 0, i, ox);
+            if (jx < 0) continue;
+            const bool fj = is_fixed(l, jx, jy);
+            if (fi && fj) continue;
+            const double d = pair_viscosity(l, i, j, ox, oy, jx, jy);
+            const int slot = (oy + p) * w + ox + p;
+            if (!fi) l->dij[k * w * w + slot] = d;
+            if (!fj) l->dij[(jx + (int64_t)l->n[0] * jy) * w * w + w * w - 1 - slot] = d;
+        }
+    }
+}
+
 /* Point k's low-order rate m_i dU_i/dt = -sum_j c_ij . (F_j - F_i) +
  * sum_j d_ij (U_j - U_i) (Guermond & Popov 2016, Eq. 3.2 with sum_j c_ij
- * = 0, the partition of unity), c_ij = int N_i grad N_j, d_ij = max(
- * lambda_max(n_ij) |c_ij|, lambda_max(n_ji) |c_ji|); and the bounds from
- * the bar states Ubar_ij = (U_i + U_j)/2 - c_ij . (F_j - F_i) / (2 d_ij),
- * of which the update is a convex combination when dt <= m_i / (2 sum_j
- * d_ij). */
+ * = 0, the partition of unity); and the bounds from the bar states
+ * Ubar_ij = (U_i + U_j)/2 - c_ij . (F_j - F_i) / (2 d_ij), of which the
+ * update is a convex combination when dt <= m_i / (2 sum_j d_ij). */
 static void low_order_point(IgaLimiter *l, int i, int j) {
     const int p = l->p, w = 2 * p + 1, nx = l->n[0];
     const int64_t k = i + (int64_t)nx * j;
     const double *Ui = l->U + 4 * k, *Fi = l->flux + 8 * k;
-    double acc[4] = {0}, ds = 0.0, *dij = l->dij + k * w * w;
-    double rmin = Ui[0], rmax = Ui[0], smin = idp_entropy(l->gamma, Ui);
-    if (!is_fixed(l, i, j))
-        for (int oy = -p; oy <= p; oy++) {
-            const int jy = neighbour(l, 1, j, oy);
-            if (jy < 0) continue;
-            for (int ox = -p; ox <= p; ox++) {
-                const int jx = neighbour(l, 0, i, ox);
-                dij[(oy + p) * w + ox + p] = 0.0;
-                if (jx < 0 || (ox == 0 && oy == 0)) continue;
-                const int64_t kj = jx + (int64_t)nx * jy;
-                const double *Uj = l->U + 4 * kj, *Fj = l->flux + 8 * kj;
-                const double cx = l->grad1[0][i * w + ox + p] * l->mass1[1][j * w + oy + p];
-                const double cy = l->mass1[0][i * w + ox + p] * l->grad1[1][j * w + oy + p];
-                const double bx = l->grad1[0][jx * w - ox + p] * l->mass1[1][jy * w - oy + p];
-                const double by = l->mass1[0][jx * w - ox + p] * l->grad1[1][jy * w - oy + p];
-                const double ni = hypot(cx, cy), nj = hypot(bx, by);
-                const double li =
-                    ni > 0.0 ? ni * idp_lambda_max(l->gamma, Ui, Uj, cx / ni, cy / ni) : 0.0;
-                const double lj =
-                    nj > 0.0 ? nj * idp_lambda_max(l->gamma, Uj, Ui, bx / nj, by / nj) : 0.0;
-                const double d = fmax(li, lj);
-                dij[(oy + p) * w + ox + p] = d;
-                if (!(d > 0.0)) continue;
-                double bar[4];
-                for (int v = 0; v < 4; v++) {
-                    const double df = cx * (Fj[v] - Fi[v]) + cy * (Fj[4 + v] - Fi[4 + v]);
-                    acc[v] += d * (Uj[v] - Ui[v]) - df;
-                    bar[v] = 0.5 * (Ui[v] + Uj[v]) - 0.5 * df / d;
-                }
-                ds += d;
-                rmin = fmin(rmin, fmin(Uj[0], bar[0]));
-                rmax = fmax(rmax, fmax(Uj[0], bar[0]));
-                smin = fmin(smin, fmin(idp_entropy(l->gamma, Uj), idp_entropy(l->gamma, bar)));
+    double acc[4] = {0}, ds = 0.0;
+    const double *dij = l->dij + k * w * w;
+    double rmin = Ui[0], rmax = Ui[0], smin = l->entropy[k];
+    for (int oy = -p; oy <= p; oy++) {
+        const int jy = neighbour(l, 1, j, oy);
+        if (jy < 0) continue;
+        for (int ox = -p; ox <= p; ox++) {
+            const int jx = neighbour(l, 0, i, ox);
+            const double d = dij[(oy + p) * w + ox + p];
+            if (jx < 0 || !(d > 0.0)) continue;
+            const int64_t kj = jx + (int64_t)nx * jy;
+            const double *Uj = l->U + 4 * kj, *Fj = l->flux + 8 * kj;
+            const double cx = l->grad1[0][i * w + ox + p] * l->mass1[1][j * w + oy + p];
+            const double cy = l->mass1[0][i * w + ox + p] * l->grad1[1][j * w + oy + p];
+            double bar[4];
+            for (int v = 0; v < 4; v++) {
+                const double df = cx * (Fj[v] - Fi[v]) + cy * (Fj[4 + v] - Fi[4 + v]);
+                acc[v] += d * (Uj[v] - Ui[v]) - df;
+                bar[v] = 0.5 * (Ui[v] + Uj[v]) - 0.5 * df / d;
             }
+            ds += d;
+            rmin = fmin(rmin, fmin(Uj[0], bar[0]));
+            rmax = fmax(rmax, fmax(Uj[0], bar[0]));
+            smin = fmin(smin, fmin(l->entropy[kj], idp_entropy(l->gamma, bar)));
         }
+    }
     for (int v = 0; v < 4; v++) l->acc[4 * k + v] = acc[v];
     l->dsum[k] = ds;
-    /* relaxed by r = (m_i / |domain|)^(1.5/2): a smooth extremum's
-     * high-order overshoot is O(h^2), so r > it on fine meshes and the
-     * order is kept (Guermond et al. 2018, Sec. 4.7) */
-    const double r = pow(l->m[k] / l->relax_scale, 0.75);
+    const double r = l->relax[k];
     l->bounds[k] = (IdpBounds){.rho_min = fmax(rmin, 0.0) * (1.0 - r),
                                .rho_max = rmax * (1.0 + r),
                                .s_min = fmax(smin, 0.0) * (1.0 - r),
@@ -178,9 +225,13 @@ double iga_limiter_prepare(IgaLimiter *l, const double *Uin) {
         for (int v = 0; v < 4; v++) U[v] = Uin[4 * k + v];
         idp_flux(l->gamma, U, 1.0, 0.0, l->flux + 8 * k);
         idp_flux(l->gamma, U, 0.0, 1.0, l->flux + 8 * k + 4);
+        l->waves[k] = idp_waves(l->gamma, U);
+        l->entropy[k] = idp_entropy(l->gamma, U);
     }
     double dt = (double)INFINITY;
     const int work = (2 * l->p + 1) * (2 * l->p + 1);
+#pragma omp parallel for schedule(static) if (ncp * work >= PARALLEL_MIN_ITEMS)
+    for (int64_t k = 0; k < ncp; k++) viscosity_point(l, (int)(k % l->n[0]), (int)(k / l->n[0]));
 #pragma omp parallel for schedule(static) reduction(min : dt) if (ncp * work >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < ncp; k++) {
         low_order_point(l, (int)(k % l->n[0]), (int)(k / l->n[0]));

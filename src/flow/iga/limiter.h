@@ -34,17 +34,19 @@ typedef struct {
     /* per axis and control point k, offset o in -p..p: int N_k N_(k+o) and
      * int N_k N'_(k+o), at [k (2p + 1) + o + p] */
     double *mass1[2], *grad1[2];
-    double *m;    /* int N_i per control point */
-    double *U;    /* the step's start, conservative (4 a point) */
-    double *flux; /* F_x(U), F_y(U) (8 a point) */
-    double *acc;  /* the low-order spatial rate times m_i (4 a point) */
-    double *dsum; /* sum of d_ij over j != i */
+    double *m;       /* int N_i per control point */
+    double *U;       /* the step's start, conservative (4 a point) */
+    double *flux;    /* F_x(U), F_y(U) (8 a point) */
+    IdpWaves *waves; /* per point: p, c, p^-ex of U */
+    double *entropy; /* per point: rho e / rho^gamma of U */
+    double *relax;   /* per point: the bounds' relaxation (m_i / |domain|)^0.75 */
+    double *acc;     /* the low-order spatial rate times m_i (4 a point) */
+    double *dsum;    /* sum of d_ij over j != i */
     IdpBounds *bounds;
-    double *dij;        /* per point and offset: the graph viscosity d_ij */
-    double *lij;        /* per point and offset: the pair's factor from i's side */
-    double *rate;       /* the lumped Galerkin rate (4 a point) */
-    double *UL;         /* the low-order state (4 a point) */
-    double relax_scale; /* |domain| */
+    double *dij;  /* per point and offset: the graph viscosity d_ij */
+    double *lij;  /* per point and offset: the pair's factor from i's side */
+    double *rate; /* the lumped Galerkin rate (4 a point) */
+    double *UL;   /* the low-order state (4 a point) */
     /* last step's statistics */
     int64_t limited;  /* control points blended below 1 */
     double alpha_min; /* their smallest blending factor */

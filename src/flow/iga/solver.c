@@ -40,6 +40,7 @@ struct IgaSolver {
      * step's substeps */
     IgaLimiter lim;
     double lim_bound;
+    bool lim_ready; /* lim holds U0's preparation (limited_stage) */
     double *node_src;
     double *U0, *U1, *U2; /* conservative: the step's start, a stage, the next */
     int substeps;
@@ -348,7 +349,13 @@ static const double *node_sources(IgaSolver *s) {
  * step (*bound: that step). */
 static bool limited_stage(IgaSolver *s, double h, const double *src, const double *from, double a,
                           double *to, double *bound) {
-    *bound = iga_limiter_prepare(&s->lim, from);
+    /* the step's first stage starts where the last step's end was
+     * prepared for the next time step (limited_step): not again */
+    if (!(s->lim_ready && from == s->U0 &&
+          memcmp(from, s->lim.U, sizeof(double) * 4 * (size_t)s->ncp) == 0))
+        s->lim_bound = iga_limiter_prepare(&s->lim, from);
+    s->lim_ready = false;
+    *bound = s->lim_bound;
     if (h > *bound) return false;
     iga_limiter_stage(&s->lim, h, src, to);
     if (a > 0.0)
@@ -381,9 +388,15 @@ static void limited_step(IgaSolver *s, double dt) {
         left = h >= left ? 0.0 : left - h;
         s->substeps++;
     }
-    s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
-    for (int64_t k = 0; k < s->ncp; k++)
+    /* prepared from the state the next step will start from (Y's
+     * conservative values, the round trip's last bits included), so that
+     * its first stage need not prepare again */
+    for (int64_t k = 0; k < s->ncp; k++) {
         idp_to_primitive(s->cfg.R, s->qp.cv, s->U0 + 4 * k, s->Y + 4 * k);
+        idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
+    }
+    s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+    s->lim_ready = true;
 }
 
 int iga_solver_step(IgaSolver *s, double dt) {
@@ -703,6 +716,7 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
             for (int64_t k = 0; k < s->ncp; k++)
                 idp_from_primitive(cfg->R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
             s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+            s->lim_ready = true;
         }
     }
     if (status == NSPD_OK && cfg->ydot0 == IGA_YDOT0_CONSISTENT) {
