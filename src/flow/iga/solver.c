@@ -73,6 +73,14 @@ int iga_config_check(const IgaConfig *c) {
     if ((int)c->limiter < IGA_LIMITER_NONE || (int)c->limiter > IGA_LIMITER_CONVEX)
         return NSPD_FAIL(NSPD_ERR_INPUT, "iga: limiter %d; expected none, positivity or convex",
                          (int)c->limiter);
+    /* the limited update is the Euler equations' (docs/IGA_LIMITER.md), and
+     * its wave-speed bound holds for gamma <= 5/3 (idp_lambda_waves) */
+    if (c->limiter != IGA_LIMITER_NONE && (c->mu > 0.0 || c->gamma > 5.0 / 3.0))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "iga: limiter with viscosity mu %g and gamma %g; expected an inviscid "
+                         "gas (flow.gas.viscosity.law: none) with gamma <= 5/3: the limited "
+                         "scheme is the Euler equations'",
+                         c->mu, c->gamma);
     if (c->passes < 1 || c->passes > 100 || !(c->rho_inf >= 0.0 && c->rho_inf <= 1.0) ||
         !(c->c_dc >= 0.0) || c->db_iterations < 1 || c->db_iterations > 50 || !(c->tau_dt >= 0.0))
         return NSPD_FAIL(NSPD_ERR_INPUT,
@@ -302,10 +310,12 @@ static int check_range(const IgaSolver *s) {
             const int i = (int)(k % s->ncx), j = (int)(k / s->ncx);
             return NSPD_FAIL(NSPD_ERR_NUMERIC,
                              "iga flow: p = %g Pa, T = %g K, u = (%g, %g) m/s at control point "
-                             "(%d, %d) near (%g, %g) m at t = %g s; expected p, T > 0 (a smaller "
-                             "time step or stronger discontinuity capturing)",
+                             "(%d, %d) near (%g, %g) m at t = %g s; expected p, T > 0 (%s)",
                              y[0], y[3], y[1], y[2], i, j, iga_axis_greville(&s->ax[0], i),
-                             iga_axis_greville(&s->ax[1], j), s->time);
+                             iga_axis_greville(&s->ax[1], j), s->time,
+                             s->cfg.limiter == IGA_LIMITER_NONE
+                                 ? "flow.iga.limiter: convex keeps them positive at any charge"
+                                 : "the limited step keeps them positive: please report the case");
         }
     }
     return NSPD_OK;
