@@ -297,6 +297,17 @@ static void iga_history(const void *impl, Report *row) {
     report_precise(row, "momentum_y_kg_per_s", t[2]);
     report_precise(row, "energy_J_per_m", t[3]);
     report_real(row, "dc_viscosity_max_m2_per_s", iga_solver_nu_max(f->solver));
+    if (f->cfg.solver.limiter != IGA_LIMITER_NONE) {
+        /* the last stage's limited control points and smallest factor,
+         * and the step's substeps (docs/IGA_LIMITER.md) */
+        int64_t limited;
+        double alpha_min;
+        int substeps;
+        iga_solver_limiting(f->solver, &limited, &alpha_min, &substeps);
+        report_int(row, "limited_points", limited);
+        report_real(row, "limiter_alpha_min", alpha_min);
+        report_int(row, "limiter_substeps", substeps);
+    }
 }
 
 static void iga_summary(const void *impl, const RunStats *run, Report *out) {
