@@ -111,6 +111,8 @@ check_kind chamber_detonation USR1 time.end=3e-4 output.checkpoint_interval=3e-5
 # the IGA flow (control values, their rates, its clock)
 check_kind iga_cylindrical_blast TERM time.end=6e-5 output.checkpoint_interval=1e-5 \
     flow.grid.x.segments.0.spacing=0.012 flow.grid.y.segments.0.spacing=0.012
+# ... and its limited step, whose time-step bound is re-derived from the state read
+check_kind sedov_quadrant USR1 time.end=0.3 output.checkpoint_interval=0.03
 # the PDDO flow (u, v, p, its clock), ending at its steady state (max du/dt
 # below 12 m/s^2 at step 636 of 1,000) after the checkpoints
 check_kind cavity_re200 USR1 time.end=1e-2 output.checkpoint_interval=1e-3 \

@@ -866,7 +866,16 @@ int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck) {
                          (long long)count, (long long)(4 * s->ncp));
     TRY(checkpoint_io_array(ck, "iga.rates", s->Yd, sizeof(double), &count, 4 * s->ncp));
     TRY(checkpoint_io_double(ck, "iga.time", &s->time));
-    return checkpoint_io_int64(ck, "iga.steps", &s->steps);
+    TRY(checkpoint_io_int64(ck, "iga.steps", &s->steps));
+    /* the limited step's time-step bound is of the state read, as it was
+     * of the state written when the run went on */
+    if (checkpoint_reading(ck) && s->cfg.limiter != IGA_LIMITER_NONE) {
+        for (int64_t k = 0; k < s->ncp; k++)
+            idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
+        s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+        s->lim_ready = true;
+    }
+    return NSPD_OK;
 }
 
 /* ------------------------------------------------ what a coupling exchanges */
