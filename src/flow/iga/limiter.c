@@ -203,7 +203,9 @@ static void low_order_point(IgaLimiter *l, int i, int j) {
             ds += d;
             rmin = fmin(rmin, fmin(Uj[0], bar[0]));
             rmax = fmax(rmax, fmax(Uj[0], bar[0]));
-            smin = fmin(smin, fmin(l->entropy[kj], idp_entropy(l->gamma, bar)));
+            /* the positivity mode sets its own bounds (iga_limiter_stage) */
+            if (l->kind == IGA_LIMITER_CONVEX)
+                smin = fmin(smin, fmin(l->entropy[kj], idp_entropy(l->gamma, bar)));
         }
     }
     for (int v = 0; v < 4; v++) l->acc[4 * k + v] = acc[v];
@@ -240,6 +242,12 @@ double iga_limiter_prepare(IgaLimiter *l, const double *Uin) {
     return dt;
 }
 
+/* A slip wall's control point keeps no normal momentum. */
+static void remove_wall_normal(const IgaLimiter *l, int i, int j, double U[4]) {
+    if ((l->wall[0] && i == 0) || (l->wall[1] && i == l->n[0] - 1)) U[1] = 0.0;
+    if ((l->wall[2] && j == 0) || (l->wall[3] && j == l->n[1] - 1)) U[2] = 0.0;
+}
+
 /* Point k's low-order state: the step's start and dt / m_k its rate and
  * sources, the slip walls' normal momentum removed (rho and rho E kept,
  * so rho e only grows). */
@@ -250,8 +258,7 @@ static void low_order_state(const IgaLimiter *l, int64_t k, double dt, const dou
     for (int v = 0; v < 4; v++) UL[v] = l->U[4 * k + v] + f * l->acc[4 * k + v];
     if (src)
         for (int v = 0; v < 3; v++) UL[1 + v] += f * src[3 * k + v];
-    if ((l->wall[0] && i == 0) || (l->wall[1] && i == l->n[0] - 1)) UL[1] = 0.0;
-    if ((l->wall[2] && j == 0) || (l->wall[3] && j == l->n[1] - 1)) UL[2] = 0.0;
+    remove_wall_normal(l, i, j, UL);
 }
 
 /* The antidiffusive flux A_ij = dt m_ij (Udot_i - Udot_j) - dt d_ij (U_j
@@ -356,8 +363,7 @@ void iga_limiter_stage(IgaLimiter *l, double dt, const double *src, double *Uout
             lo = fmin(lo, f);
             for (int v = 0; v < 4; v++) U[v] += f * A[v] / l->m[k];
         }
-        if ((l->wall[0] && i == 0) || (l->wall[1] && i == l->n[0] - 1)) U[1] = 0.0;
-        if ((l->wall[2] && j == 0) || (l->wall[3] && j == l->n[1] - 1)) U[2] = 0.0;
+        remove_wall_normal(l, i, j, U);
         if (lo < 1.0) limited++;
         amin = fmin(amin, lo);
     }

@@ -354,6 +354,16 @@ static const double *node_sources(IgaSolver *s) {
     return s->node_src;
 }
 
+/* The limited step's start: U0 = U(Y), and its preparation, whose bound
+ * caps the next time step (iga_solver_stable_dt) and which the next
+ * step's first stage reuses (limited_stage). */
+static void prepare_start(IgaSolver *s) {
+    for (int64_t k = 0; k < s->ncp; k++)
+        idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
+    s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+    s->lim_ready = true;
+}
+
 /* One limited stage of h from `from` into `to` = a from0 + (1 - a) (the
  * stage's result); false when h exceeds the stage state's invariant
  * step (*bound: that step). */
@@ -398,15 +408,11 @@ static void limited_step(IgaSolver *s, double dt) {
         left = h >= left ? 0.0 : left - h;
         s->substeps++;
     }
-    /* prepared from the state the next step will start from (Y's
-     * conservative values, the round trip's last bits included), so that
-     * its first stage need not prepare again */
-    for (int64_t k = 0; k < s->ncp; k++) {
+    for (int64_t k = 0; k < s->ncp; k++)
         idp_to_primitive(s->cfg.R, s->qp.cv, s->U0 + 4 * k, s->Y + 4 * k);
-        idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
-    }
-    s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
-    s->lim_ready = true;
+    /* from Y's conservative values, the round trip's last bits included:
+     * the state the next step starts from */
+    prepare_start(s);
 }
 
 int iga_solver_step(IgaSolver *s, double dt) {
@@ -722,12 +728,7 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
         double **cons[] = {&s->U0, &s->U1, &s->U2};
         for (int k = 0; k < 3 && status == NSPD_OK; k++)
             status = nspd_alloc(cons[k], (size_t)s->ncp * 4, sizeof(double));
-        if (status == NSPD_OK) {
-            for (int64_t k = 0; k < s->ncp; k++)
-                idp_from_primitive(cfg->R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
-            s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
-            s->lim_ready = true;
-        }
+        if (status == NSPD_OK) prepare_start(s);
     }
     if (status == NSPD_OK && cfg->ydot0 == IGA_YDOT0_CONSISTENT) {
         consistent_rate(s, dt0 > 0.0 ? dt0 : iga_solver_stable_dt(s));
@@ -869,12 +870,7 @@ int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck) {
     TRY(checkpoint_io_int64(ck, "iga.steps", &s->steps));
     /* the limited step's time-step bound is of the state read, as it was
      * of the state written when the run went on */
-    if (checkpoint_reading(ck) && s->cfg.limiter != IGA_LIMITER_NONE) {
-        for (int64_t k = 0; k < s->ncp; k++)
-            idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
-        s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
-        s->lim_ready = true;
-    }
+    if (checkpoint_reading(ck) && s->cfg.limiter != IGA_LIMITER_NONE) prepare_start(s);
     return NSPD_OK;
 }
 
