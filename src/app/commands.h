@@ -9,6 +9,7 @@ int cmd_check(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_riemann(int argc, char **argv);
+int cmd_radial(int argc, char **argv);
 int cmd_movie(int argc, char **argv);
 int cmd_report(int argc, char **argv);
 int cmd_plot(int argc, char **argv);

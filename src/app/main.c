@@ -36,6 +36,9 @@ static void usage(FILE *out) {
           "                         OUTDIR/report.html: one self-contained page of the run\n"
           "  riemann [--left R,U,P] [--right R,U,P] [--time T] [--cells N] ...\n"
           "                         exact shock-tube solution as CSV (the reference)\n"
+          "  radial [--geometry planar|cylindrical|spherical] [--cells N] [--probes R,...] ...\n"
+          "                         a blast's converged 1D radial solution as CSV (the\n"
+          "                         reference of the strong-shock cases)\n"
           "  version                print the version\n"
           "\n"
           "exit status: 0 success, 1 run-time failure, 2 bad input, 130 interrupted\n",
@@ -65,6 +68,7 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "plot") == 0) return cmd_plot(argc - 2, argv + 2);
     if (strcmp(cmd, "report") == 0) return cmd_report(argc - 2, argv + 2);
     if (strcmp(cmd, "riemann") == 0) return cmd_riemann(argc - 2, argv + 2);
+    if (strcmp(cmd, "radial") == 0) return cmd_radial(argc - 2, argv + 2);
     if (strcmp(cmd, "version") == 0 || strcmp(cmd, "--version") == 0) {
         printf("nspd %s\n", NSPD_VERSION);
         return 0;

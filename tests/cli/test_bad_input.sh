@@ -57,6 +57,11 @@ check "unknown option" "unknown option '--fast'" "$nspd" run x.yaml --fast
 check "bad --set syntax" "--set solid: expected dotted.key=value" \
     "$nspd" check "$src/cases/plate_crack.yaml" --set solid
 check "unknown command" "unknown command 'walk'" "$nspd" walk
+# the radial reference solver's options
+check "radial geometry" "bad value 'conical' for --geometry" "$nspd" radial --geometry conical
+check "radial charge" "bad value '1,0,-1' for --charge" "$nspd" radial --charge 1,0,-1
+check "radial grid" "cells >= 2" "$nspd" radial --cells 1
+check "radial probe" "probe r = 2 lies outside" "$nspd" radial --probes 0.5,2
 # the flow's process grid: PXxPY, and as many blocks as processes
 check "bad --processes" "--processes needs the flow's process grid as PXxPY" \
     "$nspd" run "$src/cases/sod.yaml" -o "$work/result" --processes 2
