@@ -9,15 +9,11 @@ over the cell. Usage: radial_l1.py OUTDIR REF.csv [RMAX] (default 0.75)."""
 import bisect, math, os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'lib'))
 from vtr import read_vtr, last_frame
+from radial_csv import read_profile
 
 out, ref_path = sys.argv[1], sys.argv[2]
 rmax = float(sys.argv[3]) if len(sys.argv) > 3 else 0.75
-r_ref, rho_ref = [], []
-for line in open(ref_path):
-    if line[0].isdigit():
-        v = line.split(',')
-        r_ref.append(float(v[0]))
-        rho_ref.append(float(v[1]))
+r_ref, rho_ref = read_profile(ref_path)
 
 
 def ref(r):

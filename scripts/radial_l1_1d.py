@@ -4,20 +4,11 @@ radial CSVs, r,rho,u,p, the fine grid an integer refinement of the coarse):
 sum_i V_i |rho_i - <rho_fine>_i| / sum_i V_i, V = r^nu / nu differences,
 <rho_fine>_i the fine cells' volume-weighted mean over coarse cell i.
 Usage: radial_l1_1d.py COARSE.csv FINE.csv NU (2 cylindrical, 3 spherical)."""
-import sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'lib'))
+from radial_csv import read_profile
 
-
-def read(path):
-    r, rho = [], []
-    for line in open(path):
-        if line[0].isdigit():
-            v = line.split(',')
-            r.append(float(v[0]))
-            rho.append(float(v[1]))
-    return r, rho
-
-
-(rc, qc), (rf, qf), nu = read(sys.argv[1]), read(sys.argv[2]), int(sys.argv[3])
+(rc, qc), (rf, qf), nu = read_profile(sys.argv[1]), read_profile(sys.argv[2]), int(sys.argv[3])
 ratio = len(rf) // len(rc)
 hf = 2 * rf[0]
 vol = lambda r0, r1: (r1 ** nu - r0 ** nu) / nu

@@ -3,6 +3,7 @@
  * a fine uniform grid; the profile at --time as CSV on stdout, or with
  * --probes the pressure history at those radii (one row per step). */
 #include "app/commands.h"
+#include "app/options.h"
 #include "core/status.h"
 #include "flow/radial.h"
 
@@ -12,21 +13,12 @@
 #include <string.h>
 
 enum { MAX_PROBES = 16 };
-
+/* A gas state RHO,U,P with positive density and pressure. */
 static bool parse_state(const char *text, RadialState *s) {
-    char *end;
-    s->rho = strtod(text, &end);
-    if (*end != ',') return false;
-    s->u = strtod(end + 1, &end);
-    if (*end != ',') return false;
-    s->p = strtod(end + 1, &end);
-    return *end == '\0' && s->rho > 0 && s->p > 0;
-}
-
-static bool parse_number(const char *text, double *out) {
-    char *end;
-    *out = strtod(text, &end);
-    return end != text && *end == '\0';
+    double v[3];
+    if (!option_parse_triple(text, v)) return false;
+    *s = (RadialState){.rho = v[0], .u = v[1], .p = v[2]};
+    return s->rho > 0 && s->p > 0;
 }
 
 static bool parse_probes(const char *text, double *r, int *count) {
@@ -74,26 +66,26 @@ int cmd_radial(int argc, char **argv) {
                                                      : 0;
             ok = cfg.nu != 0;
         } else if (strcmp(k, "--gamma") == 0)
-            ok = parse_number(v, &cfg.gamma);
+            ok = option_parse_number(v, &cfg.gamma);
         else if (strcmp(k, "--charge") == 0)
             ok = parse_state(v, &charge);
         else if (strcmp(k, "--ambient") == 0)
             ok = parse_state(v, &ambient);
         else if (strcmp(k, "--radius") == 0)
-            ok = parse_number(v, &r0) && r0 > 0;
+            ok = option_parse_number(v, &r0) && r0 > 0;
         else if (strcmp(k, "--length") == 0)
-            ok = parse_number(v, &cfg.length);
+            ok = option_parse_number(v, &cfg.length);
         else if (strcmp(k, "--cells") == 0) {
             char *end;
             cfg.cells = strtol(v, &end, 10);
             ok = *end == '\0';
         } else if (strcmp(k, "--time") == 0)
-            ok = parse_number(v, &time) && time > 0;
+            ok = option_parse_number(v, &time) && time > 0;
         else if (strcmp(k, "--outer") == 0) {
             ok = strcmp(v, "wall") == 0 || strcmp(v, "open") == 0;
             cfg.outer_wall = strcmp(v, "wall") == 0;
         } else if (strcmp(k, "--cfl") == 0)
-            ok = parse_number(v, &cfg.cfl);
+            ok = option_parse_number(v, &cfg.cfl);
         else if (strcmp(k, "--probes") == 0)
             ok = parse_probes(v, probes, &probe_count);
         else

@@ -2,6 +2,7 @@
  * cell averages on a uniform grid, CSV on stdout - the reference of the
  * shock-tube cases. */
 #include "app/commands.h"
+#include "app/options.h"
 #include "core/status.h"
 #include "flow/riemann_exact.h"
 
@@ -11,13 +12,10 @@
 #include <string.h>
 
 static bool parse_state(const char *text, RiemannState *s) {
-    char *end;
-    s->rho = strtod(text, &end);
-    if (*end != ',') return false;
-    s->u = strtod(end + 1, &end);
-    if (*end != ',') return false;
-    s->p = strtod(end + 1, &end);
-    return *end == '\0';
+    double v[3];
+    if (!option_parse_triple(text, v)) return false;
+    *s = (RiemannState){.rho = v[0], .u = v[1], .p = v[2]};
+    return true;
 }
 
 int cmd_riemann(int argc, char **argv) {

@@ -104,3 +104,20 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
     if (opt->threads > 0) omp_set_num_threads(opt->threads);
     return true;
 }
+
+bool option_parse_triple(const char *text, double out[3]) {
+    const char *p = text;
+    for (int i = 0; i < 3; i++) {
+        char *end;
+        out[i] = strtod(p, &end);
+        if (end == p || *end != (i < 2 ? ',' : '\0')) return false;
+        p = end + 1;
+    }
+    return true;
+}
+
+bool option_parse_number(const char *text, double *out) {
+    char *end;
+    *out = strtod(text, &end);
+    return end != text && *end == '\0';
+}

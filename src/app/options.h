@@ -23,4 +23,11 @@ typedef struct {
  * enables -o/--force (run only). */
 bool options_parse(int argc, char **argv, bool allow_output, const char *command, CaseOptions *opt);
 
+/* Parses "A,B,C" (e.g. a gas state RHO,U,P) into out[0..2]; false unless
+ * the whole text is three numbers separated by commas. */
+bool option_parse_triple(const char *text, double out[3]);
+
+/* Parses one number; false unless the whole text is a number. */
+bool option_parse_number(const char *text, double *out);
+
 #endif
