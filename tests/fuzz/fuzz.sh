@@ -1,6 +1,6 @@
 #!/bin/sh
 # Runs the libFuzzer harnesses one after the other (make fuzz; docs/RELIABILITY.md).
-#   usage: tests/fuzz/fuzz.sh BUILD_FUZZ SECONDS [HARNESS...]   (harnesses: case vtk sim)
+#   usage: tests/fuzz/fuzz.sh BUILD_FUZZ SECONDS [HARNESS...]   (harnesses: case vtk sim expr)
 # Each harness runs for SECONDS in fork mode with one worker (-fork=1: one
 # core, and a crash, leak, timeout or out-of-memory is saved and the run goes
 # on, so a long run finds everything it can instead of stopping at the
@@ -15,7 +15,7 @@ set -u
 build=$1
 seconds=$2
 shift 2
-[ $# -gt 0 ] || set -- case vtk sim
+[ $# -gt 0 ] || set -- case vtk sim expr
 src=$(cd "$(dirname "$0")/../.." && pwd)
 fuzz=$src/tests/fuzz
 found=0
@@ -26,6 +26,7 @@ for h in "$@"; do
     [ -x "$exe" ] || { echo "fuzz.sh: no $exe; build it first (make fuzz)" >&2; exit 2; }
     case $h in
     case | sim) max_len=16384 ;;
+    expr) max_len=1100 ;;
     *) max_len=65536 ;;
     esac
     seeds=$h # fuzz_sim reads case files: the case seeds and dictionary
