@@ -37,6 +37,7 @@ static bool parse(int argc, char **argv, BenchOptions *opt) {
                     "nspd bench: bad option '%s' (expected --points/--cells N, --steps S, "
                     "--threads T with positive values)\n",
                     a);
+            command_usage(stderr, command_help("bench"), false);
             return false;
         }
     }
@@ -193,12 +194,8 @@ static int bench_flops(const BenchOptions *opt) {
 
 int cmd_bench(int argc, char **argv) {
     if (argc < 1) {
-        fprintf(stderr, "usage: nspd bench pd [--points N] [--threads T] [--steps S]\n"
-                        "       nspd bench cpd [--points N] [--threads T] [--steps S]\n"
-                        "       nspd bench gks [--cells N] [--threads T] [--steps S]\n"
-                        "       nspd bench memory [--points N] [--threads T] [--steps REPEATS]\n"
-                        "       nspd bench flops [--points ITERATIONS] [--threads T] [--steps "
-                        "REPEATS]\n");
+        fprintf(stderr, "nspd bench: which benchmark?\n");
+        command_usage(stderr, command_help("bench"), false);
         return EXIT_BAD_INPUT;
     }
     bool gks = strcmp(argv[0], "gks") == 0, memory = strcmp(argv[0], "memory") == 0;

@@ -150,10 +150,8 @@ int cmd_movie(int argc, char **argv) {
         } else if (argv[i][0] != '-' && !dir) {
             dir = argv[i];
         } else {
-            fprintf(stderr,
-                    "nspd movie: unexpected '%s'; usage: nspd movie OUTDIR [--field "
-                    "NAME] [--fps N]\n",
-                    argv[i]);
+            fprintf(stderr, "nspd movie: unexpected '%s'\n", argv[i]);
+            command_usage(stderr, command_help("movie"), false);
             return EXIT_BAD_INPUT;
         }
     }
@@ -162,8 +160,8 @@ int cmd_movie(int argc, char **argv) {
         return EXIT_BAD_INPUT;
     }
     if (!dir) {
-        fprintf(stderr, "nspd movie: which run? usage: nspd movie OUTDIR [--field NAME] "
-                        "[--fps N]\n");
+        fprintf(stderr, "nspd movie: which run?\n");
+        command_usage(stderr, command_help("movie"), false);
         return EXIT_BAD_INPUT;
     }
     Series series[MAX_SERIES];

@@ -20,10 +20,8 @@ int cmd_plot(int argc, char **argv) {
         if (strcmp(argv[i], "--svg") == 0) {
             svg = true;
         } else if (argv[i][0] == '-') {
-            fprintf(stderr,
-                    "nspd plot: unknown option '%s'; usage: nspd plot OUTDIR [COLUMN ...] "
-                    "[--svg]\n",
-                    argv[i]);
+            fprintf(stderr, "nspd plot: unknown option '%s'\n", argv[i]);
+            command_usage(stderr, command_help("plot"), false);
             return EXIT_BAD_INPUT;
         } else if (!dir) {
             dir = argv[i];
@@ -32,7 +30,9 @@ int cmd_plot(int argc, char **argv) {
         }
     }
     if (!dir || strlen(dir) > 4000) {
-        fprintf(stderr, "nspd plot: which run? usage: nspd plot OUTDIR [COLUMN ...] [--svg]\n");
+        fprintf(stderr, "nspd plot: which run?%s\n",
+                dir ? " (a directory name of at most 4000 characters)" : "");
+        command_usage(stderr, command_help("plot"), false);
         return EXIT_BAD_INPUT;
     }
     /* the case's name for the titles, from the resolved case */

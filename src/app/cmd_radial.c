@@ -36,16 +36,10 @@ static bool parse_probes(const char *text, double *r, int *count) {
     return false;
 }
 
-static int usage_error(const char *what) {
-    if (what) fprintf(stderr, "nspd radial: %s\n\n", what);
-    fprintf(stderr,
-            "usage: nspd radial [--geometry planar|cylindrical|spherical] [--gamma G]\n"
-            "                   [--charge RHO,U,P] [--ambient RHO,U,P] [--radius R0]\n"
-            "                   [--length L] [--cells N] [--time T] [--outer wall|open]\n"
-            "                   [--cfl C] [--probes R1,R2,...]\n"
-            "(defaults: cylindrical, gamma 1.4, charge 1,0,1 in r < 0.25, ambient 1,0,1e-4,\n"
-            " L 1.5, 20000 cells, t 0.5, outer wall, cfl 0.4: the strong cylindrical shock\n"
-            " of cases/strong_shock_cylindrical.yaml)\n");
+/* "nspd radial: WHAT 'ARG'" and the synopsis; exit status 2 */
+static int usage_error(const char *what, const char *arg) {
+    fprintf(stderr, "nspd radial: %s '%s'\n", what, arg);
+    command_usage(stderr, command_help("radial"), false);
     return EXIT_BAD_INPUT;
 }
 
@@ -55,7 +49,7 @@ int cmd_radial(int argc, char **argv) {
     RadialState charge = {1, 0, 1}, ambient = {1, 0, 1e-4};
     double r0 = 0.25, time = 0.5, probes[MAX_PROBES];
     int probe_count = 0;
-    if (argc % 2) return usage_error("every option takes a value");
+    if (argc % 2) return usage_error("every option takes a value; got none for", argv[argc - 1]);
     for (int i = 0; i < argc; i += 2) {
         const char *k = argv[i], *v = argv[i + 1];
         bool ok = true;
@@ -89,7 +83,7 @@ int cmd_radial(int argc, char **argv) {
         else if (strcmp(k, "--probes") == 0)
             ok = parse_probes(v, probes, &probe_count);
         else
-            return usage_error(NULL);
+            return usage_error("unknown option", k);
         if (!ok) {
             fprintf(stderr, "nspd radial: bad value '%s' for %s\n", v, k);
             return EXIT_BAD_INPUT;

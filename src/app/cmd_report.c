@@ -378,13 +378,15 @@ int cmd_report(int argc, char **argv) {
         } else if (argv[i][0] != '-' && !dir) {
             dir = argv[i];
         } else {
-            fprintf(stderr, "nspd report: unexpected '%s'; usage: nspd report OUTDIR [--frame N]\n",
-                    argv[i]);
+            fprintf(stderr, "nspd report: unexpected '%s'\n", argv[i]);
+            command_usage(stderr, command_help("report"), false);
             return EXIT_BAD_INPUT;
         }
     }
     if (!dir || strlen(dir) > 4000) {
-        fprintf(stderr, "nspd report: which run? usage: nspd report OUTDIR [--frame N]\n");
+        fprintf(stderr, "nspd report: which run?%s\n",
+                dir ? " (a directory name of at most 4000 characters)" : "");
+        command_usage(stderr, command_help("report"), false);
         return EXIT_BAD_INPUT;
     }
     struct stat st;

@@ -22,6 +22,12 @@ int cmd_riemann(int argc, char **argv) {
     RiemannState left = {1, 0, 1}, right = {0.125, 0, 0.1};
     double gamma = 1.4, time = 0.2, x0 = 0.5, length = 1.0;
     long cells = 400;
+    if (argc % 2) {
+        fprintf(stderr, "nspd riemann: every option takes a value; got none for '%s'\n",
+                argv[argc - 1]);
+        command_usage(stderr, command_help("riemann"), false);
+        return EXIT_BAD_INPUT;
+    }
     for (int i = 0; i + 1 < argc; i += 2) {
         const char *k = argv[i], *v = argv[i + 1];
         bool ok = true;
@@ -39,12 +45,13 @@ int cmd_riemann(int argc, char **argv) {
             length = atof(v);
         else if (strcmp(k, "--cells") == 0)
             cells = atol(v);
-        else
-            ok = false;
-        if (!ok || (argc % 2)) {
-            fprintf(stderr, "usage: nspd riemann [--left RHO,U,P] [--right RHO,U,P] [--gamma G]\n"
-                            "                    [--time T] [--x0 X] [--length L] [--cells N]\n"
-                            "(defaults: Sod's problem on (0, 1) at t = 0.2, 400 cells)\n");
+        else {
+            fprintf(stderr, "nspd riemann: unknown option '%s'\n", k);
+            command_usage(stderr, command_help("riemann"), false);
+            return EXIT_BAD_INPUT;
+        }
+        if (!ok) {
+            fprintf(stderr, "nspd riemann: bad value '%s' for %s; expected RHO,U,P\n", v, k);
             return EXIT_BAD_INPUT;
         }
     }

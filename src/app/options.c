@@ -1,5 +1,6 @@
 #include "app/options.h"
 
+#include "app/commands.h"
 #include "core/comm.h"
 
 #include <omp.h>
@@ -81,6 +82,7 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
             i++;
         } else if (a[0] == '-') {
             fprintf(stderr, "nspd %s: unknown option '%s'\n", command, a);
+            command_usage(stderr, command_help(command), false);
             return false;
         } else if (!opt->case_path) {
             opt->case_path = a;
@@ -91,8 +93,8 @@ bool options_parse(int argc, char **argv, bool allow_output, const char *command
         }
     }
     if (!opt->case_path) {
-        fprintf(stderr, "nspd %s: which case? usage: nspd %s CASE.yaml%s [--set key=value ...]\n",
-                command, command, allow_output ? " [-o DIR] [--force | --resume]" : "");
+        fprintf(stderr, "nspd %s: which case?\n", command);
+        command_usage(stderr, command_help(command), false);
         return false;
     }
     if (opt->force && opt->resume) {
