@@ -17,9 +17,7 @@ static const char *const FACE_KEYS[4] = {"x_min", "x_max", "y_min", "y_max"};
 /* flow.iga: the method's own keys, with the paper's code's values as
  * defaults (../shared/notes/iga_flow.md), except the DC cap (on: uncapped,
  * a 2D strip is unstable from round-off, docs/VALIDATION.md). */
-static int read_method(CfgNode *flow, IgaConfig *c) {
-    CfgNode *m;
-    TRY(cfg_opt_map(flow, "iga", &m));
+static int read_method_map(CfgNode *m, IgaConfig *c) {
     int64_t degree = 2, passes = 3, iterations = 10;
     int init = IGA_INIT_LUMPED_L2, ydot0 = IGA_YDOT0_ZERO, limiter = IGA_LIMITER_DEFAULT;
     c->c_dc = 2.5, c->dc_cap = true, c->rho_inf = 0.5, c->tau_dt = 0.0, c->cfl = 0.3;
@@ -58,6 +56,26 @@ static int read_method(CfgNode *flow, IgaConfig *c) {
     c->degree = (int)degree, c->passes = (int)passes, c->db_iterations = (int)iterations;
     c->init = (IgaInit)init, c->ydot0 = (IgaYdot0)ydot0, c->limiter = (IgaLimiterKind)limiter;
     return NSPD_OK;
+}
+
+static int read_method(CfgNode *flow, IgaConfig *c) {
+    CfgNode *m;
+    TRY(cfg_opt_map(flow, "iga", &m));
+    return read_method_map(m, c);
+}
+
+int case_check_iga_method(CfgNode *flow) {
+    CfgNode *m;
+    TRY(cfg_opt_map(flow, "iga", &m));
+    if (!m) return NSPD_OK;
+    /* the copy takes the defaults; its parent is flow, so that a refusal
+     * names flow.iga.KEY at the original's place */
+    CfgNode *copy = cfg_node_clone(m, flow);
+    if (!copy) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory");
+    IgaConfig scratch;
+    const int status = read_method_map(copy, &scratch);
+    cfg_node_free(copy);
+    return status;
 }
 
 /* One uniform segment per axis: its elements. */

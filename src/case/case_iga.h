@@ -13,4 +13,9 @@
  * filled: free it with iga_flow_config_free. */
 int case_read_iga(CfgNode *flow, IgaFlowConfig *out);
 
+/* flow.iga in a case on another background: read as case_read_iga would
+ * (the same refusals, a misspelt key's did-you-mean included) from a copy,
+ * so the case is left as it was but for flow.iga marked used. */
+int case_check_iga_method(CfgNode *flow);
+
 #endif

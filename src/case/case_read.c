@@ -43,8 +43,6 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
     int kind;
     TRY(cfg_req_enum(item, "type", PROBE_KIND_NAMES, &kind));
     p->kind = (ProbeKind)kind;
-    const CfgNode *at = cfg_map_find(item, "at") ? cfg_map_find(item, "at") : item;
-    cfg_node_place(at, p->where, sizeof p->where);
     const char *name;
     char fallback[32];
     snprintf(fallback, sizeof fallback, kind == PROBE_CRACK_TIP ? "crack" : "probe%d", index);
@@ -61,6 +59,12 @@ static int read_probe(CfgNode *item, int dim, bool has_solid, ProbeConfig *p, in
     if (p->kind == PROBE_POINT || p->kind == PROBE_LINE)
         TRY(cfg_opt_enum(item, "on", TARGETS, target, &target));
     p->target = (ProbeTarget)target;
+    /* its refusals said at `at` where the kind has one (looked up only
+     * then: a lookup makes the key one the probe accepts) */
+    const bool takes_at =
+        p->target == PROBE_ON_FLOW || p->kind == PROBE_POINT || p->kind == PROBE_BRANCHES;
+    const CfgNode *at = takes_at ? cfg_map_find(item, "at") : NULL;
+    cfg_node_place(at ? at : item, p->where, sizeof p->where);
     if (p->target == PROBE_ON_FLOW) {
         /* a flow point: the cell holding `at`; a flow line: the row or
          * column of cells through `at` */
@@ -300,9 +304,9 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
     } else if (flow) {
         cfg->flow.method = FLOW_METHOD_GKS;
         /* the IGA flow's own keys: kept, so that one case runs on either
-         * background by --set flow.method (docs/CASES.md) */
-        CfgNode *iga = cfg_map_find(flow, "iga");
-        if (iga) iga->used = true;
+         * background by --set flow.method (docs/CASES.md), and checked as
+         * the IGA flow would, so that a misspelt one is found here too */
+        TRY(case_check_iga_method(flow));
         int status = nspd_alloc(&cfg->flow.model, 1, sizeof(GksCaseConfig));
         if (status == NSPD_OK) status = case_read_gks(flow, cfg->flow.model, &walls);
         if (status != NSPD_OK) {

@@ -335,23 +335,34 @@ static int edit_distance(const char *a, const char *b) {
     return row[lb];
 }
 
+/* The keys `map` accepts: those the schema looked up in it (cfg_map_asked),
+ * given or not, but for one it looked at and left unread (a key refused
+ * as unknown is never offered as what was expected). */
+static bool accepted(const CfgNode *map, const char *key) {
+    const CfgNode *node = cfg_map_find(map, key);
+    return !node || node->used;
+}
+
 int cfg_end_map(const CfgNode *map) {
     for (int i = 0; i < map->count; i++) {
         const CfgNode *node = map->child[i];
         if (node->used) continue;
-        char known[768] = "";
+        char known[1024] = "";
         int len = 0, best = 99;
         const char *suggestion = NULL;
-        for (int k = 0; k < map->count; k++) {
-            const CfgNode *other = map->child[k];
-            if (!other->used) continue;
-            len += snprintf(known + len, sizeof known - (size_t)len, "%s%s", len ? ", " : "",
-                            other->key);
+        /* the asked list can grow below (cfg_map_find records): the count first */
+        const int asked = map->asked_count;
+        for (int k = 0; k < asked; k++) {
+            const char *key = map->asked[k];
+            if (!accepted(map, key)) continue;
+            if (len < (int)sizeof known)
+                len +=
+                    snprintf(known + len, sizeof known - (size_t)len, "%s%s", len ? ", " : "", key);
             if (len >= (int)sizeof known) len = (int)sizeof known - 1;
-            int d = edit_distance(node->key, other->key);
+            int d = edit_distance(node->key, key);
             if (d < best) {
                 best = d;
-                suggestion = other->key;
+                suggestion = key;
             }
         }
         if (suggestion && best <= 2)

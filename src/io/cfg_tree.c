@@ -37,7 +37,13 @@ static void node_free(CfgNode *node) {
     free(node->child);
     free(node->text);
     free(node->key);
+    for (int i = 0; i < node->asked_count; i++) free(node->asked[i]);
+    free(node->asked);
     free(node);
+}
+
+void cfg_node_free(CfgNode *node) {
+    node_free(node);
 }
 
 static int node_append(CfgNode *parent, CfgNode *child) {
@@ -71,11 +77,62 @@ static bool scalar_is_null(const char *text, bool quoted) {
                        strcmp(text, "Null") == 0 || strcmp(text, "NULL") == 0);
 }
 
-CfgNode *cfg_map_find(const CfgNode *map, const char *key) {
+/* map[key] without recording the key (the parser's and --set's lookups). */
+static CfgNode *lookup(const CfgNode *map, const char *key) {
     if (!map || map->kind != CFG_MAP) return NULL;
     for (int i = 0; i < map->count; i++)
         if (strcmp(map->child[i]->key, key) == 0) return map->child[i];
     return NULL;
+}
+
+bool cfg_map_asked(const CfgNode *map, const char *key) {
+    for (int i = 0; map && i < map->asked_count; i++)
+        if (strcmp(map->asked[i], key) == 0) return true;
+    return false;
+}
+
+static void record_asked(CfgNode *map, const char *key) {
+    if (cfg_map_asked(map, key)) return;
+    if (map->asked_count == map->asked_cap) {
+        const int cap = map->asked_cap ? 2 * map->asked_cap : 8;
+        char **grown = realloc(map->asked, (size_t)cap * sizeof *grown);
+        if (!grown) return;
+        map->asked = grown;
+        map->asked_cap = cap;
+    }
+    char *copy = dup_string(key);
+    if (copy) map->asked[map->asked_count++] = copy;
+}
+
+CfgNode *cfg_map_find(const CfgNode *map, const char *key) {
+    if (!map || map->kind != CFG_MAP) return NULL;
+    /* every tree's nodes are allocated by it, none is a const object: the
+     * record is bookkeeping of the schema's reading, like `used` */
+    record_asked((CfgNode *)map, key);
+    return lookup(map, key);
+}
+
+CfgNode *cfg_node_clone(const CfgNode *node, CfgNode *parent) {
+    CfgNode *copy = node_new(node->kind, node->file, node->line, node->col, node->origin);
+    if (!copy) return NULL;
+    copy->quoted = node->quoted;
+    copy->is_null = node->is_null;
+    copy->index = node->index;
+    copy->parent = parent;
+    if ((node->text && !(copy->text = dup_string(node->text))) ||
+        (node->key && !(copy->key = dup_string(node->key)))) {
+        node_free(copy);
+        return NULL;
+    }
+    for (int i = 0; i < node->count; i++) {
+        CfgNode *child = cfg_node_clone(node->child[i], copy);
+        if (!child || node_append(copy, child) != NSPD_OK) {
+            node_free(child);
+            node_free(copy);
+            return NULL;
+        }
+    }
+    return copy;
 }
 
 CfgNode *cfg_map_add_scalar(CfgNode *map, const char *key, const char *text, CfgOrigin origin) {
@@ -221,7 +278,7 @@ static int parse_children(Reader *r, CfgNode *node, yaml_event_type_t end) {
             key_col = (int)event.start_mark.column + 1;
             yaml_event_delete(&event);
             if (!key) return NSPD_FAIL(NSPD_ERR_NOMEM, "out of memory reading a case file");
-            const CfgNode *twin = cfg_map_find(node, key);
+            const CfgNode *twin = lookup(node, key);
             if (twin) {
                 int status = NSPD_FAIL(NSPD_ERR_INPUT,
                                        "%s:%d:%d: duplicate key '%s' (first given at line %d); "
@@ -457,6 +514,31 @@ static bool is_index(const char *s) {
     return true;
 }
 
+/* The key path as messages print it (cfg_node_path: "a.b[0].c") into
+ * the dotted one the walk below takes ("a.b.0.c"), into out (len + 1 bytes
+ * at least: the dotted form is never longer). False for a bracket that
+ * holds no index or does not end one segment. */
+static bool bracketed_to_dotted(const char *text, size_t len, char *out) {
+    size_t o = 0;
+    for (size_t i = 0; i < len; i++) {
+        if (text[i] == ']') return false; /* one without its '[' */
+        if (text[i] != '[') {
+            out[o++] = text[i];
+            continue;
+        }
+        size_t j = i + 1;
+        while (j < len && text[j] >= '0' && text[j] <= '9') j++;
+        if (j == i + 1 || j >= len || text[j] != ']' || i == 0) return false;
+        if (j + 1 < len && text[j + 1] != '.' && text[j + 1] != '[') return false;
+        out[o++] = '.';
+        memcpy(out + o, text + i + 1, j - i - 1);
+        o += j - i - 1;
+        i = j; /* past the ']' */
+    }
+    out[o] = '\0';
+    return true;
+}
+
 int cfg_doc_override(CfgDoc *doc, const char *assignment) {
     const char *eq = strchr(assignment, '=');
     if (!eq || eq == assignment)
@@ -503,8 +585,13 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
         node_free(value);
         return NSPD_FAIL(NSPD_ERR_INPUT, "--set %s: key path too long", assignment);
     }
-    memcpy(path, assignment, path_len);
-    path[path_len] = '\0';
+    if (!bracketed_to_dotted(assignment, path_len, path)) {
+        node_free(value);
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "--set %s: a '[' or ']' that is not a list index; expected "
+                         "key[N] (or key.N) with N the item's number",
+                         assignment);
+    }
     CfgNode *node = doc->root;
     char *save = NULL;
     char *segment = strtok_r(path, ".", &save);
@@ -523,7 +610,7 @@ int cfg_doc_override(CfgDoc *doc, const char *assignment) {
             }
             child = node->child[idx];
         } else if (node->kind == CFG_MAP) {
-            child = cfg_map_find(node, segment);
+            child = lookup(node, segment);
         } else {
             node_free(value);
             return NSPD_FAIL(NSPD_ERR_INPUT,

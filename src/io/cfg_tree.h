@@ -8,6 +8,9 @@
  *  - map keys are unique (duplicates are refused at load time);
  *  - `used` marks map entries consumed by the schema; what is left unused
  *    after reading is an unknown key;
+ *  - a map's `asked` holds every key the schema looked up in it
+ *    (cfg_map_find, which every getter calls), given or not: the keys the
+ *    map accepts, from which an unknown key's did-you-mean is chosen;
  *  - a scalar keeps its text exactly; `quoted` scalars are strings only.
  * The tree owns all its memory; cfg_doc_free releases it. */
 #ifndef NSPD_IO_CFG_TREE_H
@@ -29,9 +32,11 @@ struct CfgNode {
     bool quoted;      /* SCALAR: written in quotes, so never a number or bool */
     bool is_null;     /* SCALAR: ~, null or empty */
     CfgNode *parent;
-    char *key;      /* key in the parent map; NULL in a sequence or at the root */
-    int index;      /* position in the parent sequence */
-    bool used;      /* read by the schema */
+    char *key;    /* key in the parent map; NULL in a sequence or at the root */
+    int index;    /* position in the parent sequence */
+    bool used;    /* read by the schema */
+    char **asked; /* MAP: the keys looked up in it, each once, in order */
+    int asked_count, asked_cap;
     int count, cap; /* MAP, SEQ: children */
     CfgNode **child;
 };
@@ -51,7 +56,8 @@ int cfg_doc_load_file(CfgDoc *doc, const char *path);
 int cfg_doc_load_string(CfgDoc *doc, const char *name, const char *text);
 void cfg_doc_free(CfgDoc *doc);
 
-/* Applies "dotted.key=value" (sequence items by number: "a.b.0.c=1"). The
+/* Applies "dotted.key=value" (sequence items by number: "a.b.0.c=1", or
+ * as messages print paths, "a.b[0].c=1"). The
  * value is parsed as YAML, so "[1, 2]" gives a sequence. Missing maps on the
  * path are created; a missing sequence item is an error. */
 int cfg_doc_override(CfgDoc *doc, const char *assignment);
@@ -63,7 +69,18 @@ int cfg_doc_write(const CfgDoc *doc, FILE *out);
  * to `path`. NSPD_ERR_IO, with the OS's reason, if it cannot. */
 int cfg_doc_save(const CfgDoc *doc, const char *path, const char *header);
 
+/* map[key], or NULL. Records `key` in map->asked (the one thing a lookup
+ * changes; a failed allocation only loses the suggestion), so call it for
+ * keys the schema accepts: the case readers' lookups. */
 CfgNode *cfg_map_find(const CfgNode *map, const char *key);
+/* Whether the schema looked `key` up in `map`. */
+bool cfg_map_asked(const CfgNode *map, const char *key);
+/* A deep copy of `node` (keys, texts, places; `used` and `asked` cleared)
+ * whose parent is `parent`, which does not list it: messages about the
+ * copy name the original's path. NULL on allocation failure; free it with
+ * cfg_node_free. */
+CfgNode *cfg_node_clone(const CfgNode *node, CfgNode *parent);
+void cfg_node_free(CfgNode *node);
 /* Adds key -> new scalar / empty collection to a map, or a scalar to a
  * sequence (key NULL); returns the new node or NULL on allocation failure. */
 CfgNode *cfg_map_add_scalar(CfgNode *map, const char *key, const char *text, CfgOrigin origin);

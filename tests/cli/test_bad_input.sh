@@ -190,6 +190,40 @@ check "IGA free stream" "flow.free_stream: a free stream; expected an initial st
 check "IGA seal" "coupling: the penalty coupling's 'seal' needs a flow that can seal faces; the 'iga' flow solver cannot" \
     "$nspd" run "$src/cases/blast_hollow_square.yaml" -o "$work/result" --set flow.method=iga \
     --set coupling.seal=true
+gcyl="$src/cases/cylinder_ma2_re300.yaml"
+# did-you-mean from every key a map accepts, given or not (issue 61): an
+# optional key the case leaves out, a key read only when present
+# (flow.method, solid.lattice_origin), the IGA flow's keys on the GKS one
+check "did you mean: an absent optional list" "output.probs: unknown key \\(did you mean 'probes'\\?\\)" \
+    "$nspd" check "$src/cases/sod.yaml" --set "output.probs=[]"
+check "did you mean: a key read when present" "flow.methd: unknown key \\(did you mean 'method'\\?\\)" \
+    "$nspd" check "$gcyl" --set flow.methd=gks
+check "did you mean: a solid key left out" "solid.latice_origin: unknown key \\(did you mean 'lattice_origin'\\?\\)" \
+    "$nspd" check "$src/cases/plate_crack.yaml" --set "solid.latice_origin=[0, 0]"
+check "did you mean: flow.iga on the GKS flow" "flow.iga.degre: unknown key \\(did you mean 'degree'\\?\\)" \
+    "$nspd" check "$src/cases/blast_hollow_square.yaml" --set flow.iga.degre=2
+check "flow.iga checked on the GKS flow" "flow.iga.degree: 4; expected 1, 2" \
+    "$nspd" check "$src/cases/blast_hollow_square.yaml" --set flow.iga.degree=4
+# a key the reader looks at but the map does not take is never offered
+check "crack-tip probe: no 'at'" "output.probes\\[0\\].att: unknown key; expected one of: type, name, direction" \
+    "$nspd" check "$src/cases/plate_crack.yaml" --set output.probes.0.att=1
+# paths as messages print them are what --set takes: a[0].b
+check "--set a[0].b" "^--set flow.bodies\\[0\\].markrs=40: flow.bodies\\[0\\].markrs: unknown key \\(did you mean 'markers'\\?\\)" \
+    "$nspd" check "$gcyl" --set "flow.bodies[0].markrs=40"
+check "--set a bracket without an index" "--set flow.bodies\\[x\\].markers=40: a '\\[' or '\\]' that is not a list index" \
+    "$nspd" check "$gcyl" --set "flow.bodies[x].markers=40"
+# the path of a refusal, pasted into --set, names the same key: another
+# bad value is refused there, a good one accepted
+path=$("$nspd" check "$gcyl" --set "flow.bodies[0].radius=-1" 2>&1 |
+    sed -n 's/^--set [^ ]*: \([^ :]*\): .*/\1/p')
+check "a refusal's path in --set" "^--set flow.bodies\\[0\\].radius=-2: flow.bodies\\[0\\].radius: must be positive, got -2" \
+    "$nspd" check "$gcyl" --set "$path=-2"
+count=$((count + 1))
+if ! "$nspd" check "$gcyl" --set "$path=0.25" >"$work/out" 2>"$work/err"; then
+    echo "FAIL the path '$path' of a refusal is not taken by --set:"
+    cat "$work/err"
+    failures=$((failures + 1))
+fi
 mkdir -p "$work/existing"
 count=$((count + 1))
 "$nspd" run "$src/cases/block_3d.yaml" -o "$work/existing" >"$work/out" 2>"$work/err"
