@@ -1,5 +1,6 @@
 #include "couple/ghost/model.h"
 
+#include "core/log.h"
 #include "core/mem.h"
 #include "core/status.h"
 #include "couple/coupling.h"
@@ -20,7 +21,11 @@ typedef struct {
     GhostCouplingConfig cfg;
     double average_from; /* s */
     bool rigid;          /* fixed bodies, no solid */
-    Fsi fsi;             /* two-way: the solid's surface as the walls */
+    /* the reference state has no speed: no dynamic pressure to divide by,
+     * so no cd, cl, cp_stagnation columns and no cp, cf in the surface
+     * tables (omitted, said once at create, instead of written as 0) */
+    bool no_coefficients;
+    Fsi fsi; /* two-way: the solid's surface as the walls */
     /* rigid walls */
     Ibm *ibm;
     IbmPolyline *bodies;
@@ -121,6 +126,15 @@ static int ghost_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *fl
     }
     if (status == NSPD_OK)
         status = nspd_alloc(&g->coef_sum, (size_t)g->body_count * 6, sizeof(double));
+    const IbmReference *ref = reference_of(g);
+    g->no_coefficients = !(ref->rho * (ref->u * ref->u + ref->v * ref->v) > 0.0);
+    if (status == NSPD_OK && g->no_coefficients)
+        nspd_log(LOG_WARN,
+                 "%s: the coefficients' reference speed is 0 (the %s at rest): cd, cl and their "
+                 "parts, cp_stagnation and the surface tables' cp, cf are omitted; forces are "
+                 "written in N/m. For coefficients: flow.free_stream with a speed",
+                 cfg->where[0] ? cfg->where : "coupling",
+                 g->rigid ? "free stream, else the initial gas," : "initial gas");
     if (status != NSPD_OK) {
         ghost_destroy(g);
         return status;
@@ -184,6 +198,7 @@ static int ghost_history(void *impl, Solid *solid, Flow *flow, double time, Repo
     for (int b = 0; b < g->body_count; b++) {
         char prefix[128];
         body_prefix(g, b, prefix, sizeof prefix);
+        if (g->no_coefficients) continue;
         double co[6];
         coefficients(&s->forces[b], co);
         for (int k = 0; k < 6; k++) {
@@ -192,7 +207,7 @@ static int ghost_history(void *impl, Solid *solid, Flow *flow, double time, Repo
         }
         report_realf(row, s->forces[b].cp_stagnation, "%scp_stagnation", prefix);
     }
-    if (averaging) g->coef_samples++;
+    if (averaging && !g->no_coefficients) g->coef_samples++;
     if (!g->rigid) {
         report_real(row, "force_x_N_per_m", g->fsi.force_on_solid[0]);
         report_real(row, "force_y_N_per_m", g->fsi.force_on_solid[1]);
@@ -208,6 +223,7 @@ static int ghost_summary(void *impl, Solid *solid, Flow *flow, Report *out) {
     GhostCoupling *g = impl;
     const IbmSurface *s;
     TRY(surface_loads(g, flow, &s));
+    if (g->no_coefficients) return NSPD_OK;
     report_int(out, "coefficient_samples", g->coef_samples);
     for (int b = 0; b < g->body_count; b++) {
         char prefix[128];
@@ -238,13 +254,22 @@ static int ghost_fields(void *impl, Solid *solid, Flow *flow, FieldSet *out) {
     for (int k = 0; k < s->n; k++) g->table_body[k] = s->body[k];
     memset(out, 0, sizeof *out);
     out->mesh = MESH_NONE;
-    out->table[out->table_count++] =
-        (TableRef){.file = "surface",
-                   .header = "body,arc_m,x_m,y_m,cp,cf,p_Pa,tau_Pa",
-                   .rows = s->n,
-                   .ncol = 8,
-                   .col = {g->table_body, s->arc, s->x, s->y, s->cp, s->cf, s->p, s->tau},
-                   .integer_cols = 1u};
+    if (g->no_coefficients)
+        out->table[out->table_count++] =
+            (TableRef){.file = "surface",
+                       .header = "body,arc_m,x_m,y_m,p_Pa,tau_Pa",
+                       .rows = s->n,
+                       .ncol = 6,
+                       .col = {g->table_body, s->arc, s->x, s->y, s->p, s->tau},
+                       .integer_cols = 1u};
+    else
+        out->table[out->table_count++] =
+            (TableRef){.file = "surface",
+                       .header = "body,arc_m,x_m,y_m,cp,cf,p_Pa,tau_Pa",
+                       .rows = s->n,
+                       .ncol = 8,
+                       .col = {g->table_body, s->arc, s->x, s->y, s->cp, s->cf, s->p, s->tau},
+                       .integer_cols = 1u};
     return NSPD_OK;
 }
 
