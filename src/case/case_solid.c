@@ -2,6 +2,7 @@
 
 #include "core/mem.h"
 #include "core/status.h"
+#include "case/case_loads.h"
 #include "case/case_shapes.h"
 #include "io/cfg_read.h"
 #include "solid/correspondence/config.h"
@@ -13,16 +14,18 @@
 
 static const char *const AXES[] = {"x", "y", "z"};
 
-/* {x: 1, y: 2} -> values and a mask of the components given. */
-static int read_components(CfgNode *map, const char *key, int dim, unsigned *mask,
-                           double value[3]) {
+/* {x: 1, y: "20*t"} -> values (numbers or load expressions, case_loads.h)
+ * and a mask of the components given. */
+static int read_components(CfgNode *map, const char *key, PdConfig *cfg, unsigned *mask,
+                           double value[3], uint16_t expr[3]) {
+    const int dim = cfg->dim;
     CfgNode *node;
     TRY(cfg_opt_map(map, key, &node));
     *mask = 0;
     if (!node) return NSPD_OK;
     for (int d = 0; d < dim && d < 3; d++) { /* dim <= 3: AXES has 3 */
         bool given;
-        TRY(cfg_maybe_double(node, AXES[d], &value[d], &given));
+        TRY(case_maybe_load(node, AXES[d], cfg, &value[d], &expr[d], &given));
         if (given) *mask |= 1u << d;
     }
     TRY(cfg_end_map(node));
@@ -133,9 +136,10 @@ static int read_boundaries(CfgNode *solid, PdConfig *cfg) {
         TRY(cfg_opt_string(item, "name", fallback, &name));
         snprintf(r->name, sizeof r->name, "%s", name);
         TRY(case_read_shapes(item, "region", cfg->dim, true, &r->region));
-        TRY(read_components(item, "velocity", cfg->dim, &r->velocity_mask, r->velocity));
-        TRY(read_components(item, "displacement", cfg->dim, &r->displacement_mask,
-                            r->displacement));
+        TRY(read_components(item, "velocity", cfg, &r->velocity_mask, r->velocity,
+                            r->velocity_expr));
+        TRY(read_components(item, "displacement", cfg, &r->displacement_mask, r->displacement,
+                            r->displacement_expr));
         bool fixed;
         TRY(cfg_opt_bool(item, "fixed", false, &fixed));
         if (fixed) {
@@ -148,7 +152,8 @@ static int read_boundaries(CfgNode *solid, PdConfig *cfg) {
             return cfg_fail_at(item, "displacement",
                                "a component has both a velocity and a displacement; expected one");
         double zero[3] = {0, 0, 0};
-        TRY(cfg_opt_vec(item, "force_density", cfg->dim, zero, r->force_density));
+        TRY(case_opt_load_vec(item, "force_density", cfg->dim, zero, cfg, r->force_density,
+                              r->force_expr));
         TRY(cfg_end_map(item));
     }
     return NSPD_OK;
@@ -164,7 +169,8 @@ static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
         CfgNode *item = seq->child[i];
         if (item->kind != CFG_MAP) return cfg_fail(item, "expected a map with region and velocity");
         TRY(case_read_shapes(item, "region", cfg->dim, true, &cfg->initial_velocities[i].region));
-        TRY(cfg_req_vec(item, "velocity", cfg->dim, cfg->initial_velocities[i].velocity));
+        PdInitialVelocity *iv = &cfg->initial_velocities[i];
+        TRY(case_req_load_vec(item, "velocity", cfg->dim, cfg, iv->velocity, iv->velocity_expr));
         TRY(cfg_end_map(item));
     }
     return NSPD_OK;
@@ -233,7 +239,8 @@ static int read_body(CfgNode *s, PdConfig *cfg) {
     TRY(read_boundaries(s, cfg));
     TRY(read_initial_velocities(s, cfg));
     double zero[3] = {0, 0, 0};
-    TRY(cfg_opt_vec(s, "body_force", cfg->dim, zero, cfg->body_force));
+    TRY(case_opt_load_vec(s, "body_force", cfg->dim, zero, cfg, cfg->body_force,
+                          cfg->body_force_expr));
     return NSPD_OK;
 }
 
@@ -331,12 +338,28 @@ static int read_cpd_pressures(CfgNode *s, CpdConfig *cfg) {
         TRY(cfg_opt_string(item, "name", fallback, &name));
         snprintf(p->name, sizeof p->name, "%s", name);
         TRY(case_read_shapes(item, "region", cfg->pd.dim, true, &p->region));
-        TRY(cfg_req_double(item, "peak", &p->peak));
-        TRY(cfg_opt_double(item, "rise_time", 0.0, &p->rise));
-        TRY(cfg_opt_double(item, "hold_time", 0.0, &p->hold));
-        TRY(cfg_opt_double(item, "fall_time", 0.0, &p->fall));
-        if (!(p->rise >= 0.0 && p->hold >= 0.0 && p->fall >= 0.0))
-            return cfg_fail(item, "a negative time; expected rise_time, hold_time, fall_time >= 0");
+        /* a pressure history: the expression `pressure`, or the trapezoid */
+        double constant;
+        bool has_expr;
+        TRY(case_maybe_load(item, "pressure", &cfg->pd, &constant, &p->expr, &has_expr));
+        if (has_expr) {
+            if (!p->expr) p->peak = constant; /* a number: held from t = 0 */
+            static const char *const TRAPEZOID[] = {"peak", "rise_time", "hold_time", "fall_time"};
+            for (int k = 0; k < 4; k++)
+                if (cfg_map_find(item, TRAPEZOID[k]))
+                    return cfg_fail_at(item, TRAPEZOID[k],
+                                       "both pressure and %s given; expected the expression "
+                                       "pressure or the trapezoid's keys",
+                                       TRAPEZOID[k]);
+        } else {
+            TRY(cfg_req_double(item, "peak", &p->peak));
+            TRY(cfg_opt_double(item, "rise_time", 0.0, &p->rise));
+            TRY(cfg_opt_double(item, "hold_time", 0.0, &p->hold));
+            TRY(cfg_opt_double(item, "fall_time", 0.0, &p->fall));
+            if (!(p->rise >= 0.0 && p->hold >= 0.0 && p->fall >= 0.0))
+                return cfg_fail(item,
+                                "a negative time; expected rise_time, hold_time, fall_time >= 0");
+        }
         TRY(cfg_end_map(item));
     }
     return NSPD_OK;

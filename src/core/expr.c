@@ -57,13 +57,12 @@ typedef struct {
 } Function;
 
 static const Function FUNCTIONS[] = {
-    {"sin", OP_SIN, 1},     {"cos", OP_COS, 1},     {"tan", OP_TAN, 1},
-    {"asin", OP_ASIN, 1},   {"acos", OP_ACOS, 1},   {"atan", OP_ATAN, 1},
-    {"sinh", OP_SINH, 1},   {"cosh", OP_COSH, 1},   {"tanh", OP_TANH, 1},
-    {"exp", OP_EXP, 1},     {"log", OP_LOG, 1},     {"log10", OP_LOG10, 1},
-    {"sqrt", OP_SQRT, 1},   {"abs", OP_ABS, 1},     {"floor", OP_FLOOR, 1},
-    {"ceil", OP_CEIL, 1},   {"step", OP_STEP, 1},   {"atan2", OP_ATAN2, 2},
-    {"pow", OP_POWF, 2},    {"min", OP_MIN, 2},     {"max", OP_MAX, 2}};
+    {"sin", OP_SIN, 1},   {"cos", OP_COS, 1},     {"tan", OP_TAN, 1},     {"asin", OP_ASIN, 1},
+    {"acos", OP_ACOS, 1}, {"atan", OP_ATAN, 1},   {"sinh", OP_SINH, 1},   {"cosh", OP_COSH, 1},
+    {"tanh", OP_TANH, 1}, {"exp", OP_EXP, 1},     {"log", OP_LOG, 1},     {"log10", OP_LOG10, 1},
+    {"sqrt", OP_SQRT, 1}, {"abs", OP_ABS, 1},     {"floor", OP_FLOOR, 1}, {"ceil", OP_CEIL, 1},
+    {"step", OP_STEP, 1}, {"atan2", OP_ATAN2, 2}, {"pow", OP_POWF, 2},    {"min", OP_MIN, 2},
+    {"max", OP_MAX, 2}};
 
 static const char *const VARIABLES[EXPR_VARIABLES] = {"t", "x", "y", "z"};
 
@@ -133,7 +132,8 @@ static bool parse_call(Parser *p, const Function *f, const char *name_at) {
             if (!parse_expr(p)) return false;
             given++;
         } while (accept(p, ","));
-        if (!accept(p, ")")) return fail(p, p->at, "expected ',' or ')' in the call of %s", f->name);
+        if (!accept(p, ")"))
+            return fail(p, p->at, "expected ',' or ')' in the call of %s", f->name);
     }
     if (given != f->arguments)
         return fail(p, name_at, "%s takes %d argument%s, got %d", f->name, f->arguments,
@@ -160,8 +160,8 @@ static bool parse_name(Parser *p) {
             return emit(p, OP_VAR, (double)v, 1);
         }
     if (n == 2 && strncmp(start, "pi", 2) == 0) return emit(p, OP_CONST, M_PI, 1);
-    return fail(p, start, "unknown name '%.*s'; expected t, x, y, z, pi or a function call",
-                (int)n, start);
+    return fail(p, start, "unknown name '%.*s'; expected t, x, y, z, pi or a function call", (int)n,
+                start);
 }
 
 static bool parse_primary(Parser *p) {
@@ -238,8 +238,8 @@ static bool parse_comparison(Parser *p) {
     static const struct {
         const char *token;
         int op;
-    } CMP[] = {{"<=", OP_LE}, {">=", OP_GE}, {"==", OP_EQ}, {"!=", OP_NE},
-               {"<", OP_LT},  {">", OP_GT}};
+    } CMP[] = {{"<=", OP_LE}, {">=", OP_GE}, {"==", OP_EQ},
+               {"!=", OP_NE}, {"<", OP_LT},  {">", OP_GT}};
     for (size_t k = 0; k < sizeof CMP / sizeof CMP[0]; k++)
         if (accept(p, CMP[k].token)) return parse_sum(p) && emit(p, CMP[k].op, 0.0, -1);
     return true;
@@ -275,8 +275,10 @@ bool expr_compile(const char *text, Expr *out, ExprError *err) {
     *err = (ExprError){0};
     Parser p = {.text = text, .at = text, .out = out, .err = err};
     if (strlen(text) > EXPR_MAX_TEXT)
-        return fail(&p, text + EXPR_MAX_TEXT, "the expression is too long; expected at most %d "
-                                              "characters", EXPR_MAX_TEXT);
+        return fail(&p, text + EXPR_MAX_TEXT,
+                    "the expression is too long; expected at most %d "
+                    "characters",
+                    EXPR_MAX_TEXT);
     if (!parse_expr(&p)) return false;
     skip_space(&p);
     if (*p.at != '\0') return fail(&p, p.at, "unexpected '%c' after the expression", *p.at);
@@ -293,49 +295,124 @@ double expr_eval(const Expr *e, const double vars[EXPR_VARIABLES]) {
     for (int k = 0; k < e->count; k++) {
         const double a = n >= 2 ? s[n - 2] : 0.0, b = n >= 1 ? s[n - 1] : 0.0;
         switch (e->code[k]) {
-        case OP_CONST: s[n++] = e->value[k]; break;
-        case OP_VAR: s[n++] = vars[(int)e->value[k]]; break;
-        case OP_NEG: s[n - 1] = -b; break;
-        case OP_NOT: s[n - 1] = truth(b == 0.0); break;
-        case OP_ADD: s[--n - 1] = a + b; break;
-        case OP_SUB: s[--n - 1] = a - b; break;
-        case OP_MUL: s[--n - 1] = a * b; break;
-        case OP_DIV: s[--n - 1] = a / b; break;
+        case OP_CONST:
+            s[n++] = e->value[k];
+            break;
+        case OP_VAR:
+            s[n++] = vars[(int)e->value[k]];
+            break;
+        case OP_NEG:
+            s[n - 1] = -b;
+            break;
+        case OP_NOT:
+            s[n - 1] = truth(b == 0.0);
+            break;
+        case OP_ADD:
+            s[--n - 1] = a + b;
+            break;
+        case OP_SUB:
+            s[--n - 1] = a - b;
+            break;
+        case OP_MUL:
+            s[--n - 1] = a * b;
+            break;
+        case OP_DIV:
+            s[--n - 1] = a / b;
+            break;
         case OP_POW:
-        case OP_POWF: s[--n - 1] = pow(a, b); break;
-        case OP_LT: s[--n - 1] = truth(a < b); break;
-        case OP_LE: s[--n - 1] = truth(a <= b); break;
-        case OP_GT: s[--n - 1] = truth(a > b); break;
-        case OP_GE: s[--n - 1] = truth(a >= b); break;
-        case OP_EQ: s[--n - 1] = truth(a == b); break;
-        case OP_NE: s[--n - 1] = truth(a != b); break;
-        case OP_AND: s[--n - 1] = truth(a != 0.0 && b != 0.0); break;
-        case OP_OR: s[--n - 1] = truth(a != 0.0 || b != 0.0); break;
+        case OP_POWF:
+            s[--n - 1] = pow(a, b);
+            break;
+        case OP_LT:
+            s[--n - 1] = truth(a < b);
+            break;
+        case OP_LE:
+            s[--n - 1] = truth(a <= b);
+            break;
+        case OP_GT:
+            s[--n - 1] = truth(a > b);
+            break;
+        case OP_GE:
+            s[--n - 1] = truth(a >= b);
+            break;
+        case OP_EQ:
+            s[--n - 1] = truth(a == b);
+            break;
+        case OP_NE:
+            s[--n - 1] = truth(a != b);
+            break;
+        case OP_AND:
+            s[--n - 1] = truth(a != 0.0 && b != 0.0);
+            break;
+        case OP_OR:
+            s[--n - 1] = truth(a != 0.0 || b != 0.0);
+            break;
         case OP_SELECT: /* c, then-value, else-value on the stack, else on top */
             n -= 2;
             s[n - 1] = s[n - 1] != 0.0 ? s[n] : s[n + 1];
             break;
-        case OP_SIN: s[n - 1] = sin(b); break;
-        case OP_COS: s[n - 1] = cos(b); break;
-        case OP_TAN: s[n - 1] = tan(b); break;
-        case OP_ASIN: s[n - 1] = asin(b); break;
-        case OP_ACOS: s[n - 1] = acos(b); break;
-        case OP_ATAN: s[n - 1] = atan(b); break;
-        case OP_SINH: s[n - 1] = sinh(b); break;
-        case OP_COSH: s[n - 1] = cosh(b); break;
-        case OP_TANH: s[n - 1] = tanh(b); break;
-        case OP_EXP: s[n - 1] = exp(b); break;
-        case OP_LOG: s[n - 1] = log(b); break;
-        case OP_LOG10: s[n - 1] = log10(b); break;
-        case OP_SQRT: s[n - 1] = sqrt(b); break;
-        case OP_ABS: s[n - 1] = fabs(b); break;
-        case OP_FLOOR: s[n - 1] = floor(b); break;
-        case OP_CEIL: s[n - 1] = ceil(b); break;
-        case OP_STEP: s[n - 1] = truth(b >= 0.0); break;
-        case OP_ATAN2: s[--n - 1] = atan2(a, b); break;
-        case OP_MIN: s[--n - 1] = fmin(a, b); break;
-        case OP_MAX: s[--n - 1] = fmax(a, b); break;
-        default: return (double)NAN; /* not a program expr_compile made */
+        case OP_SIN:
+            s[n - 1] = sin(b);
+            break;
+        case OP_COS:
+            s[n - 1] = cos(b);
+            break;
+        case OP_TAN:
+            s[n - 1] = tan(b);
+            break;
+        case OP_ASIN:
+            s[n - 1] = asin(b);
+            break;
+        case OP_ACOS:
+            s[n - 1] = acos(b);
+            break;
+        case OP_ATAN:
+            s[n - 1] = atan(b);
+            break;
+        case OP_SINH:
+            s[n - 1] = sinh(b);
+            break;
+        case OP_COSH:
+            s[n - 1] = cosh(b);
+            break;
+        case OP_TANH:
+            s[n - 1] = tanh(b);
+            break;
+        case OP_EXP:
+            s[n - 1] = exp(b);
+            break;
+        case OP_LOG:
+            s[n - 1] = log(b);
+            break;
+        case OP_LOG10:
+            s[n - 1] = log10(b);
+            break;
+        case OP_SQRT:
+            s[n - 1] = sqrt(b);
+            break;
+        case OP_ABS:
+            s[n - 1] = fabs(b);
+            break;
+        case OP_FLOOR:
+            s[n - 1] = floor(b);
+            break;
+        case OP_CEIL:
+            s[n - 1] = ceil(b);
+            break;
+        case OP_STEP:
+            s[n - 1] = truth(b >= 0.0);
+            break;
+        case OP_ATAN2:
+            s[--n - 1] = atan2(a, b);
+            break;
+        case OP_MIN:
+            s[--n - 1] = fmin(a, b);
+            break;
+        case OP_MAX:
+            s[--n - 1] = fmax(a, b);
+            break;
+        default:
+            return (double)NAN; /* not a program expr_compile made */
         }
     }
     return n == 1 ? s[0] : (double)NAN;

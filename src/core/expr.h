@@ -40,10 +40,10 @@ enum {
 enum { EXPR_T, EXPR_X, EXPR_Y, EXPR_Z, EXPR_VARIABLES };
 
 typedef struct {
-    uint8_t code[EXPR_MAX_OPS];  /* the instructions, postfix */
-    double value[EXPR_MAX_OPS];  /* a constant's value; a variable's index */
-    int count;                   /* instructions */
-    unsigned uses;               /* bit v: variable v appears (1 << EXPR_T, ...) */
+    uint8_t code[EXPR_MAX_OPS]; /* the instructions, postfix */
+    double value[EXPR_MAX_OPS]; /* a constant's value; a variable's index */
+    int count;                  /* instructions */
+    unsigned uses;              /* bit v: variable v appears (1 << EXPR_T, ...) */
 } Expr;
 
 /* Where compiling failed: the 1-based column of `text` and what was

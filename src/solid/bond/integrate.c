@@ -18,6 +18,7 @@ static PdMotion motion_of(BondBody *body) {
                   .n = body->n,
                   .density = body->cfg.density,
                   .body_force = body->cfg.body_force,
+                  .x = {body->x[0], body->x[1], body->x[2]},
                   .region = body->region,
                   .boundary = &body->boundary};
     for (int d = 0; d < 3; d++) {
@@ -70,15 +71,16 @@ int pd_step(BondBody *body, double dt) {
     const PdMotion m = motion_of(body);
     if (body->cfg.integrator == PD_VELOCITY_VERLET) {
         if (!body->force_valid) pd_force_compute(body);
-        pd_kick(&m, 0.5 * dt);
-        bad = pd_drift(&m, dt);
+        const double t = body->time;
+        pd_kick(&m, 0.5 * dt, t, t + 0.5 * dt);
+        bad = pd_drift(&m, dt, t + dt);
         exchange_and_mark(body);
         pd_force_compute(body);
-        pd_kick(&m, 0.5 * dt);
+        pd_kick(&m, 0.5 * dt, t + dt, t + dt);
         body->force_valid = true;
     } else {
         pd_force_compute(body);
-        bad = pd_kick_drift(&m, dt);
+        bad = pd_kick_drift(&m, dt, body->time, body->time + dt);
         exchange_and_mark(body);
         body->force_valid = false;
     }

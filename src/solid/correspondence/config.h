@@ -30,12 +30,15 @@ extern const char *const CPD_DAMAGE_NAMES[CPD_DAMAGE_COUNT + 1];
 /* A pressure p(t) filling `region` (a cavity, or the space outside the
  * body) pushes on the faces of the body's lattice cells that border it
  * (body.c); p(t) is a trapezoid: 0 to `peak` over `rise`, held for
- * `hold`, back to 0 over `fall` (s; fall <= 0: held for ever). */
+ * `hold`, back to 0 over `fall` (s; fall <= 0: held for ever), or where
+ * expr is not 0 the load expression pd.expressions[expr - 1] of (t, x, y,
+ * z), x a loaded point's reference position. */
 typedef struct {
     char name[PD_MAX_NAME];
     ShapeSet region;
     double peak; /* Pa */
     double rise, hold, fall;
+    uint16_t expr;
 } CpdPressure;
 
 typedef struct {

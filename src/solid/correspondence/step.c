@@ -314,12 +314,30 @@ void cpd_force(CpdBody *b, double t) {
     if (c->pressure_count > 0) {
         double p[64];
         const int count = c->pressure_count < 64 ? c->pressure_count : 64;
-        for (int r = 0; r < count; r++) p[r] = cpd_pressure_at(&c->pressures[r], t) / b->spacing;
+        /* a pressure that varies in space: expressions[e[r] - 1] at each point */
+        uint16_t e[64] = {0};
+        const Expr *expressions = b->boundary.expressions; /* the body's copy of the case's */
+        for (int r = 0; r < count; r++) {
+            const uint16_t k = c->pressures[r].expr;
+            const double X[EXPR_VARIABLES] = {t, 0.0, 0.0, 0.0};
+            if (k && expr_uses_position(&expressions[k - 1]))
+                e[r] = k;
+            else
+                p[r] =
+                    (k ? expr_eval(&expressions[k - 1], X) : cpd_pressure_at(&c->pressures[r], t)) /
+                    b->spacing;
+        }
 #pragma omp parallel for schedule(static) if (b->n >= PARALLEL_MIN_ITEMS)
         for (int64_t i = 0; i < b->n; i++)
-            if (b->load[i] >= 0 && b->load[i] < count)
-                for (int a = 0; a < b->dim; a++)
-                    b->force[a][i] += p[b->load[i]] * b->load_dir[a][i];
+            if (b->load[i] >= 0 && b->load[i] < count) {
+                const int r = b->load[i];
+                double pr = p[r];
+                if (e[r]) {
+                    const double X[EXPR_VARIABLES] = {t, b->x[0][i], b->x[1][i], b->x[2][i]};
+                    pr = expr_eval(&expressions[e[r] - 1], X) / b->spacing;
+                }
+                for (int a = 0; a < b->dim; a++) b->force[a][i] += pr * b->load_dir[a][i];
+            }
     }
     if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) {
         b->damage_grew = true;
@@ -332,6 +350,7 @@ static PdMotion motion_of(CpdBody *b) {
                   .n = b->n,
                   .density = b->cfg.pd.density,
                   .body_force = b->cfg.pd.body_force,
+                  .x = {b->x[0], b->x[1], b->x[2]},
                   .region = b->region,
                   .boundary = &b->boundary};
     for (int d = 0; d < 3; d++) {
@@ -360,12 +379,13 @@ static int substep(CpdBody *b, double dt) {
         remember_u(b); /* no increment: the stresses stay */
         cpd_force(b, b->time);
     }
-    pd_kick(&m, 0.5 * dt);
+    const double t = b->time;
+    pd_kick(&m, 0.5 * dt, t, t + 0.5 * dt);
     remember_u(b);
-    const bool bad = cpd_halo_sum(b, pd_drift(&m, dt)) > 0; /* all ranks fail together */
+    const bool bad = cpd_halo_sum(b, pd_drift(&m, dt, t + dt)) > 0; /* all ranks fail together */
     cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
-    cpd_force(b, b->time + dt);
-    pd_kick(&m, 0.5 * dt);
+    cpd_force(b, t + dt);
+    pd_kick(&m, 0.5 * dt, t + dt, t + dt);
     b->force_valid = true;
     if (bad)
         return NSPD_FAIL(NSPD_ERR_NUMERIC,

@@ -107,4 +107,5 @@ void pd_config_free(PdConfig *cfg) {
     nspd_free(&cfg->precracks);
     nspd_free(&cfg->boundaries);
     nspd_free(&cfg->initial_velocities);
+    nspd_free(&cfg->expressions);
 }

@@ -4,9 +4,11 @@
 #ifndef NSPD_SOLID_PD_CONFIG_H
 #define NSPD_SOLID_PD_CONFIG_H
 
+#include "core/expr.h"
 #include "core/shape.h"
 
 #include <stdbool.h>
+#include <stdint.h>
 
 typedef enum { PD_PLANE_STRESS, PD_PLANE_STRAIN, PD_3D, PD_MODEL_COUNT } PdModel;
 typedef enum { PD_EULER_CROMER, PD_VELOCITY_VERLET, PD_INTEGRATOR_COUNT } PdIntegrator;
@@ -18,10 +20,12 @@ extern const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1];
 extern const char *const PD_VOLUME_NAMES[PD_VOLUME_COUNT + 1];
 extern const char *const PD_SURFACE_NAMES[PD_SURFACE_COUNT + 1];
 
-enum { PD_MAX_NAME = 64 };
+enum { PD_MAX_NAME = 64, PD_MAX_EXPRESSIONS = 256 };
 
 /* A region of points whose motion is prescribed or loaded. Components not
- * in a mask are free. */
+ * in a mask are free. Each value is a constant, or where its *_expr entry
+ * k is not 0 the load expression PdConfig.expressions[k - 1] of (t, x, y,
+ * z), x the point's reference position (core/expr.h). */
 typedef struct {
     char name[PD_MAX_NAME];
     ShapeSet region;
@@ -30,6 +34,7 @@ typedef struct {
     unsigned displacement_mask; /* bit d: displacement component d held at the value */
     double displacement[3];     /* m */
     double force_density[3];    /* N/m^3 added on the region's points */
+    uint16_t velocity_expr[3], displacement_expr[3], force_expr[3];
 } PdBoundaryRegion;
 
 /* Bonds crossing it start broken. 2D: the segment a-b. 3D: the
@@ -42,6 +47,7 @@ typedef struct {
 typedef struct {
     ShapeSet region;
     double velocity[3];
+    uint16_t velocity_expr[3]; /* as in PdBoundaryRegion, at t = 0 */
 } PdInitialVelocity;
 
 typedef struct {
@@ -68,6 +74,9 @@ typedef struct {
     int initial_velocity_count;
     PdInitialVelocity *initial_velocities;
     double body_force[3]; /* N/m^3 on every point */
+    uint16_t body_force_expr[3];
+    int expression_count; /* the load expressions the *_expr entries name */
+    Expr *expressions;
 
     PdVolumeCorrection volume_correction;
     PdSurfaceCorrection surface_correction;

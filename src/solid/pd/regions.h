@@ -26,11 +26,20 @@ typedef struct {
     double *velocity;           /* m/s, where given */
     double *displacement;       /* m, where held */
     double *force_density;      /* N/m^3 added on the region's points */
+    /* Loads that vary (PdBoundaryRegion): entry k > 0 of these replaces the
+     * constant by expressions[k - 1] at (t, the point's reference x, y, z);
+     * all 0 when the case has no expression (varies false). */
+    uint16_t *velocity_expr, *displacement_expr, *force_expr;
+    uint16_t body_force_expr[3];
+    int expression_count;
+    Expr *expressions;
+    bool varies;
 } PdBoundaryTable;
 
 /* region[i]: the first of cfg.boundaries whose shapes hold point i, or -1;
  * v: the initial velocities of cfg.initial_velocities (the last that holds
- * the point wins), left as they are elsewhere. */
+ * the point wins; an expression at t = 0 and the point's x), left as they
+ * are elsewhere. */
 void pd_regions_assign(const PdConfig *cfg, int64_t n, const double *const x[3], int16_t *region,
                        double *const v[3]);
 
@@ -46,6 +55,7 @@ typedef struct {
     int64_t n;
     double density;           /* kg/m^3 */
     const double *body_force; /* 3 components, N/m^3 on every point */
+    const double *x[3];       /* reference positions: where load expressions are evaluated */
     double *u[3], *v[3];
     const double *force[3], *external[3];
     const int16_t *region;
@@ -61,15 +71,18 @@ typedef struct {
 } PdMotion;
 
 /* v += (force + external + body force + region force density) / rho * h,
- * then the regions' prescribed velocities (a held displacement: v = 0). */
-void pd_kick(const PdMotion *m, double h);
-/* u += v h, then the regions' held displacements (into the mirror too,
- * if any). Returns true if any
+ * the loads at time t_load (that of `force`), then the regions' prescribed
+ * velocities at t_end, the time the kick brings v to (a held displacement:
+ * v = 0, or for one that varies its rate (g(t_end + h) - g(t_end - h)) /
+ * 2 h). */
+void pd_kick(const PdMotion *m, double h, double t_load, double t_end);
+/* u += v h, then the regions' held displacements at t_end (into the mirror
+ * too, if any). Returns true if any
  * displacement is not finite (the NaN check rides on this pass, which reads
  * and writes u anyway: a NaN in v reaches u in the same step). */
-bool pd_drift(const PdMotion *m, double h);
+bool pd_drift(const PdMotion *m, double h, double t_end);
 /* pd_kick then pd_drift, by h both, in one pass over the points (the
  * Euler-Cromer step: the same bits, half the reads). */
-bool pd_kick_drift(const PdMotion *m, double h);
+bool pd_kick_drift(const PdMotion *m, double h, double t_load, double t_end);
 
 #endif

@@ -64,7 +64,7 @@ static void test_functions(void **state) {
     assert_true(value_of("max(x, y)") == 2.0);
     assert_true(value_of("step(0)") == 1.0 && value_of("step(-1e-300)") == 0.0);
     assert_true(value_of("min(max(t/1e-1, 0), 1) * 5") == 5.0); /* a clipped ramp */
-    assert_true(isnan(value_of("sqrt(y)")));                     /* NaN propagates */
+    assert_true(isnan(value_of("sqrt(y)")));                    /* NaN propagates */
 }
 
 static void test_logic(void **state) {
