@@ -244,11 +244,37 @@ static int read_body(CfgNode *s, PdConfig *cfg) {
     return NSPD_OK;
 }
 
+/* solid.contact (solid/pd/contact.h); absent: off, and nothing written
+ * into the resolved case */
+static int read_contact(CfgNode *s, PdConfig *cfg) {
+    CfgNode *c;
+    TRY(cfg_opt_map(s, "contact", &c));
+    PdContactConfig *k = &cfg->contact;
+    *k = (PdContactConfig){0};
+    if (!c) return NSPD_OK;
+    TRY(cfg_opt_bool(c, "enabled", true, &k->enabled));
+    TRY(cfg_opt_double(c, "distance", 1.35, &k->distance));
+    TRY(cfg_check_range(c, "distance", k->distance, 0.1, 3.0,
+                        "the contact distance in lattice spacings, in [0.1, 3]"));
+    TRY(cfg_opt_double(c, "compression", 0.9, &k->compression));
+    TRY(cfg_check_range(c, "compression", k->compression, 0.0, 1.0,
+                        "the fraction of a near pair's reference distance where contact starts, "
+                        "in [0, 1]"));
+    TRY(cfg_opt_double(c, "stiffness", 15.0, &k->stiffness));
+    TRY(cfg_check_positive(c, "stiffness", k->stiffness,
+                           "the contact stiffness as a multiple of the micromodulus c"));
+    TRY(cfg_opt_double(c, "skin", 0.5, &k->skin));
+    TRY(cfg_check_range(c, "skin", k->skin, 0.05, 5.0,
+                        "the candidate lists' margin in lattice spacings, in [0.05, 5]"));
+    return cfg_end_map(c);
+}
+
 static int read_bond(CfgNode *s, PdConfig *cfg) {
     TRY(read_lattice(s, cfg, 3.015));
     TRY(read_material(s, cfg));
     TRY(read_body(s, cfg));
     TRY(read_failure(s, cfg));
+    TRY(read_contact(s, cfg));
     int v, srf, integ;
     TRY(cfg_opt_enum(s, "volume_correction", PD_VOLUME_NAMES, PD_VOLUME_LINEAR, &v));
     TRY(cfg_opt_enum(s, "surface_correction", PD_SURFACE_NAMES, PD_SURFACE_ENERGY, &srf));

@@ -167,6 +167,11 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     } else {
         assign_coefficients(body, NULL);
     }
+    if (cfg->contact.enabled) {
+        body->has_contact = true;
+        TRY(pd_contact_create(&body->contact, &cfg->contact, body->dim, body->n, body->spacing,
+                              body->horizon, body->micromodulus));
+    }
     return NSPD_OK;
 }
 
@@ -183,6 +188,10 @@ int bond_body_create(BondBody *body, PdConfig *cfg) {
 }
 
 int bond_body_create_divided(BondBody *body, PdConfig *cfg, const NspdComm *comm) {
+    if (cfg->contact.enabled && comm_distributed(comm))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "solid.contact: contact runs on one process (a fragment's candidates "
+                         "may leave a process's halo); expected one process, or no contact");
     int status = build(body, cfg, comm);
     if (status == NSPD_OK) status = bond_body_divide(body, comm);
     if (status == NSPD_OK) status = create_view(body);
@@ -218,6 +227,7 @@ void bond_body_destroy(BondBody *body) {
     nspd_free(&body->bond_nbr);
     nspd_free(&body->bond_coef);
     bond_stencil_free(&body->stencil);
+    pd_contact_free(&body->contact);
     pd_config_free(&body->cfg);
     bond_halo_free(&body->halo);
     memset(body, 0, sizeof *body);

@@ -34,6 +34,7 @@
 #include "core/balance.h"
 #include "core/comm.h"
 #include "solid/pd/config.h"
+#include "solid/pd/contact.h"
 #include "solid/pd/regions.h"
 
 #include <stdint.h>
@@ -68,6 +69,11 @@ typedef struct {
     double horizon;              /* delta, m */
     double spacing;              /* dx, m */
     double *initial_bond_volume; /* sum_j nu_ij V_j over all initial bonds (damage denominator) */
+
+    /* Contact between points (cfg.contact.enabled): added to force by
+     * pd_force_compute (contact.h). One process only. */
+    bool has_contact;
+    PdContact contact;
 
     int64_t step;
     double time;

@@ -21,6 +21,8 @@
  * runs is the same arithmetic on the body's lattice view (stencil.h),
  * eight points at a time, below. */
 #include "solid/bond/force.h"
+
+#include "core/status.h"
 #include "core/balance.h"
 #include "core/parallel.h"
 #include "solid/bond/force_kernel.h"
@@ -194,7 +196,7 @@ static void force_plain(BondBody *b, int64_t lo, int64_t hi, double scale, doubl
                            b->force[1], b->force[2]);
 }
 
-void pd_force_compute(BondBody *body) {
+int pd_force_compute(BondBody *body) {
     const double scale = body->coef_scale, limit2 = body->stretch_limit2;
     BondStencil *s = body->stencil;
     if (s) {
@@ -220,4 +222,8 @@ void pd_force_compute(BondBody *body) {
         balance_end(&body->force_balance, started);
     }
     balance_update(&body->force_balance);
+    if (body->has_contact)
+        return pd_contact_add(&body->contact, (const double *const *)body->x,
+                              (const double *const *)body->u, body->volume, body->force);
+    return NSPD_OK;
 }

@@ -37,7 +37,9 @@ void pd_force_kernel_stencil(int dim, int64_t lo, int64_t hi, const int64_t *res
                              double *const force[3]);
 
 /* Operator: the force of the whole body into body->force (OpenMP over
- * points, static schedule; bitwise the same at any thread count). */
-void pd_force_compute(BondBody *body);
+ * points, static schedule; bitwise the same at any thread count), the
+ * contact force added where the body has contact (solid/pd/contact.h).
+ * NSPD_ERR_NOMEM if contact's candidate lists cannot be rebuilt. */
+int pd_force_compute(BondBody *body);
 
 #endif

@@ -70,16 +70,16 @@ int pd_step(BondBody *body, double dt) {
     bool bad;
     const PdMotion m = motion_of(body);
     if (body->cfg.integrator == PD_VELOCITY_VERLET) {
-        if (!body->force_valid) pd_force_compute(body);
+        if (!body->force_valid) TRY(pd_force_compute(body));
         const double t = body->time;
         pd_kick(&m, 0.5 * dt, t, t + 0.5 * dt);
         bad = pd_drift(&m, dt, t + dt);
         exchange_and_mark(body);
-        pd_force_compute(body);
+        TRY(pd_force_compute(body));
         pd_kick(&m, 0.5 * dt, t + dt, t + dt);
         body->force_valid = true;
     } else {
-        pd_force_compute(body);
+        TRY(pd_force_compute(body));
         bad = pd_kick_drift(&m, dt, body->time, body->time + dt);
         exchange_and_mark(body);
         body->force_valid = false;

@@ -195,7 +195,17 @@ static void bond_history(const void *impl, Report *row) {
     double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
     report_real(row, "kinetic_energy_J", ke);
     report_real(row, "elastic_energy_J", we);
-    report_real(row, "total_energy_J", ke + we);
+    if (b->has_contact) { /* the columns only where there is contact: other cases' unchanged */
+        const double wc = pd_contact_energy(&b->contact, (const double *const *)b->x,
+                                            (const double *const *)b->u, b->volume);
+        report_real(row, "contact_energy_J", wc);
+        report_real(row, "total_energy_J", ke + we + wc);
+        report_real(row, "contact_min_distance_m",
+                    pd_contact_min_distance(&b->contact, (const double *const *)b->x,
+                                            (const double *const *)b->u, b->horizon));
+    } else {
+        report_real(row, "total_energy_J", ke + we);
+    }
     report_int(row, "broken_bonds", pd_broken_bonds(b));
 }
 
@@ -219,6 +229,7 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "max_damage", max_damage);
     report_real(out, "kinetic_energy_J", pd_kinetic_energy(b));
     report_real(out, "elastic_energy_J", pd_elastic_energy(b));
+    if (b->has_contact) report_int(out, "contact_list_builds", b->contact.builds);
     report_real(out, "bond_updates_per_s",
                 run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);
     /* several processes: this one's wall time in the ghosts' exchanges

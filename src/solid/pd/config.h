@@ -6,6 +6,7 @@
 
 #include "core/expr.h"
 #include "core/shape.h"
+#include "solid/pd/contact.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -81,6 +82,7 @@ typedef struct {
     PdVolumeCorrection volume_correction;
     PdSurfaceCorrection surface_correction;
     PdIntegrator integrator;
+    PdContactConfig contact; /* short-range contact (contact.h), bond-based */
 } PdConfig;
 
 /* Poisson's ratio that bond-based PD implies for the model (1/3 or 1/4). */
