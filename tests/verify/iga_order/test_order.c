@@ -176,7 +176,8 @@ static void test_limited_order(void **state) {
     (void)state;
     double e[2][4];
     for (int m = 0; m < 4; m++) {
-        IgaConfig c = periodic_box(1.0, 3.0 / (16 << m), 16 << m, 3, wave, NULL, 0.0, 0.3);
+        /* 5 elements across: the limiter's periodic stencil needs 2 p + 1 */
+        IgaConfig c = periodic_box(1.0, 5.0 / (16 << m), 16 << m, 5, wave, NULL, 0.0, 0.3);
         c.limiter = IGA_LIMITER_CONVEX;
         e[0][m] = l2_rho_error(run_to(&c, 1.0), &GAUSS5, wave_rho, NULL);
         FlowVortex v0 = vortex_fixture_at(5.0, 0.0), v1 = vortex_fixture_at(5.0, VORTEX_T);
@@ -184,11 +185,26 @@ static void test_limited_order(void **state) {
         cv.limiter = IGA_LIMITER_CONVEX;
         e[1][m] = l2_rho_error(run_to(&cv, VORTEX_T), &GAUSS4, vortex_rho, &v1);
     }
-    for (int k = 0; k < 2; k++)
+    double o[2][3];
+    for (int k = 0; k < 2; k++) {
+        for (int m = 0; m < 3; m++) o[k][m] = log2(e[k][m] / e[k][m + 1]);
         print_message("iga limited %s, Courant 0.3: L2(rho) %.3e %.3e %.3e %.3e (16..128), orders "
                       "%.2f %.2f %.2f\n",
                       k == 0 ? "entropy wave" : "vortex", e[k][0], e[k][1], e[k][2], e[k][3],
-                      log2(e[k][0] / e[k][1]), log2(e[k][1] / e[k][2]), log2(e[k][2] / e[k][3]));
+                      o[k][0], o[k][1], o[k][2]);
+    }
+    /* Measured (2026-12-07): the wave 1.25e-2, 2.53e-4, 5.99e-5, 1.49e-5,
+     * orders 5.63 2.08 2.01 - the Galerkin step's own 2 at Courant 0.3 (its
+     * time error, T8 above: 7.43e-5 / 1.70e-5 at 32 / 64), 3.5 times its
+     * error: on 16 elements the bounds clip the wave's extrema, from 32 on
+     * they relax. The vortex 1.89e-2, 7.93e-3, 2.88e-3, 9.89e-4, orders
+     * 1.26 1.46 1.54: the bounds still clip the vortex's smooth density
+     * minimum on 128 x 128 (the known price of local bounds at a smooth
+     * extremum, docs/IGA_LIMITER.md), the order rising with the mesh. The
+     * bounds: the wave's last two orders >= 1.9, the vortex's last >= 1.4
+     * and rising (0.1 below each measured value). */
+    assert_true(o[0][1] >= 1.9 && o[0][2] >= 1.9);
+    assert_true(o[1][2] >= 1.4 && o[1][2] > o[1][0]);
 }
 
 int main(void) {
