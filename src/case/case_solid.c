@@ -403,6 +403,7 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
     TRY(read_body(s, pd));
     TRY(read_cpd_failure(s, cfg));
     TRY(read_cpd_pressures(s, cfg));
+    TRY(read_contact(s, pd));
     CfgNode *c;
     TRY(cfg_opt_map(s, "correspondence", &c));
     int force = CPD_FORCE_BOND_ASSOCIATED, family = CPD_FAMILY_SQUARE;

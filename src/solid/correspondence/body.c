@@ -285,6 +285,16 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
     cpd_settle_weights(b);
     pressure_directions(b);
     b->stable_dt = b->stable_now = cpd_stable_dt(b, CPD_COLD_ITERATIONS, false);
+    if (pd->contact.enabled) {
+        if (comm)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "solid.contact: contact runs on one process (a fragment's "
+                             "candidates may leave a process's halo); expected one process, or "
+                             "no contact");
+        b->has_contact = true;
+        TRY(pd_contact_create(&b->contact, &pd->contact, b->dim, b->n, pd->spacing, b->delta,
+                              pd_micromodulus(pd)));
+    }
     return NSPD_OK;
 }
 
@@ -316,6 +326,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->region);
     nspd_free(&b->load);
     pd_boundary_table_free(&b->boundary);
+    pd_contact_free(&b->contact);
     nspd_free(&b->first);
     nspd_free(&b->nbr);
     nspd_free(&b->reverse);

@@ -42,6 +42,7 @@
 #include "solid/correspondence/bac_force.h"
 #include "solid/correspondence/config.h"
 #include "solid/correspondence/j2_kernel.h"
+#include "solid/pd/contact.h"
 #include "solid/pd/regions.h"
 
 #include <stdbool.h>
@@ -117,6 +118,11 @@ typedef struct {
      * the force's exchanged per-point values; no bonds), and the halo */
     int64_t ghosts;
     struct CpdHalo *halo;
+    /* Contact between points (cfg.pd.contact.enabled; solid/pd/contact.h),
+     * added by cpd_force; one process only. Its stiffness is that of the
+     * bond-based micromodulus of the same E (a scale, not a bond). */
+    bool has_contact;
+    PdContact contact;
 } CpdBody;
 
 /* Builds the body (taking ownership of *cfg, zeroing it): lattice points,
@@ -148,8 +154,10 @@ enum { CPD_REESTIMATE_STEPS = 20, CPD_COLD_ITERATIONS = 30 };
 #define CPD_DAMAGED_SAFETY 0.8
 int cpd_step(CpdBody *b, double dt);
 /* The force density at the current u into b->force, advancing the bond
- * stresses from u_prev and the damage (what cpd_step calls). */
-void cpd_force(CpdBody *b, double t);
+ * stresses from u_prev and the damage (what cpd_step calls); the contact
+ * force added where the body has contact. NSPD_ERR_NOMEM if contact's
+ * candidate lists cannot be rebuilt. */
+int cpd_force(CpdBody *b, double t);
 /* The weights of the points flagged in b->redo recomputed with the damaged
  * kernel (and the bond-associated force's 1 / w0 of every point); a point left without weights is
  * debris and its bonds break from both ends (each end reads both points' flags), which may leave

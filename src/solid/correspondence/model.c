@@ -280,6 +280,14 @@ static void cpd_history(const void *impl, Report *row) {
     double eqps, loss, dmax, partly;
     state_numbers(cs, &eqps, &loss, &dmax, &partly);
     report_real(row, "kinetic_energy_J", kinetic_energy(b));
+    if (b->has_contact) { /* the columns only where there is contact: other cases' unchanged */
+        report_real(row, "contact_energy_J",
+                    pd_contact_energy(&b->contact, (const double *const *)b->x,
+                                      (const double *const *)b->u, b->volume));
+        report_real(row, "contact_min_distance_m",
+                    pd_contact_min_distance(&b->contact, (const double *const *)b->x,
+                                            (const double *const *)b->u, b->delta));
+    }
     report_int(row, "broken_bonds", broken_pairs(b));
     report_real(row, "max_plastic_strain", eqps);
     report_real(row, "max_damage", dmax);

@@ -308,7 +308,7 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
     }
 }
 
-void cpd_force(CpdBody *b, double t) {
+int cpd_force(CpdBody *b, double t) {
     body_force(b, true, (const double *const *)b->u, b->force);
     const CpdConfig *c = &b->cfg;
     if (c->pressure_count > 0) {
@@ -339,10 +339,14 @@ void cpd_force(CpdBody *b, double t) {
                 for (int a = 0; a < b->dim; a++) b->force[a][i] += pr * b->load_dir[a][i];
             }
     }
+    if (b->has_contact)
+        TRY(pd_contact_add(&b->contact, (const double *const *)b->x, (const double *const *)b->u,
+                           b->volume, b->force));
     if (c->damage != CPD_DAMAGE_NONE && update_damage(b) > 0) {
         b->damage_grew = true;
         b->Fb_now = false; /* the weights changed */
     }
+    return NSPD_OK;
 }
 
 static PdMotion motion_of(CpdBody *b) {
@@ -377,14 +381,14 @@ static int substep(CpdBody *b, double dt) {
     const PdMotion m = motion_of(b);
     if (!b->force_valid) {
         remember_u(b); /* no increment: the stresses stay */
-        cpd_force(b, b->time);
+        TRY(cpd_force(b, b->time));
     }
     const double t = b->time;
     pd_kick(&m, 0.5 * dt, t, t + 0.5 * dt);
     remember_u(b);
     const bool bad = cpd_halo_sum(b, pd_drift(&m, dt, t + dt)) > 0; /* all ranks fail together */
     cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
-    cpd_force(b, t + dt);
+    TRY(cpd_force(b, t + dt));
     pd_kick(&m, 0.5 * dt, t + dt, t + dt);
     b->force_valid = true;
     if (bad)
