@@ -184,6 +184,21 @@ static int read_output(CfgNode *root, SimConfig *cfg, int dim, bool has_solid) {
     TRY(cfg_check_range(o, "png_max_pixels", (double)pixels, 16, 8192,
                         "the longest PNG side in pixels, 16 to 8192"));
     out->png_max_pixels = (int)pixels;
+    /* no default is written into case.yaml: without the key the scale
+     * comes from the data, which a number there would not repeat */
+    out->mach_range_given = cfg_map_find(o, "mach_range") != NULL;
+    if (out->mach_range_given) {
+        TRY(cfg_req_vec(o, "mach_range", 2, out->mach_range));
+        if (!(out->mach_range[0] >= 0.0 && out->mach_range[1] > out->mach_range[0]))
+            return cfg_fail_at(o, "mach_range", "[%g, %g]; expected [lo, hi] with 0 <= lo < hi",
+                               out->mach_range[0], out->mach_range[1]);
+        if (cfg->flow.method != FLOW_METHOD_GKS && cfg->flow.method != FLOW_METHOD_IGA)
+            return cfg_fail_at(o, "mach_range",
+                               "%s draws no Mach picture; expected no mach_range (a "
+                               "compressible flow: flow.method gks or iga)",
+                               cfg->flow.method == FLOW_METHOD_NONE ? "a case without a flow"
+                                                                    : "the PDDO flow");
+    }
     CfgNode *seq;
     TRY(cfg_opt_seq(o, "probes", &seq));
     if (seq) {

@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 
+#include <math.h>
 #include <string.h>
 
 /* The built-in solvers' ops tables, each defined in its own folder
@@ -270,4 +271,11 @@ int flow_checkpoint(Flow *f, Checkpoint *ck) {
 
 void *flow_impl(Flow *f, FlowMethod method) {
     return f && f->method == method ? f->impl : NULL;
+}
+
+double flow_mach_picture_top(double largest) {
+    if (!(largest >= FLOW_MACH_AT_REST) || !isfinite(largest)) return 0.0;
+    const double v = 1.25 * largest, unit = pow(10.0, floor(log10(v)) - 1.0);
+    /* the 1e-12 keeps 1.25 * 2 = 2.5 at 2.5, not one unit above */
+    return ceil(v / unit * (1.0 - 1e-12)) * unit;
 }

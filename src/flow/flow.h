@@ -313,6 +313,19 @@ void flow_brief(const Flow *f, char *buf, size_t size);
 int64_t flow_fallbacks_total(const Flow *f);
 void flow_fields(Flow *f, FieldSet *out);
 
+/* The top of a compressible flow's Mach pictures (`mach`, and the
+ * `mach_damage` drawn from it), fixed for the series so the frames of a
+ * movie compare, from the largest Mach number of an output (`largest`:
+ * over the fluid cells, with the free stream's where the flow has one):
+ * 1.25 times it, rounded up to two significant digits (1.7 -> 2.2,
+ * 2 -> 2.5). 0 while the gas is at rest (largest below
+ * FLOW_MACH_AT_REST, or not finite): that frame is drawn 0 to 1 and the
+ * next output's data fixes the scale, so a blast that starts at rest is
+ * not drawn on 0 to 1 throughout. `output.mach_range` replaces it
+ * (sim/sim_output.c). */
+#define FLOW_MACH_AT_REST 1e-2
+double flow_mach_picture_top(double largest);
+
 /* Writes or reads the flow's state (FlowOps.checkpoint): NSPD_ERR_INPUT
  * for a solver that cannot be checkpointed. */
 int flow_checkpoint(Flow *f, Checkpoint *ck);

@@ -63,6 +63,11 @@ typedef struct {
     bool vtk, png;
     bool plots; /* history_<column>.png of every history column at the end (io/history_plot.h) */
     int png_max_pixels; /* longest side of a PNG */
+    /* output.mach_range: the Mach pictures' colour scale [lo, hi] for the
+     * whole series, when given; else each flow fixes it from its data
+     * (flow_mach_picture_top) */
+    bool mach_range_given;
+    double mach_range[2];
     int probe_count;
     ProbeConfig *probes;
 } OutputConfig;

@@ -80,6 +80,12 @@ int sim_output_fields(Sim *sim) {
     }
     if (sim->flow) {
         flow_fields(sim->flow, &flow_set);
+        if (out->mach_range_given) /* output.mach_range: the flow's own scale replaced */
+            for (int k = 0; k < flow_set.picture_count; k++)
+                if (strcmp(flow_set.picture[k].file, "mach") == 0) {
+                    flow_set.picture[k].lo = out->mach_range[0];
+                    flow_set.picture[k].hi = out->mach_range[1];
+                }
         /* the solid drawn over the flow where the two are coupled */
         if (status == NSPD_OK)
             status = write_set(sim, &flow_set, sim->coupling ? overlay : NULL, &opt, &sim->pvd[1]);

@@ -31,7 +31,7 @@ typedef struct {
     GksSolver *solver;
     double last_dt;        /* s, of the last step; 0 before the first */
     char process_grid[32]; /* "PXxPY" for the summary (it borrows the text) */
-    double mach_scale;     /* the top of the Mach pictures' colour bar, fixed at the first */
+    double mach_scale;     /* the Mach pictures' top (flow_mach_picture_top); 0 until fixed */
     double *cells[GKS_SCRATCH];
     double *kind;   /* cell kinds as a field */
     uint8_t *blank; /* 1: not a fluid cell */
@@ -642,20 +642,15 @@ static void schlieren(const Grid *g, const double *rho, const uint8_t *solid, do
         out[c] = gmax > 0.0 ? exp(-15.0 * out[c] / gmax) : 1.0;
 }
 
-/* The Mach pictures' scale, fixed for the whole series so the frames of a
- * movie compare: 1.25 times the larger of the reference Mach number (the
- * free stream) and the largest one of the first output, rounded up to two
- * significant digits (1.7 -> 2.2); 1 for a gas at rest. Faster gas later
- * shows in the top colour. */
-static double mach_scale(const GksFlow *gf, int64_t ncell) {
+/* The largest Mach number of this output, over the fluid cells and the
+ * reference state (the free stream): what flow_mach_picture_top scales. */
+static double mach_largest(const GksFlow *gf, int64_t ncell) {
     double top = 0.0;
     for (int64_t c = 0; c < ncell; c++)
         if (!gf->blank[c] && gf->cells[5][c] > top) top = gf->cells[5][c];
     const FlowReference r = gks_reference(gf);
     if (r.rho > 0 && r.p > 0) top = fmax(top, hypot(r.u, r.v) / sqrt(r.gamma * r.p / r.rho));
-    if (!(top > 0) || !isfinite(top)) return 1.0;
-    const double v = 1.25 * top, unit = pow(10.0, floor(log10(v)) - 1.0);
-    return ceil(v / unit * (1.0 - 1e-12)) * unit;
+    return top;
 }
 
 /* This block's piece of the .pvtr (several processes): its own cells'
@@ -715,7 +710,7 @@ static void gks_fields(void *impl, FieldSet *out) {
         primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
     }
     if (!gf->blank) return; /* not the writer: its piece only */
-    if (gf->mach_scale == 0.0) gf->mach_scale = mach_scale(gf, ncell);
+    if (gf->mach_scale == 0.0) gf->mach_scale = flow_mach_picture_top(mach_largest(gf, ncell));
     schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
     out->nx = g->nx;
     out->ny = g->ny;
@@ -730,12 +725,14 @@ static void gks_fields(void *impl, FieldSet *out) {
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0] && !pieces; k++)
         out->field[out->field_count++] = fields[k];
+    /* 0 to 1 while the scale is open (a gas at rest) */
+    const double mach_hi = gf->mach_scale > 0.0 ? gf->mach_scale : 1.0;
     out->picture[out->picture_count++] = (PictureRef){.file = "mach",
                                                       .label = "Mach number",
                                                       .units = "-",
                                                       .values = c[5],
                                                       .lo = 0.0,
-                                                      .hi = gf->mach_scale,
+                                                      .hi = mach_hi,
                                                       .map = COLORMAP_VIRIDIS,
                                                       .overlay_file = "mach_damage"};
     out->picture[out->picture_count++] = (PictureRef){.file = "schlieren",

@@ -22,7 +22,7 @@ typedef struct {
     double *corner[OUT_FIELDS]; /* the same at the element corners */
     double *kind;               /* 0 everywhere: all fluid */
     uint8_t *blank;
-    double mach_scale;
+    double mach_scale; /* the Mach pictures' top (flow_mach_picture_top); 0 until fixed */
     int64_t probe_count;
     double *probe_xy; /* point probes: (x, y) each, the field read there */
 } IgaFlow;
@@ -388,8 +388,7 @@ static void iga_fields(void *impl, FieldSet *out) {
             state_at(f, f->face[0][i], f->face[1][j], s);
             output_state(c, s, f->corner, i + (int64_t)(nx + 1) * j);
         }
-    if (f->mach_scale == 0.0) /* fixed for the series, as the GKS flow's */
-        f->mach_scale = top > 0.0 && isfinite(top) ? ceil(12.5 * top) / 10.0 : 1.0;
+    if (f->mach_scale == 0.0) f->mach_scale = flow_mach_picture_top(top);
     memset(out, 0, sizeof *out);
     out->series = "flow";
     out->mesh = MESH_GRID;
@@ -412,12 +411,14 @@ static void iga_fields(void *impl, FieldSet *out) {
     };
     for (size_t k = 0; k < sizeof corner / sizeof corner[0]; k++)
         out->point_field[out->point_field_count++] = corner[k];
+    /* 0 to 1 while the scale is open (a gas at rest) */
+    const double mach_hi = f->mach_scale > 0.0 ? f->mach_scale : 1.0;
     out->picture[out->picture_count++] = (PictureRef){.file = "mach",
                                                       .label = "Mach number",
                                                       .units = "-",
                                                       .values = o[5],
                                                       .lo = 0.0,
-                                                      .hi = f->mach_scale,
+                                                      .hi = mach_hi,
                                                       .map = COLORMAP_VIRIDIS,
                                                       .overlay_file = "mach_damage"};
 }

@@ -3,7 +3,8 @@
  * round-off, the same interpolation as flow.initial.from), totals, the
  * mesh, the checked accessor, and the refusal of an unknown method; over
  * the PDDO flow: a node mesh, the refusals of what it cannot do, its
- * fields and tables, totals by the trapezoidal rule, and `finished`. */
+ * fields and tables, totals by the trapezoidal rule, and `finished`; the
+ * Mach pictures' scale from the data (flow_mach_picture_top). */
 #include "test_support.h"
 
 #include "core/mem.h"
@@ -224,9 +225,36 @@ static void test_pddo_behind_the_interface(void **state) {
     flow_destroy(&f);
 }
 
+/* 1.25 times the largest Mach number, up to two significant digits; a
+ * gas at rest leaves the scale open (0). The values are exact decimal
+ * ones, so each is compared within a few ulps of its rounding unit. */
+static void test_mach_picture_top(void **state) {
+    (void)state;
+    static const double cases[][2] = {
+        {1.7, 2.2},   /* 2.125 up */
+        {2.0, 2.5},   /* exactly 2.5: not one unit above */
+        {0.3, 0.38},  /* 0.375 up */
+        {8.0, 10.0},  /* 10 */
+        {0.8, 1.0},   /* exactly 1 */
+        {3.31, 4.2},  /* 4.1375 up */
+        {0.01, 0.013} /* at the threshold: fixed */
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const double got = flow_mach_picture_top(cases[k][0]);
+        if (!(fabs(got - cases[k][1]) <= 1e-12 * cases[k][1]))
+            fail_msg("Mach %g: top %.17g, expected %g", cases[k][0], got, cases[k][1]);
+    }
+    /* at rest, below the threshold, or no number: not fixed yet */
+    assert_true(flow_mach_picture_top(0.0) == 0.0);
+    assert_true(flow_mach_picture_top(0.5 * FLOW_MACH_AT_REST) == 0.0);
+    assert_true(flow_mach_picture_top(NAN) == 0.0);
+    assert_true(flow_mach_picture_top(INFINITY) == 0.0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sample_is_exact_for_linear_fields),
+        cmocka_unit_test(test_mach_picture_top),
         cmocka_unit_test(test_sources_push_the_gas),
         cmocka_unit_test(test_unknown_method_is_refused),
         cmocka_unit_test(test_pddo_behind_the_interface),
