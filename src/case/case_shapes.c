@@ -1,8 +1,11 @@
 #include "case/case_shapes.h"
 
 #include "core/mem.h"
+#include "core/shape_mesh.h"
 #include "core/status.h"
 #include "io/cfg_read.h"
+#include "io/in_file.h"
+#include "io/stl_read.h"
 
 #include <math.h>
 #include <string.h>
@@ -40,6 +43,44 @@ static int read_polygon(CfgNode *item, Shape *s) {
     return NSPD_OK;
 }
 
+/* {shape: stl, file: F, scale: s, translate: [..], section_z: z}: the
+ * closed surface of F, x -> s x + translate, m; in 2D its section by the
+ * plane z = section_z (after the transform). */
+static int read_stl(CfgNode *item, int dim, Shape *s) {
+    const char *file;
+    TRY(cfg_req_string(item, "file", &file));
+    char path[4096];
+    cfg_resolve_path(cfg_map_find(item, "file"), file, path, sizeof path);
+    double scale, zero[3] = {0, 0, 0}, shift[3];
+    TRY(cfg_opt_double(item, "scale", 1.0, &scale));
+    TRY(cfg_check_positive(item, "scale", scale, "the factor from the file's units to m"));
+    TRY(cfg_opt_vec(item, "translate", 3, zero, shift));
+    if (dim == 2) {
+        s->section = true;
+        TRY(cfg_opt_double(item, "section_z", 0.0, &s->section_z));
+    }
+    double *tri;
+    int64_t n;
+    StlReadError err;
+    const int st = stl_read_file(path, &tri, &n, &err);
+    if (st == NSPD_ERR_IO)
+        return cfg_fail_at(item, "file", "cannot read '%s' (%s); expected an STL file", path,
+                           in_file_error(err.os_error));
+    if (st == NSPD_ERR_INPUT) {
+        if (err.line > 0) return cfg_fail_at(item, "file", "%s:%d: %s", path, err.line, err.text);
+        return cfg_fail_at(item, "file", "%s: byte %lld: %s", path, (long long)err.offset,
+                           err.text);
+    }
+    TRY(st);
+    for (int64_t k = 0; k < 3 * n; k++)
+        for (int d = 0; d < 3; d++) tri[3 * k + d] = scale * tri[3 * k + d] + shift[d];
+    char why[256];
+    const int made = shape_mesh_create(tri, n, &s->mesh, why, sizeof why);
+    nspd_free(&tri);
+    if (made == NSPD_ERR_INPUT) return cfg_fail_at(item, "file", "%s: %s", path, why);
+    return made;
+}
+
 static int read_shape(CfgNode *item, int dim, Shape *s) {
     if (item->kind != CFG_MAP)
         return cfg_fail(item, "not a shape; expected a map such as {shape: rectangle, min: [x, y], "
@@ -49,11 +90,11 @@ static int read_shape(CfgNode *item, int dim, Shape *s) {
     TRY(cfg_opt_enum(item, "op", OPS, 0, &op));
     s->kind = (ShapeKind)kind;
     s->subtract = op == 1;
-    if (shape_is_3d(s->kind) != (dim == 3))
+    if (s->kind != SHAPE_STL && shape_is_3d(s->kind) != (dim == 3))
         return cfg_fail_at(item, "shape", "'%s' is a %dD shape in a %dD case; expected %s",
                            SHAPE_NAMES[kind], shape_is_3d(s->kind) ? 3 : 2, dim,
-                           dim == 3 ? "box, sphere or cylinder"
-                                    : "rectangle, disc, annulus or polygon");
+                           dim == 3 ? "box, sphere, cylinder or stl"
+                                    : "rectangle, disc, annulus, polygon or stl");
     switch (s->kind) {
     case SHAPE_RECTANGLE:
         TRY(read_min_max(item, 2, s));
@@ -87,6 +128,9 @@ static int read_shape(CfgNode *item, int dim, Shape *s) {
         break;
     case SHAPE_POLYGON:
         TRY(read_polygon(item, s));
+        break;
+    case SHAPE_STL:
+        TRY(read_stl(item, dim, s));
         break;
     default:
         break;

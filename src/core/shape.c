@@ -1,11 +1,12 @@
 #include "core/shape.h"
 
 #include "core/mem.h"
+#include "core/shape_mesh.h"
 
 #include <math.h>
 
-const char *const SHAPE_NAMES[SHAPE_KIND_COUNT + 1] = {"rectangle", "disc",   "annulus",  "polygon",
-                                                       "box",       "sphere", "cylinder", NULL};
+const char *const SHAPE_NAMES[SHAPE_KIND_COUNT + 1] = {
+    "rectangle", "disc", "annulus", "polygon", "box", "sphere", "cylinder", "stl", NULL};
 
 bool shape_is_3d(ShapeKind kind) {
     return kind == SHAPE_BOX || kind == SHAPE_SPHERE || kind == SHAPE_CYLINDER;
@@ -51,6 +52,10 @@ bool shape_contains(const Shape *s, const double x[3]) {
         return dx * dx + dy * dy + dz * dz <= s->radius * s->radius;
     case SHAPE_CYLINDER:
         return dx * dx + dy * dy <= s->radius * s->radius && fabs(dz) <= 0.5 * s->length;
+    case SHAPE_STL: {
+        const double p[3] = {x[0], x[1], s->section ? s->section_z : x[2]};
+        return shape_mesh_contains(s->mesh, p);
+    }
     default:
         return false;
     }
@@ -91,6 +96,10 @@ static void shape_bounds(const Shape *s, double lo[3], double hi[3]) {
         lo[2] = s->center[2] - 0.5 * s->length;
         hi[2] = s->center[2] + 0.5 * s->length;
         break;
+    case SHAPE_STL:
+        shape_mesh_bounds(s->mesh, lo, hi);
+        if (s->section) lo[2] = hi[2] = 0.0;
+        break;
     default:
         break;
     }
@@ -120,7 +129,10 @@ double polygon_signed_area(const double *xy, int n) {
 }
 
 void shapeset_free(ShapeSet *set) {
-    for (int i = 0; i < set->count; i++) nspd_free(&set->shapes[i].vertices);
+    for (int i = 0; i < set->count; i++) {
+        nspd_free(&set->shapes[i].vertices);
+        shape_mesh_free(&set->shapes[i].mesh);
+    }
     nspd_free(&set->shapes);
     set->count = 0;
 }

@@ -2,9 +2,10 @@
  * regions (boundary layers, failure zones, initial conditions).
  *
  * 2D shapes: rectangle, disc, annulus, polygon. 3D: box, sphere, cylinder
- * (axis along z). A ShapeSet is evaluated in order: a point is inside if
- * the last shape that contains it was added (not subtracted). Boundaries
- * are closed: a point on an edge is inside. Coordinates in metres. */
+ * (axis along z). Both: stl, a closed triangulated surface (shape_mesh.h;
+ * in 2D its section by the plane z = section_z). A ShapeSet is evaluated in order: a point is
+ * inside if the last shape that contains it was added (not subtracted). Boundaries are closed: a
+ * point on an edge is inside. Coordinates in metres. */
 #ifndef NSPD_CORE_SHAPE_H
 #define NSPD_CORE_SHAPE_H
 
@@ -18,6 +19,7 @@ typedef enum {
     SHAPE_BOX,       /* lo[0..2], hi[0..2] */
     SHAPE_SPHERE,    /* center[0..2], radius */
     SHAPE_CYLINDER,  /* center[0..2] (mid-height), radius, length along z */
+    SHAPE_STL,       /* mesh; 2D: its section at z = section_z */
     SHAPE_KIND_COUNT
 } ShapeKind;
 
@@ -28,7 +30,10 @@ typedef struct {
     double center[3];
     double radius, inner_radius, length;
     int vertex_count;
-    double *vertices; /* owned: 2 * vertex_count doubles */
+    double *vertices;       /* owned: 2 * vertex_count doubles */
+    struct ShapeMesh *mesh; /* owned (SHAPE_STL) */
+    bool section;           /* SHAPE_STL in 2D: the plane z = section_z through it */
+    double section_z;
 } Shape;
 
 typedef struct {
@@ -38,6 +43,7 @@ typedef struct {
 
 extern const char *const SHAPE_NAMES[SHAPE_KIND_COUNT + 1]; /* "rectangle", ..., NULL */
 
+/* Whether the kind is 3D only (stl is both: false). */
 bool shape_is_3d(ShapeKind kind);
 bool shape_contains(const Shape *s, const double x[3]);
 bool shapeset_contains(const ShapeSet *set, const double x[3]);

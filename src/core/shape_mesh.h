@@ -1,0 +1,33 @@
+/* A closed triangulated surface as a shape (issue 61: geometry from STL
+ * files): whether a point lies inside, by the parity of a ray's crossings
+ * along +x, the triangles binned on a grid over (y, z) so that a query
+ * tests the few whose shadow holds the point. A ray through an edge or a
+ * vertex is counted once: the shadows are tested with the top-left rule of
+ * rasterisation (each point of the (y, z) plane belongs to exactly one of
+ * the shadows that meet at an edge from opposite sides, to both or neither
+ * where they fold over it), so the parity is right on any closed surface.
+ * A point on the surface is inside (closed, as every shape). */
+#ifndef NSPD_CORE_SHAPE_MESH_H
+#define NSPD_CORE_SHAPE_MESH_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct ShapeMesh ShapeMesh;
+
+/* Builds the shape of `count` triangles (9 doubles each: three vertices),
+ * copied. Refuses (NSPD_ERR_INPUT, the reason in `why`) a surface that is
+ * not closed - an edge not shared by exactly two triangles, vertices
+ * matched by their exact coordinates - or holds no triangle of non-zero
+ * area. NSPD_ERR_NOMEM. */
+int shape_mesh_create(const double *triangles, int64_t count, ShapeMesh **out, char *why,
+                      size_t why_size);
+void shape_mesh_free(ShapeMesh **m);
+
+bool shape_mesh_contains(const ShapeMesh *m, const double p[3]);
+/* The bounding box of the vertices. */
+void shape_mesh_bounds(const ShapeMesh *m, double lo[3], double hi[3]);
+int64_t shape_mesh_triangles(const ShapeMesh *m);
+
+#endif
