@@ -73,7 +73,7 @@ static int check_closed(const ShapeMesh *m, char *why, size_t why_size) {
                      "the surface is not closed: an edge is shared by %lld triangle%s; expected "
                      "each edge shared by exactly two (a watertight surface)",
                      (long long)n, n == 1 ? "" : "s");
-            status = NSPD_ERR_INPUT;
+            status = NSPD_FAIL(NSPD_ERR_INPUT, "%s", why);
             break;
         }
         k += n;
@@ -139,7 +139,7 @@ int shape_mesh_create(const double *triangles, int64_t count, ShapeMesh **out, c
     if (count < 4) {
         snprintf(why, why_size, "%lld triangles; expected a closed surface (at least 4)",
                  (long long)count);
-        return NSPD_ERR_INPUT;
+        return NSPD_FAIL(NSPD_ERR_INPUT, "%s", why);
     }
     ShapeMesh *m;
     TRY(nspd_alloc(&m, 1, sizeof *m));
@@ -157,7 +157,7 @@ int shape_mesh_create(const double *triangles, int64_t count, ShapeMesh **out, c
             if (!(m->hi[d] > m->lo[d]) || !isfinite(m->hi[d] - m->lo[d])) {
                 snprintf(why, why_size,
                          "the surface is flat or not finite along %c; expected a solid", "xyz"[d]);
-                status = NSPD_ERR_INPUT;
+                status = NSPD_FAIL(NSPD_ERR_INPUT, "%s", why);
             }
     }
     if (status == NSPD_OK) status = check_closed(m, why, why_size);

@@ -22,7 +22,7 @@ static int refuse(StlReadError *err, int line, int64_t offset, const char *fmt, 
     va_start(args, fmt);
     vsnprintf(err->text, sizeof err->text, fmt, args);
     va_end(args);
-    return NSPD_ERR_INPUT;
+    return NSPD_FAIL(NSPD_ERR_INPUT, "%s", err->text); /* err: for the caller's wording */
 }
 
 static uint32_t le32(const unsigned char *b) {
@@ -160,7 +160,7 @@ int stl_read_file(const char *path, double **tri, int64_t *count, StlReadError *
     *tri = NULL;
     *count = 0;
     FILE *f = in_file_open(path, &err->os_error);
-    if (!f) return NSPD_ERR_IO;
+    if (!f) return NSPD_FAIL(NSPD_ERR_IO, "%s: cannot open it", path); /* err: for the caller's */
     unsigned char *data = NULL;
     int64_t size = 0, cap = 0;
     int status = NSPD_OK;
