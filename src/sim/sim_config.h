@@ -85,6 +85,10 @@ typedef struct {
     CouplingConfig coupling; /* kind COUPLING_NONE: nothing couples (a flow's fixed
                                 bodies are a coupling with rigid walls) */
     OutputConfig output;
+    /* nspd info's estimate: how many times the solid's cost per sub-step
+     * may grow over the run once it yields and breaks (the case reader's,
+     * measured: docs/PERFORMANCE.md "nspd info's estimate"); 1: it stays */
+    double solid_cost_growth;
     double max_memory_bytes; /* the estimate's limit (--max-memory); 0: this machine's memory */
     bool check_only;         /* `nspd check`: models validate, skip costly setup; never stepped */
     /* the processes the run shares (size 0 or 1: this one alone): every
