@@ -2,9 +2,11 @@
 #include "case/case_bodies.h"
 
 #include "core/mem.h"
+#include "core/shape_mesh.h"
 #include "core/status.h"
 #include "io/cfg_read.h"
 #include "io/in_file.h"
+#include "io/stl_read.h"
 #include "io/xy_read.h"
 
 #include <errno.h>
@@ -25,6 +27,8 @@ static int read_markers(CfgNode *item, const char *key, int64_t def, int64_t lo,
     return NSPD_OK;
 }
 
+static int check_polygon(CfgNode *item, IbmBodyConfig *b);
+
 static int read_csv(CfgNode *item, IbmBodyConfig *b) {
     const char *file;
     TRY(cfg_req_string(item, "file", &file));
@@ -41,6 +45,14 @@ static int read_csv(CfgNode *item, IbmBodyConfig *b) {
                            b->path, err.line, err.text);
     TRY(st);
     b->vertex_count = n;
+    return check_polygon(item, b);
+}
+
+/* The vertices of a polygon body (from a CSV file or an STL section):
+ * at least 3, around an area, no two consecutive ones equal; then its
+ * max_spacing. */
+static int check_polygon(CfgNode *item, IbmBodyConfig *b) {
+    const int n = b->vertex_count;
     if (n < 3)
         return cfg_fail_at(item, "file", "'%s' has %d vertices; expected at least 3", b->path, n);
     double area = 0.0;
@@ -70,12 +82,63 @@ static int read_csv(CfgNode *item, IbmBodyConfig *b) {
     return NSPD_OK;
 }
 
+/* {shape: stl, file, scale, translate, section_z}: a polygon body, the
+ * section of a closed STL surface by the plane z = section_z (after the
+ * scale and the translation), core/shape_mesh.h */
+static int read_stl_section(CfgNode *item, IbmBodyConfig *b) {
+    const char *file;
+    TRY(cfg_req_string(item, "file", &file));
+    cfg_resolve_path(cfg_map_find(item, "file"), file, b->path, sizeof b->path);
+    double scale, z, zero[3] = {0, 0, 0}, shift[3];
+    TRY(cfg_opt_double(item, "scale", 1.0, &scale));
+    TRY(cfg_check_positive(item, "scale", scale, "the factor from the file's units to m"));
+    TRY(cfg_opt_vec(item, "translate", 3, zero, shift));
+    TRY(cfg_opt_double(item, "section_z", 0.0, &z));
+    double *tri;
+    int64_t n;
+    StlReadError err;
+    const int st = stl_read_file(b->path, &tri, &n, &err);
+    if (st == NSPD_ERR_IO)
+        return cfg_fail_at(item, "file", "cannot read '%s' (%s); expected an STL file", b->path,
+                           in_file_error(err.os_error));
+    if (st == NSPD_ERR_INPUT) {
+        if (err.line > 0)
+            return cfg_fail_at(item, "file", "%s:%d: %s", b->path, err.line, err.text);
+        return cfg_fail_at(item, "file", "%s: byte %lld: %s", b->path, (long long)err.offset,
+                           err.text);
+    }
+    TRY(st);
+    for (int64_t k = 0; k < 3 * n; k++)
+        for (int d = 0; d < 3; d++) tri[3 * k + d] = scale * tri[3 * k + d] + shift[d];
+    ShapeMesh *m;
+    char why[256];
+    int made = shape_mesh_create(tri, n, &m, why, sizeof why);
+    nspd_free(&tri);
+    if (made == NSPD_OK) {
+        made = shape_mesh_section(m, z, &b->vertices, &b->vertex_count, why, sizeof why);
+        shape_mesh_free(&m);
+    }
+    if (made == NSPD_ERR_INPUT) return cfg_fail_at(item, "file", "%s: %s", b->path, why);
+    TRY(made);
+    return check_polygon(item, b);
+}
+
 static int read_body(CfgNode *item, int index, IbmBodyConfig *b) {
     if (item->kind != CFG_MAP)
         return cfg_fail(item, "not a body; expected a map such as {shape: circle, center: [x, y], "
                               "radius: r}");
-    int kind;
-    TRY(cfg_req_enum(item, "shape", IBM_BODY_NAMES, &kind));
+    /* shape: stl is a polygon body from a surface's section (the model
+     * sees a polygon) */
+    const CfgNode *shape = cfg_map_find(item, "shape");
+    const bool stl =
+        shape && shape->kind == CFG_SCALAR && shape->text && strcmp(shape->text, "stl") == 0;
+    int kind = IBM_BODY_POLYGON;
+    if (stl) {
+        const char *ignored;
+        TRY(cfg_req_string(item, "shape", &ignored));
+    } else {
+        TRY(cfg_req_enum(item, "shape", IBM_BODY_NAMES, &kind));
+    }
     b->kind = (IbmBodyKind)kind;
     char def[IBM_NAME_MAX];
     snprintf(def, sizeof def, "body%d", index);
@@ -136,7 +199,7 @@ static int read_body(CfgNode *item, int index, IbmBodyConfig *b) {
                          &b->markers_per_side));
         break;
     case IBM_BODY_POLYGON:
-        TRY(read_csv(item, b));
+        TRY(stl ? read_stl_section(item, b) : read_csv(item, b));
         break;
     default:
         break;

@@ -238,3 +238,122 @@ void shape_mesh_bounds(const ShapeMesh *m, double lo[3], double hi[3]) {
 int64_t shape_mesh_triangles(const ShapeMesh *m) {
     return m->count;
 }
+
+/* ---- the section by a plane z = const ---- */
+
+/* Where the edge a-b crosses z (its ends in one order, whichever triangle
+ * asks, so both triangles of the edge get the same bits). */
+static void crossing(const double *a, const double *b, double z, double out[2]) {
+    if (a[0] > b[0] || (a[0] == b[0] && (a[1] > b[1] || (a[1] == b[1] && a[2] > b[2])))) {
+        const double *t = a;
+        a = b, b = t;
+    }
+    const double w = (z - a[2]) / (b[2] - a[2]);
+    out[0] = a[0] + w * (b[0] - a[0]);
+    out[1] = a[1] + w * (b[1] - a[1]);
+}
+
+typedef struct {
+    double p[2], q[2]; /* from p to q */
+    int used;
+} Segment;
+
+static bool same_point(const double a[2], const double b[2]) {
+    return a[0] == b[0] && a[1] == b[1];
+}
+
+static int by_start(const void *x, const void *y) {
+    const double *a = ((const Segment *)x)->p, *b = ((const Segment *)y)->p;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    if (a[1] != b[1]) return a[1] < b[1] ? -1 : 1;
+    return 0;
+}
+
+int shape_mesh_section(const ShapeMesh *m, double z, double **xy, int *count, char *why,
+                       size_t why_size) {
+    *xy = NULL;
+    *count = 0;
+    Segment *seg;
+    TRY(nspd_alloc(&seg, (size_t)m->count, sizeof *seg));
+    int64_t n = 0;
+    for (int64_t t = 0; t < m->count; t++) {
+        const double *v[3] = {m->tri + 9 * t, m->tri + 9 * t + 3, m->tri + 9 * t + 6};
+        int above = 0;
+        for (int k = 0; k < 3; k++) above += v[k][2] >= z;
+        if (above == 0 || above == 3) continue;
+        /* the lone vertex (the one on its own side) and the two edges from it */
+        int lone = 0;
+        for (int k = 0; k < 3; k++)
+            if ((v[k][2] >= z) == (above == 1)) lone = k;
+        const double *o = v[lone], *a = v[(lone + 1) % 3], *b = v[(lone + 2) % 3];
+        Segment s = {{0, 0}, {0, 0}, 0};
+        crossing(o, a, z, s.p);
+        crossing(o, b, z, s.q);
+        /* every segment the same way round: turned so that the triangle's
+         * normal n = (a - o) x (b - o) (outward, the STL convention) points
+         * to its right, so that chaining by start points follows the loop
+         * (counter-clockwise); a triangle wound against its neighbours
+         * breaks the chain and is reported */
+        const double ax = a[0] - o[0], ay = a[1] - o[1], az = a[2] - o[2];
+        const double bx = b[0] - o[0], by = b[1] - o[1], bz = b[2] - o[2];
+        const double nx = ay * bz - az * by, ny = az * bx - ax * bz;
+        const double dx = s.q[0] - s.p[0], dy = s.q[1] - s.p[1];
+        if (nx * dy - ny * dx < 0.0) { /* n to the left of p -> q: turn it */
+            const double t0 = s.p[0], t1 = s.p[1];
+            s.p[0] = s.q[0], s.p[1] = s.q[1], s.q[0] = t0, s.q[1] = t1;
+        }
+        if (!same_point(s.p, s.q)) seg[n++] = s;
+    }
+    int status = NSPD_OK;
+    if (n < 3) {
+        snprintf(why, why_size,
+                 "the plane z = %g cuts the surface in %lld segments; expected a "
+                 "closed section (at least 3)",
+                 z, (long long)n);
+        status = NSPD_FAIL(NSPD_ERR_INPUT, "%s", why);
+    }
+    if (status == NSPD_OK) {
+        qsort(seg, (size_t)n, sizeof *seg, by_start);
+        status = nspd_alloc(xy, (size_t)(2 * n), sizeof(double));
+    }
+    int64_t k = 0, len = 0;
+    while (status == NSPD_OK) {
+        seg[k].used = 1;
+        (*xy)[2 * len] = seg[k].p[0], (*xy)[2 * len + 1] = seg[k].p[1];
+        len++;
+        if (same_point(seg[k].q, seg[0].p)) break; /* the loop closed */
+        /* the segment that starts where this one ends */
+        int64_t lo = 0, hi = n;
+        Segment key = {{seg[k].q[0], seg[k].q[1]}, {0, 0}, 0};
+        while (lo < hi) {
+            const int64_t mid = (lo + hi) / 2;
+            if (by_start(&seg[mid], &key) < 0)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo == n || !same_point(seg[lo].p, key.p) || seg[lo].used) {
+            snprintf(why, why_size,
+                     "the section at z = %g does not close (a segment ends where "
+                     "none starts); expected a watertight, consistently wound surface",
+                     z);
+            status = NSPD_FAIL(NSPD_ERR_INPUT, "%s", why);
+            break;
+        }
+        k = lo;
+    }
+    if (status == NSPD_OK && len != n) {
+        snprintf(why, why_size,
+                 "the plane z = %g cuts the surface in more than one loop (%lld "
+                 "of %lld segments in the first); expected one body's section",
+                 z, (long long)len, (long long)n);
+        status = NSPD_FAIL(NSPD_ERR_INPUT, "%s", why);
+    }
+    nspd_free(&seg);
+    if (status != NSPD_OK) {
+        nspd_free(xy);
+        return status;
+    }
+    *count = (int)len;
+    return NSPD_OK;
+}

@@ -26,6 +26,17 @@ int shape_mesh_create(const double *triangles, int64_t count, ShapeMesh **out, c
 void shape_mesh_free(ShapeMesh **m);
 
 bool shape_mesh_contains(const ShapeMesh *m, const double p[3]);
+/* The section of the surface by the plane z = z as one closed polygon
+ * (the flow's bodies in 2D): *xy its vertices (x0, y0, x1, y1, ..., the
+ * caller frees with nspd_free), *count their number. Each triangle that
+ * the plane cuts gives a segment (a vertex on the plane counts as above
+ * it, so a segment never degenerates and each edge's crossing is computed
+ * once, from its ends in one order); the segments are chained by their
+ * exact end points. NSPD_ERR_INPUT (reason in `why`) if the plane misses
+ * the surface or cuts it in more than one loop. */
+int shape_mesh_section(const ShapeMesh *m, double z, double **xy, int *count, char *why,
+                       size_t why_size);
+
 /* The bounding box of the vertices. */
 void shape_mesh_bounds(const ShapeMesh *m, double lo[3], double hi[3]);
 int64_t shape_mesh_triangles(const ShapeMesh *m);

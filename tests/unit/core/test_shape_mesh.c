@@ -199,6 +199,49 @@ static void test_rays_through_diagonals(void **state) {
     shape_mesh_free(&m);
 }
 
+/* A prism of a regular n-gon (radius r, centre cx, z in [-1, 1]), its
+ * faces fanned from the centre and its sides cut by diagonals, outward;
+ * 4 n triangles appended at tri + 9 * at. */
+static int prism(double *tri, int at, int n, double r, double cx) {
+    for (int k = 0; k < n; k++) {
+        const double a0 = 2 * M_PI * k / n, a1 = 2 * M_PI * ((k + 1) % n) / n;
+        const double p[2] = {cx + r * cos(a0), r * sin(a0)}, q[2] = {cx + r * cos(a1), r * sin(a1)};
+        const double t[4][9] = {{cx, 0, 1, p[0], p[1], 1, q[0], q[1], 1},
+                                {cx, 0, -1, q[0], q[1], -1, p[0], p[1], -1},
+                                {p[0], p[1], -1, q[0], q[1], -1, q[0], q[1], 1},
+                                {p[0], p[1], -1, q[0], q[1], 1, p[0], p[1], 1}};
+        memcpy(tri + 9 * (at + 4 * k), t, sizeof t);
+    }
+    return at + 4 * n;
+}
+
+static void test_section(void **state) {
+    (void)state;
+    double tri[2 * 4 * 32 * 9];
+    const int n = prism(tri, 0, 32, 1.0, 0.0);
+    ShapeMesh *m;
+    char why[256];
+    assert_ok(shape_mesh_create(tri, n, &m, why, sizeof why));
+    double *xy;
+    int count;
+    assert_ok(shape_mesh_section(m, 0.3, &xy, &count, why, sizeof why));
+    const double area = polygon_signed_area(xy, count), exact = 16.0 * sin(2 * M_PI / 32);
+    printf("section of a 32-gon prism: %d vertices, area %.15f (exact %.15f)\n", count, area,
+           exact);
+    /* counter-clockwise, the 32 corners and a point on each side's diagonal */
+    assert_true(count == 64 && fabs(area - exact) < 1e-14 * exact);
+    nspd_free(&xy);
+    assert_int_equal(shape_mesh_section(m, 1.5, &xy, &count, why, sizeof why), NSPD_ERR_INPUT);
+    assert_non_null(strstr(why, "segments"));
+    shape_mesh_free(&m);
+    /* two prisms: two loops, refused (one body each) */
+    const int n2 = prism(tri, n, 32, 1.0, 3.0);
+    assert_ok(shape_mesh_create(tri, n2, &m, why, sizeof why));
+    assert_int_equal(shape_mesh_section(m, 0.0, &xy, &count, why, sizeof why), NSPD_ERR_INPUT);
+    assert_non_null(strstr(why, "more than one loop"));
+    shape_mesh_free(&m);
+}
+
 static void test_refusals(void **state) {
     (void)state;
     double *tri;
@@ -290,6 +333,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_against_winding_number),
         cmocka_unit_test(test_rays_through_diagonals),
+        cmocka_unit_test(test_section),
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_stl_files),
     };
