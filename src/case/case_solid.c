@@ -44,9 +44,9 @@ static int read_elastic(CfgNode *m, PdConfig *cfg) {
     return NSPD_OK;
 }
 
-static int read_material(CfgNode *solid, PdConfig *cfg) {
-    CfgNode *m;
-    TRY(cfg_req_map(solid, "material", &m));
+/* One material's map: density, E, the model's Poisson's ratio and (the
+ * first only: one per body) the critical stretch or fracture energy. */
+static int read_material_map(CfgNode *m, PdConfig *cfg, bool first) {
     TRY(read_elastic(m, cfg));
     double nu_model = pd_model_poisson_ratio(cfg->model), nu;
     TRY(cfg_opt_double(m, "poisson_ratio", nu_model, &nu));
@@ -55,6 +55,16 @@ static int read_material(CfgNode *solid, PdConfig *cfg) {
                            "%g is not possible: bond-based peridynamics fixes Poisson's ratio at "
                            "%.4g for %s; expected %.4g or no key",
                            nu, nu_model, PD_MODEL_NAMES[cfg->model], nu_model);
+    if (!first) {
+        static const char *const BODY_WIDE[] = {"critical_stretch", "fracture_energy"};
+        for (int k = 0; k < 2; k++)
+            if (cfg_map_find(m, BODY_WIDE[k]))
+                return cfg_fail_at(m, BODY_WIDE[k],
+                                   "one critical stretch for the body; expected %s in the first "
+                                   "material only (bonds break only in failure.region)",
+                                   BODY_WIDE[k]);
+        return NSPD_OK;
+    }
     bool has_sc, has_gc;
     TRY(cfg_maybe_double(m, "critical_stretch", &cfg->critical_stretch, &has_sc));
     TRY(cfg_maybe_double(m, "fracture_energy", &cfg->fracture_energy, &has_gc));
@@ -69,7 +79,51 @@ static int read_material(CfgNode *solid, PdConfig *cfg) {
                                "a critical energy release rate G_c in J/m^2"));
         cfg->critical_stretch = pd_critical_stretch_from_energy(cfg, cfg->fracture_energy);
     }
-    TRY(cfg_end_map(m));
+    return NSPD_OK;
+}
+
+/* solid.material: a map, or a list of them with regions (several
+ * materials, PdMaterial; the first's density and E are the body's). */
+static int read_material(CfgNode *solid, PdConfig *cfg) {
+    const CfgNode *node = cfg_map_find(solid, "material");
+    if (!node || node->kind != CFG_SEQ) {
+        CfgNode *m;
+        TRY(cfg_req_map(solid, "material", &m));
+        TRY(read_material_map(m, cfg, true));
+        return cfg_end_map(m);
+    }
+    CfgNode *seq;
+    TRY(cfg_req_seq(solid, "material", &seq));
+    if (seq->count < 1 || seq->count > 255)
+        return cfg_fail(seq, "%d materials; expected 1 to 255", seq->count);
+    TRY(nspd_alloc(&cfg->materials, (size_t)seq->count, sizeof(PdMaterial)));
+    cfg->material_count = seq->count;
+    double first_density = 0.0, first_e = 0.0;
+    for (int i = 0; i < seq->count; i++) {
+        CfgNode *m = seq->child[i];
+        if (m->kind != CFG_MAP)
+            return cfg_fail(m, "not a material; expected a map with region, density and "
+                               "youngs_modulus");
+        PdMaterial *pm = &cfg->materials[i];
+        const char *name;
+        char fallback[32];
+        snprintf(fallback, sizeof fallback, "material%d", i);
+        TRY(cfg_opt_string(m, "name", fallback, &name));
+        snprintf(pm->name, sizeof pm->name, "%s", name);
+        const bool last = i == seq->count - 1;
+        TRY(case_read_shapes(m, "region", cfg->dim, !last, &pm->region));
+        TRY(read_material_map(m, cfg, i == 0));
+        pm->density = cfg->density;
+        pm->youngs_modulus = cfg->youngs_modulus;
+        if (i == 0) first_density = cfg->density, first_e = cfg->youngs_modulus;
+        TRY(cfg_end_map(m));
+    }
+    cfg->density = first_density; /* the body's: the first material's */
+    cfg->youngs_modulus = first_e;
+    int bonded;
+    static const char *const INTERFACES[] = {"separate", "bonded", NULL};
+    TRY(cfg_opt_enum(solid, "material_interface", INTERFACES, 0, &bonded));
+    cfg->materials_bonded = bonded == 1;
     return NSPD_OK;
 }
 

@@ -47,6 +47,48 @@ static int alloc_points(BondBody *body) {
     return NSPD_OK;
 }
 
+/* A bond's micromodulus over the first material's (c is linear in E): its
+ * material's E, or two materials' in series, 2 E_i E_j / (E_i + E_j), over
+ * E of the first. */
+static double pair_stiffness(const BondBody *body, int64_t i, int64_t j) {
+    const PdMaterial *m = body->cfg.materials;
+    const double ei = m[body->material[i]].youngs_modulus, ej = m[body->material[j]].youngs_modulus;
+    const double e = body->material[i] == body->material[j] ? ei : 2.0 * ei * ej / (ei + ej);
+    return e / body->cfg.youngs_modulus;
+}
+
+/* Each point's material (the first whose region holds it; a region-less
+ * last material takes the rest) and density. */
+static int assign_materials(BondBody *body) {
+    const PdConfig *cfg = &body->cfg;
+    TRY(nspd_alloc(&body->material, (size_t)body->n, sizeof(uint8_t)));
+    TRY(nspd_alloc(&body->density, (size_t)body->n, sizeof(double)));
+    for (int64_t i = 0; i < body->n; i++) {
+        const double p[3] = {body->x[0][i], body->x[1][i], body->x[2][i]};
+        int k = 0;
+        while (k < cfg->material_count - 1 && cfg->materials[k].region.count > 0 &&
+               !shapeset_contains(&cfg->materials[k].region, p))
+            k++;
+        body->material[i] = (uint8_t)k;
+        body->density[i] = cfg->materials[k].density;
+    }
+    return NSPD_OK;
+}
+
+/* Drops the bonds between points of two materials (the bodies they make
+ * meet only through contact), keeping each row's order. */
+static void drop_cross_bonds(BondBody *body) {
+    int64_t kept = 0, start = 0;
+    for (int64_t i = 0; i < body->n; i++) {
+        const int64_t end = body->bond_first[i + 1];
+        for (int64_t k = start; k < end; k++)
+            if (body->material[body->bond_nbr[k]] == body->material[i])
+                body->bond_nbr[kept++] = body->bond_nbr[k];
+        start = end;
+        body->bond_first[i + 1] = kept;
+    }
+}
+
 /* Steps 5-7 above. `g` are the per-point surface factors (NULL: none). */
 static void assign_coefficients(BondBody *body, double *const g[3]) {
     const PdConfig *cfg = &body->cfg;
@@ -76,6 +118,7 @@ static void assign_coefficients(BondBody *body, double *const g[3]) {
                 beta = pd_surface_beta(dim, n, gi, gj);
             }
             double k = body->micromodulus * beta * nu * body->volume[j] / len;
+            if (body->material) k *= pair_stiffness(body, i, j);
             float coef = (float)(k / body->coef_scale);
             bool breakable = cfg->failure;
             if (breakable && any_region) {
@@ -146,7 +189,15 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     pd_regions_assign(cfg, body->n, (const double *const *)body->x, body->region, body->v);
     TRY(pd_boundary_table_build(&body->boundary, cfg));
 
+    if (cfg->material_count > 1) {
+        if (comm_distributed(part))
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "solid.material: several materials run on one process; expected "
+                             "one process, or one material");
+        TRY(assign_materials(body));
+    }
     TRY(find_bonds(body, part));
+    if (body->material && !cfg->materials_bonded) drop_cross_bonds(body);
     bond_rows_in_offset_order(body);
     body->bond_count = body->bond_first[body->n];
     TRY(nspd_alloc(&body->bond_coef, (size_t)body->bond_count, sizeof(float)));
@@ -228,6 +279,8 @@ void bond_body_destroy(BondBody *body) {
     nspd_free(&body->bond_coef);
     bond_stencil_free(&body->stencil);
     pd_contact_free(&body->contact);
+    nspd_free(&body->material);
+    nspd_free(&body->density);
     pd_config_free(&body->cfg);
     bond_halo_free(&body->halo);
     memset(body, 0, sizeof *body);

@@ -70,6 +70,12 @@ typedef struct {
     double spacing;              /* dx, m */
     double *initial_bond_volume; /* sum_j nu_ij V_j over all initial bonds (damage denominator) */
 
+    /* Several materials (cfg.material_count > 1; else NULL): each point's
+     * material and density (kg/m^3). Its Young's modulus enters through the
+     * bonds' coefficients, its density through the kick. One process. */
+    uint8_t *material;
+    double *density;
+
     /* Contact between points (cfg.contact.enabled): added to force by
      * pd_force_compute (contact.h). One process only. */
     bool has_contact;

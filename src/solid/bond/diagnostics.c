@@ -65,7 +65,7 @@ static double kinetic_term(const BondBody *body, const double *terms, int64_t i)
     (void)terms;
     double v2 = 0.0;
     for (int d = 0; d < body->dim; d++) v2 += body->v[d][i] * body->v[d][i];
-    return 0.5 * body->cfg.density * body->volume[i] * v2;
+    return 0.5 * (body->density ? body->density[i] : body->cfg.density) * body->volume[i] * v2;
 }
 
 static double elastic_term(const BondBody *body, const double *terms, int64_t i) {
@@ -216,7 +216,9 @@ void pd_momentum(const BondBody *body, double p[3]) {
             reduce_chunk(body->n, c, &lo, &hi);
             double s = 0.0;
             if (d < body->dim)
-                for (int64_t i = lo; i < hi; i++) s += body->volume[i] * body->v[d][i];
+                for (int64_t i = lo; i < hi; i++)
+                    s += (body->density ? body->density[i] / body->cfg.density : 1.0) *
+                         body->volume[i] * body->v[d][i];
             partial[c] = s;
         }
         p[d] = body->cfg.density * reduce_combine(partial);

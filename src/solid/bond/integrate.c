@@ -17,6 +17,7 @@ static PdMotion motion_of(BondBody *body) {
     PdMotion m = {.dim = body->dim,
                   .n = body->n,
                   .density = body->cfg.density,
+                  .point_density = body->density,
                   .body_force = body->cfg.body_force,
                   .x = {body->x[0], body->x[1], body->x[2]},
                   .region = body->region,
@@ -105,7 +106,8 @@ double pd_stable_time_step(const BondBody *body) {
         for (int64_t b = body->bond_first[i]; b < body->bond_first[i + 1]; b++)
             sum += fabs((double)body->bond_coef[b]);
         if (sum > 0.0) {
-            double dt2 = 2.0 * body->cfg.density / (body->coef_scale * sum);
+            const double rho = body->density ? body->density[i] : body->cfg.density;
+            double dt2 = 2.0 * rho / (body->coef_scale * sum);
             if (dt2 < min_dt2) min_dt2 = dt2;
         }
     }
@@ -129,5 +131,12 @@ double pd_interior_stable_dt(const PdConfig *cfg) {
                 const double len = sqrt(r2) * dx;
                 sum += c * pd_volume_factor(len, m * dx, dx, cfg->volume_correction) * volume / len;
             }
-    return sum > 0.0 ? sqrt(2.0 * cfg->density / sum) : 0.0;
+    if (!(sum > 0.0)) return 0.0;
+    double dt = sqrt(2.0 * cfg->density / sum);
+    /* several materials: the least of theirs (sum scales with E) */
+    for (int k = 1; k < cfg->material_count; k++) {
+        const PdMaterial *mk = &cfg->materials[k];
+        dt = fmin(dt, sqrt(2.0 * mk->density / (sum * mk->youngs_modulus / cfg->youngs_modulus)));
+    }
+    return dt;
 }

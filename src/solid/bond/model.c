@@ -127,8 +127,8 @@ static double bond_modulus(const void *impl, int64_t i) {
 }
 
 static double bond_density(const void *impl, int64_t i) {
-    (void)i;
-    return ((const BondSolid *)impl)->body.cfg.density;
+    const BondBody *b = &((const BondSolid *)impl)->body;
+    return b->density ? b->density[i] : b->cfg.density;
 }
 
 static bool bond_attached(const void *impl, int64_t i) {

@@ -108,4 +108,7 @@ void pd_config_free(PdConfig *cfg) {
     nspd_free(&cfg->boundaries);
     nspd_free(&cfg->initial_velocities);
     nspd_free(&cfg->expressions);
+    for (int i = 0; i < cfg->material_count; i++) shapeset_free(&cfg->materials[i].region);
+    nspd_free(&cfg->materials);
+    cfg->material_count = 0;
 }

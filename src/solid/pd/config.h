@@ -51,6 +51,17 @@ typedef struct {
     uint16_t velocity_expr[3]; /* as in PdBoundaryRegion, at t = 0 */
 } PdInitialVelocity;
 
+/* One of several materials of a body (solid.material as a list): the
+ * points in `region` (the first material whose region holds a point; the
+ * last may have none: the rest) take its density and Young's modulus. The
+ * first is also PdConfig's density and youngs_modulus; the critical
+ * stretch is the body's, one for all. */
+typedef struct {
+    char name[PD_MAX_NAME];
+    ShapeSet region;
+    double density, youngs_modulus;
+} PdMaterial;
+
 typedef struct {
     PdModel model;
     int dim;               /* 2 or 3, from the model */
@@ -83,6 +94,12 @@ typedef struct {
     PdSurfaceCorrection surface_correction;
     PdIntegrator integrator;
     PdContactConfig contact; /* short-range contact (contact.h), bond-based */
+    /* Several materials (bond-based; 0 or 1: the one of density and
+     * youngs_modulus): bonds join points of two materials only where
+     * materials_bonded, with the micromodulus of the two in series. */
+    int material_count;
+    PdMaterial *materials;
+    bool materials_bonded;
 } PdConfig;
 
 /* Poisson's ratio that bond-based PD implies for the model (1/3 or 1/4). */

@@ -102,7 +102,8 @@ static inline void kick_point(const PdMotion *m, double inv_rho, double h, PassT
         double b =
             m->external[d][i] + load_at(m, bt->body_force_expr[d], m->body_force[d], t.load, i);
         if (r >= 0) b += load_at(m, bt->force_expr[k], bt->force_density[k], t.load, i);
-        m->v[d][i] += (m->force[d][i] + b) * inv_rho * h;
+        m->v[d][i] +=
+            (m->force[d][i] + b) * (m->point_density ? 1.0 / m->point_density[i] : inv_rho) * h;
         if (r >= 0) {
             if (bt->velocity_given[k])
                 m->v[d][i] = load_at(m, bt->velocity_expr[k], bt->velocity[k], t.end, i);

@@ -53,9 +53,10 @@ void pd_boundary_table_free(PdBoundaryTable *t);
 typedef struct {
     int dim;
     int64_t n;
-    double density;           /* kg/m^3 */
-    const double *body_force; /* 3 components, N/m^3 on every point */
-    const double *x[3];       /* reference positions: where load expressions are evaluated */
+    double density;              /* kg/m^3 */
+    const double *point_density; /* optional (NULL: density everywhere): per point, kg/m^3 */
+    const double *body_force;    /* 3 components, N/m^3 on every point */
+    const double *x[3];          /* reference positions: where load expressions are evaluated */
     double *u[3], *v[3];
     const double *force[3], *external[3];
     const int16_t *region;
