@@ -224,3 +224,22 @@ void pd_momentum(const BondBody *body, double p[3]) {
         p[d] = body->cfg.density * reduce_combine(partial);
     }
 }
+
+void pd_material_totals(const BondBody *body, int k, double *mass, double *kinetic,
+                        double velocity[3]) {
+    double m = 0.0, e = 0.0, p[3] = {0.0, 0.0, 0.0};
+    for (int64_t i = 0; i < body->n; i++) {
+        if (body->material[i] != k) continue;
+        const double mi = body->density[i] * body->volume[i];
+        double v2 = 0.0;
+        for (int d = 0; d < body->dim; d++) {
+            p[d] += mi * body->v[d][i];
+            v2 += body->v[d][i] * body->v[d][i];
+        }
+        m += mi;
+        e += 0.5 * mi * v2;
+    }
+    *mass = m;
+    *kinetic = e;
+    for (int d = 0; d < 3; d++) velocity[d] = m > 0.0 ? p[d] / m : 0.0;
+}

@@ -14,6 +14,11 @@ void pd_damage(const BondBody *body, double *damage);
  * included. */
 int64_t pd_broken_bonds(const BondBody *body);
 
+/* Material k's (cfg.materials; several materials only) mass (kg), kinetic
+ * energy (J) and mean velocity (m/s, 3 components), summed in point order. */
+void pd_material_totals(const BondBody *body, int k, double *mass, double *kinetic,
+                        double velocity[3]);
+
 /* Kinetic energy sum_i rho V_i |v_i|^2 / 2, J. */
 double pd_kinetic_energy(const BondBody *body);
 

@@ -190,6 +190,20 @@ static int64_t whole_bonds(const BondBody *b) {
     return b->halo ? b->halo->bonds : b->bond_count;
 }
 
+/* Several materials: each one's kinetic energy and mean velocity, named
+ * after it (history columns and summary keys). */
+static void report_materials(const BondBody *b, Report *r) {
+    if (!b->material) return;
+    for (int k = 0; k < b->cfg.material_count; k++) {
+        const char *name = b->cfg.materials[k].name;
+        double mass, ke, v[3];
+        pd_material_totals(b, k, &mass, &ke, v);
+        report_realf(r, ke, "%s_kinetic_energy_J", name);
+        for (int d = 0; d < b->dim; d++)
+            report_realf(r, v[d], "%s_velocity_%c_m_per_s", name, "xyz"[d]);
+    }
+}
+
 static void bond_history(const void *impl, Report *row) {
     const BondBody *b = &((const BondSolid *)impl)->body;
     double ke = pd_kinetic_energy(b), we = pd_elastic_energy(b);
@@ -207,6 +221,7 @@ static void bond_history(const void *impl, Report *row) {
         report_real(row, "total_energy_J", ke + we);
     }
     report_int(row, "broken_bonds", pd_broken_bonds(b));
+    report_materials(b, row);
 }
 
 static void bond_summary(const void *impl, const RunStats *run, Report *out) {
@@ -229,6 +244,7 @@ static void bond_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "max_damage", max_damage);
     report_real(out, "kinetic_energy_J", pd_kinetic_energy(b));
     report_real(out, "elastic_energy_J", pd_elastic_energy(b));
+    report_materials(b, out);
     if (b->has_contact) report_int(out, "contact_list_builds", b->contact.builds);
     report_real(out, "bond_updates_per_s",
                 run->wall_s > 0 ? (double)bonds * (double)run->steps / run->wall_s : 0.0);

@@ -93,6 +93,12 @@ static void test_separate(void **state) {
     pd_momentum(b, p);
     assert_true(fabs(pd_kinetic_energy(b) - ke) <= 1e-14 * ke);
     assert_true(fabs(p[0] - 2.0 * ke / 3.0) <= 1e-14 * ke);
+    /* each material's totals (the per-material history columns) add up */
+    double mass[2], kin[2], vel[2][3];
+    for (int k = 0; k < 2; k++) pd_material_totals(b, k, &mass[k], &kin[k], vel[k]);
+    assert_true(fabs(kin[0] + kin[1] - ke) <= 1e-14 * ke);
+    assert_true(fabs(mass[0] / mass[1] - 7850.0 / 2700.0) < 1e-14); /* equal halves */
+    assert_true(fabs(vel[0][0] - 3.0) < 1e-14 && fabs(vel[1][0] - 3.0) < 1e-14 && vel[0][1] == 0.0);
     /* the pulled aluminium end moves, the steel half stays at rest: no bond
      * carries the pull across */
     for (int64_t i = 0; i < b->n; i++) b->v[0][i] = 0.0;
