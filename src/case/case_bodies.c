@@ -1,12 +1,11 @@
 /* The `bodies:` list of a case file (keys in case_bodies.h). */
 #include "case/case_bodies.h"
 
+#include "case/case_shapes.h"
 #include "core/mem.h"
-#include "core/shape_mesh.h"
 #include "core/status.h"
 #include "io/cfg_read.h"
 #include "io/in_file.h"
-#include "io/stl_read.h"
 #include "io/xy_read.h"
 
 #include <errno.h>
@@ -86,38 +85,13 @@ static int check_polygon(CfgNode *item, IbmBodyConfig *b) {
  * section of a closed STL surface by the plane z = section_z (after the
  * scale and the translation), core/shape_mesh.h */
 static int read_stl_section(CfgNode *item, IbmBodyConfig *b) {
-    const char *file;
-    TRY(cfg_req_string(item, "file", &file));
-    cfg_resolve_path(cfg_map_find(item, "file"), file, b->path, sizeof b->path);
-    double scale, z, zero[3] = {0, 0, 0}, shift[3];
-    TRY(cfg_opt_double(item, "scale", 1.0, &scale));
-    TRY(cfg_check_positive(item, "scale", scale, "the factor from the file's units to m"));
-    TRY(cfg_opt_vec(item, "translate", 3, zero, shift));
+    double z;
     TRY(cfg_opt_double(item, "section_z", 0.0, &z));
-    double *tri;
-    int64_t n;
-    StlReadError err;
-    const int st = stl_read_file(b->path, &tri, &n, &err);
-    if (st == NSPD_ERR_IO)
-        return cfg_fail_at(item, "file", "cannot read '%s' (%s); expected an STL file", b->path,
-                           in_file_error(err.os_error));
-    if (st == NSPD_ERR_INPUT) {
-        if (err.line > 0)
-            return cfg_fail_at(item, "file", "%s:%d: %s", b->path, err.line, err.text);
-        return cfg_fail_at(item, "file", "%s: byte %lld: %s", b->path, (long long)err.offset,
-                           err.text);
-    }
-    TRY(st);
-    for (int64_t k = 0; k < 3 * n; k++)
-        for (int d = 0; d < 3; d++) tri[3 * k + d] = scale * tri[3 * k + d] + shift[d];
     ShapeMesh *m;
+    TRY(case_read_stl_mesh(item, &m, b->path, sizeof b->path));
     char why[256];
-    int made = shape_mesh_create(tri, n, &m, why, sizeof why);
-    nspd_free(&tri);
-    if (made == NSPD_OK) {
-        made = shape_mesh_section(m, z, &b->vertices, &b->vertex_count, why, sizeof why);
-        shape_mesh_free(&m);
-    }
+    const int made = shape_mesh_section(m, z, &b->vertices, &b->vertex_count, why, sizeof why);
+    shape_mesh_free(&m);
     if (made == NSPD_ERR_INPUT) return cfg_fail_at(item, "file", "%s: %s", b->path, why);
     TRY(made);
     return check_polygon(item, b);

@@ -43,22 +43,14 @@ static int read_polygon(CfgNode *item, Shape *s) {
     return NSPD_OK;
 }
 
-/* {shape: stl, file: F, scale: s, translate: [..], section_z: z}: the
- * closed surface of F, x -> s x + translate, m; in 2D its section by the
- * plane z = section_z (after the transform). */
-static int read_stl(CfgNode *item, int dim, Shape *s) {
+int case_read_stl_mesh(CfgNode *item, ShapeMesh **mesh, char *path, size_t path_size) {
     const char *file;
     TRY(cfg_req_string(item, "file", &file));
-    char path[4096];
-    cfg_resolve_path(cfg_map_find(item, "file"), file, path, sizeof path);
+    cfg_resolve_path(cfg_map_find(item, "file"), file, path, path_size);
     double scale, zero[3] = {0, 0, 0}, shift[3];
     TRY(cfg_opt_double(item, "scale", 1.0, &scale));
     TRY(cfg_check_positive(item, "scale", scale, "the factor from the file's units to m"));
     TRY(cfg_opt_vec(item, "translate", 3, zero, shift));
-    if (dim == 2) {
-        s->section = true;
-        TRY(cfg_opt_double(item, "section_z", 0.0, &s->section_z));
-    }
     double *tri;
     int64_t n;
     StlReadError err;
@@ -75,10 +67,20 @@ static int read_stl(CfgNode *item, int dim, Shape *s) {
     for (int64_t k = 0; k < 3 * n; k++)
         for (int d = 0; d < 3; d++) tri[3 * k + d] = scale * tri[3 * k + d] + shift[d];
     char why[256];
-    const int made = shape_mesh_create(tri, n, &s->mesh, why, sizeof why);
+    const int made = shape_mesh_create(tri, n, mesh, why, sizeof why);
     nspd_free(&tri);
     if (made == NSPD_ERR_INPUT) return cfg_fail_at(item, "file", "%s: %s", path, why);
     return made;
+}
+
+/* {shape: stl, ...}: the mesh; in 2D its section by z = section_z */
+static int read_stl(CfgNode *item, int dim, Shape *s) {
+    char path[4096];
+    if (dim == 2) {
+        s->section = true;
+        TRY(cfg_opt_double(item, "section_z", 0.0, &s->section_z));
+    }
+    return case_read_stl_mesh(item, &s->mesh, path, sizeof path);
 }
 
 static int read_shape(CfgNode *item, int dim, Shape *s) {

@@ -14,6 +14,23 @@
 
 static const char *const AXES[] = {"x", "y", "z"};
 
+/* item's `name` into out (size PD_MAX_NAME), default "<prefix><index>" */
+static int read_item_name(CfgNode *item, const char *prefix, int index, char *out) {
+    char fallback[32];
+    snprintf(fallback, sizeof fallback, "%s%d", prefix, index);
+    const char *name;
+    TRY(cfg_opt_string(item, "name", fallback, &name));
+    snprintf(out, PD_MAX_NAME, "%s", name);
+    return NSPD_OK;
+}
+
+/* The first of `keys` present in map, or NULL (keys another key excludes). */
+static const char *first_present(const CfgNode *map, const char *const *keys, int count) {
+    for (int k = 0; k < count; k++)
+        if (cfg_map_find(map, keys[k])) return keys[k];
+    return NULL;
+}
+
 /* {x: 1, y: "20*t"} -> values (numbers or load expressions, case_loads.h)
  * and a mask of the components given. */
 static int read_components(CfgNode *map, const char *key, PdConfig *cfg, unsigned *mask,
@@ -57,12 +74,12 @@ static int read_material_map(CfgNode *m, PdConfig *cfg, bool first) {
                            nu, nu_model, PD_MODEL_NAMES[cfg->model], nu_model);
     if (!first) {
         static const char *const BODY_WIDE[] = {"critical_stretch", "fracture_energy"};
-        for (int k = 0; k < 2; k++)
-            if (cfg_map_find(m, BODY_WIDE[k]))
-                return cfg_fail_at(m, BODY_WIDE[k],
-                                   "one critical stretch for the body; expected %s in the first "
-                                   "material only (bonds break only in failure.region)",
-                                   BODY_WIDE[k]);
+        const char *key = first_present(m, BODY_WIDE, 2);
+        if (key)
+            return cfg_fail_at(m, key,
+                               "one critical stretch for the body; expected %s in the first "
+                               "material only (bonds break only in failure.region)",
+                               key);
         return NSPD_OK;
     }
     bool has_sc, has_gc;
@@ -105,11 +122,7 @@ static int read_material(CfgNode *solid, PdConfig *cfg) {
             return cfg_fail(m, "not a material; expected a map with region, density and "
                                "youngs_modulus");
         PdMaterial *pm = &cfg->materials[i];
-        const char *name;
-        char fallback[32];
-        snprintf(fallback, sizeof fallback, "material%d", i);
-        TRY(cfg_opt_string(m, "name", fallback, &name));
-        snprintf(pm->name, sizeof pm->name, "%s", name);
+        TRY(read_item_name(m, "material", i, pm->name));
         const bool last = i == seq->count - 1;
         TRY(case_read_shapes(m, "region", cfg->dim, !last, &pm->region));
         TRY(read_material_map(m, cfg, i == 0));
@@ -184,11 +197,7 @@ static int read_boundaries(CfgNode *solid, PdConfig *cfg) {
         PdBoundaryRegion *r = &cfg->boundaries[i];
         if (item->kind != CFG_MAP)
             return cfg_fail(item, "not a boundary region; expected a map with name and region");
-        const char *name;
-        char fallback[32];
-        snprintf(fallback, sizeof fallback, "region%d", i);
-        TRY(cfg_opt_string(item, "name", fallback, &name));
-        snprintf(r->name, sizeof r->name, "%s", name);
+        TRY(read_item_name(item, "region", i, r->name));
         TRY(case_read_shapes(item, "region", cfg->dim, true, &r->region));
         TRY(read_components(item, "velocity", cfg, &r->velocity_mask, r->velocity,
                             r->velocity_expr));
@@ -412,11 +421,7 @@ static int read_cpd_pressures(CfgNode *s, CpdConfig *cfg) {
         CpdPressure *p = &cfg->pressures[i];
         if (item->kind != CFG_MAP)
             return cfg_fail(item, "not a pressure load; expected a map with region and peak");
-        const char *name;
-        char fallback[32];
-        snprintf(fallback, sizeof fallback, "pressure%d", i);
-        TRY(cfg_opt_string(item, "name", fallback, &name));
-        snprintf(p->name, sizeof p->name, "%s", name);
+        TRY(read_item_name(item, "pressure", i, p->name));
         TRY(case_read_shapes(item, "region", cfg->pd.dim, true, &p->region));
         /* a pressure history: the expression `pressure`, or the trapezoid */
         double constant;
@@ -425,12 +430,12 @@ static int read_cpd_pressures(CfgNode *s, CpdConfig *cfg) {
         if (has_expr) {
             if (!p->expr) p->peak = constant; /* a number: held from t = 0 */
             static const char *const TRAPEZOID[] = {"peak", "rise_time", "hold_time", "fall_time"};
-            for (int k = 0; k < 4; k++)
-                if (cfg_map_find(item, TRAPEZOID[k]))
-                    return cfg_fail_at(item, TRAPEZOID[k],
-                                       "both pressure and %s given; expected the expression "
-                                       "pressure or the trapezoid's keys",
-                                       TRAPEZOID[k]);
+            const char *key = first_present(item, TRAPEZOID, 4);
+            if (key)
+                return cfg_fail_at(item, key,
+                                   "both pressure and %s given; expected the expression "
+                                   "pressure or the trapezoid's keys",
+                                   key);
         } else {
             TRY(cfg_req_double(item, "peak", &p->peak));
             TRY(cfg_opt_double(item, "rise_time", 0.0, &p->rise));

@@ -205,32 +205,29 @@ static bool parse_unary(Parser *p) {
     return parse_power(p);
 }
 
-static bool parse_product(Parser *p) {
-    if (!parse_unary(p)) return false;
+/* operand (token operand)*, left to right: the binary levels */
+static bool parse_left(Parser *p, bool (*operand)(Parser *), const char *const *tokens,
+                       const int *ops, int count) {
+    if (!operand(p)) return false;
     for (;;) {
-        int op;
-        if (accept(p, "*"))
-            op = OP_MUL;
-        else if (accept(p, "/"))
-            op = OP_DIV;
-        else
-            return true;
-        if (!parse_unary(p) || !emit(p, op, 0.0, -1)) return false;
+        int op = -1;
+        for (int k = 0; k < count && op < 0; k++)
+            if (accept(p, tokens[k])) op = ops[k];
+        if (op < 0) return true;
+        if (!operand(p) || !emit(p, op, 0.0, -1)) return false;
     }
 }
 
+static bool parse_product(Parser *p) {
+    static const char *const T[] = {"*", "/"};
+    static const int OPS[] = {OP_MUL, OP_DIV};
+    return parse_left(p, parse_unary, T, OPS, 2);
+}
+
 static bool parse_sum(Parser *p) {
-    if (!parse_product(p)) return false;
-    for (;;) {
-        int op;
-        if (accept(p, "+"))
-            op = OP_ADD;
-        else if (accept(p, "-"))
-            op = OP_SUB;
-        else
-            return true;
-        if (!parse_product(p) || !emit(p, op, 0.0, -1)) return false;
-    }
+    static const char *const T[] = {"+", "-"};
+    static const int OPS[] = {OP_ADD, OP_SUB};
+    return parse_left(p, parse_product, T, OPS, 2);
 }
 
 static bool parse_comparison(Parser *p) {
@@ -246,17 +243,15 @@ static bool parse_comparison(Parser *p) {
 }
 
 static bool parse_and(Parser *p) {
-    if (!parse_comparison(p)) return false;
-    while (accept(p, "&&"))
-        if (!parse_comparison(p) || !emit(p, OP_AND, 0.0, -1)) return false;
-    return true;
+    static const char *const T[] = {"&&"};
+    static const int OPS[] = {OP_AND};
+    return parse_left(p, parse_comparison, T, OPS, 1);
 }
 
 static bool parse_or(Parser *p) {
-    if (!parse_and(p)) return false;
-    while (accept(p, "||"))
-        if (!parse_and(p) || !emit(p, OP_OR, 0.0, -1)) return false;
-    return true;
+    static const char *const T[] = {"||"};
+    static const int OPS[] = {OP_OR};
+    return parse_left(p, parse_and, T, OPS, 1);
 }
 
 /* c ? a : b leaves c, a and b on the stack, b on top; OP_SELECT replaces

@@ -2,6 +2,7 @@
 
 #include "core/mem.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 PdConfig fixture_block(int dim, int nx, int ny, int nz, double dx) {
@@ -24,4 +25,20 @@ PdConfig fixture_block(int dim, int nx, int ny, int nz, double dx) {
     s->hi[1] = ny * dx;
     s->hi[2] = dim == 3 ? nz * dx : 0.0;
     return cfg;
+}
+
+double fixture_closest_unbonded(int64_t n, int dim, const double *const x[3],
+                                const double *const u[3], double reference) {
+    double best = INFINITY;
+    for (int64_t i = 0; i < n; i++)
+        for (int64_t j = i + 1; j < n; j++) {
+            double d2 = 0.0, xi2 = 0.0;
+            for (int d = 0; d < dim; d++) {
+                const double xi = x[d][j] - x[d][i], dy = xi + u[d][j] - u[d][i];
+                d2 += dy * dy;
+                xi2 += xi * xi;
+            }
+            if (xi2 > reference * reference) best = fmin(best, d2);
+        }
+    return sqrt(best);
 }

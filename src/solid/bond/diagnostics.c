@@ -208,6 +208,8 @@ double pd_elastic_energy(const BondBody *body) {
 }
 
 void pd_momentum(const BondBody *body, double p[3]) {
+    /* one density: it multiplies the sum; several: each point's its own */
+    const double *rho = body->density;
     for (int d = 0; d < 3; d++) {
         double partial[REDUCE_CHUNKS];
 #pragma omp parallel for schedule(static) if (body->n >= PARALLEL_MIN_ITEMS)
@@ -217,11 +219,10 @@ void pd_momentum(const BondBody *body, double p[3]) {
             double s = 0.0;
             if (d < body->dim)
                 for (int64_t i = lo; i < hi; i++)
-                    s += (body->density ? body->density[i] / body->cfg.density : 1.0) *
-                         body->volume[i] * body->v[d][i];
+                    s += (rho ? rho[i] : 1.0) * body->volume[i] * body->v[d][i];
             partial[c] = s;
         }
-        p[d] = body->cfg.density * reduce_combine(partial);
+        p[d] = (rho ? 1.0 : body->cfg.density) * reduce_combine(partial);
     }
 }
 

@@ -64,9 +64,11 @@ static int rebuild(PdContact *c, const double *const x[3], const double *const u
                            &c->first, &c->nbr);
 }
 
-/* The pair i, j: the offset y_j - y_i into dy and d_s - d (> 0 in contact). */
+/* The pair i, j: the offset y_j - y_i into dy and d_s - d (> 0 in
+ * contact, with the distance d into *dist). Most candidates are beyond the
+ * cutoff, where d_s <= cutoff says no contact before any root. */
 static inline double overlap(const PdContact *c, const double *const x[3], const double *const u[3],
-                             int64_t i, int64_t j, double dy[3]) {
+                             int64_t i, int64_t j, double dy[3], double *dist) {
     double d2 = 0.0, xi2 = 0.0;
     for (int d = 0; d < c->dim; d++) {
         const double xi = x[d][j] - x[d][i];
@@ -74,8 +76,11 @@ static inline double overlap(const PdContact *c, const double *const x[3], const
         d2 += dy[d] * dy[d];
         xi2 += xi * xi;
     }
+    if (d2 >= c->cutoff * c->cutoff) return 0.0;
     const double ds = fmin(c->compression * sqrt(xi2), c->cutoff);
-    return d2 < ds * ds ? ds - sqrt(d2) : 0.0;
+    if (!(d2 < ds * ds)) return 0.0;
+    *dist = sqrt(d2);
+    return ds - *dist;
 }
 
 int pd_contact_add(PdContact *c, const double *const x[3], const double *const u[3],
@@ -86,12 +91,10 @@ int pd_contact_add(PdContact *c, const double *const x[3], const double *const u
         double f[3] = {0.0, 0.0, 0.0};
         for (int64_t k = c->first[i]; k < c->first[i + 1]; k++) {
             const int64_t j = c->nbr[k];
-            double dy[3];
-            const double s = overlap(c, x, u, i, j, dy);
+            double dy[3], d;
+            const double s = overlap(c, x, u, i, j, dy, &d);
             if (s > 0.0) {
-                double d2 = 0.0;
-                for (int a = 0; a < c->dim; a++) d2 += dy[a] * dy[a];
-                const double m = c->coef * s / sqrt(d2) * volume[j];
+                const double m = c->coef * s / d * volume[j];
                 for (int a = 0; a < c->dim; a++) f[a] -= m * dy[a];
             }
         }
@@ -105,8 +108,8 @@ static double point_energy(const PdContact *c, const double *const x[3], const d
                            const double *volume, int64_t i) {
     double w = 0.0;
     for (int64_t k = c->first[i]; k < c->first[i + 1]; k++) {
-        double dy[3];
-        const double s = overlap(c, x, u, i, c->nbr[k], dy);
+        double dy[3], d;
+        const double s = overlap(c, x, u, i, c->nbr[k], dy, &d);
         w += s * s * volume[c->nbr[k]];
     }
     return 0.25 * c->coef * w * volume[i];

@@ -97,13 +97,13 @@ static inline double load_at(const PdMotion *m, uint16_t e, double constant, dou
 static inline void kick_point(const PdMotion *m, double inv_rho, double h, PassTimes t, int64_t i) {
     const PdBoundaryTable *bt = m->boundary;
     const int r = m->region[i];
+    if (m->point_density) inv_rho = 1.0 / m->point_density[i]; /* several materials */
     for (int d = 0; d < m->dim; d++) {
         const int k = 3 * r + d; /* read only when r >= 0 */
         double b =
             m->external[d][i] + load_at(m, bt->body_force_expr[d], m->body_force[d], t.load, i);
         if (r >= 0) b += load_at(m, bt->force_expr[k], bt->force_density[k], t.load, i);
-        m->v[d][i] +=
-            (m->force[d][i] + b) * (m->point_density ? 1.0 / m->point_density[i] : inv_rho) * h;
+        m->v[d][i] += (m->force[d][i] + b) * inv_rho * h;
         if (r >= 0) {
             if (bt->velocity_given[k])
                 m->v[d][i] = load_at(m, bt->velocity_expr[k], bt->velocity[k], t.end, i);

@@ -8,6 +8,7 @@
 #include "test_support.h"
 
 #include "sim/sim.h"
+#include "pd_fixtures.h"
 #include "sim_fixtures.h"
 #include "solid/correspondence/body.h"
 #include "solid/correspondence/model.h"
@@ -19,22 +20,10 @@
 /* the closest pair never bonded (reference distance beyond the horizon),
  * in spacings: over the contact's candidates, or over all pairs */
 static double closest_never_bonded(const CpdBody *b) {
-    if (b->has_contact)
-        return pd_contact_min_distance(&b->contact, (const double *const *)b->x,
-                                       (const double *const *)b->u, b->delta) /
-               b->spacing;
-    double best = INFINITY;
-    for (int64_t i = 0; i < b->n; i++)
-        for (int64_t j = i + 1; j < b->n; j++) {
-            double d2 = 0.0, xi2 = 0.0;
-            for (int d = 0; d < 2; d++) {
-                const double xi = b->x[d][j] - b->x[d][i], dy = xi + b->u[d][j] - b->u[d][i];
-                d2 += dy * dy;
-                xi2 += xi * xi;
-            }
-            if (xi2 > b->delta * b->delta) best = fmin(best, d2);
-        }
-    return sqrt(best) / b->spacing;
+    const double *const *x = (const double *const *)b->x, *const *u = (const double *const *)b->u;
+    const double d = b->has_contact ? pd_contact_min_distance(&b->contact, x, u, b->delta)
+                                    : fixture_closest_unbonded(b->n, 2, x, u, b->delta);
+    return d / b->spacing;
 }
 
 /* to t = 9e-5 s (the rings meet at 4.5e-5 s), the closest pair every

@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include "sim/sim.h"
+#include "pd_fixtures.h"
 #include "sim_fixtures.h"
 #include "solid/bond/body.h"
 #include "solid/bond/diagnostics.h"
@@ -120,21 +121,9 @@ static void test_without_contact_they_pass(void **state) {
  * pd_contact_min_distance with contact, all pairs without. */
 static double closest_never_bonded(Sim *sim) {
     BondBody *b = fixture_body(sim);
-    if (b->has_contact)
-        return pd_contact_min_distance(&b->contact, (const double *const *)b->x,
-                                       (const double *const *)b->u, b->horizon);
-    double best = INFINITY;
-    for (int64_t i = 0; i < b->n; i++)
-        for (int64_t j = i + 1; j < b->n; j++) {
-            double d2 = 0.0, xi2 = 0.0;
-            for (int d = 0; d < 2; d++) {
-                const double xi = b->x[d][j] - b->x[d][i], dy = xi + b->u[d][j] - b->u[d][i];
-                d2 += dy * dy;
-                xi2 += xi * xi;
-            }
-            if (xi2 > b->horizon * b->horizon) best = fmin(best, d2);
-        }
-    return sqrt(best);
+    const double *const *x = (const double *const *)b->x, *const *u = (const double *const *)b->u;
+    if (b->has_contact) return pd_contact_min_distance(&b->contact, x, u, b->horizon);
+    return fixture_closest_unbonded(b->n, 2, x, u, b->horizon);
 }
 
 static double pellet_run(const char *const *sets, int count, int64_t *broken) {
