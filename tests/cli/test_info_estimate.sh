@@ -24,9 +24,10 @@ info() {
     "$nspd" info "$src/cases/$name.yaml" --threads 1 "$@" >"$work/$name.info" 2>&1 ||
         fail "info $name: $(tail -3 "$work/$name.info")"
 }
-seconds() { # "1.5s", "2m 3s" -> seconds
-    echo "$1" | awk '{t = 0; for (i = 1; i <= NF; i++) { v = $i + 0;
-        if ($i ~ /h$/) v *= 3600; else if ($i ~ /m$/) v *= 60; t += v } print t}'
+seconds() { # progress_format_duration's "24.7s", "1m02s", "2h05m" -> seconds
+    echo "$1" | awk '{t = 0; s = $0; while (match(s, /^[0-9.]+[hms]/)) {
+        v = substr(s, 1, RLENGTH - 1) + 0; u = substr(s, RLENGTH, 1);
+        t += v * (u == "h" ? 3600 : u == "m" ? 60 : 1); s = substr(s, RLENGTH + 1) } print t}'
 }
 
 # at the file's own (coarse) mesh: the golden run's 0.1 s rounds both
