@@ -278,6 +278,23 @@ static int read_penalty(CfgNode *m, SimConfig *cfg) {
     TRY(cfg_check_range(m, "beta", c->beta, 1e-12, 1e30,
                         "a penalty factor > 0 (the paper's 1/3 to 9)"));
     TRY(cfg_opt_bool(m, "strong", false, &c->strong));
+    int integration;
+    TRY(cfg_opt_enum(m, "integration", PENALTY_INTEGRATION_NAMES, PENALTY_IMPLICIT, &integration));
+    c->integration = (PenaltyIntegration)integration;
+    if (c->strong && c->integration == PENALTY_EXPLICIT)
+        return cfg_fail_at(m, "integration",
+                           "the strong coupling is the penalty's infinite limit, which only the "
+                           "implicit relaxation reaches; expected integration: implicit or "
+                           "strong: false");
+    int constraint;
+    TRY(cfg_opt_enum(m, "strong_constraint", PENALTY_STRONG_CONSTRAINT_NAMES,
+                     PENALTY_STRONG_EVERY_STEP, &constraint));
+    c->strong_constraint = (PenaltyStrongConstraint)constraint;
+    TRY(cfg_opt_bool(m, "subtract_fluid", c->strong, &c->subtract_fluid));
+    if (c->subtract_fluid && !c->strong)
+        return cfg_fail_at(m, "subtract_fluid",
+                           "Eq. 20's subtraction of the fluid over the solid belongs to the "
+                           "strong coupling; expected strong: true or subtract_fluid: false");
     TRY(cfg_opt_bool(m, "damaged", false, &c->damaged));
     TRY(cfg_opt_double(m, "h", 0.0, &c->h));
     TRY(cfg_check_range(m, "h", c->h, 0.0, 1e30, "a length in m (0: the solid's lattice spacing)"));

@@ -121,6 +121,10 @@ double coupling_solid_dt_limit(const Coupling *c, const Solid *solid) {
     return c->ops->solid_dt_limit ? c->ops->solid_dt_limit(c->impl, solid) : (double)INFINITY;
 }
 
+bool coupling_constrains_solid(const Coupling *c) {
+    return c->ops->constrains_solid && c->ops->constrains_solid(c->impl);
+}
+
 void coupling_loads(const Coupling *c, CouplingLoads *out) {
     c->ops->loads(c->impl, out);
 }

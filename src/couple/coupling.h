@@ -92,6 +92,11 @@ typedef struct CouplingOps {
     int (*after_flow)(void *impl, Solid *solid, Flow *flow, double dt);
     /* the longest solid sub-step the coupling allows (INFINITY: no limit) */
     double (*solid_dt_limit)(const void *impl, const Solid *solid);
+    /* optional (NULL: false): the coupling prescribes the solid's
+     * velocities at every step, so the driver advances the solid by one
+     * solid_advance_constrained per flow step, no longer than its
+     * sub-step (sim.h Sim.constrained) */
+    bool (*constrains_solid)(const void *impl);
     void (*loads)(const void *impl, CouplingLoads *out);
     /* the loads of the current state as history columns (and the running
      * time averages, from average_from on) */
@@ -122,6 +127,7 @@ const char *coupling_name(const Coupling *c);
 int coupling_before_flow(Coupling *c, Solid *solid, Flow *flow);
 int coupling_after_flow(Coupling *c, Solid *solid, Flow *flow, double dt);
 double coupling_solid_dt_limit(const Coupling *c, const Solid *solid);
+bool coupling_constrains_solid(const Coupling *c);
 void coupling_loads(const Coupling *c, CouplingLoads *out);
 int coupling_history(Coupling *c, Solid *solid, Flow *flow, double time, Report *row);
 int coupling_summary(Coupling *c, Solid *solid, Flow *flow, Report *out);

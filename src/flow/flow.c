@@ -182,7 +182,7 @@ int flow_transfer_width(FlowTransferKind kind) {
 }
 
 bool flow_has_transfer(const Flow *f) {
-    return f->ops->transfer && f->ops->lumped && f->ops->add_lumped;
+    return f->ops->transfer && f->ops->lumped && f->ops->lumped_volume && f->ops->add_lumped;
 }
 
 int flow_cell_owner(const Flow *f, int64_t cell) {
@@ -206,6 +206,10 @@ void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, d
 void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx, const double *dmy,
                      const double *de) {
     f->ops->add_lumped(f->impl, n, cells, dmx, dmy, de);
+}
+
+void flow_lumped_volume(const Flow *f, int64_t n, const int64_t *cells, double *volume) {
+    f->ops->lumped_volume(f->impl, n, cells, volume);
 }
 
 bool flow_can_seal(const Flow *f) {

@@ -201,6 +201,11 @@ typedef struct FlowOps {
      * message sent. */
     void (*lumped)(const void *impl, int64_t n, const int64_t *cells, double *mass,
                    double *momentum_x, double *momentum_y);
+    /* The lumped volume int N_A (m^2 per metre of depth: a cell's area,
+     * a control point's basis integral) of the n unknowns cells[k], as
+     * `lumped` (NaN for another process's): the volume a coupling's
+     * covered fraction is measured against (paper 003 Eq. 20). */
+    void (*lumped_volume)(const void *impl, int64_t n, const int64_t *cells, double *volume);
     /* Adds momentum and total energy (per metre of depth; a NULL array:
      * none of that) to the n unknowns cells[k] (distinct), between steps;
      * on several processes, what is added to unknowns another process
@@ -285,7 +290,7 @@ void flow_cell_centre(const Flow *f, int64_t cell, double xy[2]);
 FlowReference flow_reference(const Flow *f);
 int flow_sample(Flow *f, int64_t n, const double *x, const double *y, FlowSamples *out);
 int flow_set_sources(Flow *f, FlowSources *src);
-/* FlowOps.transfer, lumped, add_lumped: only where flow_has_transfer (a
+/* FlowOps.transfer, lumped, lumped_volume, add_lumped: only where flow_has_transfer (a
  * coupling that needs them refuses other flows when it is built). */
 bool flow_has_transfer(const Flow *f);
 int flow_cell_owner(const Flow *f, int64_t cell);
@@ -294,6 +299,7 @@ void flow_transfer(const Flow *f, FlowTransferKind kind, int64_t n, const double
                    const double *y, int64_t *cell, double *w);
 void flow_lumped(const Flow *f, int64_t n, const int64_t *cells, double *mass, double *momentum_x,
                  double *momentum_y);
+void flow_lumped_volume(const Flow *f, int64_t n, const int64_t *cells, double *volume);
 void flow_add_lumped(Flow *f, int64_t n, const int64_t *cells, const double *dmx, const double *dmy,
                      const double *de);
 /* FlowOps.seal: only where flow_can_seal. */

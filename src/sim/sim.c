@@ -37,12 +37,19 @@ static int plan_steps(Sim *sim) {
 
 static int choose_pace(Sim *sim) {
     const SimConfig *c = &sim->cfg;
+    sim->constrained = sim->coupling && coupling_constrains_solid(sim->coupling);
     if (sim->solid) {
         double stable = solid_stable_dt(sim->solid);
+        /* a constrained solid moves with the flow's unknowns: its stable
+         * step is the projected system's, at least the free solid's
+         * (docs/COUPLING_STRONG.md) */
         if (c->dt_given && c->dt > stable)
-            nspd_log(LOG_WARN,
-                     "time.dt = %g s exceeds the stable PD time step %g s; the run may blow up",
-                     c->dt, stable);
+            nspd_log(sim->constrained ? LOG_INFO : LOG_WARN,
+                     "time.dt = %g s exceeds the stable PD time step %g s; %s", c->dt, stable,
+                     sim->constrained ? "the strong coupling constrains the solid to the flow, "
+                                        "whose projected system is stiffer only where the free "
+                                        "solid is"
+                                      : "the run may blow up");
         /* alone, the solid steps with this; with a flow, it sub-steps with it */
         sim->solid_substep = c->dt_given ? c->dt : c->safety_factor * stable;
         if (sim->coupling)
@@ -57,6 +64,7 @@ static int choose_pace(Sim *sim) {
             nspd_log(LOG_WARN, "time.dt = %g s exceeds the CFL time step %g s", c->dt,
                      sim->stable_dt);
         sim->dt = c->dt_given ? c->dt : sim->stable_dt;
+        if (sim->constrained && !c->dt_given) sim->dt = fmin(sim->dt, sim->solid_substep);
     }
     return plan_steps(sim);
 }
@@ -193,6 +201,7 @@ static bool finished(const Sim *sim) {
 static double step_size(const Sim *sim) {
     if (!sim->flow) return sim->dt;
     double dt = sim->cfg.dt_given ? sim->cfg.dt : flow_stable_dt(sim->flow);
+    if (sim->constrained && !sim->cfg.dt_given) dt = fmin(dt, sim->solid_substep);
     double left = sim->cfg.end_time - sim->time;
     return dt > left ? left : dt;
 }
@@ -208,7 +217,10 @@ static int sim_step(Sim *sim) {
     if (sim->coupling) TRY(coupling_after_flow(sim->coupling, sim->solid, sim->flow, dt));
     double t3 = nspd_wall_time();
     if (sim->solid) {
-        TRY(solid_advance(sim->solid, dt, sim->flow ? sim->solid_substep : dt));
+        if (sim->constrained)
+            TRY(solid_advance_constrained(sim->solid, dt));
+        else
+            TRY(solid_advance(sim->solid, dt, sim->flow ? sim->solid_substep : dt));
         /* with a flow, the flow's clock, not a sum of n rounded sub-steps */
         if (sim->flow) solid_set_time(sim->solid, flow_time(sim->flow));
     }

@@ -37,12 +37,17 @@ enum { SIM_PART_FLOW = 0, SIM_PART_SOLID = 1, SIM_PART_COUPLING = 2, SIM_PART_CO
 
 typedef struct {
     SimConfig cfg;
-    Solid *solid;          /* NULL: no solid */
-    Flow *flow;            /* NULL: no flow */
-    Coupling *coupling;    /* NULL: nothing coupled */
-    double dt;             /* the last step taken (without a flow: the fixed step) */
-    double stable_dt;      /* the pacing model's stable step at the start (flow: CFL) */
-    double solid_substep;  /* with a flow: the longest solid sub-step */
+    Solid *solid;         /* NULL: no solid */
+    Flow *flow;           /* NULL: no flow */
+    Coupling *coupling;   /* NULL: nothing coupled */
+    double dt;            /* the last step taken (without a flow: the fixed step) */
+    double stable_dt;     /* the pacing model's stable step at the start (flow: CFL) */
+    double solid_substep; /* with a flow: the longest solid sub-step */
+    /* the coupling prescribes the solid's velocities at every step (the
+     * strong coupling of paper 003): one constrained solid step per flow
+     * step, the flow's step no longer than solid_substep unless time.dt
+     * is given */
+    bool constrained;
     double estimate_bytes; /* the memory the case was estimated to need before it was built */
     SolidEstimate solid_estimate; /* the models' estimates, before anything was built */
     FlowEstimate flow_estimate;

@@ -347,7 +347,9 @@ static int check_points(const Solid *s) {
     return bad == INT64_MAX ? NSPD_OK : NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
 }
 
-int solid_advance(Solid *s, double dt, double max_substep) {
+/* Before an advance: on several processes the couplings' loads and
+ * velocities handed to this process's points. */
+static void take_whole_view(Solid *s) {
     if (comm_distributed(&s->comm)) { /* the couplings' loads on this process's points */
         const PdPoints *p = &s->points;
         for (int d = 0; d < p->dim; d++)
@@ -357,6 +359,21 @@ int solid_advance(Solid *s, double dt, double max_substep) {
     }
     s->velocities_changed = false;
     s->advances++;
+}
+
+bool solid_can_be_constrained(const Solid *s) {
+    return s->ops->step_constrained != NULL;
+}
+
+int solid_advance_constrained(Solid *s, double dt) {
+    take_whole_view(s);
+    TRY(s->ops->step_constrained(s->impl, dt));
+    s->last_substeps = 1;
+    return check_points(s);
+}
+
+int solid_advance(Solid *s, double dt, double max_substep) {
+    take_whole_view(s);
     int64_t n = (int64_t)ceil(dt / max_substep * (1.0 - 1e-12));
     if (n < 1) n = 1;
     double h = dt / (double)n;

@@ -120,6 +120,14 @@ typedef struct {
     void (*destroy)(void *impl);
     double (*stable_dt)(const void *impl); /* without a safety factor */
     int (*step)(void *impl, double dt);    /* force + integration, one step */
+    /* optional (NULL: the model cannot be constrained): one step of dt
+     * whose velocities a coupling has just prescribed (the strong coupling
+     * of paper 003, Eq. 18): u += dt v with the prescribed v, the force at
+     * the new displacements, then v += dt f / rho (the force's impulse,
+     * which the coupling hands to the flow at its next projection, Eq.
+     * 19). A drift-kick: the points move only with prescribed velocities,
+     * so the solid's own fast modes never enter its positions */
+    int (*step_constrained)(void *impl, double dt);
     double (*time)(const void *impl);
     void (*set_time)(void *impl, double t);
     void (*damage)(const void *impl, double *out);  /* per point, 0..1 */
@@ -197,6 +205,11 @@ void solid_set_time(Solid *s, double t);
  * displacement or velocity is not finite or whose speed exceeds
  * SOLID_RUNAWAY_SPEED (a blown-up integration), with its coordinates. */
 int solid_advance(Solid *s, double dt, double max_substep);
+/* Whether the model has SolidOps.step_constrained. */
+bool solid_can_be_constrained(const Solid *s);
+/* One constrained step of dt (SolidOps.step_constrained; no sub-steps),
+ * then solid_advance's check of the points. */
+int solid_advance_constrained(Solid *s, double dt);
 /* m/s: no material point of a physical run moves this fast (meteoroid
  * impacts are below 1e5 m/s); a point that does has blown up. */
 #define SOLID_RUNAWAY_SPEED 1e6

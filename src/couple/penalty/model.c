@@ -15,6 +15,8 @@
 
 const char *const PENALTY_THICKNESS_NAMES[] = {"depth_consistent", "plate_in_unit_depth", NULL};
 const char *const PENALTY_ENERGY_NAMES[] = {"total", "momentum_only", NULL};
+const char *const PENALTY_STRONG_CONSTRAINT_NAMES[] = {"every_step", "flow_step", NULL};
+const char *const PENALTY_INTEGRATION_NAMES[] = {"implicit", "explicit", NULL};
 
 /* Cells around a process's block within which a point's stencil may
  * reach its cells or its halo's (the faces a seal closes): the stencil's
@@ -59,6 +61,10 @@ typedef struct {
      * its velocity; per touched cell the covered area and velocity */
     double *cover, *cover_v[2];
     double *seal_area, *seal_u[2];
+    /* Eq. 20 (cfg.strong, cfg.subtract_fluid): per touched cell its lumped
+     * volume, covered fraction, gas mass counted (1 - phi) m, the velocity
+     * after the projection */
+    double *volume, *phi, *mass_counted, *u_new[2];
     PenaltyWork work;
     /* divided between processes (issue 28): the touched cells' and the
      * candidates' owners, what this process forms, and the plan of the
@@ -83,13 +89,20 @@ typedef struct {
 static void penalty_destroy(void *impl) {
     PenaltyCoupling *p = impl;
     if (!p) return;
-    double **arrays[] = {
-        &p->x[0],       &p->x[1],       &p->m,         &p->b,         &p->v[0],        &p->v[1],
-        &p->J[0],       &p->J[1],       &p->w,         &p->mass,      &p->u[0],        &p->u[1],
-        &p->dm[0],      &p->dm[1],      &p->de,        &p->work_rate, &p->work.sample, &p->work.x,
-        &p->work.r,     &p->work.z,     &p->work.p,    &p->work.ap,   &p->work.diag,   &p->cover,
-        &p->cover_v[0], &p->cover_v[1], &p->seal_area, &p->seal_u[0], &p->seal_u[1],   &p->cm,
-        &p->cb,         &p->cv[0],      &p->cv[1],     &p->cJ[0],     &p->cJ[1],       &p->cwr};
+    double **arrays[] = {&p->x[0],       &p->x[1],        &p->m,
+                         &p->b,          &p->v[0],        &p->v[1],
+                         &p->J[0],       &p->J[1],        &p->w,
+                         &p->mass,       &p->u[0],        &p->u[1],
+                         &p->dm[0],      &p->dm[1],       &p->de,
+                         &p->work_rate,  &p->work.sample, &p->work.x,
+                         &p->work.r,     &p->work.z,      &p->work.p,
+                         &p->work.ap,    &p->work.diag,   &p->cover,
+                         &p->cover_v[0], &p->cover_v[1],  &p->seal_area,
+                         &p->seal_u[0],  &p->seal_u[1],   &p->cm,
+                         &p->cb,         &p->cv[0],       &p->cv[1],
+                         &p->cJ[0],      &p->cJ[1],       &p->cwr,
+                         &p->volume,     &p->phi,         &p->mass_counted,
+                         &p->u_new[0],   &p->u_new[1]};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++) nspd_free(arrays[k]);
     nspd_free(&p->cell);
     nspd_free(&p->col);
@@ -139,6 +152,11 @@ static int allocate(PenaltyCoupling *p) {
             TRY(nspd_alloc(seal_cell[k], e ? e : 1, sizeof(double)));
         }
     }
+    if (p->cfg.strong && p->cfg.subtract_fluid) {
+        double **eq20[] = {&p->volume, &p->phi, &p->mass_counted, &p->u_new[0], &p->u_new[1]};
+        for (size_t k = 0; k < sizeof eq20 / sizeof *eq20; k++)
+            TRY(nspd_alloc(eq20[k], e ? e : 1, sizeof(double)));
+    }
     TRY(nspd_alloc(&p->w, e ? e : 1, sizeof(double)));
     TRY(nspd_alloc(&p->cell, e ? e : 1, sizeof(int64_t)));
     TRY(nspd_alloc(&p->col, e ? e : 1, sizeof(int32_t)));
@@ -184,6 +202,13 @@ static int penalty_create(void **impl, CouplingConfig *cfg, Solid *solid, Flow *
     if (pts->dim != 2)
         return NSPD_FAIL(NSPD_ERR_INPUT, "the penalty coupling needs a 2D solid, not %dD",
                          pts->dim);
+    if (pc->strong && pc->strong_constraint == PENALTY_STRONG_EVERY_STEP &&
+        !solid_can_be_constrained(solid))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the strong coupling at every step needs a solid whose velocities can "
+                         "be prescribed; the '%s' solid's cannot (expected strong_constraint: "
+                         "flow_step)",
+                         solid_name(solid));
     PenaltyCoupling *p;
     TRY(nspd_alloc(&p, 1, sizeof *p));
     p->cfg = *(const PenaltyConfig *)cfg->model;
@@ -485,6 +510,34 @@ static double penalty_at(const PenaltyCoupling *p, const Solid *solid, const dou
     return scale * solid_modulus(solid, i) * (damage ? 1.0 - damage[i] : 1.0);
 }
 
+/* Eq. 20's lumped reading: per touched cell c the fraction phi_c =
+ * sum_P W_Pc A_P / V_c (capped at 1) of its lumped volume that the
+ * coupled points cover (A_P a point's volume per metre of the gas's depth,
+ * as its mass: its in-plane area when the solid is as deep as the gas,
+ * that times t / 1 m for a plate in unit depth; a decoupled point,
+ * b = 0, covers nothing: the gas is back where the solid has failed), and
+ * the gas mass the momentum rows count, (1 - phi_c) m_c. The candidates'
+ * work-rate array is the areas' scratch (written again after the solve). */
+static int covered_fractions(PenaltyCoupling *p, const Flow *flow, const PdPoints *pts) {
+    for (int64_t k = 0; k < p->nc; k++) {
+        const int64_t i = p->pick[k];
+        p->cwr[k] = p->cb[k] > 0.0 ? pts->volume[i] / p->depth : 0.0;
+    }
+    flow_lumped_volume(flow, p->cells, p->cell_id, p->volume);
+    const bool divided = comm_distributed(&p->comm);
+    const int64_t own = divided ? p->div.own_cells : p->cells;
+    double most = 0.0;
+    for (int64_t q = 0; q < own; q++) {
+        const int64_t c = divided ? p->own_cell[q] : q;
+        const double phi = fmin(1.0, gather(p, c, p->cwr) / p->volume[c]);
+        p->phi[c] = phi;
+        p->mass_counted[c] = (1.0 - phi) * p->mass[c];
+        if (phi > most) most = phi;
+    }
+    p->step.covered_max = comm_max(&p->comm, most);
+    return NSPD_OK;
+}
+
 /* The relaxation after the flow's step and before the solid's: the points'
  * velocities and the cells' momentum change by the impulses at once (a
  * split step: relaxation, then the solid's own dynamics from the relaxed
@@ -501,9 +554,16 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
         const double E = solid_modulus(solid, 0);
         nspd_log(LOG_INFO,
                  "penalty coupling: C_pen = beta E dt/h^2 = %g x %g Pa x %g s / (%g m)^2 = %g "
-                 "kg/(m^3 s)%s, %s weights, %s",
+                 "kg/(m^3 s)%s%s%s%s, %s weights, %s",
                  p->cfg.beta, E, p->dt_pen, p->h, p->cfg.beta * E * p->dt_pen / (p->h * p->h),
-                 p->cfg.strong ? " (strong: the limit beta -> infinity)" : "",
+                 p->cfg.strong ? " (strong: the limit beta -> infinity, " : "",
+                 !p->cfg.strong                                          ? ""
+                 : p->cfg.strong_constraint == PENALTY_STRONG_EVERY_STEP ? "at every step"
+                                                                         : "once per flow step",
+                 !p->cfg.strong          ? ""
+                 : p->cfg.subtract_fluid ? ", Eq. 20's fluid over the solid subtracted)"
+                                         : ")",
+                 !p->cfg.strong && p->cfg.integration == PENALTY_EXPLICIT ? ", explicit" : "",
                  FLOW_TRANSFER_NAMES[p->cfg.transfer], PENALTY_THICKNESS_NAMES[p->cfg.thickness]);
     }
     const int64_t n = p->n;
@@ -538,9 +598,13 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
             p->cb[k] = 0.0; /* no gas around it */
         else if (p->cfg.strong)
             p->cb[k] = damage && damage[i] >= 1.0 ? 0.0 : p->m[i];
+        else if (p->cfg.integration == PENALTY_EXPLICIT)
+            p->cb[k] = a;
         else
             p->cb[k] = a > 0.0 ? a * p->m[i] / (p->m[i] + a) : 0.0;
     }
+    const bool eq20 = p->cfg.strong && p->cfg.subtract_fluid;
+    if (eq20) TRY(covered_fractions(p, flow, pts));
     const PenaltySystem sys = {.points = p->nc,
                                .width = p->width,
                                .col = p->col,
@@ -549,14 +613,18 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
                                .b = p->cb,
                                .v = {p->cv[0], p->cv[1]},
                                .cells = p->cells,
-                               .mass = p->mass,
+                               .mass = eq20 ? p->mass_counted : p->mass,
                                .u = {p->u[0], p->u[1]},
+                               .u_out = {eq20 ? p->u_new[0] : NULL, eq20 ? p->u_new[1] : NULL},
                                .first = p->first,
                                .point = p->point,
                                .weight = p->weight,
                                .div = divided ? &p->div : NULL};
     PenaltyStats stats;
-    penalty_relax(&sys, &p->work, p->cJ, &stats);
+    if (p->cfg.integration == PENALTY_EXPLICIT && !p->cfg.strong)
+        penalty_explicit(&sys, &p->work, p->cJ, &stats);
+    else
+        penalty_relax(&sys, &p->work, p->cJ, &stats);
     TRY(p->status);
     int64_t with_gas;
     TRY(share_impulses(p, &with_gas));
@@ -591,12 +659,22 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     for (int k = 0; k < 3; k++) exact_sum_clear(&sums[k]);
     for (int64_t q = 0; q < own; q++) {
         const int64_t c = divided ? p->own_cell[q] : q;
+        /* Eq. 20: the whole cell moves at the projected velocity, the
+         * covered part's gas (not in the rows) with it, its kinetic
+         * energy's change added so its temperature stays */
+        double covered_ke = 0.0;
         for (int d = 0; d < 2; d++) {
-            p->dm[d][c] = -gather(p, c, p->cJ[d]);
+            if (eq20) {
+                const double du = p->u_new[d][c] - p->u[d][c];
+                p->dm[d][c] = p->mass[c] * du;
+                covered_ke += 0.5 * p->phi[c] * p->mass[c] * du * (p->u_new[d][c] + p->u[d][c]);
+            } else {
+                p->dm[d][c] = -gather(p, c, p->cJ[d]);
+            }
             exact_sum_add(&sums[d], p->dm[d][c]);
         }
         if (energy) {
-            p->de[c] = gather(p, c, p->cwr);
+            p->de[c] = gather(p, c, p->cwr) + covered_ke;
             exact_sum_add(&sums[2], p->de[c]);
         }
     }
@@ -610,6 +688,11 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     const double fx = p->step.impulse[0] / dt;
     if (fabs(fx) > fabs(p->force_x_max)) p->force_x_max = fx;
     return NSPD_OK;
+}
+
+static bool penalty_constrains_solid(const void *impl) {
+    const PenaltyCoupling *p = impl;
+    return p->cfg.strong && p->cfg.strong_constraint == PENALTY_STRONG_EVERY_STEP;
 }
 
 static void penalty_loads(const void *impl, CouplingLoads *out) {
@@ -644,6 +727,8 @@ static int penalty_history(void *impl, Solid *solid, Flow *flow, double time, Re
     report_real(row, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
     report_int(row, "substeps", solid_last_substeps(solid));
     report_real(row, "com_dx_m", com_dx(solid));
+    if (p->cfg.strong && p->cfg.subtract_fluid)
+        report_real(row, "covered_max", p->step.covered_max);
     return NSPD_OK;
 }
 
@@ -694,6 +779,7 @@ const CouplingOps PENALTY_COUPLING_OPS = {
     .before_flow = penalty_before_flow,
     .after_flow = penalty_after_flow,
     .solid_dt_limit = NULL,
+    .constrains_solid = penalty_constrains_solid,
     .loads = penalty_loads,
     .history = penalty_history,
     .summary = penalty_summary,

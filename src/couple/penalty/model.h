@@ -15,9 +15,22 @@
  * force at the solid's motion (-J . dx / dt), so gas total + solid
  * mechanical energy is conserved and the penalty's dissipation heats the
  * gas (`energy: momentum_only` is the paper's variant: momentum rows only).
- * `strong` is the beta -> infinity limit: the points move with the
- * sampled gas velocity (Eq. 18) and their internal force returns to the
- * gas through the same weights (Eq. 19).
+ * `strong` is the paper's strong coupling (Eqs. 18-20, Remark 3.1), the
+ * beta -> infinity limit of the same relaxation: the points' velocities
+ * are the flow's, interpolated with the transfer weights (Eq. 18), and
+ * the solid's mass and internal force enter the flow's momentum rows
+ * through the same weights (Eq. 19, the system W^T M_s W of relax.h). By
+ * default (`strong_constraint: every_step`, the paper's) this happens at
+ * every step: the flow's step is the solid's, and the solid only drifts
+ * with the prescribed velocities and kicks with its force
+ * (solid_advance_constrained), which the next projection hands to the
+ * gas; `flow_step` is the earlier reading, the solid slaved once per flow
+ * step and free over its sub-steps. `subtract_fluid` (the paper's, on by
+ * default with strong) takes the fluid's forms over the solid's volume
+ * out of the momentum rows (Eq. 20): in the lumped reading, unknown c's
+ * gas mass and the gas's own momentum change of the step count with 1 -
+ * phi_c, phi_c = sum_P W_Pc A_P / V_c the fraction of its lumped volume
+ * the intact solid covers (docs/COUPLING_STRONG.md).
  *
  * Through the interfaces only: the flow's transfer, lumped and add_lumped
  * operations (flow.h), the solid's PdPoints, damage, modulus and density. */
@@ -45,12 +58,29 @@ typedef enum {
 } PenaltyEnergy;
 extern const char *const PENALTY_ENERGY_NAMES[];
 
+/* When the strong coupling constrains the solid (PenaltyConfig.strong). */
+typedef enum {
+    PENALTY_STRONG_EVERY_STEP = 0, /* the paper's: at every (shared) step */
+    PENALTY_STRONG_FLOW_STEP,      /* once per flow step, free sub-steps in between */
+} PenaltyStrongConstraint;
+extern const char *const PENALTY_STRONG_CONSTRAINT_NAMES[];
+
+/* How the penalty is integrated over a step (weak coupling). */
+typedef enum {
+    PENALTY_IMPLICIT = 0, /* backward Euler, solved (relax.h): stable for any beta and step */
+    PENALTY_EXPLICIT,     /* the paper's: the force at the step's start (penalty_explicit) */
+} PenaltyIntegration;
+extern const char *const PENALTY_INTEGRATION_NAMES[];
+
 typedef struct {
-    double beta;  /* > 0 */
-    bool strong;  /* the beta -> infinity limit */
-    bool damaged; /* Eq. 23: C_P scaled by 1 - d_P */
-    double h;     /* m, the length in C_pen; 0: the solid's lattice spacing */
-    double dt;    /* s, the step in C_pen; 0: the solid's stable step */
+    double beta; /* > 0 */
+    PenaltyIntegration integration;
+    bool strong; /* the beta -> infinity limit */
+    PenaltyStrongConstraint strong_constraint;
+    bool subtract_fluid; /* strong: Eq. 20's minus the fluid over the solid */
+    bool damaged;        /* Eq. 23: C_P scaled by 1 - d_P */
+    double h;            /* m, the length in C_pen; 0: the solid's lattice spacing */
+    double dt;           /* s, the step in C_pen; 0: the solid's stable step */
     FlowTransferKind transfer;
     PenaltyThickness thickness;
     PenaltyEnergy energy;
@@ -77,6 +107,7 @@ typedef struct {
     int iterations;       /* of the solve */
     int64_t outside;      /* points with no gas around them */
     double energy_to_gas; /* J per metre of depth, added so far */
+    double covered_max;   /* subtract_fluid: the largest phi_c of the step */
 } PenaltyStepInfo;
 const PenaltyStepInfo *penalty_coupling_step(Coupling *c);
 

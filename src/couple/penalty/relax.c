@@ -136,6 +136,36 @@ static void solve(const PenaltySystem *s, PenaltyWork *wk, int d, int *iteration
     *residual = sqrt(rr / scale2);
 }
 
+void penalty_explicit(const PenaltySystem *s, PenaltyWork *wk, double *J[2], PenaltyStats *stats) {
+    *stats = (PenaltyStats){0};
+    const Items cells = own_cells(s), pts = own_points(s);
+    ExactSum slip_work;
+    exact_sum_clear(&slip_work);
+    for (int d = 0; d < 2; d++) {
+        for (int64_t q = 0; q < cells.n; q++) wk->x[item(cells, q)] = s->u[d][item(cells, q)];
+        exchange(s, wk->x);
+        sample(s, pts, wk->x, wk->sample);
+        if (s->div) memset(J[d], 0, (size_t)s->points * sizeof(double));
+        for (int64_t q = 0; q < pts.n; q++) {
+            const int64_t p = item(pts, q);
+            const double rel = wk->sample[p] - s->v[d][p];
+            J[d][p] = s->b[p] * rel;
+            exact_sum_add(&slip_work, s->b[p] * rel * rel);
+        }
+    }
+    reduce(s, &slip_work, 1);
+    stats->slip_work = exact_sum_value(&slip_work);
+    /* the points' slip after their velocity change alone (the cells'
+     * change, after, is the caller's): |s - v - J/m| */
+    for (int64_t q = 0; q < pts.n; q++) {
+        const int64_t p = item(pts, q);
+        if (!(s->b[p] > 0.0)) continue;
+        const double keep = (1.0 - s->b[p] / s->m[p]) / s->b[p];
+        const double slip = hypot(J[0][p] * keep, J[1][p] * keep);
+        if (slip > stats->slip_max) stats->slip_max = slip;
+    }
+}
+
 void penalty_relax(const PenaltySystem *s, PenaltyWork *wk, double *J[2], PenaltyStats *stats) {
     *stats = (PenaltyStats){0};
     const Items cells = own_cells(s), pts = own_points(s);
@@ -155,6 +185,9 @@ void penalty_relax(const PenaltySystem *s, PenaltyWork *wk, double *J[2], Penalt
         solve(s, wk, d, &it, &res);
         if (it > stats->iterations) stats->iterations = it;
         if (res > stats->residual) stats->residual = res;
+        if (s->u_out[d])
+            for (int64_t q = 0; q < cells.n; q++)
+                s->u_out[d][item(cells, q)] = wk->x[item(cells, q)];
         exchange(s, wk->x);
         sample(s, pts, wk->x, wk->sample);
         if (s->div) memset(J[d], 0, (size_t)s->points * sizeof(double));

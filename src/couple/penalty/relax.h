@@ -62,6 +62,7 @@ typedef struct {
     int64_t cells;
     const double *mass; /* cells: kg per metre of depth, > 0 */
     const double *u[2]; /* cells: velocity at the start */
+    double *u_out[2];   /* cells: the velocity after, this process's cells (NULL: not wanted) */
     /* the same entries by cell, in point order within a cell: cell c's are
      * k = first[c] .. first[c+1]-1, of point point[k] with weight weight[k] */
     const int64_t *first; /* cells + 1 */
@@ -92,5 +93,13 @@ enum { PENALTY_CG_MAX = 500 };
 /* Solves the step's system and writes each point's impulse (N s per metre
  * of depth) into J[0][P], J[1][P]. */
 void penalty_relax(const PenaltySystem *s, PenaltyWork *work, double *J[2], PenaltyStats *stats);
+
+/* The paper's explicit update instead (its predictor-multicorrector holds
+ * the penalty force at the step's start): J_P = b_P (s_P - v_P), b_P =
+ * a_P = dt k_P, s_P sampled from the cells' velocities at the start; no
+ * solve. Momentum is as exact (the cells get -sum_P W_Pc J_P), but the
+ * relative velocity decays only while a_P (1/m_P + sum_c W_Pc^2 / m_c) < 2:
+ * beyond, the exchange overshoots and grows (stats->slip_max says so). */
+void penalty_explicit(const PenaltySystem *s, PenaltyWork *work, double *J[2], PenaltyStats *stats);
 
 #endif

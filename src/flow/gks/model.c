@@ -478,6 +478,21 @@ static void gks_flow_lumped(const void *impl, int64_t n, const int64_t *cells, d
     }
 }
 
+static void gks_flow_lumped_volume(const void *impl, int64_t n, const int64_t *cells,
+                                   double *volume) {
+    const GksFlow *gf = impl;
+    GksSolver *s = gf->solver;
+    const NspdComm *comm = gks_solver_comm(s);
+    for (int64_t k = 0; k < n; k++) {
+        int64_t local = cells[k];
+        if (comm_distributed(comm) && cell_owner(s, cells[k], &local) != comm->rank) {
+            volume[k] = (double)NAN; /* another process's */
+            continue;
+        }
+        gks_lumped_volume(gks_solver_grid(s), 1, &local, &volume[k]);
+    }
+}
+
 static void gks_flow_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
                                 const double *dmy, const double *de) {
     GksSolver *s = ((GksFlow *)impl)->solver;
@@ -767,6 +782,7 @@ const FlowOps GKS_FLOW_OPS = {
     .cell_owner = gks_flow_cell_owner,
     .point_near = gks_flow_point_near,
     .lumped = gks_flow_lumped,
+    .lumped_volume = gks_flow_lumped_volume,
     .add_lumped = gks_flow_add_lumped,
     .seal = gks_flow_seal,
     .totals = gks_totals,

@@ -114,6 +114,10 @@ void gks_lumped(const Grid *g, const GksFields *f, int64_t n, const int64_t *cel
     }
 }
 
+void gks_lumped_volume(const Grid *g, int64_t n, const int64_t *cells, double *volume) {
+    for (int64_t k = 0; k < n; k++) volume[k] = cell_area(g, cells[k]);
+}
+
 void gks_add_lumped(const Grid *g, GksFields *f, int64_t n, const int64_t *cells, const double *dmx,
                     const double *dmy, const double *de) {
     for (int64_t k = 0; k < n; k++) {

@@ -25,6 +25,9 @@ void gks_transfer(const Grid *g, const uint8_t *kind, FlowTransferKind mode, int
 void gks_lumped(const Grid *g, const GksFields *f, int64_t n, const int64_t *cells, double *mass,
                 double *momentum_x, double *momentum_y);
 
+/* The area of cells[k] (m^2 per metre of depth). */
+void gks_lumped_volume(const Grid *g, int64_t n, const int64_t *cells, double *volume);
+
 /* Adds momentum and total energy (per metre of depth; a NULL array: none
  * of that). */
 void gks_add_lumped(const Grid *g, GksFields *f, int64_t n, const int64_t *cells, const double *dmx,

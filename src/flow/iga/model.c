@@ -278,6 +278,10 @@ static void iga_lumped(const void *impl, int64_t n, const int64_t *cells, double
     iga_solver_lumped(((const IgaFlow *)impl)->solver, n, cells, mass, momentum_x, momentum_y);
 }
 
+static void iga_lumped_volume(const void *impl, int64_t n, const int64_t *cells, double *volume) {
+    iga_solver_lumped_volume(((const IgaFlow *)impl)->solver, n, cells, volume);
+}
+
 static void iga_add_lumped(void *impl, int64_t n, const int64_t *cells, const double *dmx,
                            const double *dmy, const double *de) {
     iga_solver_add_lumped(((IgaFlow *)impl)->solver, n, cells, dmx, dmy, de);
@@ -452,6 +456,7 @@ const FlowOps IGA_FLOW_OPS = {
     .probe_state = iga_probe_state,
     .transfer = iga_transfer,
     .lumped = iga_lumped,
+    .lumped_volume = iga_lumped_volume,
     .add_lumped = iga_add_lumped,
     .totals = iga_totals,
     .history = iga_history,

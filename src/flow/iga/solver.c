@@ -927,8 +927,8 @@ int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const doubl
 }
 
 /* int N_A rho^h over the support of control point k (Gauss, the
- * support's elements in ascending order). */
-static double lumped_mass(const IgaSolver *s, int64_t k) {
+ * support's elements in ascending order); with `unit`, int N_A. */
+static double lumped_integral(const IgaSolver *s, int64_t k, bool unit) {
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
     const int w = s->width, i = (int)(k % s->ncx), j = (int)(k / s->ncx);
     double m = 0.0;
@@ -940,6 +940,11 @@ static double lumped_mass(const IgaSolver *s, int64_t k) {
                 for (int qx = 0; qx < ax->gauss; qx++) {
                     const double *nx = at_point(ax, ax->value, ex, qx),
                                  *ny = at_point(ay, ay->value, ey, qy);
+                    const double wq = ax->weight[qx] * ay->weight[qy] * nx[la] * ny[lb];
+                    if (unit) {
+                        m += wq;
+                        continue;
+                    }
                     double p = 0.0, T = 0.0;
                     for (int b = 0; b < w; b++)
                         for (int a = 0; a < w; a++) {
@@ -947,10 +952,18 @@ static double lumped_mass(const IgaSolver *s, int64_t k) {
                             p += nx[a] * ny[b] * s->Y[4 * c];
                             T += nx[a] * ny[b] * s->Y[4 * c + 3];
                         }
-                    m += ax->weight[qx] * ay->weight[qy] * nx[la] * ny[lb] * p / (s->cfg.R * T);
+                    m += wq * p / (s->cfg.R * T);
                 }
         }
     return m;
+}
+
+static double lumped_mass(const IgaSolver *s, int64_t k) {
+    return lumped_integral(s, k, false);
+}
+
+void iga_solver_lumped_volume(const IgaSolver *s, int64_t n, const int64_t *cps, double *volume) {
+    for (int64_t q = 0; q < n; q++) volume[q] = lumped_integral(s, cps[q], true);
 }
 
 void iga_solver_lumped(const IgaSolver *s, int64_t n, const int64_t *cps, double *mass, double *mx,

@@ -140,6 +140,9 @@ int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const doubl
 void iga_solver_lumped(const IgaSolver *s, int64_t n, const int64_t *cps, double *mass, double *mx,
                        double *my);
 
+/* int N_A (m^2 per metre of depth) of control points cps[q]. */
+void iga_solver_lumped_volume(const IgaSolver *s, int64_t n, const int64_t *cps, double *volume);
+
 /* Adds momentum (dmx, dmy) and total energy de (per metre of depth; NULL:
  * none) to the distinct control points cps[q], between steps: the control
  * velocity by the momentum over the lumped mass, the temperature by the

@@ -97,6 +97,22 @@ int pd_step(BondBody *body, double dt) {
     return NSPD_OK;
 }
 
+int pd_step_constrained(BondBody *body, double dt) {
+    const PdMotion m = motion_of(body);
+    const double t = body->time;
+    bool bad = pd_drift(&m, dt, t + dt);
+    exchange_and_mark(body);
+    TRY(pd_force_compute(body));
+    pd_kick(&m, dt, t + dt, t + dt);
+    /* velocity Verlet's next step kicks with this force */
+    body->force_valid = body->cfg.integrator == PD_VELOCITY_VERLET;
+    if (body->halo) bad = comm_max_i64(&body->halo->points.comm, bad) != 0;
+    if (bad) return report_non_finite(body);
+    body->step++;
+    body->time += dt;
+    return NSPD_OK;
+}
+
 double pd_stable_time_step(const BondBody *body) {
     double min_dt2 = INFINITY;
 #pragma omp parallel for schedule(static) reduction(min                                            \

@@ -16,6 +16,9 @@
  * Returns NSPD_ERR_NUMERIC (with the first bad point and its position) if a
  * displacement or velocity is not finite. */
 int pd_step(BondBody *body, double dt);
+/* One step whose velocities a coupling prescribed (SolidOps.step_constrained):
+ * u += dt v, the force at the new u, v += dt a (either integrator). */
+int pd_step_constrained(BondBody *body, double dt);
 
 /* The stable time step of Silling and Askari (2005):
  *     dt_i = sqrt(2 rho / sum_j k_ij),  dt = min_i dt_i

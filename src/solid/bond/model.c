@@ -109,6 +109,10 @@ static int bond_step(void *impl, double dt) {
     return pd_step(&((BondSolid *)impl)->body, dt);
 }
 
+static int bond_step_constrained(void *impl, double dt) {
+    return pd_step_constrained(&((BondSolid *)impl)->body, dt);
+}
+
 static double bond_time(const void *impl) {
     return ((const BondSolid *)impl)->body.time;
 }
@@ -304,6 +308,7 @@ const SolidOps BOND_SOLID_OPS = {
     .destroy = bond_destroy,
     .stable_dt = bond_stable_dt,
     .step = bond_step,
+    .step_constrained = bond_step_constrained,
     .time = bond_time,
     .set_time = bond_set_time,
     .damage = bond_damage,

@@ -153,6 +153,9 @@ int cpd_body_pair_arrays(CpdBody *b);
 enum { CPD_REESTIMATE_STEPS = 20, CPD_COLD_ITERATIONS = 30 };
 #define CPD_DAMAGED_SAFETY 0.8
 int cpd_step(CpdBody *b, double dt);
+/* One step whose velocities a coupling prescribed (SolidOps.step_constrained):
+ * u += dt v, the force at the new u, v += dt f / rho; no sub-steps. */
+int cpd_step_constrained(CpdBody *b, double dt);
 /* The force density at the current u into b->force, advancing the bond
  * stresses from u_prev and the damage (what cpd_step calls); the contact
  * force added where the body has contact. NSPD_ERR_NOMEM if contact's

@@ -136,6 +136,10 @@ static int cpd_step_op(void *impl, double dt) {
     return cpd_step(&((CpdSolid *)impl)->body, dt);
 }
 
+static int cpd_step_constrained_op(void *impl, double dt) {
+    return cpd_step_constrained(&((CpdSolid *)impl)->body, dt);
+}
+
 static double cpd_time(const void *impl) {
     return ((const CpdSolid *)impl)->body.time;
 }
@@ -525,6 +529,7 @@ const SolidOps CPD_SOLID_OPS = {
     .destroy = cpd_destroy,
     .stable_dt = cpd_stable,
     .step = cpd_step_op,
+    .step_constrained = cpd_step_constrained_op,
     .time = cpd_time,
     .set_time = cpd_set_time,
     .damage = cpd_damage,

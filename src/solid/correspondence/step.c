@@ -400,6 +400,26 @@ static int substep(CpdBody *b, double dt) {
     return NSPD_OK;
 }
 
+int cpd_step_constrained(CpdBody *b, double dt) {
+    const PdMotion m = motion_of(b);
+    const double t = b->time;
+    remember_u(b); /* the last force was formed at this u: the coupling moved only v */
+    const bool bad = cpd_halo_sum(b, pd_drift(&m, dt, t + dt)) > 0; /* all ranks fail together */
+    cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
+    TRY(cpd_force(b, t + dt));
+    pd_kick(&m, dt, t + dt, t + dt);
+    b->force_valid = true;
+    if (b->substeps_max < 1) b->substeps_max = 1;
+    if (bad)
+        return NSPD_FAIL(NSPD_ERR_NUMERIC,
+                         "a constrained correspondence solid point has a non-finite displacement "
+                         "at step %lld (t = %g s): the prescribed velocities are not finite",
+                         (long long)b->step + 1, b->time);
+    b->time += dt;
+    b->step++;
+    return NSPD_OK;
+}
+
 /* Warm re-estimates: cheaper than the first (the mode moves little between
  * them), still enough for the Rayleigh quotient to settle within the
  * margin (tests/unit/solid/correspondence/test_solid.c). */
