@@ -226,10 +226,13 @@ int cmd_info(int argc, char **argv) {
     printf("case                 %s\n", sim.cfg.name);
     fputs(solid_text, stdout);
     fputs(flow_text, stdout);
-    if (sim.solid && sim.flow)
-        printf("time step            %.6g s (the flow's CFL step); the solid sub-steps at most "
-               "%.6g s\n",
-               start_dt, sim.solid_substep);
+    if (sim.solid && sim.flow && sim.constrained)
+        printf("time step            %.6g s (%s); the strong coupling constrains the solid at "
+               "every step\n",
+               start_dt, sim.cfg.dt_given ? "given" : "the solid's step, below the CFL step");
+    else if (sim.solid && sim.flow)
+        printf("time step            %.6g s (%s); the solid sub-steps at most %.6g s\n", start_dt,
+               sim.cfg.dt_given ? "given" : "the flow's CFL step", sim.solid_substep);
     else
         printf("time step            %.6g s (%s)\n", start_dt,
                sim.cfg.dt_given ? "given"

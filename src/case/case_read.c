@@ -24,8 +24,17 @@ static int read_time(CfgNode *root, SimConfig *cfg) {
     /* where time.end was given, for the step-count check made once the
      * stable step is known (sim/sim.c) */
     cfg_node_where(cfg_map_find(t, "end"), cfg->end_time_at, sizeof cfg->end_time_at);
-    TRY(cfg_maybe_double(t, "dt", &cfg->dt, &cfg->dt_given));
-    if (cfg->dt_given) TRY(cfg_check_positive(t, "dt", cfg->dt, "a time step in s"));
+    /* `dt: stable` is the default said aloud: what a --set gives back
+     * where a case file fixes its step (the paper's, in the blast cases) */
+    const CfgNode *dt = cfg_map_find(t, "dt");
+    if (dt && dt->kind == CFG_SCALAR && strcmp(dt->text, "stable") == 0) {
+        const char *word;
+        TRY(cfg_opt_string(t, "dt", NULL, &word)); /* used */
+        cfg->dt = 0.0, cfg->dt_given = false;
+    } else {
+        TRY(cfg_maybe_double(t, "dt", &cfg->dt, &cfg->dt_given));
+        if (cfg->dt_given) TRY(cfg_check_positive(t, "dt", cfg->dt, "a time step in s"));
+    }
     TRY(cfg_opt_double(t, "safety_factor", 0.8, &cfg->safety_factor));
     TRY(cfg_check_range(t, "safety_factor", cfg->safety_factor, 1e-6, 1.0,
                         "a fraction of the stable time step in (0, 1]"));
