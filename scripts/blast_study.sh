@@ -14,15 +14,22 @@
 # summary.json says so) and only tabulates and plots them.
 # BACKGROUNDS (default "gks iga") and COUPLINGS (default "weak strong";
 # "damaged" is the weak coupling with the damaged penalty, Eq. 23;
-# "sealed" the weak coupling with sealed faces, coupling.seal, GKS only) in
+# "sealed" the weak coupling with sealed faces, coupling.seal, GKS only;
+# "betaB" the weak coupling with beta = B, e.g. beta0.333333 beta3 beta9) in
 # the environment choose the runs. The background "igal" is the isogeometric
 # flow's limited step (flow.iga.limiter: convex, inviscid: issue 57).
+# STEPS (default "paper"): the paper's time steps (issue 60: the weak
+# couplings at C_pen's step, the strong one at 8 (chamber) or 4 times it,
+# constrained at every step); "cfl": the flow's CFL step, the strong
+# coupling slaved once per flow step (strong_constraint: flow_step), the
+# runs of before issue 60.
 set -eu
 nspd=${1:-build/nspd}
 level=${2:-coarse}
 cases=${3:-chamber square cylinder}
 threads=${4:-1}
 out=out/blast_study/$level
+[ "${STEPS:-paper}" = paper ] || out=out/blast_study/${level}_$STEPS
 mkdir -p "$out" docs/img
 
 # mesh CASE: the --set overrides of LEVEL (solid spacing, gas spacing,
@@ -37,6 +44,18 @@ mesh() {
     cylinder:medium) echo "1.5e-3 4.5e-3 7.5e-8" ;;
     cylinder:fine) echo "1.0e-3 3.0e-3 5.0e-8" ;;
     *) echo "blast_study.sh: unknown case or level '$1:$level'" >&2; exit 2 ;;
+    esac
+}
+
+# weak_dt CASE: the paper's weak-coupling step at LEVEL (C_pen's dt), s
+weak_dt() {
+    case "$1:$level" in
+    chamber:coarse) echo 1.25e-7 ;;
+    chamber:medium) echo 6.25e-8 ;;
+    chamber:fine) echo 3.125e-8 ;;
+    *:coarse) echo 1.0e-7 ;;
+    *:medium) echo 7.5e-8 ;;
+    *:fine) echo 5.0e-8 ;;
     esac
 }
 
@@ -69,7 +88,8 @@ for c in $cases; do
     for bg in ${BACKGROUNDS:-gks iga}; do
         for coupling in ${COUPLINGS:-weak strong}; do
             dir=$out/${c}_${bg}_$coupling
-            strong=false damaged=false seal=false
+            strong=false damaged=false seal=false beta=1
+            case "$coupling" in beta*) beta=${coupling#beta} ;; esac
             [ "$coupling" = strong ] && strong=true
             [ "$coupling" = damaged ] && damaged=true
             [ "$coupling" = sealed ] && seal=true
@@ -80,12 +100,22 @@ for c in $cases; do
                 method=iga
                 set -- --set flow.iga.limiter=convex --set "flow.gas.viscosity={law: none}"
             fi
-            echo "== $c, $level, $bg, $coupling"
+            # the step: the paper's (the strong one 8 or 4 times the weak)
+            # or the CFL step with the slaving of before issue 60
+            step="--set time.dt=stable --set coupling.strong_constraint=flow_step"
+            if [ "${STEPS:-paper}" = paper ]; then
+                factor=1
+                [ "$coupling" = strong ] && factor=4
+                [ "$coupling:$c" = strong:chamber ] && factor=8
+                step="--set time.dt=$(awk -v a="$(weak_dt "$c")" -v f=$factor 'BEGIN { printf "%.6g", a * f }')"
+            fi
+            echo "== $c, $level, $bg, $coupling, ${STEPS:-paper} steps"
             [ "${REUSE:-0}" = 1 ] && grep -q '"completed": true' "$dir/summary.json" 2>/dev/null ||
             # shellcheck disable=SC2086
             "$nspd" run "$(file_of "$c")" -o "$dir" --force --quiet --threads "$threads" \
                 --set flow.method=$method --set coupling.strong=$strong \
-                --set coupling.damaged=$damaged --set coupling.seal=$seal $over "$@"
+                --set coupling.damaged=$damaged --set coupling.seal=$seal --set coupling.beta=$beta \
+                $over $step "$@"
             s=$dir/summary.json
             impulse=- corners=- onset=-
             if [ "$c" = chamber ]; then

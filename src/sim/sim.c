@@ -47,8 +47,8 @@ static int choose_pace(Sim *sim) {
             nspd_log(sim->constrained ? LOG_INFO : LOG_WARN,
                      "time.dt = %g s exceeds the stable PD time step %g s; %s", c->dt, stable,
                      sim->constrained ? "the strong coupling constrains the solid to the flow, "
-                                        "whose projected system is stiffer only where the free "
-                                        "solid is"
+                                        "whose stable step is at least that "
+                                        "(docs/COUPLING_STRONG.md)"
                                       : "the run may blow up");
         /* alone, the solid steps with this; with a flow, it sub-steps with it */
         sim->solid_substep = c->dt_given ? c->dt : c->safety_factor * stable;

@@ -83,7 +83,9 @@ typedef struct {
     double last_dt;     /* s, of the last relaxation */
     bool said;          /* C_pen logged (at the first step: the run's log is open then) */
     PenaltyStepInfo step;
-    double force_x_max; /* N per metre of depth, on the solid, over the run */
+    double force_x_max;      /* N per metre of depth, on the solid, over the run */
+    double impulse_total[2]; /* N s per metre of depth, on the solid, over the run (the
+                                paper's integrated penalty force, Fig. 4) */
 } PenaltyCoupling;
 
 static void penalty_destroy(void *impl) {
@@ -685,6 +687,7 @@ static int penalty_after_flow(void *impl, Solid *solid, Flow *flow, double dt) {
     /* the flow adds only what this process holds */
     flow_add_lumped(flow, p->cells, p->cell_id, p->dm[0], p->dm[1], energy ? p->de : NULL);
     p->last_dt = dt;
+    for (int d = 0; d < 2; d++) p->impulse_total[d] += p->step.impulse[d];
     const double fx = p->step.impulse[0] / dt;
     if (fabs(fx) > fabs(p->force_x_max)) p->force_x_max = fx;
     return NSPD_OK;
@@ -722,6 +725,8 @@ static int penalty_history(void *impl, Solid *solid, Flow *flow, double time, Re
     penalty_loads(p, &l);
     report_real(row, "penalty_force_x_N_per_m", l.force_on_solid[0]);
     report_real(row, "penalty_force_y_N_per_m", l.force_on_solid[1]);
+    report_real(row, "penalty_impulse_x_N_s_per_m", p->impulse_total[0]);
+    report_real(row, "penalty_impulse_y_N_s_per_m", p->impulse_total[1]);
     report_real(row, "slip_max_m_s", p->step.slip_max);
     report_int(row, "penalty_iterations", p->step.iterations);
     report_real(row, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
@@ -736,6 +741,8 @@ static int penalty_summary(void *impl, Solid *solid, Flow *flow, Report *out) {
     (void)flow;
     PenaltyCoupling *p = impl;
     report_real(out, "penalty_force_x_max_n", p->force_x_max);
+    report_real(out, "penalty_impulse_x_N_s_per_m", p->impulse_total[0]);
+    report_real(out, "penalty_impulse_y_N_s_per_m", p->impulse_total[1]);
     report_real(out, "com_dx_m", com_dx(solid));
     report_real(out, "c_pen_kg_m3_s", p->step.c_pen_max);
     report_real(out, "penalty_energy_to_gas_J_per_m", p->step.energy_to_gas);
@@ -748,6 +755,7 @@ static int penalty_checkpoint(void *impl, Checkpoint *ck) {
     PenaltyCoupling *p = impl;
     TRY(checkpoint_io(ck, "penalty.step", &p->step, sizeof p->step));
     TRY(checkpoint_io_double(ck, "penalty.last_dt", &p->last_dt));
+    TRY(checkpoint_io(ck, "penalty.impulse_total", p->impulse_total, sizeof p->impulse_total));
     return checkpoint_io_double(ck, "penalty.force_x_max", &p->force_x_max);
 }
 

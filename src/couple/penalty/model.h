@@ -5,16 +5,18 @@
  * pulls the two velocities together. Nothing needs a closed surface:
  * fragments fly apart and gas streams through broken material.
  *
- * Per flow step (../shared/notes/correspondence_and_penalty.md Sec. 1a.8):
+ * Per flow step (after ../shared/notes/correspondence_and_penalty.md Sec.
+ * 1a.8, with the impulse applied at once: docs/ARCHITECTURE.md says why):
  * the flow steps as if alone; the gas velocity is sampled at the points
  * with the flow's transfer weights and the penalty relaxed implicitly
  * (couple/penalty/relax.h: unconditionally stable for any beta, momentum
- * exact); the gas gets minus each point's impulse through the same
- * weights; the solid takes the impulse as a force held over its
- * sub-steps; at the next step the gas's total energy gets the work of that
- * force at the solid's motion (-J . dx / dt), so gas total + solid
+ * exact), or by the paper's explicit update (`integration: explicit`);
+ * each point's velocity changes by its impulse J_P / m_P and the gas gets
+ * minus it through the same weights, its total energy minus the impulse's
+ * work on the point, J_P . (v_P + v_P') / 2, so gas total + solid
  * mechanical energy is conserved and the penalty's dissipation heats the
- * gas (`energy: momentum_only` is the paper's variant: momentum rows only).
+ * gas (`energy: momentum_only` is the paper's variant: momentum rows
+ * only); then the solid takes its own sub-steps.
  * `strong` is the paper's strong coupling (Eqs. 18-20, Remark 3.1), the
  * beta -> infinity limit of the same relaxation: the points' velocities
  * are the flow's, interpolated with the transfer weights (Eq. 18), and
