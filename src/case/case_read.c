@@ -431,6 +431,16 @@ static int read_all(CfgDoc *doc, SimConfig *cfg) {
             TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(PenaltyConfig)));
             TRY(read_penalty(coupling, cfg));
         } else {
+            /* the ghost cells' walls are the surface traced on the square
+             * lattice's indices (solid/pd/surface.h) */
+            const CfgNode *lattice = cfg_map_find(solid, "lattice");
+            const CfgNode *lk =
+                lattice && lattice->kind == CFG_MAP ? cfg_map_find(lattice, "kind") : NULL;
+            if (lk && lk->kind == CFG_SCALAR && strcmp(lk->text, "polar") == 0)
+                return cfg_fail_at(coupling, "kind",
+                                   "ghost_cell with solid.lattice.kind: polar: its walls are "
+                                   "traced on the square lattice; expected kind: penalty, or a "
+                                   "square lattice");
             cfg->coupling.kind = COUPLING_GHOST_CELL;
             TRY(nspd_alloc(&cfg->coupling.model, 1, sizeof(GhostCouplingConfig)));
             TRY(read_coupling(coupling, cfg));

@@ -246,6 +246,7 @@ static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
 enum { CASE_MAX_LATTICE_SITES = 1 << 30 }; /* 1.07e9: 8.6 GB of point positions in 3D alone */
 
 static int check_lattice_size(CfgNode *s, const PdConfig *cfg) {
+    if (cfg->lattice_kind == PD_LATTICE_POLAR) return NSPD_OK; /* counted in read_polar */
     double lo[3], hi[3];
     if (!shapeset_bounds(&cfg->geometry, cfg->dim, lo, hi)) return NSPD_OK; /* said later */
     double sites = 1.0;
@@ -257,6 +258,92 @@ static int check_lattice_size(CfgNode *s, const PdConfig *cfg) {
                            "expected at most %.3g (a larger spacing)",
                            cfg->spacing, sites, (double)CASE_MAX_LATTICE_SITES);
     return NSPD_OK;
+}
+
+/* solid.lattice: absent or kind square, the square lattice of `spacing`
+ * (nothing written into the resolved case when absent); kind polar, the
+ * ring's polar lattice (solid/pd/lattice.h), whose radial spacing becomes
+ * the solid's spacing. The polar keys are looked up under square too, so
+ * that the map's key list names them and a stray one is refused by name. */
+static const char *const POLAR_KEYS[] = {"center", "inner_radius", "outer_radius", "rings",
+                                         "sectors"};
+
+static int read_polar(CfgNode *s, PdConfig *cfg) {
+    CfgNode *m;
+    cfg->lattice_kind = PD_LATTICE_SQUARE;
+    TRY(cfg_opt_map(s, "lattice", &m));
+    if (!m) return NSPD_OK;
+    int kind;
+    TRY(cfg_opt_enum(m, "kind", PD_LATTICE_NAMES, PD_LATTICE_SQUARE, &kind));
+    if (kind == PD_LATTICE_SQUARE) {
+        for (size_t k = 0; k < sizeof POLAR_KEYS / sizeof *POLAR_KEYS; k++)
+            if (cfg_map_find(m, POLAR_KEYS[k]))
+                return cfg_fail_at(m, POLAR_KEYS[k],
+                                   "a key of the polar lattice; expected kind: polar, or no %s",
+                                   POLAR_KEYS[k]);
+        return cfg_end_map(m);
+    }
+    cfg->lattice_kind = PD_LATTICE_POLAR;
+    if (cfg->dim != 2) return cfg_fail_at(m, "kind", "polar with a 3D model; expected a 2D model");
+    if (cfg->has_lattice_origin)
+        return cfg_fail_at(s, "lattice_origin",
+                           "the square lattice's origin with a polar lattice; expected no "
+                           "lattice_origin");
+    PolarLattice *p = &cfg->polar;
+    TRY(cfg_req_vec(m, "center", 2, p->center));
+    TRY(cfg_req_double(m, "inner_radius", &p->inner_radius));
+    /* a full disc (r_i = 0) would crowd its inner ring's sectors, each a
+     * sliver, into the centre */
+    TRY(cfg_check_positive(m, "inner_radius", p->inner_radius,
+                           "the ring's inner radius r_i > 0 in m (the polar lattice is a ring)"));
+    TRY(cfg_req_double(m, "outer_radius", &p->outer_radius));
+    if (!(p->outer_radius > p->inner_radius))
+        return cfg_fail_at(m, "outer_radius", "%g m with inner_radius %g m; expected r_o > r_i",
+                           p->outer_radius, p->inner_radius);
+    const double width = p->outer_radius - p->inner_radius;
+    const double fit = floor(width / cfg->spacing + 0.5);
+    if (!(fit <= (double)(1 << 24)))
+        return cfg_fail_at(s, "spacing",
+                           "%g m puts %.3g rings in the polar lattice's %g m; expected at most "
+                           "%d (a larger spacing)",
+                           cfg->spacing, fit, width, 1 << 24);
+    const int64_t fitted = fit < 1.0 ? 1 : (int64_t)fit;
+    int64_t rings;
+    TRY(cfg_opt_int(m, "rings", fitted, &rings));
+    if (rings < 1)
+        return cfg_fail_at(m, "rings",
+                           "%lld; expected at least 1 ring (no key: %lld, from the "
+                           "spacing)",
+                           (long long)rings, (long long)fitted);
+    if (rings != fitted)
+        return cfg_fail_at(m, "rings",
+                           "%lld, but the spacing %g m fits %lld in the ring's %g m; expected "
+                           "%lld, or solid.spacing %g m for %lld rings (the radial spacing is "
+                           "the solid's spacing)",
+                           (long long)rings, cfg->spacing, (long long)fitted, width,
+                           (long long)fitted, width / (double)rings, (long long)rings);
+    const double dr = width / (double)rings;
+    int64_t sectors;
+    TRY(cfg_opt_int(m, "sectors", lattice_polar_sectors(p->inner_radius, p->outer_radius, dr),
+                    &sectors));
+    /* an odd count would break the index parity (sector + ring) at the
+     * seam, where the stable step's power iteration starts from a
+     * checkerboard */
+    if (sectors < 4 || sectors > (1 << 24) || sectors % 2 != 0)
+        return cfg_fail_at(m, "sectors",
+                           "%lld; expected an even number of sectors around, 4 to %d (no key: "
+                           "%lld, near-square elements at the mid radius)",
+                           (long long)sectors, 1 << 24,
+                           (long long)lattice_polar_sectors(p->inner_radius, p->outer_radius, dr));
+    if (!((double)rings * (double)sectors <= CASE_MAX_LATTICE_SITES))
+        return cfg_fail_at(m, "sectors",
+                           "%lld rings x %lld sectors; expected at most %.3g points (a larger "
+                           "spacing or fewer sectors)",
+                           (long long)rings, (long long)sectors, (double)CASE_MAX_LATTICE_SITES);
+    p->rings = (int32_t)rings;
+    p->sectors = (int32_t)sectors;
+    cfg->spacing = dr;
+    return cfg_end_map(m);
 }
 
 /* The keys both formulations read the same way, up to the material. */
@@ -291,12 +378,15 @@ static int read_lattice(CfgNode *s, PdConfig *cfg, double default_horizon) {
         TRY(cfg_req_vec(s, "lattice_origin", cfg->dim, cfg->lattice_origin));
         cfg->has_lattice_origin = true;
     }
-    return NSPD_OK;
+    return read_polar(s, cfg);
 }
 
 /* The keys after the material that both formulations share. */
 static int read_body(CfgNode *s, PdConfig *cfg) {
-    TRY(case_read_shapes(s, "geometry", cfg->dim, true, &cfg->geometry));
+    /* with a polar lattice the geometry is optional: it filters the
+     * elements by their centroids */
+    TRY(case_read_shapes(s, "geometry", cfg->dim, cfg->lattice_kind != PD_LATTICE_POLAR,
+                         &cfg->geometry));
     TRY(check_lattice_size(s, cfg));
     TRY(read_precracks(s, cfg));
     TRY(read_boundaries(s, cfg));
@@ -333,6 +423,16 @@ static int read_contact(CfgNode *s, PdConfig *cfg) {
 }
 
 static int read_bond(CfgNode *s, PdConfig *cfg) {
+    /* refused before the polar keys are read (the force runs on the
+     * square lattice's view: solid/bond/stencil.h) */
+    const CfgNode *lattice = cfg_map_find(s, "lattice");
+    const CfgNode *kind =
+        lattice && lattice->kind == CFG_MAP ? cfg_map_find(lattice, "kind") : NULL;
+    if (kind && kind->kind == CFG_SCALAR && strcmp(kind->text, "polar") == 0)
+        return cfg_fail(kind,
+                        "polar with the bond-based solid, whose force runs on the square "
+                        "lattice's fixed offsets; expected kind: square, or solid.formulation: "
+                        "correspondence");
     TRY(read_lattice(s, cfg, 3.015));
     TRY(read_material(s, cfg));
     TRY(read_body(s, cfg));
@@ -462,6 +562,10 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
     TRY(read_body(s, pd));
     TRY(read_cpd_failure(s, cfg));
     TRY(read_cpd_pressures(s, cfg));
+    if (pd->lattice_kind == PD_LATTICE_POLAR && cfg->pressure_count > 0)
+        return cfg_fail_at(s, "pressure_loads",
+                           "with a polar lattice: a pressure acts on the square lattice's cell "
+                           "faces; expected no pressure_loads, or solid.lattice.kind: square");
     TRY(read_contact(s, pd));
     CfgNode *c;
     TRY(cfg_opt_map(s, "correspondence", &c));

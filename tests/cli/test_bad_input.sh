@@ -200,6 +200,30 @@ check "did you mean: a key read when present" "flow.methd: unknown key \\(did yo
     "$nspd" check "$gcyl" --set flow.methd=gks
 check "did you mean: a solid key left out" "solid.latice_origin: unknown key \\(did you mean 'lattice_origin'\\?\\)" \
     "$nspd" check "$src/cases/plate_crack.yaml" --set "solid.latice_origin=[0, 0]"
+# the polar lattice (solid.lattice.kind: polar, correspondence only)
+hcyl="$src/cases/blast_hollow_cylinder.yaml"
+ring="kind: polar, center: [0.15, 0.15]"
+check "polar lattice: negative radius" "solid.lattice.inner_radius: must be positive, got -0.07" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: -0.07, outer_radius: 0.1}"
+check "polar lattice: inner >= outer" "solid.lattice.outer_radius: 0.07 m with inner_radius 0.1 m; expected r_o > r_i" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: 0.1, outer_radius: 0.07}"
+check "polar lattice: no ring" "solid.lattice.rings: 0; expected at least 1 ring" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: 0.07, outer_radius: 0.1, rings: 0}"
+check "polar lattice: rings against the spacing" "solid.lattice.rings: 10, but the spacing 0.002 m fits 15" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: 0.07, outer_radius: 0.1, rings: 10}"
+check "polar lattice: odd sectors" "solid.lattice.sectors: 267; expected an even number" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: 0.07, outer_radius: 0.1, sectors: 267}"
+check "polar lattice: did you mean" "solid.lattice.outer_radiuss: unknown key \\(did you mean 'outer_radius'\\?\\)" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: 0.07, outer_radius: 0.1, outer_radiuss: 1}"
+check "square lattice: a polar key" "solid.lattice.rings: a key of the polar lattice; expected kind: polar" \
+    "$nspd" check "$hcyl" --set "solid.lattice={kind: square, rings: 3}"
+check "polar lattice: off the geometry" "no element centroid of the polar lattice falls inside the solid geometry" \
+    "$nspd" check "$hcyl" --set "solid.lattice={kind: polar, center: [0.5, 0.5], inner_radius: 0.07, outer_radius: 0.1}"
+check "polar lattice: bond-based solid" "solid.lattice.kind: polar with the bond-based solid" \
+    "$nspd" check "$src/cases/plate_crack.yaml" --set solid.lattice.kind=polar
+check "polar lattice: ghost-cell coupling" "coupling.kind: ghost_cell with solid.lattice.kind: polar" \
+    "$nspd" check "$hcyl" --set "solid.lattice={$ring, inner_radius: 0.07, outer_radius: 0.1}" \
+    --set coupling.kind=ghost_cell
 check "did you mean: flow.iga on the GKS flow" "flow.iga.degre: unknown key \\(did you mean 'degree'\\?\\)" \
     "$nspd" check "$src/cases/blast_hollow_square.yaml" --set flow.iga.degre=2
 check "flow.iga checked on the GKS flow" "flow.iga.degree: 4; expected 1, 2" \

@@ -37,5 +37,6 @@ sod.yaml|flow.gas|### flow.gas
 sod.yaml|flow.numerics|### flow.numerics
 plate_crack.yaml|solid|## solid
 plate_crack.yaml|solid.material|### solid.material
+blast_hollow_cylinder.yaml|solid.lattice|#### solid (correspondence) lattice
 LIST
 finish

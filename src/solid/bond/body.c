@@ -174,6 +174,13 @@ static int build(BondBody *body, PdConfig *cfg, const NspdComm *part) {
     double s_c = cfg->critical_stretch;
     body->stretch_limit2 = (1.0 + s_c) * (1.0 + s_c);
 
+    /* the force runs on the square lattice's view (stencil.h: bonds at
+     * fixed lattice offsets) and every bond's coefficient takes one volume */
+    if (cfg->lattice_kind != PD_LATTICE_SQUARE)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the bond-based solid runs on the square lattice; expected "
+                         "solid.lattice.kind: square, or formulation: correspondence for a "
+                         "polar lattice");
     Lattice lat = {0};
     TRY(lattice_fill(&lat, &cfg->geometry, cfg->dim, cfg->spacing,
                      cfg->has_lattice_origin ? cfg->lattice_origin : NULL));

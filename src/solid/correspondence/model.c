@@ -98,8 +98,12 @@ static SolidEstimate cpd_estimate(const SolidConfig *sc) {
     const PdConfig *pd = &cfg->pd;
     SolidEstimate e = {0};
     double sites, fraction;
-    if (!lattice_estimate(&pd->geometry, pd->dim, pd->spacing, &sites, &fraction)) return e;
-    e.points = ceil(sites * fraction);
+    if (pd->lattice_kind == PD_LATTICE_POLAR) /* all its elements: the geometry only filters */
+        e.points = (double)pd->polar.rings * (double)pd->polar.sectors;
+    else if (!lattice_estimate(&pd->geometry, pd->dim, pd->spacing, &sites, &fraction))
+        return e;
+    else
+        e.points = ceil(sites * fraction);
     const double m = pd->horizon_factor;
     const int reach = (int)floor(m * sqrt((double)pd->dim));
     double family = 0, searched = 0;
@@ -341,7 +345,13 @@ static void cpd_info(const void *impl, size_t memory, char *buf, size_t size) {
     APPEND("points               %lld\n", (long long)points);
     APPEND("bonds                %lld (%.1f per point, %s family)\n", (long long)bonds / 2,
            (double)bonds / (double)points, CPD_FAMILY_NAMES[c->family]);
-    APPEND("spacing              %.6g m\n", b->spacing);
+    if (c->pd.lattice_kind == PD_LATTICE_POLAR)
+        APPEND("lattice              polar: %d rings x %d sectors about (%.6g, %.6g) m, r %.6g "
+               "to %.6g m\n",
+               (int)c->pd.polar.rings, (int)c->pd.polar.sectors, c->pd.polar.center[0],
+               c->pd.polar.center[1], c->pd.polar.inner_radius, c->pd.polar.outer_radius);
+    APPEND("spacing              %.6g m%s\n", b->spacing,
+           c->pd.lattice_kind == PD_LATTICE_POLAR ? " (radial)" : "");
     APPEND("horizon              %.6g m (%.4g x spacing)\n", b->delta, c->pd.horizon_factor);
     APPEND("material             E %.6g Pa, nu %.4g, yield %.6g Pa, hardening %.6g Pa\n",
            c->pd.youngs_modulus, c->poisson_ratio, c->yield_stress, c->hardening);

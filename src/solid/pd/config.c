@@ -23,6 +23,7 @@ const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1] = {"euler_cromer"
                                                                   NULL};
 const char *const PD_VOLUME_NAMES[PD_VOLUME_COUNT + 1] = {"none", "linear", NULL};
 const char *const PD_SURFACE_NAMES[PD_SURFACE_COUNT + 1] = {"none", "energy", NULL};
+const char *const PD_LATTICE_NAMES[PD_LATTICE_COUNT + 1] = {"square", "polar", NULL};
 
 double pd_model_poisson_ratio(PdModel model) {
     return model == PD_PLANE_STRESS ? 1.0 / 3.0 : 0.25;

@@ -7,6 +7,7 @@
 #include "core/expr.h"
 #include "core/shape.h"
 #include "solid/pd/contact.h"
+#include "solid/pd/lattice.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -15,11 +16,13 @@ typedef enum { PD_PLANE_STRESS, PD_PLANE_STRAIN, PD_3D, PD_MODEL_COUNT } PdModel
 typedef enum { PD_EULER_CROMER, PD_VELOCITY_VERLET, PD_INTEGRATOR_COUNT } PdIntegrator;
 typedef enum { PD_VOLUME_NONE, PD_VOLUME_LINEAR, PD_VOLUME_COUNT } PdVolumeCorrection;
 typedef enum { PD_SURFACE_NONE, PD_SURFACE_ENERGY, PD_SURFACE_COUNT } PdSurfaceCorrection;
+typedef enum { PD_LATTICE_SQUARE, PD_LATTICE_POLAR, PD_LATTICE_COUNT } PdLatticeKind;
 
 extern const char *const PD_MODEL_NAMES[PD_MODEL_COUNT + 1];
 extern const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1];
 extern const char *const PD_VOLUME_NAMES[PD_VOLUME_COUNT + 1];
 extern const char *const PD_SURFACE_NAMES[PD_SURFACE_COUNT + 1];
+extern const char *const PD_LATTICE_NAMES[PD_LATTICE_COUNT + 1];
 
 enum { PD_MAX_NAME = 64, PD_MAX_EXPRESSIONS = 256 };
 
@@ -70,6 +73,12 @@ typedef struct {
     double horizon_factor; /* m: horizon delta = m dx */
     double lattice_origin[3];
     bool has_lattice_origin; /* else the lattice starts half a spacing inside the bounding box */
+    /* square: the lattice of spacing dx in `geometry`; polar (the
+     * correspondence solid only): `polar`'s elements whose centroids
+     * `geometry` holds (all if it has no shape), each of its own volume;
+     * spacing is then its radial spacing (r_o - r_i) / rings */
+    PdLatticeKind lattice_kind;
+    PolarLattice polar;
 
     double density;          /* kg/m^3 */
     double youngs_modulus;   /* Pa */

@@ -149,6 +149,137 @@ int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, con
     return NSPD_OK;
 }
 
+double lattice_polar_spacing(const PolarLattice *spec) {
+    return (spec->outer_radius - spec->inner_radius) / (double)spec->rings;
+}
+
+/* r_q, q = 0 .. rings: the ends exact */
+static double ring_radius(const PolarLattice *spec, int32_t q) {
+    if (q <= 0) return spec->inner_radius;
+    if (q >= spec->rings) return spec->outer_radius;
+    return spec->inner_radius +
+           (spec->outer_radius - spec->inner_radius) * ((double)q / (double)spec->rings);
+}
+
+double lattice_polar_area(const PolarLattice *spec, int32_t ring) {
+    const double a = ring_radius(spec, ring), b = ring_radius(spec, ring + 1);
+    return M_PI / (double)spec->sectors * (b - a) * (b + a);
+}
+
+int64_t lattice_polar_sectors(double inner_radius, double outer_radius, double dr) {
+    const double around = M_PI * (inner_radius + outer_radius) / dr; /* 2 pi r_mid / dr */
+    const double quarters = fmax(1.0, floor(around / 4.0 + 0.5));
+    return quarters < 1e9 ? 4 * (int64_t)quarters : (int64_t)4e9;
+}
+
+/* The unit direction of sector k of n (n even) at angle (k + 1/2) 2 pi / n,
+ * from one in the first quadrant (first octant when 4 divides n) by exact
+ * reflections: sector n - 1 - k is k mirrored about the horizontal line
+ * (s -> -s), n/2 - 1 - k about the vertical (c -> -c), n/4 - 1 - k about
+ * the diagonal (c <-> s). */
+static void polar_direction(int64_t k, int64_t n, double *c, double *s) {
+    const bool lower = k >= n / 2;
+    if (lower) k = n - 1 - k;
+    const int64_t half = n / 2;
+    const bool left = k > half - 1 - k;
+    if (left) k = half - 1 - k;
+    const double step = 2.0 * M_PI / (double)n;
+    double cc, ss;
+    if (k == half - 1 - k) { /* on the vertical line: n/2 odd */
+        cc = 0.0;
+        ss = 1.0;
+    } else if (n % 4 == 0 && k == n / 4 - 1 - k) { /* on the diagonal */
+        cc = ss = sqrt(0.5);
+    } else if (n % 4 == 0 && k > n / 4 - 1 - k) {
+        const double angle = ((double)(n / 4 - 1 - k) + 0.5) * step;
+        cc = sin(angle);
+        ss = cos(angle);
+    } else {
+        const double angle = ((double)k + 0.5) * step;
+        cc = cos(angle);
+        ss = sin(angle);
+    }
+    *c = left ? -cc : cc;
+    *s = lower ? -ss : ss;
+}
+
+int lattice_fill_polar(Lattice *lat, const PolarLattice *spec, const ShapeSet *filter) {
+    lattice_free(lat);
+    const int32_t rings = spec->rings, sectors = spec->sectors;
+    if (!(spec->inner_radius > 0.0 && spec->outer_radius > spec->inner_radius))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the polar lattice's radii are %g and %g m; expected 0 < inner < outer",
+                         spec->inner_radius, spec->outer_radius);
+    if (rings < 1 || sectors < 4 || sectors % 2 != 0)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "the polar lattice has %d rings and %d sectors; expected at least 1 "
+                         "ring and an even number of sectors, at least 4",
+                         (int)rings, (int)sectors);
+    const int64_t candidates = (int64_t)rings * (int64_t)sectors;
+    if (candidates > INT32_MAX)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "%lld points exceed the 2^31 limit of one body",
+                         (long long)candidates);
+    const bool filtered = filter && filter->count > 0;
+    /* the centroid radius of each ring: (2/3) (b^3 - a^3) / (b^2 - a^2)
+     * sin(h) / h, h half the sector angle */
+    double *radius;
+    TRY(nspd_alloc(&radius, (size_t)rings, sizeof(double)));
+    const double h = M_PI / (double)sectors;
+    for (int32_t q = 0; q < rings; q++) {
+        const double a = ring_radius(spec, q), b = ring_radius(spec, q + 1);
+        radius[q] = 2.0 / 3.0 * (a * a + a * b + b * b) / (a + b) * (sin(h) / h);
+    }
+    KeyedPoint *keyed;
+    int status = nspd_alloc(&keyed, (size_t)candidates, sizeof *keyed);
+    if (status != NSPD_OK) {
+        nspd_free(&radius);
+        return status;
+    }
+    int64_t n = 0;
+    for (int64_t c = 0; c < candidates; c++) {
+        const int64_t k = c % sectors, q = c / sectors;
+        if (filtered) {
+            double dc, ds;
+            polar_direction(k, sectors, &dc, &ds);
+            const double p[3] = {spec->center[0] + radius[q] * dc, spec->center[1] + radius[q] * ds,
+                                 0.0};
+            if (!shapeset_contains(filter, p)) continue;
+        }
+        keyed[n].key = morton_key(2, (uint32_t)k, (uint32_t)q, 0);
+        keyed[n].slot = c;
+        n++;
+    }
+    if (n == 0) {
+        nspd_free(&radius);
+        nspd_free(&keyed);
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "no element centroid of the polar lattice falls inside the solid "
+                         "geometry; expected the geometry to cover the ring");
+    }
+    qsort(keyed, (size_t)n, sizeof *keyed, compare_keys);
+    lat->n = n;
+    for (int d = 0; d < 3 && status == NSPD_OK; d++) {
+        status = nspd_alloc(&lat->x[d], (size_t)n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&lat->index[d], (size_t)n, sizeof(int32_t));
+    }
+    if (status == NSPD_OK)
+        for (int64_t p = 0; p < n; p++) {
+            const int64_t c = keyed[p].slot, k = c % sectors, q = c / sectors;
+            double dc, ds;
+            polar_direction(k, sectors, &dc, &ds);
+            lat->x[0][p] = spec->center[0] + radius[q] * dc;
+            lat->x[1][p] = spec->center[1] + radius[q] * ds;
+            lat->x[2][p] = 0.0;
+            lat->index[0][p] = (int32_t)k;
+            lat->index[1][p] = (int32_t)q;
+            lat->index[2][p] = 0;
+        }
+    nspd_free(&radius);
+    nspd_free(&keyed);
+    if (status != NSPD_OK) lattice_free(lat);
+    return status;
+}
+
 void lattice_free(Lattice *lat) {
     for (int d = 0; d < 3; d++) {
         nspd_free(&lat->x[d]);
