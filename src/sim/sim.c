@@ -35,6 +35,14 @@ static int plan_steps(Sim *sim) {
     return NSPD_OK;
 }
 
+/* A coupled step of a flow whose stable step is `stable`: the given
+ * time.dt, else that step, no longer than the solid's under a coupling
+ * that constrains it at every step. */
+static double flow_pace(const Sim *sim, double stable) {
+    if (sim->cfg.dt_given) return sim->cfg.dt;
+    return sim->constrained ? fmin(stable, sim->solid_substep) : stable;
+}
+
 static int choose_pace(Sim *sim) {
     const SimConfig *c = &sim->cfg;
     sim->constrained = sim->coupling && coupling_constrains_solid(sim->coupling);
@@ -63,8 +71,7 @@ static int choose_pace(Sim *sim) {
         if (c->dt_given && c->dt > sim->stable_dt)
             nspd_log(LOG_WARN, "time.dt = %g s exceeds the CFL time step %g s", c->dt,
                      sim->stable_dt);
-        sim->dt = c->dt_given ? c->dt : sim->stable_dt;
-        if (sim->constrained && !c->dt_given) sim->dt = fmin(sim->dt, sim->solid_substep);
+        sim->dt = flow_pace(sim, sim->stable_dt);
     }
     return plan_steps(sim);
 }
@@ -200,9 +207,8 @@ static bool finished(const Sim *sim) {
  * shortened to land on the end time; without a flow, the fixed step. */
 static double step_size(const Sim *sim) {
     if (!sim->flow) return sim->dt;
-    double dt = sim->cfg.dt_given ? sim->cfg.dt : flow_stable_dt(sim->flow);
-    if (sim->constrained && !sim->cfg.dt_given) dt = fmin(dt, sim->solid_substep);
-    double left = sim->cfg.end_time - sim->time;
+    const double dt = flow_pace(sim, flow_stable_dt(sim->flow));
+    const double left = sim->cfg.end_time - sim->time;
     return dt > left ? left : dt;
 }
 

@@ -136,39 +136,58 @@ static void solve(const PenaltySystem *s, PenaltyWork *wk, int d, int *iteration
     *residual = sqrt(rr / scale2);
 }
 
-void penalty_explicit(const PenaltySystem *s, PenaltyWork *wk, double *J[2], PenaltyStats *stats) {
-    *stats = (PenaltyStats){0};
-    const Items cells = own_cells(s), pts = own_points(s);
-    ExactSum slip_work;
-    exact_sum_clear(&slip_work);
-    for (int d = 0; d < 2; d++) {
-        for (int64_t q = 0; q < cells.n; q++) wk->x[item(cells, q)] = s->u[d][item(cells, q)];
-        exchange(s, wk->x);
-        sample(s, pts, wk->x, wk->sample);
-        if (s->div) memset(J[d], 0, (size_t)s->points * sizeof(double));
-        for (int64_t q = 0; q < pts.n; q++) {
-            const int64_t p = item(pts, q);
-            const double rel = wk->sample[p] - s->v[d][p];
-            J[d][p] = s->b[p] * rel;
-            exact_sum_add(&slip_work, s->b[p] * rel * rel);
-        }
+/* Component d of the impulses of this process's points from the cells'
+ * velocities in wk->x (those of other processes' cells arrive first):
+ * J_P = b_P (s_P - v_P), s_P sampled; sum_P b_P |s_P - v_P|^2 added to
+ * *slip_work. */
+static void impulses(const PenaltySystem *s, PenaltyWork *wk, double *J, int d,
+                     ExactSum *slip_work) {
+    const Items pts = own_points(s);
+    exchange(s, wk->x);
+    sample(s, pts, wk->x, wk->sample);
+    if (s->div) memset(J, 0, (size_t)s->points * sizeof(double));
+    for (int64_t q = 0; q < pts.n; q++) {
+        const int64_t p = item(pts, q);
+        const double rel = wk->sample[p] - s->v[d][p];
+        J[p] = s->b[p] * rel;
+        exact_sum_add(slip_work, s->b[p] * rel * rel);
     }
-    reduce(s, &slip_work, 1);
-    stats->slip_work = exact_sum_value(&slip_work);
-    /* the points' slip after their velocity change alone (the cells'
-     * change, after, is the caller's): |s - v - J/m| */
+}
+
+/* The largest slip of this process's points after their velocity change
+ * J / m: v' - s = (v - s) (1 - b/m), |J| (1 - b/m) / b. */
+static double slip_max(const PenaltySystem *s, double *const J[2]) {
+    const Items pts = own_points(s);
+    double most = 0.0;
     for (int64_t q = 0; q < pts.n; q++) {
         const int64_t p = item(pts, q);
         if (!(s->b[p] > 0.0)) continue;
         const double keep = (1.0 - s->b[p] / s->m[p]) / s->b[p];
         const double slip = hypot(J[0][p] * keep, J[1][p] * keep);
-        if (slip > stats->slip_max) stats->slip_max = slip;
+        if (slip > most) most = slip;
     }
+    return most;
+}
+
+void penalty_explicit(const PenaltySystem *s, PenaltyWork *wk, double *J[2], PenaltyStats *stats) {
+    *stats = (PenaltyStats){0};
+    const Items cells = own_cells(s);
+    ExactSum slip_work;
+    exact_sum_clear(&slip_work);
+    for (int d = 0; d < 2; d++) {
+        for (int64_t q = 0; q < cells.n; q++) wk->x[item(cells, q)] = s->u[d][item(cells, q)];
+        impulses(s, wk, J[d], d, &slip_work);
+    }
+    reduce(s, &slip_work, 1);
+    stats->slip_work = exact_sum_value(&slip_work);
+    /* the points' slip after their velocity change alone (the cells'
+     * change, after, is the caller's) */
+    stats->slip_max = slip_max(s, J);
 }
 
 void penalty_relax(const PenaltySystem *s, PenaltyWork *wk, double *J[2], PenaltyStats *stats) {
     *stats = (PenaltyStats){0};
-    const Items cells = own_cells(s), pts = own_points(s);
+    const Items cells = own_cells(s);
     /* the preconditioner: A's diagonal, m_c + sum_P b_P W_Pc^2 */
     for (int64_t q = 0; q < cells.n; q++) {
         const int64_t c = item(cells, q);
@@ -188,24 +207,9 @@ void penalty_relax(const PenaltySystem *s, PenaltyWork *wk, double *J[2], Penalt
         if (s->u_out[d])
             for (int64_t q = 0; q < cells.n; q++)
                 s->u_out[d][item(cells, q)] = wk->x[item(cells, q)];
-        exchange(s, wk->x);
-        sample(s, pts, wk->x, wk->sample);
-        if (s->div) memset(J[d], 0, (size_t)s->points * sizeof(double));
-        for (int64_t q = 0; q < pts.n; q++) {
-            const int64_t p = item(pts, q);
-            const double rel = wk->sample[p] - s->v[d][p];
-            J[d][p] = s->b[p] * rel;
-            exact_sum_add(&slip_work, s->b[p] * rel * rel);
-        }
+        impulses(s, wk, J[d], d, &slip_work);
     }
     reduce(s, &slip_work, 1);
     stats->slip_work = exact_sum_value(&slip_work);
-    /* the slip left after the step: v' - s' = (v - s') (1 - b/m) */
-    for (int64_t q = 0; q < pts.n; q++) {
-        const int64_t p = item(pts, q);
-        if (!(s->b[p] > 0.0)) continue;
-        const double keep = (1.0 - s->b[p] / s->m[p]) / s->b[p];
-        const double slip = hypot(J[0][p] * keep, J[1][p] * keep);
-        if (slip > stats->slip_max) stats->slip_max = slip;
-    }
+    stats->slip_max = slip_max(s, J);
 }

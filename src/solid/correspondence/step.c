@@ -377,6 +377,17 @@ static void remember_u(CpdBody *b) {
     b->Fb_now = false;
 }
 
+/* The step's middle, from b->time to b->time + dt: u_prev = u, u += dt v
+ * (*bad: a displacement not finite, on any rank: all fail together), the
+ * ghosts' u, the force at the new u. */
+static int drift_then_force(CpdBody *b, const PdMotion *m, double dt, bool *bad) {
+    const double t = b->time;
+    remember_u(b);
+    *bad = cpd_halo_sum(b, pd_drift(m, dt, t + dt)) > 0;
+    cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
+    return cpd_force(b, t + dt);
+}
+
 static int substep(CpdBody *b, double dt) {
     const PdMotion m = motion_of(b);
     if (!b->force_valid) {
@@ -385,10 +396,8 @@ static int substep(CpdBody *b, double dt) {
     }
     const double t = b->time;
     pd_kick(&m, 0.5 * dt, t, t + 0.5 * dt);
-    remember_u(b);
-    const bool bad = cpd_halo_sum(b, pd_drift(&m, dt, t + dt)) > 0; /* all ranks fail together */
-    cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
-    TRY(cpd_force(b, t + dt));
+    bool bad;
+    TRY(drift_then_force(b, &m, dt, &bad));
     pd_kick(&m, 0.5 * dt, t + dt, t + dt);
     b->force_valid = true;
     if (bad)
@@ -403,10 +412,8 @@ static int substep(CpdBody *b, double dt) {
 int cpd_step_constrained(CpdBody *b, double dt) {
     const PdMotion m = motion_of(b);
     const double t = b->time;
-    remember_u(b); /* the last force was formed at this u: the coupling moved only v */
-    const bool bad = cpd_halo_sum(b, pd_drift(&m, dt, t + dt)) > 0; /* all ranks fail together */
-    cpd_halo_exchange(b, (void *const *)b->u, b->dim, sizeof(double));
-    TRY(cpd_force(b, t + dt));
+    bool bad; /* the last force was formed at this u: the coupling moved only v */
+    TRY(drift_then_force(b, &m, dt, &bad));
     pd_kick(&m, dt, t + dt, t + dt);
     b->force_valid = true;
     if (b->substeps_max < 1) b->substeps_max = 1;

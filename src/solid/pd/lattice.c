@@ -49,6 +49,18 @@ static int compare_keys(const void *a, const void *b) {
     return (ka > kb) - (ka < kb);
 }
 
+/* n points' positions and indices in *lat (freed again on failure). */
+static int lattice_allocate(Lattice *lat, int64_t n) {
+    int status = NSPD_OK;
+    lat->n = n;
+    for (int d = 0; d < 3 && status == NSPD_OK; d++) {
+        status = nspd_alloc(&lat->x[d], (size_t)n, sizeof(double));
+        if (status == NSPD_OK) status = nspd_alloc(&lat->index[d], (size_t)n, sizeof(int32_t));
+    }
+    if (status != NSPD_OK) lattice_free(lat);
+    return status;
+}
+
 int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, const double *origin) {
     lattice_free(lat);
     if (dim != 2 && dim != 3)
@@ -126,14 +138,9 @@ int lattice_fill(Lattice *lat, const ShapeSet *geometry, int dim, double dx, con
     nspd_free(&inside);
     qsort(keyed, (size_t)n, sizeof *keyed, compare_keys);
 
-    lat->n = n;
-    for (int d = 0; d < 3 && status == NSPD_OK; d++) {
-        status = nspd_alloc(&lat->x[d], (size_t)n, sizeof(double));
-        if (status == NSPD_OK) status = nspd_alloc(&lat->index[d], (size_t)n, sizeof(int32_t));
-    }
+    status = lattice_allocate(lat, n);
     if (status != NSPD_OK) {
         nspd_free(&keyed);
-        lattice_free(lat);
         return status;
     }
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
@@ -257,11 +264,7 @@ int lattice_fill_polar(Lattice *lat, const PolarLattice *spec, const ShapeSet *f
                          "geometry; expected the geometry to cover the ring");
     }
     qsort(keyed, (size_t)n, sizeof *keyed, compare_keys);
-    lat->n = n;
-    for (int d = 0; d < 3 && status == NSPD_OK; d++) {
-        status = nspd_alloc(&lat->x[d], (size_t)n, sizeof(double));
-        if (status == NSPD_OK) status = nspd_alloc(&lat->index[d], (size_t)n, sizeof(int32_t));
-    }
+    status = lattice_allocate(lat, n);
     if (status == NSPD_OK)
         for (int64_t p = 0; p < n; p++) {
             const int64_t c = keyed[p].slot, k = c % sectors, q = c / sectors;
@@ -276,7 +279,6 @@ int lattice_fill_polar(Lattice *lat, const PolarLattice *spec, const ShapeSet *f
         }
     nspd_free(&radius);
     nspd_free(&keyed);
-    if (status != NSPD_OK) lattice_free(lat);
     return status;
 }
 

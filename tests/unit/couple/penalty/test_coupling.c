@@ -74,6 +74,20 @@ static void solid_momentum(Sim *sim, double out[2]) {
     }
 }
 
+/* |solid + gas x-momentum now - at the start| / |the solid's at the start|
+ * (s0, g0: solid_momentum and flow_totals at the start). */
+static double momentum_drift(Sim *sim, const double s0[2], const double g0[4]) {
+    double s[2], g[4];
+    solid_momentum(sim, s);
+    flow_totals(sim->flow, g);
+    return fabs((s[0] + g[1]) - (s0[0] + g0[1])) / fabs(s0[0]);
+}
+
+/* The strong coupling's sections: without Eq. 20's subtraction, and with
+ * it (the default), indexed by `subtract`. */
+static const char *const STRONG[2] = {"  strong: true\n  subtract_fluid: false\n",
+                                      "  strong: true\n"};
+
 /* V1: per step the gas gains what the points lose (1e-12 relative, the
  * ghost-cell exchange's bound); over 1000 steps gas + solid momentum
  * drifts by round-off only. */
@@ -91,10 +105,7 @@ static void test_momentum_exact(void **state) {
         assert_non_null(st);
         const double rel = fabs(st->gas[0] + st->impulse[0]) / fabs(st->impulse[0]);
         if (rel > worst_step) worst_step = rel;
-        double s[2], g[4];
-        solid_momentum(&sim, s);
-        flow_totals(sim.flow, g);
-        const double drift = fabs((s[0] + g[1]) - (s0[0] + g0[1])) / fabs(s0[0]);
+        const double drift = momentum_drift(&sim, s0, g0);
         if (drift > worst_drift) worst_drift = drift;
     }
     printf("penalty momentum: worst step %.3g, drift over 1000 steps %.3g (relative)\n", worst_step,
@@ -207,8 +218,7 @@ static void test_strong_every_step(void **state) {
     (void)state;
     for (int subtract = 0; subtract < 2; subtract++) {
         Sim sim;
-        disc_sim(&sim, 100.0, 0.0,
-                 subtract ? "  strong: true\n" : "  strong: true\n  subtract_fluid: false\n");
+        disc_sim(&sim, 100.0, 0.0, STRONG[subtract]);
         assert_true(sim.constrained);
         double s0[2], g0[4];
         solid_momentum(&sim, s0);
@@ -220,10 +230,7 @@ static void test_strong_every_step(void **state) {
             assert_int_equal(solid_last_substeps(sim.solid), 1);
             const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
             worst_slip = fmax(worst_slip, st->slip_max);
-            double s[2], g[4];
-            solid_momentum(&sim, s);
-            flow_totals(sim.flow, g);
-            worst_drift = fmax(worst_drift, fabs((s[0] + g[1]) - (s0[0] + g0[1])) / fabs(s0[0]));
+            worst_drift = fmax(worst_drift, momentum_drift(&sim, s0, g0));
         }
         const PenaltyStepInfo *st = penalty_coupling_step(sim.coupling);
         printf("strong every step%s: slip %.3g m/s, momentum drift %.3g, covered_max %.17g\n",
@@ -249,8 +256,7 @@ static void test_eq20_less_inertia(void **state) {
     double lost[2];
     for (int subtract = 0; subtract < 2; subtract++) {
         Sim sim;
-        disc_sim(&sim, 100.0, 0.0,
-                 subtract ? "  strong: true\n" : "  strong: true\n  subtract_fluid: false\n");
+        disc_sim(&sim, 100.0, 0.0, STRONG[subtract]);
         double s0[2], s[2];
         solid_momentum(&sim, s0);
         assert_ok(sim_advance(&sim, 1));
