@@ -606,6 +606,15 @@ static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
                                "paper's) or 3 (cubic where the family fits one)",
                                (long long)order);
         cfg->rk_order = (int)order;
+        int frame;
+        TRY(cfg_opt_enum(c, "frame", CPD_FRAME_NAMES, CPD_FRAME_LAGRANGIAN, &frame));
+        if (frame == CPD_FRAME_SEMI_LAGRANGIAN && force != CPD_FORCE_BOND_ASSOCIATED)
+            return cfg_fail_at(c, "frame",
+                               "semi_lagrangian with the %s force: the semi-Lagrangian form "
+                               "is the bond-associated force's; expected force: "
+                               "bond_associated, or frame: lagrangian",
+                               CPD_FORCE_NAMES[force]);
+        cfg->frame = (CpdFrame)frame;
         TRY(cfg_end_map(c));
     }
     cfg->force = (CpdForce)force;

@@ -7,9 +7,10 @@
 # The stopped runs use 2 threads and the resumed ones 1 (or the other way
 # round): a checkpoint does not depend on the thread count. Seven kinds of
 # run: solid only (plate), flow only (cylinder, a fixed body), coupled
-# (panel), the correspondence solid while it breaks (hollow cylinder), the
-# penalty coupling while a blast breaks a ring, the IGA flow's blast, and
-# the PDDO flow to its steady state (cavity).
+# (panel), the correspondence solid while it breaks (hollow cylinder) and
+# in the semi-Lagrangian frame (hollow square), the penalty coupling while a
+# blast breaks a ring, the IGA flow's blast, and the PDDO flow to its
+# steady state (cavity).
 # Then the refusals: another case, another binary, no checkpoint, and a
 # damaged newest checkpoint (the one before is used).
 # Release build only: the runs are ~10 s in all here, minutes under ASan
@@ -104,6 +105,9 @@ check_kind cylinder_ma2_re300 USR1 time.end=3.0 output.checkpoint_interval=0.2
 check_kind panel_shock TERM time.end=3.0e-4 output.checkpoint_interval=2.0e-5
 # the correspondence solid while it fractures (bond state, weights, the re-estimated step)
 check_kind hollow_cylinder_pulse USR1 time.end=8e-5 output.checkpoint_interval=4e-6
+# ... in the semi-Lagrangian frame, whose pairs' F_b is state (sl_force.h)
+check_kind hollow_square_pressure USR1 time.end=3e-4 output.checkpoint_interval=1e-5 \
+    solid.correspondence.frame=semi_lagrangian
 # the penalty coupling (paper 003) on a ring the blast fragments (at the
 # CFL step: the paper's are 50 times more steps of the same state)
 check_kind blast_hollow_cylinder TERM time.end=1.2e-4 output.checkpoint_interval=1e-5 time.dt=stable

@@ -583,6 +583,15 @@ void bac_force(const BacSystem *s, BacState *st, const double *const u[3], doubl
         pairs_j2_2d(s, st, u, F, Pb, todo);
     else
         pairs_svk(s, u, F, Pb);
+    bac_stress_force(s, c, phi_rev, phi_sum, Pb, force, work_point);
+}
+
+void bac_stress_force(const BacSystem *s, const double *c, const double *phi_rev,
+                      const double *phi_sum, const double *Pb, double *const force[3],
+                      double *work_point) {
+    const int dim = s->dim;
+    const int64_t na = s->n_all ? s->n_all : s->n;
+    double *S = work_point + na, *D = S + (int64_t)dim * dim * na;
     stress_integrals(s, c, Pb, S, D);
     if (s->exchange) s->exchange(s->exchange_context, S, dim * dim); /* the gather reads S_j */
     point_forces(s, phi_rev, phi_sum, S, D, force);

@@ -168,4 +168,14 @@ static inline int64_t bac_work_bond(const BacSystem *s, int plane_stress) {
 void bac_force(const BacSystem *s, BacState *state, const double *const u[3],
                double *const force[3], double *F, double *work_point, double *work_bond);
 
+/* bac_force's last two passes alone: the forces L_i of given pair
+ * stresses Pb (component c of pair p at Pb[c pairs.count + p]) through
+ * the geometry of s (its x as the bonds' vectors) and the coefficients c,
+ * phi_rev, phi_sum (bac_coefficients'); work_point as bac_force's (its
+ * S and D parts). The semi-Lagrangian force (sl_force.h) hands it the
+ * Kirchhoff stresses and the current configuration. */
+void bac_stress_force(const BacSystem *s, const double *c, const double *phi_rev,
+                      const double *phi_sum, const double *Pb, double *const force[3],
+                      double *work_point);
+
 #endif

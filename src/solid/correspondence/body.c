@@ -9,6 +9,7 @@
 #include "core/status.h"
 #include "solid/correspondence/bac_force.h"
 #include "solid/correspondence/halo.h"
+#include "solid/correspondence/sl_force.h"
 #include "core/neighbours.h"
 #include "solid/pd/lattice.h"
 #include "solid/pd/precrack.h"
@@ -205,6 +206,28 @@ static int refuse_thin(const CpdBody *b) {
                      b->delta);
 }
 
+/* The semi-Lagrangian force's scratch, and each pair's F_b at the start:
+ * the identity (the body starts undeformed; for this frame F_b is state,
+ * sl_force.h). */
+static int semi_lagrangian(CpdBody *b, bool divided) {
+    if (divided)
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "solid.correspondence.frame: semi_lagrangian runs on one process (its "
+                         "refit of the weights on the current positions would need the ghosts' "
+                         "positions each step, which the halo does not exchange); expected one "
+                         "process, or frame: lagrangian");
+    if (b->dim != 2 || b->cfg.force != CPD_FORCE_BOND_ASSOCIATED)
+        return NSPD_FAIL(NSPD_ERR_INPUT, "the semi-Lagrangian frame is the 2D bond-associated "
+                                         "force's; expected frame: lagrangian");
+    TRY(sl_work_create(b->dim, b->n, b->bond_count, b->pairs.count, &b->sl));
+    const int64_t np = b->pairs.count;
+    for (int64_t p = 0; p < np; p++) {
+        b->Fb[p] = b->Fb[3 * np + p] = 1.0;
+        b->Fb[np + p] = b->Fb[2 * np + p] = 0.0;
+    }
+    return NSPD_OK;
+}
+
 static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
     memset(b, 0, sizeof *b);
     b->cfg = *cfg;
@@ -310,6 +333,7 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
         TRY(pd_contact_create(&b->contact, &pd->contact, b->dim, b->n, pd->spacing, b->delta,
                               pd_micromodulus(pd)));
     }
+    if (b->cfg.frame == CPD_FRAME_SEMI_LAGRANGIAN) TRY(semi_lagrangian(b, comm != NULL));
     return NSPD_OK;
 }
 
@@ -367,6 +391,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->work_point);
     nspd_free(&b->work_bond);
     cpd_halo_free(&b->halo);
+    sl_work_free(&b->sl);
     cpd_config_free(&b->cfg);
     memset(b, 0, sizeof *b);
 }

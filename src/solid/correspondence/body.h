@@ -40,6 +40,7 @@
 
 #include "core/comm.h"
 #include "solid/correspondence/bac_force.h"
+#include "solid/correspondence/sl_force.h"
 #include "solid/correspondence/config.h"
 #include "solid/correspondence/j2_kernel.h"
 #include "solid/pd/contact.h"
@@ -123,6 +124,10 @@ typedef struct {
      * bond-based micromodulus of the same E (a scale, not a bond). */
     bool has_contact;
     PdContact contact;
+    /* cfg.frame semi_lagrangian: sl_force's scratch (Fb above is then each
+     * pair's F_b at u_prev, the state; the Lagrangian phi, ok and F stay
+     * for the fits' checks, the stable step and the outputs) */
+    SlWork sl;
 } CpdBody;
 
 /* Builds the body (taking ownership of *cfg, zeroing it): lattice points,

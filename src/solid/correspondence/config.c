@@ -5,6 +5,7 @@
 #include <string.h>
 
 const char *const CPD_FORCE_NAMES[CPD_FORCE_COUNT + 1] = {"bond_associated", "classic", NULL};
+const char *const CPD_FRAME_NAMES[CPD_FRAME_COUNT + 1] = {"lagrangian", "semi_lagrangian", NULL};
 const char *const CPD_FAMILY_NAMES[CPD_FAMILY_COUNT + 1] = {"square", "disc", NULL};
 const char *const CPD_DAMAGE_NAMES[CPD_DAMAGE_COUNT + 1] = {"none", "ductile", "brittle", "stretch",
                                                             NULL};

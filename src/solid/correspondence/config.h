@@ -15,6 +15,10 @@
  * per point) */
 typedef enum { CPD_FORCE_BOND_ASSOCIATED, CPD_FORCE_CLASSIC, CPD_FORCE_COUNT } CpdForce;
 typedef enum { CPD_FAMILY_SQUARE, CPD_FAMILY_DISC, CPD_FAMILY_COUNT } CpdFamily;
+/* The bond-associated force's frame: lagrangian, bac_force.h's (weights and
+ * kernel on the reference bonds); semi_lagrangian, sl_force.h's (paper 003's
+ * ref. [10]: on the current ones) */
+typedef enum { CPD_FRAME_LAGRANGIAN, CPD_FRAME_SEMI_LAGRANGIAN, CPD_FRAME_COUNT } CpdFrame;
 typedef enum {
     CPD_DAMAGE_NONE,
     CPD_DAMAGE_DUCTILE, /* bond equivalent plastic strain from threshold to critical */
@@ -25,6 +29,7 @@ typedef enum {
 
 extern const char *const CPD_FORCE_NAMES[CPD_FORCE_COUNT + 1];
 extern const char *const CPD_FAMILY_NAMES[CPD_FAMILY_COUNT + 1];
+extern const char *const CPD_FRAME_NAMES[CPD_FRAME_COUNT + 1];
 extern const char *const CPD_DAMAGE_NAMES[CPD_DAMAGE_COUNT + 1];
 
 /* A pressure p(t) filling `region` (a cavity, or the space outside the
@@ -47,6 +52,7 @@ typedef struct {
     double yield_stress;  /* sigma_Y, Pa; 0: elastic */
     double hardening;     /* H = d sigma_y / d eqps, Pa */
     CpdForce force;
+    CpdFrame frame;       /* bond_associated: lagrangian (the default) or semi_lagrangian */
     double stabilisation; /* classic: C_s of the zero-energy penalty (Silling 2017) */
     CpdFamily family;
     RkKernel kernel; /* the influence function omega (both forces) */

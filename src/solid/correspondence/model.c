@@ -499,6 +499,9 @@ static int cpd_checkpoint(void *impl, Checkpoint *ck) {
         if (b->strain_zz) TRY(cpd_halo_io_pairs(b, ck, "cpd.strain_zz", b->strain_zz, d8, 1));
     }
     if (b->phi) TRY(cpd_halo_io_bonds(b, ck, "cpd.phi", b->phi, (size_t)b->dim * d8));
+    /* the semi-Lagrangian frame's F_b is the pairs' state (sl_force.h) */
+    if (b->cfg.frame == CPD_FRAME_SEMI_LAGRANGIAN)
+        TRY(cpd_halo_io_pairs(b, ck, "cpd.Fb", b->Fb, d8, 4));
     TRY(cpd_halo_io_points(b, ck, "cpd.ok", b->ok, 1));
     TRY(cpd_halo_io_points(b, ck, "cpd.F", b->work_point, 9 * d8));
     for (int d = 0; d < b->dim && d < 3; d++) {

@@ -11,6 +11,7 @@
 #include "solid/correspondence/classic_force.h"
 #include "solid/correspondence/halo.h"
 #include "solid/correspondence/rk_gradient.h"
+#include "solid/correspondence/sl_force.h"
 
 #include <math.h>
 #include <string.h>
@@ -300,6 +301,15 @@ static void body_force(CpdBody *b, bool state, const double *const u[3], double 
     st.fb_given = b->Fb_given ? 1 : 0;
     const int64_t na = b->n + b->ghosts; /* the ghosts' F and S after the run's */
     st.F_prev = b->work_point + 9 * na;
+    if (state && b->cfg.frame == CPD_FRAME_SEMI_LAGRANGIAN) {
+        /* the outputs' F_i on the reference weights, as the Lagrangian
+         * force's; the force and the state on the current ones */
+        rk_deformation_gradient(b->dim, b->n, u, NULL, b->volume, b->first, b->nbr, b->phi,
+                                b->work_point, NULL);
+        const SlWeights w = {.order = b->cfg.rk_order, .kernel = b->cfg.kernel, .delta = b->delta};
+        (void)sl_force(&s, &w, &st, u, L, &b->sl, b->work_point + 18 * na);
+        return;
+    }
     bac_force(&s, state ? &st : NULL, u, L, state ? b->work_point : b->work_point + 9 * na,
               b->work_point + 18 * na, b->work_bond);
     if (state) {
