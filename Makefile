@@ -6,7 +6,7 @@
 #   make bench      benchmarks (never part of make test); results in bench/results/
 #   make validate   full-resolution paper cases and their plots (long)
 #   make format     clang-format every C file;  make tidy: clang-tidy
-#   make fuzz       libFuzzer on the case, .vtr, expression and STL readers, FUZZ_SECONDS each (default 600)
+#   make fuzz       libFuzzer on the case, .vtr, expression, STL and .inp readers, FUZZ_SECONDS each (default 600)
 
 BUILD      ?= build
 BUILD_ASAN ?= build-asan
@@ -75,7 +75,7 @@ $(BUILD_FUZZ)/CMakeCache.txt:
 	    -DNSPD_FUZZ=ON -DNSPD_TESTS=OFF -DNSPD_WERROR=OFF $(CMAKE_ARGS)
 
 fuzz: $(BUILD_FUZZ)/CMakeCache.txt
-	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_case fuzz_vtk fuzz_sim fuzz_expr fuzz_stl
+	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_case fuzz_vtk fuzz_sim fuzz_expr fuzz_stl fuzz_inp
 	tests/fuzz/fuzz.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
 
 format: $(BUILD)/CMakeCache.txt

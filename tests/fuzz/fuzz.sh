@@ -1,6 +1,6 @@
 #!/bin/sh
 # Runs the libFuzzer harnesses one after the other (make fuzz; docs/RELIABILITY.md).
-#   usage: tests/fuzz/fuzz.sh BUILD_FUZZ SECONDS [HARNESS...]   (harnesses: case vtk sim expr stl)
+#   usage: tests/fuzz/fuzz.sh BUILD_FUZZ SECONDS [HARNESS...]   (harnesses: case vtk sim expr stl inp)
 # Each harness runs for SECONDS in fork mode with one worker (-fork=1: one
 # core, and a crash, leak, timeout or out-of-memory is saved and the run goes
 # on, so a long run finds everything it can instead of stopping at the
@@ -15,7 +15,7 @@ set -u
 build=$1
 seconds=$2
 shift 2
-[ $# -gt 0 ] || set -- case vtk sim expr stl
+[ $# -gt 0 ] || set -- case vtk sim expr stl inp
 src=$(cd "$(dirname "$0")/../.." && pwd)
 fuzz=$src/tests/fuzz
 found=0
