@@ -3,6 +3,7 @@
 #include "core/mem.h"
 #include "core/status.h"
 #include "case/case_loads.h"
+#include "case/case_mesh.h"
 #include "case/case_shapes.h"
 #include "io/cfg_read.h"
 #include "solid/correspondence/config.h"
@@ -185,7 +186,18 @@ static int read_precracks(CfgNode *solid, PdConfig *cfg) {
     return NSPD_OK;
 }
 
-static int read_boundaries(CfgNode *solid, PdConfig *cfg) {
+/* item's region: `region` (shapes), or `set` (the mesh's sets), one of them */
+static int read_region_or_set(CfgNode *item, PdConfig *cfg, const CaseMesh *mesh,
+                              ShapeSet *region) {
+    bool from_set;
+    TRY(case_read_set_region(item, "set", mesh, region, &from_set));
+    if (!from_set) return case_read_shapes(item, "region", cfg->dim, true, region);
+    if (cfg_map_find(item, "region"))
+        return cfg_fail_at(item, "region", "both region and set given; expected one of them");
+    return NSPD_OK;
+}
+
+static int read_boundaries(CfgNode *solid, PdConfig *cfg, const CaseMesh *mesh) {
     CfgNode *seq;
     TRY(cfg_opt_seq(solid, "boundaries", &seq));
     if (!seq) return NSPD_OK;
@@ -198,7 +210,7 @@ static int read_boundaries(CfgNode *solid, PdConfig *cfg) {
         if (item->kind != CFG_MAP)
             return cfg_fail(item, "not a boundary region; expected a map with name and region");
         TRY(read_item_name(item, "region", i, r->name));
-        TRY(case_read_shapes(item, "region", cfg->dim, true, &r->region));
+        TRY(read_region_or_set(item, cfg, mesh, &r->region));
         TRY(read_components(item, "velocity", cfg, &r->velocity_mask, r->velocity,
                             r->velocity_expr));
         TRY(read_components(item, "displacement", cfg, &r->displacement_mask, r->displacement,
@@ -222,7 +234,7 @@ static int read_boundaries(CfgNode *solid, PdConfig *cfg) {
     return NSPD_OK;
 }
 
-static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
+static int read_initial_velocities(CfgNode *solid, PdConfig *cfg, const CaseMesh *mesh) {
     CfgNode *seq;
     TRY(cfg_opt_seq(solid, "initial_velocity", &seq));
     if (!seq) return NSPD_OK;
@@ -231,7 +243,7 @@ static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
     for (int i = 0; i < seq->count; i++) {
         CfgNode *item = seq->child[i];
         if (item->kind != CFG_MAP) return cfg_fail(item, "expected a map with region and velocity");
-        TRY(case_read_shapes(item, "region", cfg->dim, true, &cfg->initial_velocities[i].region));
+        TRY(read_region_or_set(item, cfg, mesh, &cfg->initial_velocities[i].region));
         PdInitialVelocity *iv = &cfg->initial_velocities[i];
         TRY(case_req_load_vec(item, "velocity", cfg->dim, cfg, iv->velocity, iv->velocity_expr));
         TRY(cfg_end_map(item));
@@ -246,7 +258,7 @@ static int read_initial_velocities(CfgNode *solid, PdConfig *cfg) {
 enum { CASE_MAX_LATTICE_SITES = 1 << 30 }; /* 1.07e9: 8.6 GB of point positions in 3D alone */
 
 static int check_lattice_size(CfgNode *s, const PdConfig *cfg) {
-    if (cfg->lattice_kind == PD_LATTICE_POLAR) return NSPD_OK; /* counted in read_polar */
+    if (cfg->lattice_kind != PD_LATTICE_SQUARE) return NSPD_OK; /* counted where they are read */
     double lo[3], hi[3];
     if (!shapeset_bounds(&cfg->geometry, cfg->dim, lo, hi)) return NSPD_OK; /* said later */
     double sites = 1.0;
@@ -346,13 +358,48 @@ static int read_polar(CfgNode *s, PdConfig *cfg) {
     return cfg_end_map(m);
 }
 
-/* The keys both formulations read the same way, up to the material. */
-static int read_lattice(CfgNode *s, PdConfig *cfg, double default_horizon) {
+/* solid.lattice.kind as written, or NULL (before the lattice is read) */
+static const char *lattice_kind_text(const CfgNode *s) {
+    const CfgNode *lattice = cfg_map_find(s, "lattice");
+    const CfgNode *kind =
+        lattice && lattice->kind == CFG_MAP ? cfg_map_find(lattice, "kind") : NULL;
+    return kind && kind->kind == CFG_SCALAR ? kind->text : NULL;
+}
+
+/* solid.lattice {kind: abaqus, file, scale, translate}: the mesh's
+ * elements as the points (case_mesh.h); *mean_size the default spacing */
+static int read_abaqus(CfgNode *s, PdConfig *cfg, CaseMesh *mesh, double *mean_size) {
+    CfgNode *m;
+    TRY(cfg_req_map(s, "lattice", &m));
+    int kind;
+    TRY(cfg_req_enum(m, "kind", PD_LATTICE_NAMES, &kind));
+    cfg->lattice_kind = PD_LATTICE_ABAQUS;
+    if (cfg_map_find(s, "lattice_origin"))
+        return cfg_fail_at(s, "lattice_origin",
+                           "the square lattice's origin with a mesh's points; expected no "
+                           "lattice_origin");
+    TRY(case_read_abaqus(m, cfg->dim, mesh, &cfg->mesh, mean_size));
+    return cfg_end_map(m);
+}
+
+/* The keys both formulations read the same way, up to the material
+ * (mesh: where a kind: abaqus lattice's mesh is kept, NULL when the
+ * formulation takes none). */
+static int read_lattice(CfgNode *s, PdConfig *cfg, double default_horizon, CaseMesh *mesh) {
     int model;
     TRY(cfg_req_enum(s, "model", PD_MODEL_NAMES, &model));
     cfg->model = (PdModel)model;
     cfg->dim = cfg->model == PD_3D ? 3 : 2;
-    TRY(cfg_req_double(s, "spacing", &cfg->spacing));
+    const char *kind = lattice_kind_text(s);
+    const bool from_mesh = mesh && kind && strcmp(kind, "abaqus") == 0;
+    double mean_size = 0.0;
+    if (from_mesh) TRY(read_abaqus(s, cfg, mesh, &mean_size));
+    /* a mesh's points: the spacing is nominal (the horizon m dx, contact),
+     * by default the mean element size */
+    if (from_mesh)
+        TRY(cfg_opt_double(s, "spacing", mean_size, &cfg->spacing));
+    else
+        TRY(cfg_req_double(s, "spacing", &cfg->spacing));
     TRY(cfg_check_positive(s, "spacing", cfg->spacing, "the lattice spacing dx in m"));
     if (cfg->dim == 2) {
         TRY(cfg_opt_double(s, "thickness", cfg->spacing, &cfg->thickness));
@@ -378,19 +425,19 @@ static int read_lattice(CfgNode *s, PdConfig *cfg, double default_horizon) {
         TRY(cfg_req_vec(s, "lattice_origin", cfg->dim, cfg->lattice_origin));
         cfg->has_lattice_origin = true;
     }
-    return read_polar(s, cfg);
+    return from_mesh ? NSPD_OK : read_polar(s, cfg);
 }
 
 /* The keys after the material that both formulations share. */
-static int read_body(CfgNode *s, PdConfig *cfg) {
-    /* with a polar lattice the geometry is optional: it filters the
-     * elements by their centroids */
-    TRY(case_read_shapes(s, "geometry", cfg->dim, cfg->lattice_kind != PD_LATTICE_POLAR,
+static int read_body(CfgNode *s, PdConfig *cfg, const CaseMesh *mesh) {
+    /* with a polar lattice or a mesh's points the geometry is optional: it
+     * filters the elements by their centroids */
+    TRY(case_read_shapes(s, "geometry", cfg->dim, cfg->lattice_kind == PD_LATTICE_SQUARE,
                          &cfg->geometry));
     TRY(check_lattice_size(s, cfg));
     TRY(read_precracks(s, cfg));
-    TRY(read_boundaries(s, cfg));
-    TRY(read_initial_velocities(s, cfg));
+    TRY(read_boundaries(s, cfg, mesh));
+    TRY(read_initial_velocities(s, cfg, mesh));
     double zero[3] = {0, 0, 0};
     TRY(case_opt_load_vec(s, "body_force", cfg->dim, zero, cfg, cfg->body_force,
                           cfg->body_force_expr));
@@ -425,17 +472,16 @@ static int read_contact(CfgNode *s, PdConfig *cfg) {
 static int read_bond(CfgNode *s, PdConfig *cfg) {
     /* refused before the polar keys are read (the force runs on the
      * square lattice's view: solid/bond/stencil.h) */
-    const CfgNode *lattice = cfg_map_find(s, "lattice");
-    const CfgNode *kind =
-        lattice && lattice->kind == CFG_MAP ? cfg_map_find(lattice, "kind") : NULL;
-    if (kind && kind->kind == CFG_SCALAR && strcmp(kind->text, "polar") == 0)
-        return cfg_fail(kind,
-                        "polar with the bond-based solid, whose force runs on the square "
+    const char *kind = lattice_kind_text(s);
+    if (kind && (strcmp(kind, "polar") == 0 || strcmp(kind, "abaqus") == 0))
+        return cfg_fail(cfg_map_find(cfg_map_find(s, "lattice"), "kind"),
+                        "%s with the bond-based solid, whose force runs on the square "
                         "lattice's fixed offsets; expected kind: square, or solid.formulation: "
-                        "correspondence");
-    TRY(read_lattice(s, cfg, 3.015));
+                        "correspondence",
+                        kind);
+    TRY(read_lattice(s, cfg, 3.015, NULL));
     TRY(read_material(s, cfg));
-    TRY(read_body(s, cfg));
+    TRY(read_body(s, cfg, NULL));
     TRY(read_failure(s, cfg));
     TRY(read_contact(s, cfg));
     int v, srf, integ;
@@ -550,22 +596,24 @@ static int read_cpd_pressures(CfgNode *s, CpdConfig *cfg) {
     return NSPD_OK;
 }
 
-static int read_correspondence(CfgNode *s, CpdConfig *cfg) {
+static int read_correspondence(CfgNode *s, CpdConfig *cfg, CaseMesh *mesh) {
     PdConfig *pd = &cfg->pd;
-    TRY(read_lattice(s, pd, 2.5));
+    TRY(read_lattice(s, pd, 2.5, mesh));
     if (pd->dim != 2)
         return cfg_fail_at(s, "model",
                            "%s: the correspondence solid is 2D; expected plane_strain or "
                            "plane_stress",
                            PD_MODEL_NAMES[pd->model]);
     TRY(read_cpd_material(s, cfg));
-    TRY(read_body(s, pd));
+    TRY(read_body(s, pd, mesh));
     TRY(read_cpd_failure(s, cfg));
     TRY(read_cpd_pressures(s, cfg));
-    if (pd->lattice_kind == PD_LATTICE_POLAR && cfg->pressure_count > 0)
+    if (pd->lattice_kind != PD_LATTICE_SQUARE && cfg->pressure_count > 0)
         return cfg_fail_at(s, "pressure_loads",
-                           "with a polar lattice: a pressure acts on the square lattice's cell "
-                           "faces; expected no pressure_loads, or solid.lattice.kind: square");
+                           "with %s: a pressure acts on the square lattice's cell faces; "
+                           "expected no pressure_loads, or solid.lattice.kind: square",
+                           pd->lattice_kind == PD_LATTICE_POLAR ? "a polar lattice"
+                                                                : "a mesh's points (kind: abaqus)");
     TRY(read_contact(s, pd));
     CfgNode *c;
     TRY(cfg_opt_map(s, "correspondence", &c));
@@ -638,7 +686,11 @@ int case_read_solid(CfgNode *s, SolidConfig *out) {
         TRY(nspd_alloc(&cpd, 1, sizeof *cpd));
         out->kind = SOLID_CORRESPONDENCE;
         out->model = cpd;
-        TRY(read_correspondence(s, cpd));
+        /* a mesh's sets are read while the solid is (case_mesh.h) */
+        CaseMesh mesh = {0};
+        const int status = read_correspondence(s, cpd, &mesh);
+        case_mesh_free(&mesh);
+        TRY(status);
     } else {
         PdConfig *pd;
         TRY(nspd_alloc(&pd, 1, sizeof *pd));

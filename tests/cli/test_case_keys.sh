@@ -38,5 +38,7 @@ sod.yaml|flow.numerics|### flow.numerics
 plate_crack.yaml|solid|## solid
 plate_crack.yaml|solid.material|### solid.material
 blast_hollow_cylinder.yaml|solid.lattice|#### solid (correspondence) lattice
+plate_hole_inp.yaml|solid.lattice|#### solid (correspondence) lattice
+plate_hole_inp.yaml|solid.boundaries[0]|### solid.boundaries
 LIST
 finish

@@ -237,10 +237,12 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
     if (cfg->rk_order == 0) cfg->rk_order = 2; /* a configuration built in code */
     b->dim = pd->dim;
     const bool polar = pd->lattice_kind == PD_LATTICE_POLAR;
-    if (polar && cfg->pressure_count > 0)
+    const bool mesh = pd->lattice_kind == PD_LATTICE_ABAQUS;
+    if ((polar || mesh) && cfg->pressure_count > 0)
         return NSPD_FAIL(NSPD_ERR_INPUT,
                          "pressure loads act on the square lattice's cell faces; expected no "
-                         "pressure_loads with a polar lattice");
+                         "pressure_loads with a %s lattice",
+                         polar ? "polar" : "mesh's");
     if (polar) pd->spacing = lattice_polar_spacing(&pd->polar); /* the radial spacing */
     b->spacing = pd->spacing;
     b->delta = pd->horizon_factor * pd->spacing;
@@ -255,6 +257,8 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
         return NSPD_FAIL(NSPD_ERR_INPUT, "the polar lattice is 2D; expected a 2D model");
     if (polar)
         TRY(lattice_fill_polar(&lat, &pd->polar, &pd->geometry));
+    else if (mesh)
+        TRY(mesh_points_fill(&lat, &pd->mesh, b->dim, pd->spacing, &pd->geometry));
     else
         TRY(lattice_fill(&lat, &pd->geometry, b->dim, pd->spacing,
                          pd->has_lattice_origin ? pd->lattice_origin : NULL));
@@ -279,11 +283,13 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
     TRY(alloc_arrays(b));
     const int64_t na = b->n + b->ghosts;
     const double v_ref = pow(pd->spacing, b->dim) * (b->dim == 2 ? pd->thickness : 1.0);
-    /* a polar element's area is its ring's (lattice index 1), so the
-     * ghosts of several processes get theirs from their indices too */
+    /* a polar element's area is its ring's (lattice index 1), a mesh
+     * element's is its number's (index 2), so the ghosts of several
+     * processes get theirs from their indices too */
     for (int64_t i = 0; i < na; i++)
-        b->volume[i] =
-            polar ? lattice_polar_area(&pd->polar, b->lattice[1][i]) * pd->thickness : v_ref;
+        b->volume[i] = polar  ? lattice_polar_area(&pd->polar, b->lattice[1][i]) * pd->thickness
+                       : mesh ? mesh_points_measure(&pd->mesh, b->lattice[2][i]) * pd->thickness
+                              : v_ref;
     pd_regions_assign(pd, na, (const double *const *)b->x, b->region, b->v);
     TRY(pd_boundary_table_build(&b->boundary, pd));
 

@@ -100,6 +100,8 @@ static SolidEstimate cpd_estimate(const SolidConfig *sc) {
     double sites, fraction;
     if (pd->lattice_kind == PD_LATTICE_POLAR) /* all its elements: the geometry only filters */
         e.points = (double)pd->polar.rings * (double)pd->polar.sectors;
+    else if (pd->lattice_kind == PD_LATTICE_ABAQUS) /* the same: all the mesh's elements */
+        e.points = (double)pd->mesh.n;
     else if (!lattice_estimate(&pd->geometry, pd->dim, pd->spacing, &sites, &fraction))
         return e;
     else

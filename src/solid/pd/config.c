@@ -23,7 +23,7 @@ const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1] = {"euler_cromer"
                                                                   NULL};
 const char *const PD_VOLUME_NAMES[PD_VOLUME_COUNT + 1] = {"none", "linear", NULL};
 const char *const PD_SURFACE_NAMES[PD_SURFACE_COUNT + 1] = {"none", "energy", NULL};
-const char *const PD_LATTICE_NAMES[PD_LATTICE_COUNT + 1] = {"square", "polar", NULL};
+const char *const PD_LATTICE_NAMES[PD_LATTICE_COUNT + 1] = {"square", "polar", "abaqus", NULL};
 
 double pd_model_poisson_ratio(PdModel model) {
     return model == PD_PLANE_STRESS ? 1.0 / 3.0 : 0.25;
@@ -112,4 +112,5 @@ void pd_config_free(PdConfig *cfg) {
     for (int i = 0; i < cfg->material_count; i++) shapeset_free(&cfg->materials[i].region);
     nspd_free(&cfg->materials);
     cfg->material_count = 0;
+    mesh_points_free(&cfg->mesh);
 }

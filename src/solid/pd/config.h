@@ -8,6 +8,7 @@
 #include "core/shape.h"
 #include "solid/pd/contact.h"
 #include "solid/pd/lattice.h"
+#include "solid/pd/mesh_points.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -16,7 +17,12 @@ typedef enum { PD_PLANE_STRESS, PD_PLANE_STRAIN, PD_3D, PD_MODEL_COUNT } PdModel
 typedef enum { PD_EULER_CROMER, PD_VELOCITY_VERLET, PD_INTEGRATOR_COUNT } PdIntegrator;
 typedef enum { PD_VOLUME_NONE, PD_VOLUME_LINEAR, PD_VOLUME_COUNT } PdVolumeCorrection;
 typedef enum { PD_SURFACE_NONE, PD_SURFACE_ENERGY, PD_SURFACE_COUNT } PdSurfaceCorrection;
-typedef enum { PD_LATTICE_SQUARE, PD_LATTICE_POLAR, PD_LATTICE_COUNT } PdLatticeKind;
+typedef enum {
+    PD_LATTICE_SQUARE,
+    PD_LATTICE_POLAR,
+    PD_LATTICE_ABAQUS,
+    PD_LATTICE_COUNT
+} PdLatticeKind;
 
 extern const char *const PD_MODEL_NAMES[PD_MODEL_COUNT + 1];
 extern const char *const PD_INTEGRATOR_NAMES[PD_INTEGRATOR_COUNT + 1];
@@ -76,9 +82,12 @@ typedef struct {
     /* square: the lattice of spacing dx in `geometry`; polar (the
      * correspondence solid only): `polar`'s elements whose centroids
      * `geometry` holds (all if it has no shape), each of its own volume;
-     * spacing is then its radial spacing (r_o - r_i) / rings */
+     * spacing is then its radial spacing (r_o - r_i) / rings; abaqus (the
+     * correspondence solid only): `mesh`'s points whose centroids
+     * `geometry` holds (all if it has no shape), each of its own volume */
     PdLatticeKind lattice_kind;
     PolarLattice polar;
+    MeshPoints mesh; /* owned */
 
     double density;          /* kg/m^3 */
     double youngs_modulus;   /* Pa */
