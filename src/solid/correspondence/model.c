@@ -230,6 +230,15 @@ double cpd_partly_damaged(const CpdBody *b, const double *damage) {
     return damaged_fraction(b, damage, nextafter(0.0, 1.0), 0.99);
 }
 
+/* The points whose damage is at least Eq. 24's 0.99 (what the mass loss
+ * weighs): paper 003 Fig. 8's count of fully damaged nodes. Each rank
+ * counts its own points; an integer sum over the ranks is exact. */
+int64_t cpd_fully_damaged(const CpdBody *b, const double *damage) {
+    int64_t k = 0;
+    for (int64_t i = 0; i < b->n; i++) k += damage[i] >= 0.99 ? 1 : 0;
+    return cpd_halo_sum(b, k);
+}
+
 static int64_t root_of(int64_t *parent, int64_t i) {
     while (parent[i] != i) {
         parent[i] = parent[parent[i]];
@@ -269,7 +278,7 @@ int64_t cpd_fragment_count(const CpdBody *b, int64_t *debris) {
 
 /* max plastic strain over bonds, and mass loss from the mean damage */
 static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_loss,
-                          double *max_damage, double *partly) {
+                          double *max_damage, double *partly, int64_t *fully) {
     const CpdBody *b = &cs->body;
     double m = 0.0; /* over intact bonds: a broken bond's state stops at its break */
     if (b->cfg.force == CPD_FORCE_CLASSIC) /* per point: over the points not debris */
@@ -281,6 +290,7 @@ static void state_numbers(const CpdSolid *cs, double *max_eqps, double *mass_los
     cpd_point_damage(b, cs->broken, NULL); /* the scratch holds the mean damage here */
     *mass_loss = cpd_mass_loss(b, cs->broken);
     *partly = cpd_partly_damaged(b, cs->broken);
+    *fully = cpd_fully_damaged(b, cs->broken);
     *max_damage = cpd_halo_max(b, max_of(cs->broken, b->n));
 }
 
@@ -288,7 +298,8 @@ static void cpd_history(const void *impl, Report *row) {
     const CpdSolid *cs = impl;
     const CpdBody *b = &cs->body;
     double eqps, loss, dmax, partly;
-    state_numbers(cs, &eqps, &loss, &dmax, &partly);
+    int64_t fully;
+    state_numbers(cs, &eqps, &loss, &dmax, &partly, &fully);
     report_real(row, "kinetic_energy_J", kinetic_energy(b));
     if (b->has_contact) { /* the columns only where there is contact: other cases' unchanged */
         report_real(row, "contact_energy_J",
@@ -302,13 +313,15 @@ static void cpd_history(const void *impl, Report *row) {
     report_real(row, "max_plastic_strain", eqps);
     report_real(row, "max_damage", dmax);
     report_real(row, "mass_loss", loss);
+    report_int(row, "fully_damaged_points", fully);
 }
 
 static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     const CpdSolid *cs = impl;
     const CpdBody *b = &cs->body;
     double eqps, loss, dmax, partly;
-    state_numbers(cs, &eqps, &loss, &dmax, &partly);
+    int64_t fully;
+    state_numbers(cs, &eqps, &loss, &dmax, &partly, &fully);
     const int64_t bonds = cpd_whole_bonds(b);
     report_int(out, "points", cpd_whole_points(b));
     report_int(out, "bonds", bonds / 2);
@@ -318,6 +331,7 @@ static void cpd_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "max_damage", dmax);
     report_real(out, "max_plastic_strain", eqps);
     report_real(out, "mass_loss", loss);
+    report_int(out, "fully_damaged_points", fully);
     report_real(out, "partly_damaged_fraction", partly);
     int64_t debris = 0;
     report_int(out, "fragment_count", cpd_fragment_count(b, &debris));

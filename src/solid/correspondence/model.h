@@ -27,5 +27,9 @@ double cpd_mass_loss(const CpdBody *b, const double *damage);
  * flanks of the cracks. Beside the mass loss it measures how wide the
  * cracks' fully damaged bands are (docs/VALIDATION.md, the hollow square). */
 double cpd_partly_damaged(const CpdBody *b, const double *damage);
+/* The number of points whose damage is at least 0.99, the points the mass
+ * loss weighs (paper 003 Fig. 8's "fully damaged PD nodes"), over the whole
+ * body: each rank's own points counted, summed exactly (collective). */
+int64_t cpd_fully_damaged(const CpdBody *b, const double *damage);
 
 #endif

@@ -387,10 +387,12 @@ static void test_ductile_damage_ramp(void **state) {
     double *dmean = malloc((size_t)b.n * sizeof(double));
     cpd_point_damage(&b, dmean, NULL);
     assert_close(cpd_mass_loss(&b, dmean), 1.0, 0.0);
+    assert_int_equal(cpd_fully_damaged(&b, dmean), b.n);
     for (int64_t i = 0; i < b.n; i++) dmean[i] = i % 4 == 0 ? 0.99 : 0.989;
     int64_t count = 0;
     for (int64_t i = 0; i < b.n; i++) count += i % 4 == 0;
     assert_close(cpd_mass_loss(&b, dmean), (double)count / (double)b.n, 1e-15);
+    assert_int_equal(cpd_fully_damaged(&b, dmean), count); /* 0.99 counts, 0.989 does not */
     assert_close(cpd_partly_damaged(&b, dmean), 1.0 - (double)count / (double)b.n, 1e-15);
     for (int64_t i = 0; i < b.n; i += 2) dmean[i] = 0.0; /* undamaged: neither */
     int64_t partly = 0;
