@@ -268,8 +268,8 @@ static bool is_part_file(const char *name) {
 static bool is_output_file(const char *name) {
     static const char *const exact[] = {"case.yaml", "log.txt",  "history.csv", "summary.json",
                                         "solid.pvd", "flow.pvd", NULL};
-    static const char *const prefix[] = {"solid_",     "damage_",  "line_",       "flow_", "mach_",
-                                         "schlieren_", "surface_", "checkpoint_", NULL};
+    static const char *const prefix[] = {"solid_", "damage_",    "line_",    "flow_",       "mach_",
+                                         "speed_", "schlieren_", "surface_", "checkpoint_", NULL};
     if (is_part_file(name)) return true;
     const size_t len = strlen(name); /* nspd movie's and nspd report's */
     if ((len > 4 && strcmp(name + len - 4, ".mp4") == 0) || strcmp(name, "report.html") == 0)

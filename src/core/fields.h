@@ -6,6 +6,7 @@
 #ifndef NSPD_CORE_FIELDS_H
 #define NSPD_CORE_FIELDS_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 typedef enum { COLORMAP_VIRIDIS, COLORMAP_GRAY, COLORMAP_INFERNO } ColormapKind;
@@ -27,9 +28,12 @@ typedef struct {
 /* A picture series <file>_NNNNN.png of one field over [lo, hi], its colour
  * bar labelled "label [units]" ("Mach number [-]", "pressure [Pa]"). On a
  * grid, `overlay_file` (if set) asks for a second picture,
- * <overlay_file>_NNNNN.png, with the first picture of a coupled points mesh
- * drawn on top, coloured with that picture's `overlay_map` and labelled
- * with its label and units on a second bar, in a window round those points. */
+ * <overlay_file>_NNNNN.png, with the overlay picture of a coupled points
+ * mesh (FieldSet.overlay_picture) drawn on top, coloured with that
+ * picture's `overlay_map` and labelled with its label and units on a
+ * second bar, in a window round those points. `coupled_only`: the picture
+ * and its overlay are drawn only where there is such a mesh (a coupled
+ * case), none otherwise. */
 typedef struct {
     const char *file;
     const char *label, *units;
@@ -38,6 +42,7 @@ typedef struct {
     ColormapKind map;
     const char *overlay_file;
     ColormapKind overlay_map;
+    bool coupled_only;
 } PictureRef;
 
 /* A table <file>_NNNNN.csv: a "# t = ... s" line, the header, then `rows`
@@ -102,6 +107,9 @@ typedef struct {
     FieldRef point_field[FIELDSET_MAX_FIELDS];
     int picture_count;
     PictureRef picture[FIELDSET_MAX_PICTURES];
+    /* MESH_POINTS: the `file` of the picture a coupled grid's overlays
+     * draw on top; NULL, or no picture of that name: the first */
+    const char *overlay_picture;
     int table_count;
     TableRef table[FIELDSET_MAX_TABLES];
     /* piece.count > 1: the VTK file is written in pieces from `piece` (on

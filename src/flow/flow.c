@@ -277,9 +277,21 @@ void *flow_impl(Flow *f, FlowMethod method) {
     return f && f->method == method ? f->impl : NULL;
 }
 
-double flow_mach_picture_top(double largest) {
-    if (!(largest >= FLOW_MACH_AT_REST) || !isfinite(largest)) return 0.0;
+/* 1.25 times a positive finite `largest`, rounded up to two significant
+ * digits */
+static double picture_top(double largest) {
     const double v = 1.25 * largest, unit = pow(10.0, floor(log10(v)) - 1.0);
     /* the 1e-12 keeps 1.25 * 2 = 2.5 at 2.5, not one unit above */
     return ceil(v / unit * (1.0 - 1e-12)) * unit;
+}
+
+double flow_mach_picture_top(double largest) {
+    if (!(largest >= FLOW_MACH_AT_REST) || !isfinite(largest)) return 0.0;
+    return picture_top(largest);
+}
+
+double flow_speed_picture_top(double largest_speed, double largest_mach) {
+    if (flow_mach_picture_top(largest_mach) == 0.0) return 0.0;
+    if (!(largest_speed > 0.0) || !isfinite(largest_speed)) return 0.0;
+    return picture_top(largest_speed);
 }

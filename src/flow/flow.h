@@ -331,6 +331,15 @@ void flow_fields(Flow *f, FieldSet *out);
  * (sim/sim_output.c). */
 #define FLOW_MACH_AT_REST 1e-2
 double flow_mach_picture_top(double largest);
+/* The top of the speed pictures (`speed`, |u| in m/s, and the
+ * `speed_damage` drawn from it: paper 003's Figs. 2 and 7), fixed for the
+ * series as the Mach pictures' is and at the same output: 1.25 times the
+ * largest speed of the output (`largest_speed`, m/s, over the fluid cells
+ * and the free stream), rounded up to two significant digits; 0 while
+ * the gas is at rest by the Mach pictures' test (`largest_mach`, as
+ * flow_mach_picture_top takes it, below FLOW_MACH_AT_REST) or the speed
+ * is not a positive finite number: that frame is drawn 0 to 1 m/s. */
+double flow_speed_picture_top(double largest_speed, double largest_mach);
 
 /* Writes or reads the flow's state (FlowOps.checkpoint): NSPD_ERR_INPUT
  * for a solver that cannot be checkpointed. */

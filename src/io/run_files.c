@@ -217,6 +217,11 @@ static void picture_title(char *buf, size_t size, const char *case_name, const c
              when);
 }
 
+/* Whether `overlay` is a points mesh with a picture to draw over a grid. */
+static bool has_overlay(const FieldSet *overlay) {
+    return overlay && overlay->mesh == MESH_POINTS && overlay->picture_count > 0;
+}
+
 static int write_picture(const char *dir, int index, double t, const FieldSet *fs,
                          const PictureRef *pic, const FieldSet *overlay,
                          const FieldOutputOptions *opt) {
@@ -230,10 +235,11 @@ static int write_picture(const char *dir, int index, double t, const FieldSet *f
         return render_points_png(path, fs->n, fs->position, pic->values, fs->spacing, &ro);
     TRY(render_grid_png(path, fs->nx, fs->ny, fs->face[0], fs->face[1], pic->values, fs->blank, &ro,
                         NULL));
-    if (!pic->overlay_file || !overlay || overlay->mesh != MESH_POINTS ||
-        overlay->picture_count == 0)
-        return NSPD_OK;
+    if (!pic->overlay_file || !has_overlay(overlay)) return NSPD_OK;
     const PictureRef *top = &overlay->picture[0];
+    for (int k = 0; k < overlay->picture_count && overlay->overlay_picture; k++)
+        if (strcmp(overlay->picture[k].file, overlay->overlay_picture) == 0)
+            top = &overlay->picture[k];
     const char *top_label = top->label ? top->label : top->file;
     RenderPoints pts = {overlay->n,       {overlay->position[0], overlay->position[1]},
                         top->values,      overlay->spacing,
@@ -276,7 +282,8 @@ int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
                     const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd) {
     if (fs->mesh != MESH_NONE && opt->vtk) TRY(write_vtk(dir, index, t, fs, pvd));
     for (int k = 0; k < fs->picture_count && opt->png && fs->mesh != MESH_NONE; k++)
-        TRY(write_picture(dir, index, t, fs, &fs->picture[k], overlay, opt));
+        if (!fs->picture[k].coupled_only || has_overlay(overlay))
+            TRY(write_picture(dir, index, t, fs, &fs->picture[k], overlay, opt));
     for (int k = 0; k < fs->table_count; k++) TRY(table_write(dir, index, t, &fs->table[k]));
     return NSPD_OK;
 }

@@ -45,7 +45,8 @@ typedef struct {
  * its VTK file (added to *pvd; of a set in pieces, the .pvtr or .pvtu
  * that names them), its pictures (titled "case - field - t = ...")
  * and its tables. `overlay`
- * (NULL: none) is the points mesh drawn on the pictures that ask for it. */
+ * (NULL: none) is the points mesh drawn on the pictures that ask for it;
+ * a `coupled_only` picture is drawn only with one. */
 int field_set_write(const char *dir, int index, double t, const FieldSet *fs,
                     const FieldSet *overlay, const FieldOutputOptions *opt, PvdSeries *pvd);
 /* A set in pieces (fs->piece.count > 1): this process's piece of output

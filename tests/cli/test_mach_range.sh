@@ -3,7 +3,8 @@
 # output.mach_range fixes it instead. The renderer is deterministic, so a
 # picture drawn on the scale the rule predicts is byte for byte the one
 # drawn with that scale given as the key, and differs from one drawn on
-# another scale.
+# another scale. The speed pictures: coupled runs only, not moved by the
+# key.
 #   usage: test_mach_range.sh NSPD SOURCE_DIR
 set -u
 nspd=$1
@@ -66,7 +67,15 @@ for method in gks iga; do
         fail "$method: the moving frame stayed on 0 to 1 (the frame at rest fixed the scale)" || ok
     same one_$method/mach_damage_00001.png two_$method/mach_damage_00001.png &&
         fail "$method: mach_damage ignores output.mach_range" || ok
+    # the air speed (paper 003 Figs. 2, 7): drawn for coupled runs, with the
+    # solid on top too; mach_range leaves it alone
+    [ -f "$work/rest_$method/speed_00001.png" ] && [ -f "$work/rest_$method/speed_damage_00001.png" ] &&
+        ok || fail "$method: the coupled chamber drew no speed or speed_damage picture"
+    same rest_$method/speed_00001.png two_$method/speed_00001.png && ok ||
+        fail "$method: output.mach_range moved the speed picture's scale"
 done
+# ... and not for a flow alone (the Mach picture shows it; pictures cost)
+ls "$work/auto" | grep -q '^speed' && fail "the cylinder alone drew speed pictures" || ok
 
 # refusals: exit 2, the key named
 for bad in "[1, 1]" "[-1, 2]" "[0]" "2"; do

@@ -38,6 +38,9 @@ void gks_solver_primitive(const GksSolver *s, FlowField field, double *out) {
             case FLOW_MACH:
                 v = sqrt((q.u * q.u + q.v * q.v) * q.rho / (gamma * q.p));
                 break;
+            case FLOW_SPEED: /* gks_fields' from u and v: the same bits */
+                v = sqrt(q.u * q.u + q.v * q.v);
+                break;
             default:
                 v = 0.0;
             }

@@ -18,7 +18,7 @@ void gks_case_config_free(GksCaseConfig *c) {
     c->has_field = false;
 }
 
-enum { GKS_SCRATCH = 7 };      /* density, u, v, p, T, Mach, schlieren */
+enum { GKS_SCRATCH = 8 };      /* density, u, v, p, T, Mach, schlieren, speed */
 enum { GKS_PIECE_FIELDS = 7 }; /* density, u, v, p, T, Mach, the kinds */
 
 /* The model: the solver, its case and the output scratch (allocated once).
@@ -32,6 +32,7 @@ typedef struct {
     double last_dt;        /* s, of the last step; 0 before the first */
     char process_grid[32]; /* "PXxPY" for the summary (it borrows the text) */
     double mach_scale;     /* the Mach pictures' top (flow_mach_picture_top); 0 until fixed */
+    double speed_scale;    /* the speed pictures' top, m/s (flow_speed_picture_top); the same */
     double *cells[GKS_SCRATCH];
     double *kind;   /* cell kinds as a field */
     uint8_t *blank; /* 1: not a fluid cell */
@@ -74,7 +75,7 @@ static void vortex_periods(GksCaseConfig *fc) {
 /* Cells from the grid's segments (no axis built); bytes: the solver's
  * padded state (two copies of four fields and the kinds: 65 per cell with
  * its ghost layers), its row work space (28 rows per thread), and the
- * model's output scratch (66 per interior cell: seven fields, the kinds as
+ * model's output scratch (74 per interior cell: eight fields, the kinds as
  * a field, two masks). */
 static FlowEstimate gks_estimate(const FlowConfig *mc) {
     const GksConfig *c = &((const GksCaseConfig *)mc->model)->solver;
@@ -87,7 +88,7 @@ static FlowEstimate gks_estimate(const FlowConfig *mc) {
     const double stride = (double)((nx + 2 * GRID_NG + 7) / 8 * 8);
     const double padded = stride * (double)(ny + 2 * GRID_NG);
     e.stored_cells = padded;
-    e.bytes = 65.0 * padded + 28.0 * 8.0 * stride * (double)omp_get_max_threads() + 66.0 * e.cells;
+    e.bytes = 65.0 * padded + 28.0 * 8.0 * stride * (double)omp_get_max_threads() + 74.0 * e.cells;
     e.check_s = GKS_CHECK_S_PER_CELL * e.cells;
     const GksCaseConfig *fc = mc->model;
     if (!fc->has_vortex && !fc->has_field)
@@ -544,6 +545,7 @@ static int gks_checkpoint(void *impl, Checkpoint *ck) {
     GksFlow *g = impl;
     TRY(gks_solver_checkpoint(g->solver, ck));
     TRY(checkpoint_io_double(ck, "gks.mach_scale", &g->mach_scale));
+    TRY(checkpoint_io_double(ck, "gks.speed_scale", &g->speed_scale));
     return checkpoint_io_double(ck, "gks.last_dt", &g->last_dt);
 }
 
@@ -657,15 +659,23 @@ static void schlieren(const Grid *g, const double *rho, const uint8_t *solid, do
         out[c] = gmax > 0.0 ? exp(-15.0 * out[c] / gmax) : 1.0;
 }
 
-/* The largest Mach number of this output, over the fluid cells and the
- * reference state (the free stream): what flow_mach_picture_top scales. */
-static double mach_largest(const GksFlow *gf, int64_t ncell) {
-    double top = 0.0;
+/* The Mach and speed pictures' tops, while open: from the largest Mach
+ * number and speed of this output, over the fluid cells and the reference
+ * state (the free stream), what flow_mach_picture_top and
+ * flow_speed_picture_top scale. */
+static void fix_picture_tops(GksFlow *gf, int64_t ncell) {
+    if (gf->mach_scale != 0.0 && gf->speed_scale != 0.0) return;
+    double mach = 0.0, speed = 0.0;
     for (int64_t c = 0; c < ncell; c++)
-        if (!gf->blank[c] && gf->cells[5][c] > top) top = gf->cells[5][c];
+        if (!gf->blank[c]) {
+            mach = fmax(mach, gf->cells[5][c]);
+            speed = fmax(speed, gf->cells[7][c]);
+        }
     const FlowReference r = gks_reference(gf);
-    if (r.rho > 0 && r.p > 0) top = fmax(top, hypot(r.u, r.v) / sqrt(r.gamma * r.p / r.rho));
-    return top;
+    speed = fmax(speed, hypot(r.u, r.v));
+    if (r.rho > 0 && r.p > 0) mach = fmax(mach, hypot(r.u, r.v) / sqrt(r.gamma * r.p / r.rho));
+    if (gf->mach_scale == 0.0) gf->mach_scale = flow_mach_picture_top(mach);
+    if (gf->speed_scale == 0.0) gf->speed_scale = flow_speed_picture_top(speed, mach);
 }
 
 /* This block's piece of the .pvtr (several processes): its own cells'
@@ -696,12 +706,14 @@ static void piece_fields(GksFlow *gf, FieldPiece *pc) {
 }
 
 /* What the pictures draw, of the whole grid on rank 0 (several
- * processes): the density (schlieren), the Mach number and the kinds. */
+ * processes): the density (schlieren), the Mach number, the speed and the
+ * kinds. */
 static void picture_fields(GksFlow *gf) {
     const Grid *g = gks_solver_whole_grid(gf->solver);
     /* a failed gather is MPI's (its default handler stops the job) */
     (void)gks_solver_primitive_whole(gf->solver, FLOW_DENSITY, gf->slab, gf->cells[0]);
     (void)gks_solver_primitive_whole(gf->solver, FLOW_MACH, gf->slab, gf->cells[5]);
+    (void)gks_solver_primitive_whole(gf->solver, FLOW_SPEED, gf->slab, gf->cells[7]);
     (void)gks_solver_kinds_whole(gf->solver, gf->slab, gf->kind);
     if (!gf->blank) return; /* not the writer */
     for (int64_t c = 0; c < (int64_t)g->nx * g->ny; c++)
@@ -723,9 +735,13 @@ static void gks_fields(void *impl, FieldSet *out) {
         picture_fields(gf);
     } else {
         primitives(gf); /* cell kinds too, as 0/1 "blank" and as a field */
+        /* the speed as FLOW_SPEED gives it (the pieces' gather), from u, v */
+        for (int64_t c = 0; c < ncell; c++)
+            gf->cells[7][c] =
+                sqrt(gf->cells[1][c] * gf->cells[1][c] + gf->cells[2][c] * gf->cells[2][c]);
     }
     if (!gf->blank) return; /* not the writer: its piece only */
-    if (gf->mach_scale == 0.0) gf->mach_scale = flow_mach_picture_top(mach_largest(gf, ncell));
+    fix_picture_tops(gf, ncell);
     schlieren(g, gf->cells[0], gf->blank, gf->cells[6]);
     out->nx = g->nx;
     out->ny = g->ny;
@@ -750,6 +766,18 @@ static void gks_fields(void *impl, FieldSet *out) {
                                                       .hi = mach_hi,
                                                       .map = COLORMAP_VIRIDIS,
                                                       .overlay_file = "mach_damage"};
+    /* |u|, paper 003's air speed (Figs. 2, 7, 11), where a solid is coupled
+     * (drawn with it on top); from the velocity, no VTK array of its own */
+    out->picture[out->picture_count++] =
+        (PictureRef){.file = "speed",
+                     .label = "speed",
+                     .units = "m/s",
+                     .values = c[7],
+                     .lo = 0.0,
+                     .hi = gf->speed_scale > 0.0 ? gf->speed_scale : 1.0,
+                     .map = COLORMAP_VIRIDIS,
+                     .overlay_file = "speed_damage",
+                     .coupled_only = true};
     out->picture[out->picture_count++] = (PictureRef){.file = "schlieren",
                                                       .label = "schlieren exp(-15 |∇ρ| / max |∇ρ|)",
                                                       .units = "-",

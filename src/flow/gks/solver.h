@@ -242,6 +242,7 @@ typedef enum {
     FLOW_PRESSURE,
     FLOW_TEMPERATURE,
     FLOW_MACH,
+    FLOW_SPEED, /* |u|, m/s */
     FLOW_FIELD_COUNT
 } FlowField;
 

@@ -467,6 +467,10 @@ static void cpd_fields(const void *impl, FieldSet *out) {
                                                       .hi = ep_hi,
                                                       .map = COLORMAP_INFERNO,
                                                       .overlay_map = COLORMAP_INFERNO};
+    /* drawn over the flow (mach_damage, speed_damage): a body that can
+     * break its damage (solid.c's picture; paper 003 Figs. 7 and 11), one
+     * that cannot its plastic strain (the chamber's Fig. 2) */
+    out->overlay_picture = c->damage != CPD_DAMAGE_NONE ? "damage" : NULL;
     out->picture[out->picture_count++] = (PictureRef){.file = "mises_stress",
                                                       .label = "von Mises stress",
                                                       .units = "Pa",

@@ -4,7 +4,8 @@
  * mesh, the checked accessor, and the refusal of an unknown method; over
  * the PDDO flow: a node mesh, the refusals of what it cannot do, its
  * fields and tables, totals by the trapezoidal rule, and `finished`; the
- * Mach pictures' scale from the data (flow_mach_picture_top). */
+ * Mach and speed pictures' scales from the data (flow_mach_picture_top,
+ * flow_speed_picture_top). */
 #include "test_support.h"
 
 #include "core/mem.h"
@@ -251,10 +252,32 @@ static void test_mach_picture_top(void **state) {
     assert_true(flow_mach_picture_top(INFINITY) == 0.0);
 }
 
+/* The speed pictures' top: the same rounding of the largest speed (m/s),
+ * left open while the Mach number says the gas is at rest. */
+static void test_speed_picture_top(void **state) {
+    (void)state;
+    static const double cases[][2] = {
+        {340.0, 430.0}, /* 425 up */
+        {800.0, 1000.0} /* exactly 1000 */
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const double got = flow_speed_picture_top(cases[k][0], 1.0);
+        if (!(fabs(got - cases[k][1]) <= 1e-12 * cases[k][1]))
+            fail_msg("speed %g m/s: top %.17g, expected %g", cases[k][0], got, cases[k][1]);
+    }
+    /* moving air of Mach 0.01 (3.4 m/s at 290 K) fixes it; below, open */
+    assert_true(fabs(flow_speed_picture_top(3.4, FLOW_MACH_AT_REST) - 4.3) <= 1e-12 * 4.3);
+    assert_true(flow_speed_picture_top(3.0, 0.5 * FLOW_MACH_AT_REST) == 0.0);
+    assert_true(flow_speed_picture_top(0.0, 1.0) == 0.0);
+    assert_true(flow_speed_picture_top(NAN, 1.0) == 0.0);
+    assert_true(flow_speed_picture_top(340.0, NAN) == 0.0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sample_is_exact_for_linear_fields),
         cmocka_unit_test(test_mach_picture_top),
+        cmocka_unit_test(test_speed_picture_top),
         cmocka_unit_test(test_sources_push_the_gas),
         cmocka_unit_test(test_unknown_method_is_refused),
         cmocka_unit_test(test_pddo_behind_the_interface),
