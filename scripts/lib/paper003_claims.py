@@ -35,6 +35,13 @@ def history_max(root, level, run, column):
         return max(float(r[column]) for r in csv.DictReader(f) if r[column] not in ("", "nan"))
 
 
+def history_at(root, level, run, column, t):
+    """The column's value in the history row nearest to time t (s)."""
+    with open(os.path.join(root, level, run, "history.csv")) as f:
+        row = min(csv.DictReader(f), key=lambda r: abs(float(r["time_s"]) - t))
+    return float(row[column])
+
+
 def corner_distortion(root, level, run):
     """The front corner's largest displacement against the block's centre, um."""
     worst = 0.0
@@ -123,6 +130,14 @@ def square(root, level, bg):
     rows.append(("SQ3", "the damaged penalty gives the sharpest fracture (least mass loss)",
                  f"mass loss damaged {100 * ml['damaged']:.2f} %, weak {100 * ml['weak']:.2f} %",
                  ml["damaged"] < ml["weak"]))
+    # Fig. 8: the fully damaged nodes (damage >= 0.99, Eq. 24's) at 150 and 200 us
+    full = {c: [int(history_at(root, level, f"square_{bg}_{c}", "fully_damaged_points", t))
+                for t in (150e-6, 200e-6)] for c in runs}
+    rows.append(("SQ4", "strong coupling has the most fully damaged nodes, the damaged penalty the fewest (Fig. 8, 150 and 200 us)",
+                 "fully damaged points at 150 / 200 us: " +
+                 ", ".join(f"{c} {full[c][0]} / {full[c][1]}" for c in ("strong", "weak", "damaged")) +
+                 f" (of {runs['weak']['points']})",
+                 all(full["strong"][k] > full["weak"][k] > full["damaged"][k] for k in (0, 1))))
     return rows
 
 
