@@ -319,6 +319,10 @@ static int build(CpdBody *b, CpdConfig *cfg, const NspdComm *comm) {
      * debris) */
     (void)cpd_shape_check(b, NULL);
     TRY(refuse_thin(b));
+    if (b->phi) {
+        TRY(nspd_alloc(&b->fit_norm0, (size_t)(b->n > 0 ? b->n : 1), sizeof(double)));
+        for (int64_t i = 0; i < b->n; i++) b->fit_norm0[i] = cpd_fit_norm(b, i);
+    }
     void *ok[1] = {b->ok};
     cpd_halo_exchange(b, ok, 1, 1); /* the ghosts' (several processes) */
     for (int64_t i = 0; i < b->n; i++) {
@@ -398,6 +402,7 @@ void cpd_body_destroy(CpdBody *b) {
     nspd_free(&b->work_bond);
     cpd_halo_free(&b->halo);
     sl_work_free(&b->sl);
+    nspd_free(&b->fit_norm0);
     cpd_config_free(&b->cfg);
     memset(b, 0, sizeof *b);
 }

@@ -128,7 +128,29 @@ typedef struct {
      * pair's F_b at u_prev, the state; the Lagrangian phi, ok and F stay
      * for the fits' checks, the stable step and the outputs) */
     SlWork sl;
+    double *fit_norm0; /* per point: the intact family's cpd_fit_norm (bond-associated) */
 } CpdBody;
+
+/* Point i's gradient weights' size, sum_j |phi_ij| V_j (the 1-norm over
+ * the components): the scale of the force its family's fit makes of a
+ * unit displacement difference. */
+double cpd_fit_norm(const CpdBody *b, int64_t i);
+
+/* A point whose damaged family's fit needs weights larger than this many
+ * times its intact family's (cpd_fit_norm) has failed: its bonds break,
+ * as those of a point whose family can fit no gradient at all. On the
+ * square lattice a nearly singular damaged family is exactly singular and
+ * refused by the pivot test (RK_MIN_PIVOT); on the polar lattice's
+ * irregular cloud it passes it, and its weights stiffen the point faster
+ * than the stable step's re-estimate follows (the brittle ring blew up
+ * within 3 us of its first broken bonds). Measured on the coarse brittle
+ * cylinder (paper 003 Sec. 4.3, weak coupling, 0.3 ms): the square
+ * lattice's accepted fits grow to at most 8.8 times; the polar lattice's
+ * grow smoothly to 4.7 and then jump to 75, 102, 190, 3,400 and 6,800
+ * times, each within a few us of the blow-up. 25 lies in that gap: no
+ * square-lattice case moves (the golden set is unchanged), and the polar
+ * ring runs to the end (docs/VALIDATION.md, the polar lattice). */
+#define CPD_FIT_GROWTH_LIMIT 25.0
 
 /* Builds the body (taking ownership of *cfg, zeroing it): lattice points,
  * regions, families (square |xi|_inf <= delta or disc |xi| <= delta),

@@ -74,6 +74,20 @@ static bool point_weights(int order, RkKernel kernel, int dim, int64_t i, const 
         for (int c = r + 1; c < m; c++) M[r][c] = M[c][r];
     double scale[RK_MAX_TERMS];
     const bool ok = spd_small_factor(M, m, scale, order == 3 ? RK_MIN_PIVOT_CUBIC : RK_MIN_PIVOT);
+    /* Orders 1 and 2: the gradient's rows of M_i^-1 (M_i is symmetric: its
+     * columns), two or three solves a point, and each bond's weights their
+     * products with Q(xi), not a solve a bond (which was half the
+     * semi-Lagrangian frame's time: perf, hollow_square_pressure; the
+     * same errors in test_rk_gradient.c). Order 3 keeps a solve a bond: its
+     * fits are nearer singular (RK_MIN_PIVOT_CUBIC), and the rows' products
+     * cancel more (quadratic fields' gradients to 1.6e-12 against 1e-13). */
+    const bool rows = order <= 2;
+    double A[3][RK_MAX_TERMS] = {{0}};
+    for (int a = 0; a < dim && ok && rows; a++) {
+        double e[RK_MAX_TERMS] = {0};
+        e[a] = 1.0;
+        spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, e, A[a]);
+    }
     for (int64_t k = first[i]; k < first[i + 1]; k++) {
         double *out = phi + (int64_t)dim * k;
         if (!ok) {
@@ -82,9 +96,13 @@ static bool point_weights(int order, RkKernel kernel, int dim, int64_t i, const 
         }
         bond_vector(dim, x, i, nbr[k], xi);
         const double w = rk_kernel_of(kernel, dim, xi, delta) * (bond_scale ? bond_scale[k] : 1.0);
-        double z[RK_MAX_TERMS] = {0};
         monomials(order, dim, xi, delta, q);
-        spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, q, z);
+        double z[RK_MAX_TERMS] = {0};
+        if (rows)
+            for (int a = 0; a < dim; a++)
+                for (int r = 0; r < m; r++) z[a] += A[a][r] * q[r];
+        else
+            spd_small_solve((const double(*)[SPD_SMALL_MAX])M, m, scale, q, z);
         for (int a = 0; a < dim; a++) out[a] = w * z[a] / delta;
     }
     return ok;

@@ -72,14 +72,32 @@ static ClassicSystem classic_of(const CpdBody *b) {
     return s;
 }
 
+double cpd_fit_norm(const CpdBody *b, int64_t i) {
+    double s = 0.0;
+    for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+        for (int a = 0; a < b->dim; a++)
+            s += fabs(b->phi[(int64_t)b->dim * k + a]) * b->volume[b->nbr[k]];
+    return s;
+}
+
 int64_t cpd_shape_check(CpdBody *b, const uint8_t *redo) {
     if (b->cfg.force == CPD_FORCE_CLASSIC) {
         const ClassicSystem s = classic_of(b);
         return classic_shape_check(&s, redo, b->ok);
     }
-    return rk_gradient_weights_of(b->cfg.rk_order, b->cfg.kernel, b->dim, b->n,
-                                  (const double *const *)b->x, b->volume, b->first, b->nbr,
-                                  b->delta, b->scale, redo, b->phi, b->ok);
+    int64_t missing = rk_gradient_weights_of(b->cfg.rk_order, b->cfg.kernel, b->dim, b->n,
+                                             (const double *const *)b->x, b->volume, b->first,
+                                             b->nbr, b->delta, b->scale, redo, b->phi, b->ok);
+    if (!b->fit_norm0) return missing;
+    for (int64_t i = 0; i < b->n; i++) {
+        if ((redo && !redo[i]) || !b->ok[i]) continue;
+        if (cpd_fit_norm(b, i) <= CPD_FIT_GROWTH_LIMIT * b->fit_norm0[i]) continue;
+        b->ok[i] = 0; /* failed: cpd_settle_weights breaks its bonds */
+        for (int64_t k = b->first[i]; k < b->first[i + 1]; k++)
+            for (int a = 0; a < b->dim; a++) b->phi[(int64_t)b->dim * k + a] = 0.0;
+        missing++;
+    }
+    return missing;
 }
 
 /* The damage law of the configuration for the state of bond k = (i -> j)
