@@ -1,7 +1,10 @@
 #include "io/in_file.h"
 
+#include "core/status.h"
+
 #include <errno.h>
 #include <fcntl.h>
+#include <stdarg.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -33,4 +36,14 @@ const char *in_file_error(int err) {
     return err == IN_FILE_NOT_REGULAR
                ? "not a regular file (a directory, a device or a FIFO); expected a file"
                : strerror(err);
+}
+
+int in_file_refuse(InFileError *err, int line, int64_t offset, const char *fmt, ...) {
+    err->line = line;
+    err->offset = offset;
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(err->text, sizeof err->text, fmt, args);
+    va_end(args);
+    return NSPD_FAIL(NSPD_ERR_INPUT, "%s", err->text);
 }

@@ -6,24 +6,10 @@
 
 #include <ctype.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-
-static int refuse(InpReadError *err, int line, int64_t offset, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static int refuse(InpReadError *err, int line, int64_t offset, const char *fmt, ...) {
-    err->line = line;
-    err->offset = offset;
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(err->text, sizeof err->text, fmt, args);
-    va_end(args);
-    return NSPD_FAIL(NSPD_ERR_INPUT, "%s", err->text); /* err: for the caller's wording */
-}
 
 int inp_shape_nodes(InpShape shape) {
     static const int NODES[INP_SHAPE_COUNT] = {3, 4, 4, 8};
@@ -183,9 +169,10 @@ static int push_range(InpSet *s, InpRange g) {
 
 static int over_budget(Reader *r) {
     if (r->entry_budget-- > 0) return NSPD_OK;
-    return refuse(r->err, r->line, 0,
-                  "the sets hold more entries than the file has bytes; expected sets that name "
-                  "each number or set a few times");
+    return in_file_refuse(
+        r->err, r->line, 0,
+        "the sets hold more entries than the file has bytes; expected sets that name "
+        "each number or set a few times");
 }
 
 static void upper(char *s) {
@@ -204,7 +191,8 @@ static int find_or_add_set(Reader *r, const char *name, bool elements, int *out)
     *out = set_index(m, name, elements);
     if (*out >= 0) return NSPD_OK; /* defined again: the members are added */
     if (m->set_count >= INP_MAX_SETS)
-        return refuse(r->err, r->line, 0, "more than %d sets; expected fewer", INP_MAX_SETS);
+        return in_file_refuse(r->err, r->line, 0, "more than %d sets; expected fewer",
+                              INP_MAX_SETS);
     if (m->set_count == r->set_cap) {
         const int grown = r->set_cap ? 2 * r->set_cap : 16;
         TRY(nspd_realloc(&m->sets, (size_t)r->set_cap, (size_t)grown, sizeof(InpSet)));
@@ -286,11 +274,11 @@ static int parse_params(Reader *r, Span rest, Keyword *k) {
             if (v.e - v.s >= 2 && *v.s == '"' && v.e[-1] == '"') v.s++, v.e--;
             if (v.e - v.s >= INP_MAX_NAME) {
                 char buf[64];
-                return refuse(r->err, r->line, 0,
-                              "the value of %s, '%s', has more than %d characters; expected a "
-                              "name of at most %d",
-                              p->key, shown(v, buf, sizeof buf), INP_MAX_NAME - 1,
-                              INP_MAX_NAME - 1);
+                return in_file_refuse(
+                    r->err, r->line, 0,
+                    "the value of %s, '%s', has more than %d characters; expected a "
+                    "name of at most %d",
+                    p->key, shown(v, buf, sizeof buf), INP_MAX_NAME - 1, INP_MAX_NAME - 1);
             }
             snprintf(p->value, sizeof p->value, "%.*s", (int)(v.e - v.s), v.s);
         }
@@ -326,20 +314,22 @@ static int start_block(Reader *r, const Keyword *k) {
     const bool node = strcmp(k->keyword, "NODE") == 0, element = strcmp(k->keyword, "ELEMENT") == 0,
                nset = strcmp(k->keyword, "NSET") == 0, elset = strcmp(k->keyword, "ELSET") == 0;
     if (strcmp(k->keyword, "INCLUDE") == 0)
-        return refuse(r->err, r->line, 0,
-                      "*INCLUDE: nspd reads one file; expected the mesh in this file (paste the "
-                      "included file in)");
+        return in_file_refuse(
+            r->err, r->line, 0,
+            "*INCLUDE: nspd reads one file; expected the mesh in this file (paste the "
+            "included file in)");
     if (!(node || element || nset || elset)) return NSPD_OK; /* skipped with its data lines */
     if (param(k, "INPUT"))
-        return refuse(r->err, r->line, 0,
-                      "*%s with INPUT=: nspd reads one file; expected the data lines here",
-                      k->keyword);
+        return in_file_refuse(r->err, r->line, 0,
+                              "*%s with INPUT=: nspd reads one file; expected the data lines here",
+                              k->keyword);
     if (node) {
         const Param *sys = param(k, "SYSTEM");
         if (sys && strcasecmp(sys->value, "R") != 0)
-            return refuse(r->err, r->line, 0,
-                          "*NODE, SYSTEM=%s: expected rectangular coordinates (SYSTEM=R or none)",
-                          sys->value);
+            return in_file_refuse(
+                r->err, r->line, 0,
+                "*NODE, SYSTEM=%s: expected rectangular coordinates (SYSTEM=R or none)",
+                sys->value);
         const Param *ns = param(k, "NSET");
         if (ns && ns->value[0]) {
             char name[INP_MAX_NAME];
@@ -353,8 +343,8 @@ static int start_block(Reader *r, const Keyword *k) {
     if (element) {
         const Param *type = param(k, "TYPE");
         if (!type || !type->value[0])
-            return refuse(r->err, r->line, 0, "*ELEMENT without TYPE=; expected TYPE=%s",
-                          "CPS4 or another element type");
+            return in_file_refuse(r->err, r->line, 0, "*ELEMENT without TYPE=; expected TYPE=%s",
+                                  "CPS4 or another element type");
         char name[INP_MAX_NAME];
         snprintf(name, sizeof name, "%s", type->value);
         upper(name);
@@ -362,15 +352,15 @@ static int start_block(Reader *r, const Keyword *k) {
         for (size_t i = 0; i < sizeof TYPES / sizeof *TYPES; i++)
             if (strcmp(TYPES[i].name, name) == 0) t = (int)i;
         if (t < 0)
-            return refuse(r->err, r->line, 0, "unknown element type %s; expected %s", type->value,
-                          TYPE_LIST);
+            return in_file_refuse(r->err, r->line, 0, "unknown element type %s; expected %s",
+                                  type->value, TYPE_LIST);
         r->shape = TYPES[t].shape;
         const int dim = shape_dim(r->shape);
         if (m->dim && m->dim != dim)
-            return refuse(r->err, r->line, 0,
-                          "%s, a %dD element, after %dD ones; expected elements of one "
-                          "dimension",
-                          TYPES[t].name, dim, m->dim);
+            return in_file_refuse(r->err, r->line, 0,
+                                  "%s, a %dD element, after %dD ones; expected elements of one "
+                                  "dimension",
+                                  TYPES[t].name, dim, m->dim);
         m->dim = dim;
         const Param *es = param(k, "ELSET");
         if (es && es->value[0]) {
@@ -384,7 +374,8 @@ static int start_block(Reader *r, const Keyword *k) {
     const char *key = nset ? "NSET" : "ELSET";
     const Param *named = param(k, key);
     if (!named || !named->value[0])
-        return refuse(r->err, r->line, 0, "*%s without %s=; expected %s=NAME", key, key, key);
+        return in_file_refuse(r->err, r->line, 0, "*%s without %s=; expected %s=NAME", key, key,
+                              key);
     char name[INP_MAX_NAME];
     snprintf(name, sizeof name, "%s", named->value);
     upper(name);
@@ -406,21 +397,22 @@ static int node_line(Reader *r, Span line) {
     split_fields(line, f, 7, &n, &trailing);
     char buf[64];
     if (n < 3 || n > 7)
-        return refuse(r->err, r->line, 0,
-                      "%d fields in a *NODE line; expected node number, x, y[, z]", n);
+        return in_file_refuse(r->err, r->line, 0,
+                              "%d fields in a *NODE line; expected node number, x, y[, z]", n);
     int64_t id;
     if (!parse_id(f[0], &id))
-        return refuse(r->err, r->line, 0,
-                      "'%s' is not a node number; expected a whole number from 1 to %d",
-                      shown(f[0], buf, sizeof buf), INT32_MAX);
+        return in_file_refuse(r->err, r->line, 0,
+                              "'%s' is not a node number; expected a whole number from 1 to %d",
+                              shown(f[0], buf, sizeof buf), INT32_MAX);
     double x[6] = {0, 0, 0, 0, 0, 0};
     for (int k = 1; k < n; k++)
         if (!parse_double(f[k], &x[k - 1]))
-            return refuse(r->err, r->line, 0, "'%s' is not a number; expected node %lld's %s",
-                          shown(f[k], buf, sizeof buf), (long long)id,
-                          k <= 3 ? AXES[k - 1] : "normal's direction cosine");
+            return in_file_refuse(r->err, r->line, 0,
+                                  "'%s' is not a number; expected node %lld's %s",
+                                  shown(f[k], buf, sizeof buf), (long long)id,
+                                  k <= 3 ? AXES[k - 1] : "normal's direction cosine");
     if (m->node_count >= INT32_MAX)
-        return refuse(r->err, r->line, 0, "more than %d nodes; expected fewer", INT32_MAX);
+        return in_file_refuse(r->err, r->line, 0, "more than %d nodes; expected fewer", INT32_MAX);
     void *const arrays[3] = {&m->node_id, &m->node_x, &r->node_line};
     const size_t sizes[3] = {sizeof(int64_t), 3 * sizeof(double), sizeof(int32_t)};
     TRY(grow_all(&r->node_cap, m->node_count + 1, 3, arrays, sizes));
@@ -436,7 +428,8 @@ static int finish_element(Reader *r) {
     InpMesh *m = r->m;
     const int nodes = inp_shape_nodes(r->shape);
     if (m->element_count >= INT32_MAX)
-        return refuse(r->err, r->line, 0, "more than %d elements; expected fewer", INT32_MAX);
+        return in_file_refuse(r->err, r->line, 0, "more than %d elements; expected fewer",
+                              INT32_MAX);
     const int64_t e = m->element_count;
     void *const arrays[4] = {&m->element_id, &m->element_shape, &m->element_line, &m->element_node};
     const size_t sizes[4] = {sizeof(int64_t), 1, sizeof(int32_t),
@@ -471,32 +464,34 @@ static int element_line(Reader *r, Span line) {
     for (int k = 0; k < n && k < 17; k++) {
         int64_t id;
         if (f[k].s == f[k].e)
-            return refuse(r->err, r->line, 0, "an empty field; expected %s",
-                          r->pending_count == 0 ? "the element's number" : "a node number");
+            return in_file_refuse(r->err, r->line, 0, "an empty field; expected %s",
+                                  r->pending_count == 0 ? "the element's number" : "a node number");
         if (!parse_id(f[k], &id))
-            return refuse(r->err, r->line, 0,
-                          "'%s' is not %s; expected a whole number from 1 to %d",
-                          shown(f[k], buf, sizeof buf),
-                          r->pending_count == 0 ? "an element number" : "a node number", INT32_MAX);
+            return in_file_refuse(
+                r->err, r->line, 0, "'%s' is not %s; expected a whole number from 1 to %d",
+                shown(f[k], buf, sizeof buf),
+                r->pending_count == 0 ? "an element number" : "a node number", INT32_MAX);
         if (r->pending_count == 1 + nodes)
-            return refuse(r->err, r->line, 0,
-                          "element %lld has more than %d nodes; expected %d for a %s (linear "
-                          "elements only)",
-                          (long long)r->pending[0], nodes, nodes, type_name);
+            return in_file_refuse(
+                r->err, r->line, 0,
+                "element %lld has more than %d nodes; expected %d for a %s (linear "
+                "elements only)",
+                (long long)r->pending[0], nodes, nodes, type_name);
         r->pending[r->pending_count++] = id;
     }
     if (n > 17)
-        return refuse(r->err, r->line, 0, "more than 17 fields; expected %d nodes for a %s", nodes,
-                      type_name);
+        return in_file_refuse(r->err, r->line, 0, "more than 17 fields; expected %d nodes for a %s",
+                              nodes, type_name);
     if (r->pending_count == 1 + nodes) return finish_element(r);
     if (trailing) {
         r->continuing = true; /* its nodes go on on the next line */
         return NSPD_OK;
     }
-    return refuse(r->err, r->line, 0,
-                  "element %lld has %d nodes; expected %d for a %s (or a comma at the line's end "
-                  "to go on on the next)",
-                  (long long)r->pending[0], r->pending_count - 1, nodes, type_name);
+    return in_file_refuse(
+        r->err, r->line, 0,
+        "element %lld has %d nodes; expected %d for a %s (or a comma at the line's end "
+        "to go on on the next)",
+        (long long)r->pending[0], r->pending_count - 1, nodes, type_name);
 }
 
 static int set_line(Reader *r, Span line) {
@@ -511,25 +506,25 @@ static int set_line(Reader *r, Span line) {
     if (r->generate) {
         int64_t v[3] = {0, 0, 1};
         if (n < 2 || n > 3)
-            return refuse(r->err, r->line, 0,
-                          "%d fields in a GENERATE line; expected first, last[, step]", n);
+            return in_file_refuse(r->err, r->line, 0,
+                                  "%d fields in a GENERATE line; expected first, last[, step]", n);
         for (int k = 0; k < n; k++)
             if (!parse_id(f[k], &v[k]))
-                return refuse(r->err, r->line, 0,
-                              "'%s' is not %s number; expected first, last[, step] (whole "
-                              "numbers from 1)",
-                              shown(f[k], buf, sizeof buf), a_what);
+                return in_file_refuse(r->err, r->line, 0,
+                                      "'%s' is not %s number; expected first, last[, step] (whole "
+                                      "numbers from 1)",
+                                      shown(f[k], buf, sizeof buf), a_what);
         if (v[1] < v[0])
-            return refuse(r->err, r->line, 0,
-                          "the range %lld to %lld runs backwards; expected "
-                          "first <= last",
-                          (long long)v[0], (long long)v[1]);
+            return in_file_refuse(r->err, r->line, 0,
+                                  "the range %lld to %lld runs backwards; expected "
+                                  "first <= last",
+                                  (long long)v[0], (long long)v[1]);
         return add_range(r, r->set, v[0], v[1], v[2], true, false);
     }
     for (int k = 0; k < n && k < 17; k++) {
         if (f[k].s == f[k].e)
-            return refuse(r->err, r->line, 0, "an empty field; expected %s number or a set's name",
-                          a_what);
+            return in_file_refuse(r->err, r->line, 0,
+                                  "an empty field; expected %s number or a set's name", a_what);
         int64_t id;
         if (parse_id(f[k], &id)) {
             TRY(add_range(r, r->set, id, id, 1, false, false));
@@ -543,10 +538,11 @@ static int set_line(Reader *r, Span line) {
                                  upper(name), set_index(m, name, elements))
                               : -1;
         if (other < 0)
-            return refuse(r->err, r->line, 0,
-                          "'%s' is not %s number or the name of an earlier %s set; expected "
-                          "one of them",
-                          shown(f[k], buf, sizeof buf), a_what, what);
+            return in_file_refuse(
+                r->err, r->line, 0,
+                "'%s' is not %s number or the name of an earlier %s set; expected "
+                "one of them",
+                shown(f[k], buf, sizeof buf), a_what, what);
         const int64_t count = m->sets[other].range_count;
         for (int64_t q = 0; q < count; q++) {
             const InpRange copy = m->sets[other].ranges[q]; /* by value: adding may move them */
@@ -555,9 +551,9 @@ static int set_line(Reader *r, Span line) {
         }
     }
     if (n > 17)
-        return refuse(r->err, r->line, 0,
-                      "more than 16 entries in a set's line; expected at most "
-                      "16");
+        return in_file_refuse(r->err, r->line, 0,
+                              "more than 16 entries in a set's line; expected at most "
+                              "16");
     return NSPD_OK;
 }
 
@@ -590,10 +586,11 @@ static int sort_ids(Reader *r, const int64_t *id, int64_t n, const int32_t *line
     nspd_free(&k);
     TRY(status);
     if (twice >= 0)
-        return refuse(r->err, line[twice], 0,
-                      "%s %lld is defined again (first at line %d); expected each %s number once "
-                      "(several parts' numbers are not told apart: one part a file)",
-                      what, (long long)id[twice], (int)line[first], what);
+        return in_file_refuse(
+            r->err, line[twice], 0,
+            "%s %lld is defined again (first at line %d); expected each %s number once "
+            "(several parts' numbers are not told apart: one part a file)",
+            what, (long long)id[twice], (int)line[first], what);
     return NSPD_OK;
 }
 
@@ -732,22 +729,24 @@ static int element_geometry(Reader *r, int64_t e) {
     if (shape_dim(shape) == 2) {
         for (int k = 1; k < nodes; k++)
             if (p[k][2] != p[0][2])
-                return refuse(r->err, line, 0,
-                              "element %lld's nodes have z = %g and %g; expected an area element "
-                              "in a plane z = constant (it is taken in the x-y plane)",
-                              id, p[0][2], p[k][2]);
+                return in_file_refuse(
+                    r->err, line, 0,
+                    "element %lld's nodes have z = %g and %g; expected an area element "
+                    "in a plane z = constant (it is taken in the x-y plane)",
+                    id, p[0][2], p[k][2]);
         double corner_min;
         int corner;
         area_2d(p, nodes, &measure, c, &corner_min, &corner);
         if (!(measure > 0.0))
-            return refuse(r->err, line, 0,
-                          "element %lld has area %g: %s; expected its nodes counter-clockwise in "
-                          "the x-y plane (Abaqus's order)",
-                          id, measure,
-                          measure < 0.0 ? "inverted (its nodes go clockwise)"
-                                        : "zero (its nodes on a line, or crossing over)");
+            return in_file_refuse(
+                r->err, line, 0,
+                "element %lld has area %g: %s; expected its nodes counter-clockwise in "
+                "the x-y plane (Abaqus's order)",
+                id, measure,
+                measure < 0.0 ? "inverted (its nodes go clockwise)"
+                              : "zero (its nodes on a line, or crossing over)");
         if (corner_min < 0.0)
-            return refuse(
+            return in_file_refuse(
                 r->err, line, 0,
                 "element %lld is folded (not convex) at its node %lld; expected a "
                 "convex quadrilateral with its nodes counter-clockwise",
@@ -756,26 +755,28 @@ static int element_geometry(Reader *r, int64_t e) {
         double det_min;
         volume_3d(p, nodes, &measure, c, &det_min);
         if (!(measure > 0.0))
-            return refuse(r->err, line, 0,
-                          "element %lld has volume %g: %s; expected its nodes in Abaqus's order "
-                          "(%s)",
-                          id, measure,
-                          measure < 0.0 ? "inverted (its nodes in mirrored order)"
-                                        : "zero (its nodes in a plane)",
-                          nodes == 4 ? "node 4 on the side from which 1, 2, 3 turn "
-                                       "counter-clockwise"
-                                     : "1-4 counter-clockwise seen from 5-8, then 5-8 above "
-                                       "them");
+            return in_file_refuse(
+                r->err, line, 0,
+                "element %lld has volume %g: %s; expected its nodes in Abaqus's order "
+                "(%s)",
+                id, measure,
+                measure < 0.0 ? "inverted (its nodes in mirrored order)"
+                              : "zero (its nodes in a plane)",
+                nodes == 4 ? "node 4 on the side from which 1, 2, 3 turn "
+                             "counter-clockwise"
+                           : "1-4 counter-clockwise seen from 5-8, then 5-8 above "
+                             "them");
         if (!(det_min > 0.0))
-            return refuse(r->err, line, 0,
-                          "element %lld is folded (its Jacobian is not positive throughout); "
-                          "expected a hexahedron that is not turned inside out",
-                          id);
+            return in_file_refuse(
+                r->err, line, 0,
+                "element %lld is folded (its Jacobian is not positive throughout); "
+                "expected a hexahedron that is not turned inside out",
+                id);
     }
     if (!isfinite(measure) || !isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2]))
-        return refuse(r->err, line, 0,
-                      "element %lld's %s overflows; expected coordinates of a sensible size", id,
-                      shape_dim(shape) == 2 ? "area" : "volume");
+        return in_file_refuse(
+            r->err, line, 0, "element %lld's %s overflows; expected coordinates of a sensible size",
+            id, shape_dim(shape) == 2 ? "area" : "volume");
     m->measure[e] = measure;
     return NSPD_OK;
 }
@@ -799,20 +800,20 @@ static int check_sets(Reader *r) {
                 for (int64_t i = lo; i < hi && !any; i++)
                     any = (id[order[i]] - g->first) % g->step == 0;
                 if (!any)
-                    return refuse(r->err, g->line, 0,
-                                  "the range %lld to %lld of %s set %s holds no %s any *%s "
-                                  "defines; expected a range over defined %ss",
-                                  (long long)g->first, (long long)g->last, what, s->name, what,
-                                  s->elements ? "ELEMENT" : "NODE", what);
+                    return in_file_refuse(r->err, g->line, 0,
+                                          "the range %lld to %lld of %s set %s holds no %s any *%s "
+                                          "defines; expected a range over defined %ss",
+                                          (long long)g->first, (long long)g->last, what, s->name,
+                                          what, s->elements ? "ELEMENT" : "NODE", what);
                 continue;
             }
             if (hi - lo == g->last - g->first + 1) continue;
             int64_t missing = g->first; /* the first number of the run not defined */
             for (int64_t i = lo; i < hi && id[order[i]] == missing; i++) missing++;
-            return refuse(r->err, g->line, 0,
-                          "%s set %s names %s %lld, which no *%s defines; expected defined %ss",
-                          what, s->name, what, (long long)missing, s->elements ? "ELEMENT" : "NODE",
-                          what);
+            return in_file_refuse(
+                r->err, g->line, 0,
+                "%s set %s names %s %lld, which no *%s defines; expected defined %ss", what,
+                s->name, what, (long long)missing, s->elements ? "ELEMENT" : "NODE", what);
         }
     }
     return NSPD_OK;
@@ -821,15 +822,17 @@ static int check_sets(Reader *r) {
 static int finish(Reader *r, int last_line, int64_t size) {
     InpMesh *m = r->m;
     if (r->continuing)
-        return refuse(r->err, r->pending_line, 0,
-                      "element %lld's line ends with a comma but no nodes follow; expected its "
-                      "%d nodes",
-                      (long long)r->pending[0], inp_shape_nodes(r->shape));
+        return in_file_refuse(
+            r->err, r->pending_line, 0,
+            "element %lld's line ends with a comma but no nodes follow; expected its "
+            "%d nodes",
+            (long long)r->pending[0], inp_shape_nodes(r->shape));
     TRY(sort_ids(r, m->node_id, m->node_count, r->node_line, "node", &m->node_order));
     if (m->element_count == 0)
-        return refuse(r->err, last_line > 0 ? last_line : 0, size,
-                      "the file defines no element; expected *ELEMENT, TYPE=... and its lines "
-                      "(an empty mesh)");
+        return in_file_refuse(
+            r->err, last_line > 0 ? last_line : 0, size,
+            "the file defines no element; expected *ELEMENT, TYPE=... and its lines "
+            "(an empty mesh)");
     TRY(sort_ids(r, m->element_id, m->element_count, m->element_line, "element",
                  &m->element_order));
     for (int64_t e = 0; e < m->element_count; e++) {
@@ -838,10 +841,11 @@ static int finish(Reader *r, int last_line, int64_t size) {
             int64_t *slot = &m->element_node[INP_MAX_ELEMENT_NODES * e + k];
             const int64_t node = find_id(m->node_id, m->node_order, m->node_count, *slot);
             if (node < 0)
-                return refuse(r->err, m->element_line[e], 0,
-                              "element %lld names node %lld, which no *NODE defines; expected "
-                              "defined nodes",
-                              (long long)m->element_id[e], (long long)*slot);
+                return in_file_refuse(
+                    r->err, m->element_line[e], 0,
+                    "element %lld names node %lld, which no *NODE defines; expected "
+                    "defined nodes",
+                    (long long)m->element_id[e], (long long)*slot);
             *slot = node;
         }
     }
@@ -865,10 +869,11 @@ static int read_lines(Reader *r, const char *text, int64_t size) {
         if (l.e - l.s >= 2 && l.s[0] == '*' && l.s[1] == '*') continue; /* a comment */
         if (l.s[0] == '*') {
             if (r->continuing)
-                return refuse(r->err, r->line, 0,
-                              "a keyword where element %lld's nodes go on (its line ended with "
-                              "a comma); expected its remaining nodes",
-                              (long long)r->pending[0]);
+                return in_file_refuse(
+                    r->err, r->line, 0,
+                    "a keyword where element %lld's nodes go on (its line ended with "
+                    "a comma); expected its remaining nodes",
+                    (long long)r->pending[0]);
             Keyword k = {.count = 0};
             Span rest;
             parse_keyword_name(l, &k, &rest);
@@ -907,7 +912,7 @@ int inp_read_text(const char *text, int64_t size, InpMesh *mesh, InpReadError *e
     memset(mesh, 0, sizeof *mesh);
     memset(err, 0, sizeof *err);
     if (size > INT32_MAX)
-        return refuse(err, 0, INT32_MAX, "the text is over 2 GiB; expected a smaller mesh");
+        return in_file_refuse(err, 0, INT32_MAX, "the text is over 2 GiB; expected a smaller mesh");
     Reader r = {.m = mesh, .err = err, .set = -1};
     r.entry_budget = size / 2 + 1024;
     int status = read_lines(&r, text, size);
@@ -938,10 +943,11 @@ int inp_read_file(const char *path, int64_t max_bytes, InpMesh *mesh, InpReadErr
     }
     fclose(f);
     if (status == NSPD_OK && size > max_bytes)
-        status = refuse(err, 0, max_bytes,
-                        "the file is larger than %lld bytes; expected a mesh of at most %lld "
-                        "bytes",
-                        (long long)max_bytes, (long long)max_bytes);
+        status =
+            in_file_refuse(err, 0, max_bytes,
+                           "the file is larger than %lld bytes; expected a mesh of at most %lld "
+                           "bytes",
+                           (long long)max_bytes, (long long)max_bytes);
     if (status == NSPD_OK) {
         InpReadError inner;
         status = inp_read_text(data, size, mesh, &inner);

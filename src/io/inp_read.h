@@ -26,14 +26,11 @@
 #define NSPD_IO_INP_READ_H
 
 #include <stdbool.h>
+#include "io/in_file.h"
+
 #include <stdint.h>
 
-typedef struct {
-    int os_error;   /* NSPD_ERR_IO: why the open failed (io/in_file.h: in_file_error) */
-    int line;       /* NSPD_ERR_INPUT: the line (1-based); 0 for the file as a whole */
-    int64_t offset; /* NSPD_ERR_INPUT with line 0: the byte offset */
-    char text[256]; /* what is wrong there; expected what */
-} InpReadError;
+typedef InFileError InpReadError; /* io/in_file.h */
 
 typedef enum { INP_TRI3, INP_QUAD4, INP_TET4, INP_HEX8, INP_SHAPE_COUNT } InpShape;
 

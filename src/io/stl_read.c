@@ -6,24 +6,10 @@
 
 #include <ctype.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int refuse(StlReadError *err, int line, int64_t offset, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static int refuse(StlReadError *err, int line, int64_t offset, const char *fmt, ...) {
-    err->line = line;
-    err->offset = offset;
-    va_list args;
-    va_start(args, fmt);
-    vsnprintf(err->text, sizeof err->text, fmt, args);
-    va_end(args);
-    return NSPD_FAIL(NSPD_ERR_INPUT, "%s", err->text); /* err: for the caller's wording */
-}
 
 static uint32_t le32(const unsigned char *b) {
     return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
@@ -40,8 +26,8 @@ static int read_binary(const unsigned char *data, int64_t size, double **tri, in
                        StlReadError *err) {
     const int64_t n = le32(data + 80);
     if (n > STL_MAX_TRIANGLES)
-        return refuse(err, 0, 80, "%lld triangles; expected at most %d", (long long)n,
-                      STL_MAX_TRIANGLES);
+        return in_file_refuse(err, 0, 80, "%lld triangles; expected at most %d", (long long)n,
+                              STL_MAX_TRIANGLES);
     (void)size; /* the caller matched it to n */
     TRY(nspd_alloc(tri, (size_t)(9 * n), sizeof(double)));
     for (int64_t t = 0; t < n; t++) {
@@ -50,10 +36,11 @@ static int read_binary(const unsigned char *data, int64_t size, double **tri, in
             const double v = le_float(f + 4 * k);
             if (!isfinite(v)) {
                 nspd_free(tri);
-                return refuse(err, 0, 84 + 50 * t + 12 + 4 * k,
-                              "triangle %lld has a coordinate that is not finite; expected a "
-                              "number",
-                              (long long)t + 1);
+                return in_file_refuse(
+                    err, 0, 84 + 50 * t + 12 + 4 * k,
+                    "triangle %lld has a coordinate that is not finite; expected a "
+                    "number",
+                    (long long)t + 1);
             }
             (*tri)[9 * t + k] = v;
         }
@@ -89,18 +76,21 @@ static bool next_word(Tokens *t) {
 
 /* The next word must be `want`. */
 static int expect(Tokens *t, const char *want, StlReadError *err) {
-    if (!next_word(t)) return refuse(err, t->word_line, 0, "the file ends; expected '%s'", want);
+    if (!next_word(t))
+        return in_file_refuse(err, t->word_line, 0, "the file ends; expected '%s'", want);
     if (strcmp(t->word, want) != 0)
-        return refuse(err, t->word_line, 0, "'%s'; expected '%s'", t->word, want);
+        return in_file_refuse(err, t->word_line, 0, "'%s'; expected '%s'", t->word, want);
     return NSPD_OK;
 }
 
 static int number(Tokens *t, double *out, StlReadError *err) {
-    if (!next_word(t)) return refuse(err, t->word_line, 0, "the file ends; expected a coordinate");
+    if (!next_word(t))
+        return in_file_refuse(err, t->word_line, 0, "the file ends; expected a coordinate");
     char *end;
     *out = strtod(t->word, &end);
     if (end == t->word || *end != '\0' || !isfinite(*out))
-        return refuse(err, t->word_line, 0, "'%s' is not a number; expected a coordinate", t->word);
+        return in_file_refuse(err, t->word_line, 0, "'%s' is not a number; expected a coordinate",
+                              t->word);
     return NSPD_OK;
 }
 
@@ -115,12 +105,14 @@ static int read_ascii(const char *text, int64_t size, double **tri, int64_t *cou
     int status = NSPD_OK;
     for (;;) {
         if (!next_word(&t)) {
-            status = refuse(err, t.word_line, 0, "the file ends; expected 'facet' or 'endsolid'");
+            status = in_file_refuse(err, t.word_line, 0,
+                                    "the file ends; expected 'facet' or 'endsolid'");
             break;
         }
         if (strcmp(t.word, "endsolid") == 0) break;
         if (strcmp(t.word, "facet") != 0) {
-            status = refuse(err, t.word_line, 0, "'%s'; expected 'facet' or 'endsolid'", t.word);
+            status =
+                in_file_refuse(err, t.word_line, 0, "'%s'; expected 'facet' or 'endsolid'", t.word);
             break;
         }
         double normal[3];
@@ -130,7 +122,8 @@ static int read_ascii(const char *text, int64_t size, double **tri, int64_t *cou
         if (status == NSPD_OK) status = expect(&t, "loop", err);
         if (status == NSPD_OK && n == cap) {
             if (n >= STL_MAX_TRIANGLES) {
-                status = refuse(err, t.word_line, 0, "more than %d triangles", STL_MAX_TRIANGLES);
+                status = in_file_refuse(err, t.word_line, 0, "more than %d triangles",
+                                        STL_MAX_TRIANGLES);
                 break;
             }
             const int64_t grown = cap ? 2 * cap : 256;
@@ -182,18 +175,19 @@ int stl_read_file(const char *path, double **tri, int64_t *count, StlReadError *
         else if (size >= 5 && memcmp(data, "solid", 5) == 0 && !memchr(data, 0, (size_t)size))
             status = read_ascii((const char *)data, size, tri, count, err);
         else if (size < 84)
-            status =
-                refuse(err, 0, size,
-                       "the file is %lld bytes, not text; expected an ASCII STL ('solid ...') or a "
-                       "binary one (84 + 50 bytes a triangle)",
-                       (long long)size);
+            status = in_file_refuse(
+                err, 0, size,
+                "the file is %lld bytes, not text; expected an ASCII STL ('solid ...') or a "
+                "binary one (84 + 50 bytes a triangle)",
+                (long long)size);
         else
-            status = refuse(err, 0, 80,
-                            "the binary header states %lu triangles, which take %lld bytes, "
-                            "but the file has %lld; expected a complete binary STL or an "
-                            "ASCII one ('solid ...')",
-                            (unsigned long)le32(data + 80), 84 + 50 * (long long)le32(data + 80),
-                            (long long)size);
+            status =
+                in_file_refuse(err, 0, 80,
+                               "the binary header states %lu triangles, which take %lld bytes, "
+                               "but the file has %lld; expected a complete binary STL or an "
+                               "ASCII one ('solid ...')",
+                               (unsigned long)le32(data + 80), 84 + 50 * (long long)le32(data + 80),
+                               (long long)size);
     }
     nspd_free(&data);
     return status;

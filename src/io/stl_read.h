@@ -8,14 +8,11 @@
 #ifndef NSPD_IO_STL_READ_H
 #define NSPD_IO_STL_READ_H
 
+#include "io/in_file.h"
+
 #include <stdint.h>
 
-typedef struct {
-    int os_error;   /* NSPD_ERR_IO: why the open failed (io/in_file.h: in_file_error) */
-    int line;       /* NSPD_ERR_INPUT, ASCII: the line (1-based); 0 for binary */
-    int64_t offset; /* NSPD_ERR_INPUT, binary: the byte offset */
-    char text[256]; /* what is wrong there; expected what */
-} StlReadError;
+typedef InFileError StlReadError; /* io/in_file.h */
 
 enum { STL_MAX_TRIANGLES = 20000000 };
 
