@@ -101,32 +101,6 @@ fi
 vortex="$src/cases/vortex.yaml"
 ck="--set time.end=1.0 --set output.checkpoint_interval=0.2"
 # n processes: by mpiexec, or one without it
-runs() {
-    n=$1
-    shift
-    if [ "$n" -eq 1 ]; then "$nspd" run "$@"; else on "$n" "$@"; fi
-}
-# The run in $1 continued on $2 processes from its newest checkpoint, its
-# outputs after it removed first (the last file of the series $3, and
-# summary.json), ends as the run in $4 (a check named $5); the rest: the
-# case and its arguments.
-resume_check() {
-    dir=$1 n=$2 series=$3 ref=$4 what=$5
-    shift 5
-    # the last output's file (.vtr or .pvtr; its pieces are left for the
-    # resumed run to clear away, on another process count)
-    # (no globs: some callers run under set -f)
-    last=$(find "$dir" -maxdepth 1 -name "${series}_[0-9][0-9][0-9][0-9][0-9].*" | sort | tail -n 1)
-    last=$(basename "${last%.*}")
-    rm -f "$dir/summary.json"
-    find "$dir" -maxdepth 1 -name "$last.*" -delete
-    if runs "$n" "$@" -o "$dir" --quiet --resume; then
-        [ -n "$(find "$dir" -maxdepth 1 -name "$last.*")" ] || fail "$what: $last not written again"
-        same_results "$ref" "$dir" "$what"
-    else
-        fail "$what: exit status $?"
-    fi
-}
 "$nspd" run "$vortex" -o "$work/ck.ref" --quiet $ck || fail "the checkpointed run of one process failed"
 if on 3 "$vortex" -o "$work/ck.3" --quiet $ck; then
     for n in 2 1; do
@@ -294,20 +268,7 @@ if /usr/bin/python3 -c "import vtk" 2>/dev/null; then
     fi
 fi
 
-# Refusals: exit status 2, the message once, nothing written.
-refused() {
-    what=$1 pattern=$2 n=$3
-    shift 3
-    on "$n" "$@" >"$work/out" 2>&1
-    status=$?
-    lines=$(grep -c -E "$pattern" "$work/out")
-    if [ "$status" -eq 2 ] && [ "$lines" -eq 1 ]; then
-        ok
-    else
-        fail "$what: exit status $status, the message $lines times (expected 2, once):"
-        cat "$work/out"
-    fi
-}
+# Refusals (checks.sh: refused)
 sod="$src/cases/sod.yaml"
 refused "a bad key on 2 ranks" "flow.nonsense: unknown key" 2 "$sod" -o "$work/bad" --set flow.nonsense=1
 refused "a correspondence body thinner than its family on 3 ranks" \

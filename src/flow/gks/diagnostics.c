@@ -1,6 +1,7 @@
 /* Diagnostics of the flow operator: primitive fields and conserved totals. */
 #include "flow/gks/solver.h"
 
+#include "core/blocks.h"
 #include "core/status.h"
 #include "flow/gks/solver_internal.h"
 
@@ -100,11 +101,7 @@ int gks_solver_kinds_whole(const GksSolver *s, double *slab, double *out) {
 /* The block along an axis of n cells in p blocks that holds cell i (the
  * ghost layers beyond the ends: the end blocks). */
 static int axis_owner(int n, int p, int i) {
-    i = i < 0 ? 0 : i >= n ? n - 1 : i;
-    int c = (int)((int64_t)i * p / n);
-    while (c + 1 < p && (int64_t)n * (c + 1) / p <= i) c++;
-    while (c > 0 && (int64_t)n * c / p > i) c--;
-    return c;
+    return blocks_owner(n, p, i < 0 ? 0 : i >= n ? n - 1 : i);
 }
 
 int gks_solver_cell_owner(const GksSolver *s, int i, int j) {

@@ -4,6 +4,7 @@
  * diagnostics.c, the benchmark in bench.c. */
 #include "flow/gks/solver.h"
 
+#include "core/blocks.h"
 #include "core/mem.h"
 #include "core/status.h"
 #include "flow/gks/solver_internal.h"
@@ -382,54 +383,19 @@ void gks_solver_block(const GksSolver *s, int rank, int first[2], int count[2]) 
     const Grid *w = gks_solver_whole_grid(s);
     const int n[2] = {w->nx, w->ny}, c[2] = {rank % s->dims[0], rank / s->dims[0]};
     for (int a = 0; a < 2; a++) {
-        first[a] = (int)((int64_t)n[a] * c[a] / s->dims[a]);
-        count[a] = (int)((int64_t)n[a] * (c[a] + 1) / s->dims[a]) - first[a];
-    }
-}
-
-/* The inner faces of a block in a row of p blocks: none alone, one at
- * each end of two (two around a periodic axis), two in the middle. */
-static int inner_faces(int p, bool periodic) {
-    return p == 1 ? 0 : (p == 2 && !periodic ? 1 : 2);
-}
-
-/* The process grid of p blocks whose largest block exchanges the fewest
- * halo cells a fill (a face's cells each), each block at least GRID_NG
- * cells along each axis; of equals the one with fewer blocks along x. 1 x
- * p where none fits (which process_grid then refuses). What
- * MPI_Dims_create does, weighed by the grid's shape. */
-static void fewest_halo_cells(const Grid *g, int p, int dims[2]) {
-    dims[0] = 1, dims[1] = p;
-    int64_t best = INT64_MAX;
-    for (int px = 1; px <= p; px++) {
-        const int py = p / px;
-        if (px * py != p || g->nx / px < GRID_NG || g->ny / py < GRID_NG) continue;
-        const int64_t w = (g->nx + px - 1) / px, h = (g->ny + py - 1) / py;
-        const int64_t halo =
-            inner_faces(px, g->ax[0].periodic) * h + inner_faces(py, g->ax[1].periodic) * w;
-        if (halo < best) best = halo, dims[0] = px, dims[1] = py;
+        first[a] = blocks_cut(n[a], s->dims[a], c[a]);
+        count[a] = blocks_cut(n[a], s->dims[a], c[a] + 1) - first[a];
     }
 }
 
 /* The process grid of a group of p: the configuration's, or the one of
- * the fewest halo cells. */
+ * the fewest halo cells (core/blocks.h), each block at least GRID_NG
+ * cells along each axis. */
 static int process_grid(const GksConfig *cfg, const Grid *whole, int p, int dims[2]) {
-    fewest_halo_cells(whole, p, dims);
-    if (cfg->processes[0] > 0) dims[0] = cfg->processes[0], dims[1] = cfg->processes[1];
-    if ((int64_t)dims[0] * dims[1] != p)
-        return NSPD_FAIL(NSPD_ERR_INPUT,
-                         "--processes %dx%d makes %lld blocks for %d process%s; expected PXxPY "
-                         "with PX times PY = %d",
-                         dims[0], dims[1], (long long)dims[0] * dims[1], p, p == 1 ? "" : "es", p);
     const int n[2] = {whole->nx, whole->ny};
+    const bool periodic[2] = {whole->ax[0].periodic, whole->ax[1].periodic};
     static const char *const WHAT[2] = {"columns", "rows"};
-    for (int a = 1; a >= 0 && p > 1; a--)
-        if (n[a] / dims[a] < GRID_NG)
-            return NSPD_FAIL(NSPD_ERR_INPUT,
-                             "flow: %d %s over %d processes leave fewer than %d on one; expected "
-                             "at most %d processes",
-                             n[a], WHAT[a], dims[a], GRID_NG, n[a] / GRID_NG);
-    return NSPD_OK;
+    return blocks_process_grid(n, periodic, GRID_NG, p, cfg->processes, WHAT, dims);
 }
 
 /* This process's block of the whole grid `whole` (solver.h), into

@@ -53,8 +53,8 @@ void iga_limiter_destroy(IgaLimiter *l) {
     nspd_free(&l->UL);
 }
 
-int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], const bool wall[4],
-                       const bool fixed[4], double gamma, double R) {
+int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], const IgaDecomp *dc,
+                       const bool wall[4], const bool fixed[4], double gamma, double R) {
     memset(l, 0, sizeof *l);
     l->kind = kind;
     l->p = ax[0].degree;
@@ -63,7 +63,12 @@ int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], 
     l->alpha_min = 1.0;
     if (kind == IGA_LIMITER_NONE) return NSPD_OK;
     for (int a = 0; a < 2; a++) {
-        l->n[a] = ax[a].count;
+        const IgaWindowAxis *w = &dc->ax[a];
+        l->n[a] = w->n;
+        l->count[a] = ax[a].count;
+        l->g[a] = w->global;
+        l->wrap[a] = w->whole && ax[a].periodic;
+        l->own0[a] = w->own0, l->own[a] = w->own;
         l->periodic[a] = ax[a].periodic;
         /* a periodic axis of fewer than 2p + 1 functions would meet the
          * same neighbour at two offsets */
@@ -101,22 +106,31 @@ int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], 
     for (int j = 0; j < l->n[1]; j++)
         for (int i = 0; i < l->n[0]; i++) {
             const int64_t k = i + (int64_t)l->n[0] * j;
-            l->m[k] = iga_axis_integral(&ax[0], i) * iga_axis_integral(&ax[1], j);
+            l->m[k] = iga_axis_integral(&ax[0], l->g[0][i]) * iga_axis_integral(&ax[1], l->g[1][j]);
             l->relax[k] = pow(l->m[k] / area, 0.75);
         }
     return NSPD_OK;
 }
 
+/* (local) point (i, j) on a fixed side */
 static bool is_fixed(const IgaLimiter *l, int i, int j) {
-    return (l->fixed[0] && i == 0) || (l->fixed[1] && i == l->n[0] - 1) ||
-           (l->fixed[2] && j == 0) || (l->fixed[3] && j == l->n[1] - 1);
+    const int gi = l->g[0][i], gj = l->g[1][j];
+    return (l->fixed[0] && gi == 0) || (l->fixed[1] && gi == l->count[0] - 1) ||
+           (l->fixed[2] && gj == 0) || (l->fixed[3] && gj == l->count[1] - 1);
 }
 
-/* The neighbour of index i at offset o along an axis, or -1. */
+static bool is_own(const IgaLimiter *l, int i, int j) {
+    return i >= l->own0[0] && i < l->own0[0] + l->own[0] && j >= l->own0[1] &&
+           j < l->own0[1] + l->own[1];
+}
+
+/* The neighbour of local index i at offset o along an axis, or -1 (off
+ * the whole axis, or off the window: a rim point's, never read for an
+ * own one). */
 static int neighbour(const IgaLimiter *l, int axis, int i, int o) {
     const int n = l->n[axis];
     int k = i + o;
-    if (l->periodic[axis]) return (k + n) % n;
+    if (l->wrap[axis]) return (k + n) % n;
     return k >= 0 && k < n ? k : -1;
 }
 
@@ -128,10 +142,11 @@ static double pair_viscosity(const IgaLimiter *l, int i, int j, int ox, int oy, 
     const int p = l->p, w = 2 * p + 1;
     const int64_t k = i + (int64_t)l->n[0] * j, kj = jx + (int64_t)l->n[0] * jy;
     const double *Ui = l->U + 4 * k, *Uj = l->U + 4 * kj;
-    const double cx = l->grad1[0][i * w + ox + p] * l->mass1[1][j * w + oy + p];
-    const double cy = l->mass1[0][i * w + ox + p] * l->grad1[1][j * w + oy + p];
-    const double bx = l->grad1[0][jx * w - ox + p] * l->mass1[1][jy * w - oy + p];
-    const double by = l->mass1[0][jx * w - ox + p] * l->grad1[1][jy * w - oy + p];
+    const int gi = l->g[0][i], gj = l->g[1][j], gx = l->g[0][jx], gy = l->g[1][jy];
+    const double cx = l->grad1[0][gi * w + ox + p] * l->mass1[1][gj * w + oy + p];
+    const double cy = l->mass1[0][gi * w + ox + p] * l->grad1[1][gj * w + oy + p];
+    const double bx = l->grad1[0][gx * w - ox + p] * l->mass1[1][gy * w - oy + p];
+    const double by = l->mass1[0][gx * w - ox + p] * l->grad1[1][gy * w - oy + p];
     const double ni = hypot(cx, cy), nj = hypot(bx, by);
     const IdpWaves wi = l->waves[k], wj = l->waves[kj];
     double li = 0.0, lj = 0.0;
@@ -192,8 +207,9 @@ static void low_order_point(IgaLimiter *l, int i, int j) {
             if (jx < 0 || !(d > 0.0)) continue;
             const int64_t kj = jx + (int64_t)nx * jy;
             const double *Uj = l->U + 4 * kj, *Fj = l->flux + 8 * kj;
-            const double cx = l->grad1[0][i * w + ox + p] * l->mass1[1][j * w + oy + p];
-            const double cy = l->mass1[0][i * w + ox + p] * l->grad1[1][j * w + oy + p];
+            const int gi = l->g[0][i], gj = l->g[1][j];
+            const double cx = l->grad1[0][gi * w + ox + p] * l->mass1[1][gj * w + oy + p];
+            const double cy = l->mass1[0][gi * w + ox + p] * l->grad1[1][gj * w + oy + p];
             double bar[4];
             for (int v = 0; v < 4; v++) {
                 const double df = cx * (Fj[v] - Fi[v]) + cy * (Fj[4 + v] - Fi[4 + v]);
@@ -236,16 +252,18 @@ double iga_limiter_prepare(IgaLimiter *l, const double *Uin) {
     for (int64_t k = 0; k < ncp; k++) viscosity_point(l, (int)(k % l->n[0]), (int)(k / l->n[0]));
 #pragma omp parallel for schedule(static) reduction(min : dt) if (ncp * work >= PARALLEL_MIN_ITEMS)
     for (int64_t k = 0; k < ncp; k++) {
-        low_order_point(l, (int)(k % l->n[0]), (int)(k / l->n[0]));
-        if (l->dsum[k] > 0.0) dt = fmin(dt, l->m[k] / (2.0 * l->dsum[k]));
+        const int i = (int)(k % l->n[0]), j = (int)(k / l->n[0]);
+        low_order_point(l, i, j);
+        if (is_own(l, i, j) && l->dsum[k] > 0.0) dt = fmin(dt, l->m[k] / (2.0 * l->dsum[k]));
     }
     return dt;
 }
 
 /* A slip wall's control point keeps no normal momentum. */
 static void remove_wall_normal(const IgaLimiter *l, int i, int j, double U[4]) {
-    if ((l->wall[0] && i == 0) || (l->wall[1] && i == l->n[0] - 1)) U[1] = 0.0;
-    if ((l->wall[2] && j == 0) || (l->wall[3] && j == l->n[1] - 1)) U[2] = 0.0;
+    const int gi = l->g[0][i], gj = l->g[1][j];
+    if ((l->wall[0] && gi == 0) || (l->wall[1] && gi == l->count[0] - 1)) U[1] = 0.0;
+    if ((l->wall[2] && gj == 0) || (l->wall[3] && gj == l->count[1] - 1)) U[2] = 0.0;
 }
 
 /* Point k's low-order state: the step's start and dt / m_k its rate and
@@ -269,7 +287,8 @@ static void low_order_state(const IgaLimiter *l, int64_t k, double dt, const dou
 static void antidiffusive_flux(const IgaLimiter *l, int64_t k, int64_t kj, int i, int j, int slot,
                                double dt, double A[4]) {
     const int w = 2 * l->p + 1;
-    const double mij = l->mass1[0][i * w + slot % w] * l->mass1[1][j * w + slot / w];
+    const double mij =
+        l->mass1[0][l->g[0][i] * w + slot % w] * l->mass1[1][l->g[1][j] * w + slot / w];
     const double d = l->dij[k * w * w + slot];
     for (int v = 0; v < 4; v++)
         A[v] = dt * (mij * (l->rate[4 * k + v] - l->rate[4 * kj + v]) -
@@ -364,6 +383,7 @@ void iga_limiter_stage(IgaLimiter *l, double dt, const double *src, double *Uout
             for (int v = 0; v < 4; v++) U[v] += f * A[v] / l->m[k];
         }
         remove_wall_normal(l, i, j, U);
+        if (!is_own(l, i, j)) continue; /* the statistics of the own points */
         if (lo < 1.0) limited++;
         amin = fmin(amin, lo);
     }

@@ -9,6 +9,7 @@
 #ifndef NSPD_FLOW_IGA_LIMITER_H
 #define NSPD_FLOW_IGA_LIMITER_H
 
+#include "flow/iga/decomp.h"
 #include "flow/iga/idp.h"
 #include "flow/iga/space.h"
 
@@ -24,15 +25,22 @@ typedef enum { IGA_LIMITER_NONE = 0, IGA_LIMITER_POSITIVITY, IGA_LIMITER_CONVEX 
 /* a case's flow.iga.limiter when it names none */
 enum { IGA_LIMITER_DEFAULT = IGA_LIMITER_NONE };
 
+/* Every per-point array is of this process's window (decomp.h): n[a]
+ * points along axis a, global index g[a][i]; only the own points' results
+ * are right (the window's halo of 3 p is what they read). */
 typedef struct {
     IgaLimiterKind kind;
     int n[2], p;
+    int count[2];        /* the whole axis's points */
+    const int *g[2];     /* borrowed: the global index of local point i */
+    bool wrap[2];        /* periodic on local indices (the whole axis in the window) */
+    int own0[2], own[2]; /* the own points: local [own0, own0 + own) */
     bool periodic[2];
     bool wall[4];  /* slip sides: the normal momentum of their points is 0 */
     bool fixed[4]; /* fixed sides: their points keep their state */
     double gamma, R, cv;
-    /* per axis and control point k, offset o in -p..p: int N_k N_(k+o) and
-     * int N_k N'_(k+o), at [k (2p + 1) + o + p] */
+    /* per axis and global control point k, offset o in -p..p: int N_k
+     * N_(k+o) and int N_k N'_(k+o), at [k (2p + 1) + o + p] */
     double *mass1[2], *grad1[2];
     double *m;       /* int N_i per control point */
     double *U;       /* the step's start, conservative (4 a point) */
@@ -47,19 +55,19 @@ typedef struct {
     double *lij;  /* per point and offset: the pair's factor from i's side */
     double *rate; /* the lumped Galerkin rate (4 a point) */
     double *UL;   /* the low-order state (4 a point) */
-    /* last step's statistics */
+    /* last step's statistics, of the own points */
     int64_t limited;  /* control points blended below 1 */
     double alpha_min; /* their smallest blending factor */
 } IgaLimiter;
 
-int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], const bool wall[4],
-                       const bool fixed[4], double gamma, double R);
+int iga_limiter_create(IgaLimiter *l, IgaLimiterKind kind, const IgaAxis ax[2], const IgaDecomp *dc,
+                       const bool wall[4], const bool fixed[4], double gamma, double R);
 void iga_limiter_destroy(IgaLimiter *l);
 
 /* From the conservative control values U (4 a point): the fluxes, the
  * low-order rate, the viscosities d_ij and the bounds; returns the
  * largest step the low-order update keeps invariant, min_i m_i / (2
- * sum_j d_ij). */
+ * sum_j d_ij) over the own points. */
 double iga_limiter_prepare(IgaLimiter *l, const double *U);
 
 /* One forward-Euler stage of dt (at most what prepare returned) from the

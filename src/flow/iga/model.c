@@ -1,9 +1,16 @@
 /* The IGA flow behind FlowOps: the driver's cells are the elements (the
  * field at their centres), so line probes, pictures and the .vtr series
  * work as for the GKS grid; the series adds the field at the element
- * corners as point data, and point probes read it at their points. */
+ * corners as point data, and point probes read it at their points.
+ *
+ * On several processes (decomp.h) the model shows the whole: cells are the
+ * whole's elements and unknowns its control points; a state at a point is
+ * read on the process that owns its element and sent to all, and the
+ * output fields are each process's own elements and corners gathered on
+ * rank 0 (the writer), which writes the file one process writes. */
 #include "flow/iga/model.h"
 
+#include "core/blocks.h"
 #include "core/mem.h"
 #include "core/status.h"
 
@@ -27,6 +34,10 @@ typedef struct {
     double speed_scale; /* the speed pictures' top, m/s (flow_speed_picture_top); the same */
     int64_t probe_count;
     double *probe_xy; /* point probes: (x, y) each, the field read there */
+    /* several processes: this block's element-centre and corner values
+     * (OUT_FIELDS + 1 a value: the fields and the speed) before the gather */
+    double *mine;
+    char process_grid[32]; /* "PXxPY" for the summary (it borrows the text) */
 } IgaFlow;
 
 void iga_flow_config_free(IgaFlowConfig *c) {
@@ -74,6 +85,7 @@ static void iga_destroy(void *impl) {
     nspd_free(&f->kind);
     nspd_free(&f->blank);
     nspd_free(&f->probe_xy);
+    nspd_free(&f->mine);
     nspd_free(&f);
 }
 
@@ -93,6 +105,8 @@ static int iga_create(void **impl, FlowConfig *fc) {
     IgaConfig c = f->cfg.solver;
     c.regions = f->cfg.regions;
     c.region_count = f->cfg.region_count;
+    c.comm = fc->comm; /* borrowed during create */
+    c.processes[0] = fc->processes[0], c.processes[1] = fc->processes[1];
     if (f->cfg.has_vortex) { /* its nearest image on a periodic box */
         FlowVortex *vx = &f->cfg.vortex;
         if (c.side[0] == IGA_SIDE_PERIODIC) vx->lo_x = c.lo[0], vx->period_x = c.hi[0] - c.lo[0];
@@ -116,6 +130,13 @@ static int iga_create(void **impl, FlowConfig *fc) {
     if (status == NSPD_OK) status = nspd_alloc(&f->speed, (size_t)nel, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&f->kind, (size_t)nel, sizeof(double));
     if (status == NSPD_OK) status = nspd_alloc(&f->blank, (size_t)nel, 1);
+    if (status == NSPD_OK) {
+        const IgaDecomp *dc = iga_solver_decomp(f->solver);
+        snprintf(f->process_grid, sizeof f->process_grid, "%dx%d", dc->dims[0], dc->dims[1]);
+    }
+    if (status == NSPD_OK && iga_decomp_divided(iga_solver_decomp(f->solver)))
+        status = nspd_alloc(&f->mine, (size_t)(OUT_FIELDS + 1) * (corners + (size_t)nel),
+                            sizeof(double));
     if (status != NSPD_OK) {
         iga_destroy(f);
         return status;
@@ -181,7 +202,7 @@ static void iga_cell_centre(const void *impl, int64_t cell, double xy[2]) {
     }
 }
 
-/* rho, u, v, p, T at (x, y) */
+/* rho, u, v, p, T at (x, y) (NaN off this process's window) */
 static void state_at(const IgaFlow *f, double x, double y, double out[5]) {
     double Y[4];
     iga_solver_eval(f->solver, x, y, Y);
@@ -189,10 +210,19 @@ static void state_at(const IgaFlow *f, double x, double y, double out[5]) {
     out[1] = Y[1], out[2] = Y[2], out[3] = Y[0], out[4] = Y[3];
 }
 
+/* The same on every process, read where the point's element is owned
+ * (collective). */
+static void shared_state_at(const IgaFlow *f, double x, double y, double out[5]) {
+    const IgaDecomp *dc = iga_solver_decomp(f->solver);
+    const int owner = iga_solver_point_owner(f->solver, x, y);
+    if (!iga_decomp_divided(dc) || dc->comm.rank == owner) state_at(f, x, y, out);
+    if (iga_decomp_divided(dc)) (void)comm_bcast(&dc->comm, out, 5 * (int)sizeof(double), owner);
+}
+
 static void iga_cell_state(const void *impl, int64_t cell, double out[5]) {
     double xy[2];
     iga_cell_centre(impl, cell, xy);
-    state_at(impl, xy[0], xy[1], out);
+    shared_state_at(impl, xy[0], xy[1], out);
 }
 
 /* A point probe reads the field at its point through the basis (exact for
@@ -216,7 +246,7 @@ static int iga_probe_add(void *impl, const char *name, double x, double y, int64
 
 static void iga_probe_state(const void *impl, int64_t id, double out[5]) {
     const IgaFlow *f = impl;
-    state_at(impl, f->probe_xy[2 * id], f->probe_xy[2 * id + 1], out);
+    shared_state_at(f, f->probe_xy[2 * id], f->probe_xy[2 * id + 1], out);
 }
 
 static FlowReference iga_reference(const void *impl) {
@@ -232,6 +262,10 @@ static FlowReference iga_reference(const void *impl) {
 }
 
 static int iga_sample(void *impl, int64_t n, const double *x, const double *y, FlowSamples *out) {
+    if (iga_decomp_divided(iga_solver_decomp(((IgaFlow *)impl)->solver)))
+        return NSPD_FAIL(NSPD_ERR_INPUT,
+                         "sampling the IGA flow at points runs on one process only so far (the "
+                         "penalty coupling, which moves momentum instead, runs on several)");
     for (int64_t k = 0; k < n; k++) {
         double s[5];
         state_at(impl, x[k], y[k], s);
@@ -275,6 +309,33 @@ static void iga_transfer(const void *impl, FlowTransferKind kind, int64_t n, con
             c[0] = cp[best], v[0] = 1.0;
         }
     }
+}
+
+/* The process that owns control point `cell` (FlowOps.cell_owner). */
+static int iga_cell_owner(const void *impl, int64_t cell) {
+    return iga_decomp_owner(iga_solver_decomp(((const IgaFlow *)impl)->solver), cell);
+}
+
+/* Whether (x, y) lies in an element within `margin` elements (around a
+ * periodic axis too) of this process's own (FlowOps.point_near). */
+static bool iga_point_near(const void *impl, double x, double y, int margin) {
+    const IgaSolver *s = ((const IgaFlow *)impl)->solver;
+    const IgaDecomp *dc = iga_solver_decomp(s);
+    if (!iga_decomp_divided(dc)) return true;
+    const double at[2] = {x, y};
+    for (int a = 0; a < 2; a++) {
+        const IgaAxis *ax = iga_solver_axis(s, a);
+        const IgaWindowAxis *w = &dc->ax[a];
+        const int n = ax->elements, e = iga_axis_element(ax, at[a]);
+        const int lo = blocks_cut(n, w->parts, w->part), hi = blocks_cut(n, w->parts, w->part + 1);
+        int d = e < lo ? lo - e : e >= hi ? e - hi + 1 : 0;
+        if (ax->periodic && d > 0) { /* the other way round */
+            const int around = e < lo ? e + n - hi + 1 : lo + n - e;
+            d = around < d ? around : d;
+        }
+        if (d > margin) return false;
+    }
+    return true;
 }
 
 static void iga_lumped(const void *impl, int64_t n, const int64_t *cells, double *mass,
@@ -335,6 +396,13 @@ static void iga_summary(const void *impl, const RunStats *run, Report *out) {
     /* as the GKS flow's: a closed box's late mean pressure is its energy
      * balance's */
     report_real(out, "mean_pressure_pa", iga_solver_mean_pressure(f->solver));
+    /* several processes: this one's wall time in halo exchanges and
+     * gathers, and the layout (PX x PY blocks) */
+    const IgaDecomp *dc = iga_solver_decomp(f->solver);
+    if (iga_decomp_divided(dc)) {
+        report_real(out, "exchange_s", dc->seconds);
+        report_text(out, "process_grid", f->process_grid);
+    }
 }
 
 static void iga_info(const void *impl, size_t memory, char *buf, size_t size) {
@@ -377,6 +445,54 @@ static double output_state(const IgaConfig *c, const double s[5], double *const 
     return to[5][k];
 }
 
+/* iga_fields' values on several processes: each its own elements' centres
+ * and its own corners (those of its elements' lower left, and the last
+ * row and column at the whole's end), gathered field by field on rank 0;
+ * the largest Mach number and speed of all (a max: exact). */
+static void divided_fields(IgaFlow *f, double *top, double *fastest) {
+    const IgaConfig *c = &f->cfg.solver;
+    IgaDecomp *dc = (IgaDecomp *)iga_solver_decomp(f->solver); /* its gathers' timer */
+    const int nx = c->elements[0], ny = c->elements[1];
+    int ex[IGA_MAX_BLOCKS + 1], ey[IGA_MAX_BLOCKS + 1], kx[IGA_MAX_BLOCKS + 1],
+        ky[IGA_MAX_BLOCKS + 1];
+    iga_decomp_cuts(dc, 0, nx, ex);
+    iga_decomp_cuts(dc, 1, ny, ey);
+    iga_decomp_cuts(dc, 0, nx + 1, kx);
+    iga_decomp_cuts(dc, 1, ny + 1, ky);
+    const int bx = dc->ax[0].part, by = dc->ax[1].part;
+    const int ew = ex[bx + 1] - ex[bx], eh = ey[by + 1] - ey[by];
+    const int kw = kx[bx + 1] - kx[bx], kh = ky[by + 1] - ky[by];
+    const int64_t ne = (int64_t)ew * eh, nk = (int64_t)kw * kh;
+    double *mine = f->mine, *corner = f->mine + (OUT_FIELDS + 1) * ne;
+    double *to[OUT_FIELDS], *to_corner[OUT_FIELDS];
+    for (int v = 0; v < OUT_FIELDS; v++) to[v] = mine + v * ne, to_corner[v] = corner + v * nk;
+    double *speed = mine + OUT_FIELDS * ne;
+    for (int64_t q = 0; q < ne; q++) {
+        const int64_t k = ex[bx] + q % ew + (int64_t)nx * (ey[by] + q / ew);
+        double xy[2], s[5];
+        iga_cell_centre(f, k, xy);
+        state_at(f, xy[0], xy[1], s);
+        *top = fmax(*top, output_state(c, s, to, q));
+        speed[q] = hypot(s[1], s[2]);
+        *fastest = fmax(*fastest, speed[q]);
+    }
+    for (int64_t q = 0; q < nk; q++) {
+        double s[5];
+        state_at(f, f->face[0][kx[bx] + q % kw], f->face[1][ky[by] + q / kw], s);
+        output_state(c, s, to_corner, q);
+    }
+    int *const cells[2] = {ex, ey}, *const corners[2] = {kx, ky};
+    const int ncell[2] = {nx, ny}, ncorner[2] = {nx + 1, ny + 1};
+    /* a failed gather is MPI's (its default handler stops the job) */
+    for (int v = 0; v < OUT_FIELDS; v++) {
+        (void)iga_decomp_gather(dc, ncell, cells, to[v], 1, f->out[v], false);
+        (void)iga_decomp_gather(dc, ncorner, corners, to_corner[v], 1, f->corner[v], false);
+    }
+    (void)iga_decomp_gather(dc, ncell, cells, speed, 1, f->speed, false);
+    *top = comm_max(&dc->comm, *top);
+    *fastest = comm_max(&dc->comm, *fastest);
+}
+
 /* The field at the element centres (cell data: pictures, and what a later
  * run starts from) and at the element corners (point data: ParaView
  * interpolates the spline's samples between them). */
@@ -385,19 +501,23 @@ static void iga_fields(void *impl, FieldSet *out) {
     const IgaConfig *c = &f->cfg.solver;
     const int nx = c->elements[0], ny = c->elements[1];
     double top = 0.0, fastest = 0.0;
-    for (int64_t k = 0; k < (int64_t)nx * ny; k++) {
-        double s[5];
-        iga_cell_state(f, k, s);
-        top = fmax(top, output_state(c, s, f->out, k));
-        f->speed[k] = hypot(s[1], s[2]); /* the Mach number's numerator */
-        fastest = fmax(fastest, f->speed[k]);
-    }
-    for (int j = 0; j <= ny; j++)
-        for (int i = 0; i <= nx; i++) {
+    if (iga_decomp_divided(iga_solver_decomp(f->solver))) {
+        divided_fields(f, &top, &fastest);
+    } else {
+        for (int64_t k = 0; k < (int64_t)nx * ny; k++) {
             double s[5];
-            state_at(f, f->face[0][i], f->face[1][j], s);
-            output_state(c, s, f->corner, i + (int64_t)(nx + 1) * j);
+            iga_cell_state(f, k, s);
+            top = fmax(top, output_state(c, s, f->out, k));
+            f->speed[k] = hypot(s[1], s[2]); /* the Mach number's numerator */
+            fastest = fmax(fastest, f->speed[k]);
         }
+        for (int j = 0; j <= ny; j++)
+            for (int i = 0; i <= nx; i++) {
+                double s[5];
+                state_at(f, f->face[0][i], f->face[1][j], s);
+                output_state(c, s, f->corner, i + (int64_t)(nx + 1) * j);
+            }
+    }
     if (f->mach_scale == 0.0) f->mach_scale = flow_mach_picture_top(top);
     if (f->speed_scale == 0.0) f->speed_scale = flow_speed_picture_top(fastest, top);
     memset(out, 0, sizeof *out);
@@ -456,6 +576,7 @@ static int iga_checkpoint(void *impl, Checkpoint *ck) {
 
 const FlowOps IGA_FLOW_OPS = {
     .name = "iga",
+    .distributed = true,
     .config_free = iga_config_free,
     .estimate = iga_estimate,
     .validate = iga_validate,
@@ -475,6 +596,8 @@ const FlowOps IGA_FLOW_OPS = {
     .probe_add = iga_probe_add,
     .probe_state = iga_probe_state,
     .transfer = iga_transfer,
+    .cell_owner = iga_cell_owner,
+    .point_near = iga_point_near,
     .lumped = iga_lumped,
     .lumped_volume = iga_lumped_volume,
     .add_lumped = iga_add_lumped,

@@ -1,5 +1,7 @@
 #include "flow/iga/solver.h"
 
+#include "core/blocks.h"
+#include "core/exact_sum.h"
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/status.h"
@@ -11,11 +13,17 @@
 struct IgaSolver {
     IgaConfig cfg;
     IgaAxis ax[2];
-    int ncx, ncy; /* control points per axis */
-    int64_t ncp;  /* ncx ncy */
-    int64_t nel;  /* elements */
-    int width;    /* p + 1 */
-    int local;    /* (p + 1)^2 functions per element */
+    /* this process's window of the control points (decomp.h): every
+     * per-point array is the window's, every per-element one its local
+     * elements'; on one process the whole */
+    IgaDecomp dc;
+    int ncx, ncy;   /* control points per axis in the window */
+    int64_t ncp;    /* ncx ncy */
+    int nex;        /* local elements along x */
+    int64_t nel;    /* local elements */
+    int gncx, gncy; /* control points per axis of the whole */
+    int width;      /* p + 1 */
+    int local;      /* (p + 1)^2 functions per element */
     IgaQpParams qp;
     double am, af, gam; /* generalised-alpha: alpha_m, alpha_f, gamma */
     /* control arrays, 4 (or 16) doubles per control point */
@@ -107,20 +115,33 @@ static int build_support(IgaSolver *s, int axis) {
     return NSPD_OK;
 }
 
-/* The control point of local function (a, b) of element (ex, ey). */
+/* The local control point of function (a, b) of local element (ex, ey). */
 static int64_t control_index(const IgaSolver *s, int ex, int ey, int a, int b) {
-    return iga_axis_index(&s->ax[0], ex, a) + (int64_t)s->ncx * iga_axis_index(&s->ax[1], ey, b);
+    return iga_window_function(&s->dc.ax[0], ex, a) +
+           (int64_t)s->ncx * iga_window_function(&s->dc.ax[1], ey, b);
+}
+
+/* The global control point of function (a, b) of global element (ex, ey). */
+static int64_t global_index(const IgaSolver *s, int ex, int ey, int a, int b) {
+    return iga_axis_index(&s->ax[0], ex, a) + (int64_t)s->gncx * iga_axis_index(&s->ax[1], ey, b);
+}
+
+/* The global element of local element (ex, ey) along axis a. */
+static int global_element(const IgaSolver *s, int axis, int le) {
+    return s->dc.ax[axis].element[le];
 }
 
 /* The t-th control point along side f (x_min, x_max, y_min, y_max) and
  * the side's number of them. */
 static int side_count(const IgaSolver *s, int f) {
-    return f / 2 == 0 ? s->ncy : s->ncx;
+    return f / 2 == 0 ? s->gncy : s->gncx;
 }
 
+/* its local index, -1 off this process's window */
 static int64_t side_point(const IgaSolver *s, int f, int t) {
-    const int axis = f / 2, across = f % 2 == 0 ? 0 : (axis == 0 ? s->ncx : s->ncy) - 1;
-    return axis == 0 ? across + (int64_t)s->ncx * t : t + (int64_t)s->ncx * across;
+    const int axis = f / 2, across = f % 2 == 0 ? 0 : (axis == 0 ? s->gncx : s->gncy) - 1;
+    return iga_decomp_local(&s->dc, axis == 0 ? across + (int64_t)s->gncx * t
+                                              : t + (int64_t)s->gncx * across);
 }
 
 /* The tabulated values (or slopes) of element e at its Gauss point q. */
@@ -142,11 +163,11 @@ static double step_of(const IgaConfig *c, double rate) {
 
 double iga_solver_stable_dt(const IgaSolver *s) {
     double rate = 0.0;
-    for (int64_t k = 0; k < s->ncp; k++) {
-        const double *y = s->Y + 4 * k;
+    for (int64_t q = 0; q < iga_decomp_owned_count(&s->dc); q++) {
+        const double *y = s->Y + 4 * iga_decomp_owned(&s->dc, q);
         rate = fmax(rate, signal_speed(&s->cfg, y[1], y[2], y[3]));
     }
-    const double dt = step_of(&s->cfg, rate);
+    const double dt = step_of(&s->cfg, comm_max(&s->dc.comm, rate)); /* a max: exact */
     return s->cfg.limiter == IGA_LIMITER_NONE ? dt : fmin(dt, s->lim_bound);
 }
 
@@ -163,13 +184,13 @@ double iga_config_stable_dt(const IgaConfig *c, const IgaRegion *regions, int co
 /* Element e's residual and lumped-mass slots from the alpha-level values
  * Ya, Yda (notes 1.3): Gauss points of the tensor rule, kernel.h's body. */
 static void element_residual(IgaSolver *s, int64_t e) {
-    const int w = s->width, L = s->local, ex = (int)(e % s->ax[0].elements),
-              ey = (int)(e / s->ax[0].elements);
+    const int w = s->width, L = s->local, lx = (int)(e % s->nex), ly = (int)(e / s->nex);
+    const int ex = global_element(s, 0, lx), ey = global_element(s, 1, ly);
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
     double y[IGA_MAX_LOCAL * IGA_MAX_LOCAL][4], yd[IGA_MAX_LOCAL * IGA_MAX_LOCAL][4];
     for (int b = 0; b < w; b++)
         for (int a = 0; a < w; a++) {
-            const int64_t k = control_index(s, ex, ey, a, b);
+            const int64_t k = control_index(s, lx, ly, a, b);
             for (int v = 0; v < 4; v++)
                 y[b * w + a][v] = s->Ya[4 * k + v], yd[b * w + a][v] = s->Yda[4 * k + v];
         }
@@ -214,15 +235,18 @@ static void element_residual(IgaSolver *s, int64_t e) {
  * its support summed in ascending element order. */
 static void gather(IgaSolver *s) {
     const int w = s->width, L = s->local;
-    const int64_t ncp = s->ncp;
-#pragma omp parallel for schedule(static) if (ncp >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < ncp; k++) {
-        const int i = (int)(k % s->ncx), j = (int)(k / s->ncx);
+    const int64_t own = iga_decomp_owned_count(&s->dc);
+    const int *lex = s->dc.ax[0].local_element, *ley = s->dc.ax[1].local_element;
+#pragma omp parallel for schedule(static) if (own >= PARALLEL_MIN_ITEMS)
+    for (int64_t q = 0; q < own; q++) {
+        const int64_t k = iga_decomp_owned(&s->dc, q);
+        /* the support's lists are the whole axis's, by global index */
+        const int i = s->dc.ax[0].global[k % s->ncx], j = s->dc.ax[1].global[k / s->ncx];
         double r[4] = {0}, m[16] = {0};
         for (int bj = 0; bj < s->sup_n[1][j]; bj++)
             for (int bi = 0; bi < s->sup_n[0][i]; bi++) {
                 const int64_t e =
-                    s->sup_e[0][i * w + bi] + (int64_t)s->ax[0].elements * s->sup_e[1][j * w + bj];
+                    lex[s->sup_e[0][i * w + bi]] + (int64_t)s->nex * ley[s->sup_e[1][j * w + bj]];
                 const int l = s->sup_a[1][j * w + bj] * w + s->sup_a[0][i * w + bi];
                 const double *er = s->eR + (e * L + l) * 4, *em = s->eM + (e * L + l) * 16;
                 for (int v = 0; v < 4; v++) r[v] += er[v];
@@ -240,7 +264,9 @@ static void add_sources(IgaSolver *s) {
     for (int64_t q = 0; q < s->src_n; q++) {
         const double *f = s->src_f + 3 * q;
         for (int l = 0; l < L; l++) {
-            double *r = s->R + 4 * s->src_cp[q * L + l];
+            const int64_t k = s->src_cp[q * L + l];
+            if (k < 0 || !iga_decomp_owns(&s->dc, (int)(k % s->ncx), (int)(k / s->ncx))) continue;
+            double *r = s->R + 4 * k;
             const double w = s->src_w[q * L + l];
             for (int v = 0; v < 3; v++) r[1 + v] -= w * f[v];
         }
@@ -250,14 +276,18 @@ static void add_sources(IgaSolver *s) {
 static void residual(IgaSolver *s, double dt) {
     const double tdt = s->cfg.tau_dt > 0.0 ? s->cfg.tau_dt : dt;
     s->qp.tau_s = 4.0 / (tdt * tdt);
-    const int64_t nel = s->nel;
+    /* the local elements that touch an own point */
+    const IgaWindowAxis *wx = &s->dc.ax[0], *wy = &s->dc.ax[1];
+    const int64_t nel = (int64_t)wx->en * wy->en;
 #pragma omp parallel for schedule(static) if (nel >= PARALLEL_MIN_ITEMS / 16)
-    for (int64_t e = 0; e < nel; e++) element_residual(s, e);
+    for (int64_t q = 0; q < nel; q++)
+        element_residual(s, wx->e0 + q % wx->en + (int64_t)s->nex * (wy->e0 + q / wx->en));
     gather(s);
     add_sources(s);
     double nu = 0.0;
-    for (int64_t e = 0; e < nel; e++) nu = fmax(nu, s->eNu[e]);
-    s->nu_max = nu;
+    for (int64_t q = 0; q < nel; q++)
+        nu = fmax(nu, s->eNu[wx->e0 + q % wx->en + (int64_t)s->nex * (wy->e0 + q / wx->en)]);
+    s->nu_max = comm_max(&s->dc.comm, nu);
 }
 
 /* Walls and fixed sides (notes 2.4): at their control points the rows of
@@ -274,6 +304,7 @@ static void apply_sides(IgaSolver *s) {
         if (kind == IGA_SIDE_PERIODIC) continue;
         for (int t = 0; t < side_count(s, f); t++) {
             const int64_t k = side_point(s, f, t);
+            if (k < 0) continue;
             double *r = s->R + 4 * k, *m = s->M + 16 * k;
             if (kind == IGA_SIDE_SLIP)
                 hold(r, m, 1 + f / 2);
@@ -285,9 +316,10 @@ static void apply_sides(IgaSolver *s) {
 
 /* Yd -= M^-1 R and, with step (gamma dt), Y -= step M^-1 R. */
 static void block_update(IgaSolver *s, double step) {
-    const int64_t ncp = s->ncp;
-#pragma omp parallel for schedule(static) if (ncp >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < ncp; k++) {
+    const int64_t own = iga_decomp_owned_count(&s->dc);
+#pragma omp parallel for schedule(static) if (own >= PARALLEL_MIN_ITEMS)
+    for (int64_t q = 0; q < own; q++) {
+        const int64_t k = iga_decomp_owned(&s->dc, q);
         double inv[16], d[4];
         if (!iga_mat4_inverse(s->M + 16 * k, inv)) {
             for (int v = 0; v < 4; v++) s->Yd[4 * k + v] = NAN; /* caught by the range check */
@@ -301,24 +333,42 @@ static void block_update(IgaSolver *s, double step) {
     }
 }
 
+/* The first own control point (the lowest global index, on any number of
+ * processes) where p or T left the physical range; collective. */
 static int check_range(const IgaSolver *s) {
-    for (int64_t k = 0; k < s->ncp; k++) {
+    char text[600] = "";
+    int64_t first = INT64_MAX;
+    for (int64_t q = 0; q < iga_decomp_owned_count(&s->dc) && first == INT64_MAX; q++) {
+        const int64_t k = iga_decomp_owned(&s->dc, q);
         const double *y = s->Y + 4 * k, *yd = s->Yd + 4 * k;
         bool ok = y[0] > 0.0 && y[3] > 0.0 && isfinite(y[0] + y[1] + y[2] + y[3]) &&
                   isfinite(yd[0] + yd[1] + yd[2] + yd[3]);
-        if (!ok) {
-            const int i = (int)(k % s->ncx), j = (int)(k / s->ncx);
-            return NSPD_FAIL(NSPD_ERR_NUMERIC,
-                             "iga flow: p = %g Pa, T = %g K, u = (%g, %g) m/s at control point "
-                             "(%d, %d) near (%g, %g) m at t = %g s; expected p, T > 0 (%s)",
-                             y[0], y[3], y[1], y[2], i, j, iga_axis_greville(&s->ax[0], i),
-                             iga_axis_greville(&s->ax[1], j), s->time,
-                             s->cfg.limiter == IGA_LIMITER_NONE
-                                 ? "flow.iga.limiter: convex keeps them positive at any charge"
-                                 : "the limited step keeps them positive: please report the case");
-        }
+        if (ok) continue;
+        first = iga_decomp_global(&s->dc, k);
+        const int i = (int)(first % s->gncx), j = (int)(first / s->gncx);
+        snprintf(text, sizeof text,
+                 "iga flow: p = %g Pa, T = %g K, u = (%g, %g) m/s at control point (%d, %d) near "
+                 "(%g, %g) m at t = %g s; expected p, T > 0 (%s)",
+                 y[0], y[3], y[1], y[2], i, j, iga_axis_greville(&s->ax[0], i),
+                 iga_axis_greville(&s->ax[1], j), s->time,
+                 s->cfg.limiter == IGA_LIMITER_NONE
+                     ? "flow.iga.limiter: convex keeps them positive at any charge"
+                     : "the limited step keeps them positive: please report the case");
     }
-    return NSPD_OK;
+    if (iga_decomp_divided(&s->dc))
+        first = comm_first_failure(&s->dc.comm, first, text, (int)sizeof text);
+    return first == INT64_MAX ? NSPD_OK : NSPD_FAIL(NSPD_ERR_NUMERIC, "%s", text);
+}
+
+/* The halo's values and rates from their owners (after the owned points'
+ * update). A failed exchange is MPI's (its default handler stops the
+ * job). */
+static void exchange_values(IgaSolver *s, bool values, bool rates) {
+    double *both[2] = {s->Y, s->Yd};
+    if (values && rates)
+        (void)iga_decomp_exchange(&s->dc, both, 2, 4);
+    else if (values || rates)
+        (void)iga_decomp_exchange(&s->dc, values ? both : both + 1, 1, 4);
 }
 
 /* The high-order step (notes 3.2): the predictor and the corrector
@@ -338,6 +388,7 @@ static void high_order_step(IgaSolver *s, double dt) {
         for (int64_t k = 0; k < 16 * s->ncp; k++) s->M[k] *= s->am;
         apply_sides(s);
         block_update(s, s->gam * dt);
+        exchange_values(s, true, true);
     }
 }
 
@@ -348,10 +399,18 @@ static const double *node_sources(IgaSolver *s) {
     memset(s->node_src, 0, sizeof(double) * 3 * (size_t)s->ncp);
     for (int64_t q = 0; q < s->src_n; q++)
         for (int l = 0; l < s->local; l++) {
-            double *n = s->node_src + 3 * s->src_cp[q * s->local + l];
+            const int64_t k = s->src_cp[q * s->local + l];
+            if (k < 0) continue; /* off the window */
+            double *n = s->node_src + 3 * k;
             for (int v = 0; v < 3; v++) n[v] += s->src_w[q * s->local + l] * s->src_f[3 * q + v];
         }
     return s->node_src;
+}
+
+/* The limiter's preparation of U and the invariant step of the whole
+ * (the smallest of every process's own points: exact). */
+static double prepare_limiter(IgaSolver *s, const double *U) {
+    return -comm_max(&s->dc.comm, -iga_limiter_prepare(&s->lim, U));
 }
 
 /* The limited step's start: U0 = U(Y), and its preparation, whose bound
@@ -360,7 +419,7 @@ static const double *node_sources(IgaSolver *s) {
 static void prepare_start(IgaSolver *s) {
     for (int64_t k = 0; k < s->ncp; k++)
         idp_from_primitive(s->cfg.R, s->qp.cv, s->Y + 4 * k, s->U0 + 4 * k);
-    s->lim_bound = iga_limiter_prepare(&s->lim, s->U0);
+    s->lim_bound = prepare_limiter(s, s->U0);
     s->lim_ready = true;
 }
 
@@ -371,15 +430,18 @@ static bool limited_stage(IgaSolver *s, double h, const double *src, const doubl
                           double *to, double *bound) {
     /* the step's first stage starts where the last step's end was
      * prepared for the next time step (limited_step): not again */
-    if (!(s->lim_ready && from == s->U0 &&
-          memcmp(from, s->lim.U, sizeof(double) * 4 * (size_t)s->ncp) == 0))
-        s->lim_bound = iga_limiter_prepare(&s->lim, from);
+    int64_t again = !(s->lim_ready && from == s->U0 &&
+                      memcmp(from, s->lim.U, sizeof(double) * 4 * (size_t)s->ncp) == 0);
+    /* every process prepares if one must (the bound is a reduction) */
+    if (iga_decomp_divided(&s->dc)) again = comm_max_i64(&s->dc.comm, again);
+    if (again) s->lim_bound = prepare_limiter(s, from);
     s->lim_ready = false;
     *bound = s->lim_bound;
     if (h > *bound) return false;
     iga_limiter_stage(&s->lim, h, src, to);
     if (a > 0.0)
         for (int64_t k = 0; k < 4 * s->ncp; k++) to[k] = a * s->U0[k] + (1.0 - a) * to[k];
+    (void)iga_decomp_exchange(&s->dc, &to, 1, 4); /* a failure is MPI's abort */
     return true;
 }
 
@@ -443,7 +505,8 @@ static void state_at(const IgaConfig *c, double x, double y, double out[4]) {
 static void init_nodal(IgaSolver *s) {
     for (int j = 0; j < s->ncy; j++)
         for (int i = 0; i < s->ncx; i++)
-            state_at(&s->cfg, iga_axis_greville(&s->ax[0], i), iga_axis_greville(&s->ax[1], j),
+            state_at(&s->cfg, iga_axis_greville(&s->ax[0], s->dc.ax[0].global[i]),
+                     iga_axis_greville(&s->ax[1], s->dc.ax[1].global[j]),
                      s->Y + 4 * (i + (int64_t)s->ncx * j));
 }
 
@@ -532,8 +595,12 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
         gx[q] = (ax->point[q] - ax->lo) / ax->h;
         gw[q] = ax->weight[q] / ax->h;
     }
+    /* the local elements in ascending global order: each point's sums
+     * then take its elements in the order one process does */
+    const IgaWindowAxis *wx = &s->dc.ax[0], *wy = &s->dc.ax[1];
     for (int64_t e = 0; status == NSPD_OK && e < s->nel; e++) {
-        const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
+        const int lx = wx->sorted[e % s->nex], ly = wy->sorted[e / s->nex];
+        const int ex = wx->element[lx], ey = wy->element[ly];
         const double x0 = ax->knots[ex + ax->degree], y0 = ay->knots[ey + ay->degree];
         memset(phi, 0, sizeof(double) * (size_t)(nr + 1) * (size_t)L);
         for (int sj = 0; sj < SUB; sj++)
@@ -555,7 +622,7 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
                             c->init_fn(c->init_ctx, x, y, f);
                             for (int b = 0; b < w; b++)
                                 for (int a = 0; a < w; a++) {
-                                    const int64_t k = control_index(s, ex, ey, a, b);
+                                    const int64_t k = control_index(s, lx, ly, a, b);
                                     const double n = wq * bx[a] * by[b];
                                     for (int v = 0; v < 4; v++) num[4 * k + v] += n * f[v];
                                     den[k] += n;
@@ -596,7 +663,7 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
          * on threads */
         for (int b = 0; b < w && !c->init_fn; b++)
             for (int a = 0; a < w; a++) {
-                const int64_t k = control_index(s, ex, ey, a, b);
+                const int64_t k = control_index(s, lx, ly, a, b);
                 for (int o = 0; o <= nr; o++) {
                     const double f = phi[o * L + b * w + a];
                     const IgaState st = o == 0 ? c->initial : c->regions[o - 1].state;
@@ -606,9 +673,11 @@ static int init_lumped(IgaSolver *s, bool exact_areas) {
                 }
             }
     }
+    /* a rim point of the window lacks some of its elements: its value
+     * comes from its owner (create's exchange) */
     if (status == NSPD_OK)
         for (int64_t k = 0; k < s->ncp; k++)
-            for (int v = 0; v < 4; v++) s->Y[4 * k + v] = num[4 * k + v] / den[k];
+            for (int v = 0; v < 4 && den[k] > 0.0; v++) s->Y[4 * k + v] = num[4 * k + v] / den[k];
     if (status == NSPD_OK && c->init == IGA_INIT_L2) project_l2(s, num, den);
     nspd_free(&num);
     nspd_free(&den);
@@ -625,6 +694,7 @@ static void consistent_rate(IgaSolver *s, double dt0) {
         residual(s, dt0);
         apply_sides(s);
         block_update(s, 0.0);
+        exchange_values(s, false, true);
     }
 }
 
@@ -641,6 +711,7 @@ void iga_solver_destroy(IgaSolver **sp) {
                          &s->R,     &s->M,     &s->eR,       &s->eM,  &s->eNu, &s->mass,
                          &s->src_w, &s->src_f, &s->node_src, &s->U0,  &s->U1,  &s->U2};
     iga_limiter_destroy(&s->lim);
+    iga_decomp_destroy(&s->dc);
     nspd_free(&s->src_cp);
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) nspd_free(arrays[k]);
     nspd_free(sp);
@@ -669,9 +740,25 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
     }
     s->width = cfg->degree + 1;
     s->local = s->width * s->width;
-    s->ncx = s->ax[0].count, s->ncy = s->ax[1].count;
+    s->gncx = s->ax[0].count, s->gncy = s->ax[1].count;
+    /* the halo: the points of the elements touching own points, or those
+     * the limiter's pair fluxes reach (decomp.h); 8 doubles a point (Y
+     * and Yd) at most an exchange */
+    const int halo = cfg->limiter == IGA_LIMITER_NONE ? cfg->degree : 3 * cfg->degree;
+    s->cfg.comm = NULL; /* borrowed only here */
+    status = iga_decomp_create(&s->dc, cfg->comm, cfg->processes, s->ax, halo, 8);
+    if (status == NSPD_OK && iga_decomp_divided(&s->dc) && cfg->init == IGA_INIT_L2)
+        status = NSPD_FAIL(NSPD_ERR_INPUT,
+                           "iga: the L2 projection start (flow.iga.init: l2, for order studies) "
+                           "runs on one process only; expected lumped_l2 or nodal on several");
+    if (status != NSPD_OK) {
+        iga_solver_destroy(&s);
+        return status;
+    }
+    s->ncx = s->dc.ax[0].n, s->ncy = s->dc.ax[1].n;
     s->ncp = (int64_t)s->ncx * s->ncy;
-    s->nel = (int64_t)cfg->elements[0] * cfg->elements[1];
+    s->nex = s->dc.ax[0].ne;
+    s->nel = (int64_t)s->nex * s->dc.ax[1].ne;
     const double ri = cfg->rho_inf;
     s->am = 0.5 * (3.0 - ri) / (1.0 + ri);
     s->af = 1.0 / (1.0 + ri);
@@ -714,15 +801,19 @@ int iga_solver_create(IgaSolver **out, const IgaConfig *cfg, double dt0) {
         /* walls: no normal velocity at their control points */
         for (int f = 0; f < 4; f++)
             if (cfg->side[f] == IGA_SIDE_SLIP)
-                for (int t = 0; t < side_count(s, f); t++)
-                    s->Y[4 * side_point(s, f, t) + 1 + f / 2] = 0.0;
+                for (int t = 0; t < side_count(s, f); t++) {
+                    const int64_t k = side_point(s, f, t);
+                    if (k >= 0) s->Y[4 * k + 1 + f / 2] = 0.0;
+                }
+        exchange_values(s, true, false); /* the window's rim from its owners */
         status = check_range(s);
     }
     if (status == NSPD_OK && cfg->limiter != IGA_LIMITER_NONE) {
         bool wall[4], fixed[4];
         for (int f = 0; f < 4; f++)
             wall[f] = cfg->side[f] == IGA_SIDE_SLIP, fixed[f] = cfg->side[f] == IGA_SIDE_FIXED;
-        status = iga_limiter_create(&s->lim, cfg->limiter, s->ax, wall, fixed, cfg->gamma, cfg->R);
+        status = iga_limiter_create(&s->lim, cfg->limiter, s->ax, &s->dc, wall, fixed, cfg->gamma,
+                                    cfg->R);
         if (status == NSPD_OK)
             status = nspd_alloc(&s->node_src, (size_t)s->ncp * 3, sizeof(double));
         double **cons[] = {&s->U0, &s->U1, &s->U2};
@@ -769,7 +860,11 @@ double *iga_solver_rates(IgaSolver *s) {
 }
 
 int64_t iga_solver_control_count(const IgaSolver *s) {
-    return s->ncp;
+    return (int64_t)s->gncx * s->gncy;
+}
+
+const IgaDecomp *iga_solver_decomp(const IgaSolver *s) {
+    return &s->dc;
 }
 
 double iga_solver_nu_max(const IgaSolver *s) {
@@ -777,12 +872,13 @@ double iga_solver_nu_max(const IgaSolver *s) {
 }
 
 void iga_solver_limiting(const IgaSolver *s, int64_t *limited, double *alpha_min, int *substeps) {
-    *limited = s->lim.limited;
-    *alpha_min = s->lim.alpha_min;
+    /* each process's own points' (limiter.c): a sum of integers, a min */
+    *limited = comm_sum_i64(&s->dc.comm, s->lim.limited);
+    *alpha_min = -comm_max(&s->dc.comm, -s->lim.alpha_min);
     *substeps = s->substeps;
 }
 
-/* The field of element (ex, ey) with basis values bx, by: Y^h = sum N_k
+/* The field of local element (ex, ey) with basis values bx, by: Y^h = sum N_k
  * Y_k for the high-order scheme; U^h = sum N_k U(Y_k), the limited
  * scheme's field (a convex combination of admissible states), into U
  * when U is not NULL. */
@@ -811,40 +907,64 @@ static void field_in(const IgaSolver *s, int ex, int ey, const double *bx, const
     }
 }
 
-void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
+bool iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]) {
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
     const int ex = iga_axis_element(ax, x), ey = iga_axis_element(ay, y);
+    const int lx = s->dc.ax[0].local_element[ex], ly = s->dc.ax[1].local_element[ey];
+    if (lx < 0 || ly < 0) {
+        for (int v = 0; v < 4; v++) out[v] = (double)NAN;
+        return false;
+    }
     double bx[IGA_MAX_LOCAL], by[IGA_MAX_LOCAL];
     iga_axis_eval(ax, ex, x, bx, NULL);
     iga_axis_eval(ay, ey, y, by, NULL);
-    field_in(s, ex, ey, bx, by, out, NULL);
+    field_in(s, lx, ly, bx, by, out, NULL);
+    return true;
 }
 
-/* Gauss sums over the rectangle: rho, rho u, rho v, rho E and p. */
+int iga_solver_point_owner(const IgaSolver *s, double x, double y) {
+    return iga_decomp_element_owner(&s->dc, iga_axis_element(&s->ax[0], x),
+                                    iga_axis_element(&s->ax[1], y));
+}
+
+/* Gauss sums over the rectangle: rho, rho u, rho v, rho E and p; each
+ * process its own elements', every term added exactly (exact_sum.h), so
+ * the sums are the same bits on any number of processes (collective). */
 static void quadrature_sums(const IgaSolver *s, double sums[5]) {
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
-    for (int v = 0; v < 5; v++) sums[v] = 0.0;
-    for (int64_t e = 0; e < s->nel; e++) {
-        const int ex = (int)(e % ax->elements), ey = (int)(e / ax->elements);
-        for (int qy = 0; qy < ay->gauss; qy++)
-            for (int qx = 0; qx < ax->gauss; qx++) {
-                const double *nx = at_point(ax, ax->value, ex, qx),
-                             *ny = at_point(ay, ay->value, ey, qy);
-                double Y[4], U[4];
-                field_in(s, ex, ey, nx, ny, Y, U);
-                const double wq = ax->weight[qx] * ay->weight[qy];
-                if (s->cfg.limiter != IGA_LIMITER_NONE)
-                    for (int v = 0; v < 4; v++) sums[v] += wq * U[v];
-                else { /* the products in the order the recorded outputs have */
-                    const double rho = Y[0] / (s->cfg.R * Y[3]);
-                    sums[0] += wq * rho;
-                    sums[1] += wq * rho * Y[1];
-                    sums[2] += wq * rho * Y[2];
-                    sums[3] += wq * rho * (s->qp.cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2]));
+    const IgaWindowAxis *wx = &s->dc.ax[0], *wy = &s->dc.ax[1];
+    ExactSum sum[5];
+    for (int v = 0; v < 5; v++) exact_sum_clear(&sum[v]);
+    const int ex0 = blocks_cut(ax->elements, wx->parts, wx->part),
+              ex1 = blocks_cut(ax->elements, wx->parts, wx->part + 1),
+              ey0 = blocks_cut(ay->elements, wy->parts, wy->part),
+              ey1 = blocks_cut(ay->elements, wy->parts, wy->part + 1);
+    for (int ey = ey0; ey < ey1; ey++)
+        for (int ex = ex0; ex < ex1; ex++) {
+            const int lx = wx->local_element[ex], ly = wy->local_element[ey];
+            for (int qy = 0; qy < ay->gauss; qy++)
+                for (int qx = 0; qx < ax->gauss; qx++) {
+                    const double *nx = at_point(ax, ax->value, ex, qx),
+                                 *ny = at_point(ay, ay->value, ey, qy);
+                    double Y[4], U[4];
+                    field_in(s, lx, ly, nx, ny, Y, U);
+                    const double wq = ax->weight[qx] * ay->weight[qy];
+                    if (s->cfg.limiter != IGA_LIMITER_NONE)
+                        for (int v = 0; v < 4; v++) exact_sum_add(&sum[v], wq * U[v]);
+                    else {
+                        const double rho = Y[0] / (s->cfg.R * Y[3]);
+                        exact_sum_add(&sum[0], wq * rho);
+                        exact_sum_add(&sum[1], wq * rho * Y[1]);
+                        exact_sum_add(&sum[2], wq * rho * Y[2]);
+                        exact_sum_add(&sum[3],
+                                      wq * rho *
+                                          (s->qp.cv * Y[3] + 0.5 * (Y[1] * Y[1] + Y[2] * Y[2])));
+                    }
+                    exact_sum_add(&sum[4], wq * Y[0]);
                 }
-                sums[4] += wq * Y[0];
-            }
-    }
+        }
+    (void)exact_sum_reduce(&s->dc.comm, sum, 5); /* a failure is MPI's abort */
+    for (int v = 0; v < 5; v++) sums[v] = exact_sum_value(&sum[v]);
 }
 
 void iga_solver_totals(const IgaSolver *s, double totals[4]) {
@@ -859,13 +979,56 @@ double iga_solver_mean_pressure(const IgaSolver *s) {
     return sums[4] / ((s->cfg.hi[0] - s->cfg.lo[0]) * (s->cfg.hi[1] - s->cfg.lo[1]));
 }
 
+/* One per-point array (4 doubles a point) as the whole's, so that a
+ * checkpoint is the same on any number of processes and any other reads
+ * it: the own blocks gathered on writing, the window cut out on reading. */
+static int io_points(IgaSolver *s, Checkpoint *ck, const char *name, double *values) {
+    const int64_t whole = 4 * iga_solver_control_count(s);
+    if (!iga_decomp_divided(&s->dc)) {
+        int64_t count = whole;
+        TRY(checkpoint_io_array(ck, name, values, sizeof(double), &count, whole));
+        if (count != whole)
+            return NSPD_FAIL(NSPD_ERR_INPUT,
+                             "checkpoint: %lld IGA control values; the case has %lld",
+                             (long long)count, (long long)whole);
+        return NSPD_OK;
+    }
+    double *all = NULL, *mine = NULL;
+    const int64_t own = iga_decomp_owned_count(&s->dc);
+    TRY(nspd_alloc(&all, (size_t)whole, sizeof(double)));
+    int status = nspd_alloc(&mine, 4 * (size_t)own + 1, sizeof(double));
+    int cx[IGA_MAX_BLOCKS + 1], cy[IGA_MAX_BLOCKS + 1];
+    int *const cut[2] = {cx, cy};
+    const int n[2] = {s->gncx, s->gncy};
+    if (status == NSPD_OK && (s->dc.dims[0] > IGA_MAX_BLOCKS || s->dc.dims[1] > IGA_MAX_BLOCKS))
+        status = NSPD_FAIL(NSPD_ERR_INPUT, "iga flow: more than %d blocks along an axis",
+                           IGA_MAX_BLOCKS);
+    if (status == NSPD_OK) {
+        iga_decomp_cuts(&s->dc, 0, s->gncx, cx);
+        iga_decomp_cuts(&s->dc, 1, s->gncy, cy);
+    }
+    if (status == NSPD_OK && !checkpoint_reading(ck)) {
+        for (int64_t q = 0; q < own; q++)
+            memcpy(mine + 4 * q, values + 4 * iga_decomp_owned(&s->dc, q), 4 * sizeof(double));
+        status = iga_decomp_gather(&s->dc, n, cut, mine, 4, all, true);
+    }
+    int64_t count = whole;
+    if (status == NSPD_OK)
+        status = checkpoint_io_array(ck, name, all, sizeof(double), &count, whole);
+    if (status == NSPD_OK && count != whole)
+        status = NSPD_FAIL(NSPD_ERR_INPUT, "checkpoint: %lld IGA control values; the case has %lld",
+                           (long long)count, (long long)whole);
+    if (status == NSPD_OK && checkpoint_reading(ck))
+        for (int64_t k = 0; k < s->ncp; k++)
+            memcpy(values + 4 * k, all + 4 * iga_decomp_global(&s->dc, k), 4 * sizeof(double));
+    nspd_free(&all);
+    nspd_free(&mine);
+    return status;
+}
+
 int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck) {
-    int64_t count = 4 * s->ncp;
-    TRY(checkpoint_io_array(ck, "iga.values", s->Y, sizeof(double), &count, 4 * s->ncp));
-    if (count != 4 * s->ncp)
-        return NSPD_FAIL(NSPD_ERR_INPUT, "checkpoint: %lld IGA control values; the case has %lld",
-                         (long long)count, (long long)(4 * s->ncp));
-    TRY(checkpoint_io_array(ck, "iga.rates", s->Yd, sizeof(double), &count, 4 * s->ncp));
+    TRY(io_points(s, ck, "iga.values", s->Y));
+    TRY(io_points(s, ck, "iga.rates", s->Yd));
     TRY(checkpoint_io_double(ck, "iga.time", &s->time));
     TRY(checkpoint_io_int64(ck, "iga.steps", &s->steps));
     /* the limited step's time-step bound is of the state read, as it was
@@ -885,7 +1048,7 @@ int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, 
     iga_axis_eval(ay, ey, y, by, NULL);
     for (int b = 0; b < n; b++)
         for (int a = 0; a < n; a++) {
-            cp[b * n + a] = control_index(s, ex, ey, a, b);
+            cp[b * n + a] = global_index(s, ex, ey, a, b);
             w[b * n + a] = bx[a] * by[b];
         }
     return s->local;
@@ -913,6 +1076,15 @@ int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const doubl
                 (*outside)++;
                 continue;
             }
+            /* every process is given every point: it keeps those that
+             * reach its window, their points by local index (-1 off it) */
+            bool near = false;
+            for (int l = 0; l < L; l++) {
+                int64_t *c = cp + kept * L + l;
+                *c = iga_decomp_local(&s->dc, *c);
+                near |= *c >= 0;
+            }
+            if (!near) continue;
             f[3 * kept] = fx[q];
             f[3 * kept + 1] = fy[q];
             f[3 * kept + 2] = power ? power[q] : 0.0;
@@ -926,15 +1098,17 @@ int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const doubl
     return NSPD_OK;
 }
 
-/* int N_A rho^h over the support of control point k (Gauss, the
- * support's elements in ascending order); with `unit`, int N_A. */
+/* int N_A rho^h over the support of own control point k (local; Gauss,
+ * the support's elements in ascending order); with `unit`, int N_A. */
 static double lumped_integral(const IgaSolver *s, int64_t k, bool unit) {
     const IgaAxis *ax = &s->ax[0], *ay = &s->ax[1];
-    const int w = s->width, i = (int)(k % s->ncx), j = (int)(k / s->ncx);
+    const int w = s->width, i = s->dc.ax[0].global[k % s->ncx], j = s->dc.ax[1].global[k / s->ncx];
+    const int *lex = s->dc.ax[0].local_element, *ley = s->dc.ax[1].local_element;
     double m = 0.0;
     for (int bj = 0; bj < s->sup_n[1][j]; bj++)
         for (int bi = 0; bi < s->sup_n[0][i]; bi++) {
             const int ex = s->sup_e[0][i * w + bi], ey = s->sup_e[1][j * w + bj];
+            const int lx = lex[ex], ly = ley[ey];
             const int la = s->sup_a[0][i * w + bi], lb = s->sup_a[1][j * w + bj];
             for (int qy = 0; qy < ay->gauss; qy++)
                 for (int qx = 0; qx < ax->gauss; qx++) {
@@ -948,7 +1122,7 @@ static double lumped_integral(const IgaSolver *s, int64_t k, bool unit) {
                     double p = 0.0, T = 0.0;
                     for (int b = 0; b < w; b++)
                         for (int a = 0; a < w; a++) {
-                            const int64_t c = control_index(s, ex, ey, a, b);
+                            const int64_t c = control_index(s, lx, ly, a, b);
                             p += nx[a] * ny[b] * s->Y[4 * c];
                             T += nx[a] * ny[b] * s->Y[4 * c + 3];
                         }
@@ -958,19 +1132,28 @@ static double lumped_integral(const IgaSolver *s, int64_t k, bool unit) {
     return m;
 }
 
-static double lumped_mass(const IgaSolver *s, int64_t k) {
-    return lumped_integral(s, k, false);
+/* The local index of global point g where this process owns it, else -1. */
+static int64_t own_local(const IgaSolver *s, int64_t g) {
+    const int64_t k = iga_decomp_local(&s->dc, g);
+    return k >= 0 && iga_decomp_owns(&s->dc, (int)(k % s->ncx), (int)(k / s->ncx)) ? k : -1;
 }
 
 void iga_solver_lumped_volume(const IgaSolver *s, int64_t n, const int64_t *cps, double *volume) {
-    for (int64_t q = 0; q < n; q++) volume[q] = lumped_integral(s, cps[q], true);
+    for (int64_t q = 0; q < n; q++) {
+        const int64_t k = own_local(s, cps[q]);
+        volume[q] = k < 0 ? (double)NAN : lumped_integral(s, k, true);
+    }
 }
 
 void iga_solver_lumped(const IgaSolver *s, int64_t n, const int64_t *cps, double *mass, double *mx,
                        double *my) {
     for (int64_t q = 0; q < n; q++) {
-        const int64_t k = cps[q];
-        const double m = lumped_mass(s, k);
+        const int64_t k = own_local(s, cps[q]);
+        if (k < 0) {
+            mass[q] = mx[q] = my[q] = (double)NAN;
+            continue;
+        }
+        const double m = lumped_integral(s, k, false);
         mass[q] = m;
         mx[q] = m * s->Y[4 * k + 1];
         my[q] = m * s->Y[4 * k + 2];
@@ -981,13 +1164,17 @@ void iga_solver_add_lumped(IgaSolver *s, int64_t n, const int64_t *cps, const do
                            const double *dmy, const double *de) {
     const double cv = s->qp.cv;
     /* every mass before any change (a change at one control point moves
-     * its neighbours' masses), kept in the element slots' scratch */
-    double *mass = s->mass; /* n <= the control points: they are distinct */
-    for (int64_t q = 0; q < n; q++) mass[q] = lumped_mass(s, cps[q]);
+     * its neighbours' masses), by local index (the points are distinct) */
+    double *mass = s->mass;
     for (int64_t q = 0; q < n; q++) {
-        const int64_t k = cps[q];
+        const int64_t k = own_local(s, cps[q]);
+        if (k >= 0) mass[k] = lumped_integral(s, k, false);
+    }
+    for (int64_t q = 0; q < n; q++) {
+        const int64_t k = own_local(s, cps[q]);
+        if (k < 0) continue; /* another process's */
         double *y = s->Y + 4 * k;
-        const double m = mass[q], rho = y[0] / (s->cfg.R * y[3]);
+        const double m = mass[k], rho = y[0] / (s->cfg.R * y[3]);
         const double e_old = m * (cv * y[3] + 0.5 * (y[1] * y[1] + y[2] * y[2]));
         if (dmx) y[1] += dmx[q] / m;
         if (dmy) y[2] += dmy[q] / m;
@@ -997,4 +1184,6 @@ void iga_solver_add_lumped(IgaSolver *s, int64_t n, const int64_t *cps, const do
         y[3] = (e_new / m - 0.5 * (y[1] * y[1] + y[2] * y[2])) / cv;
         y[0] = rho * s->cfg.R * y[3];
     }
+    /* the halo from the owners: every process calls (FlowOps) */
+    exchange_values(s, true, false);
 }

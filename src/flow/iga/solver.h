@@ -10,7 +10,9 @@
 #define NSPD_FLOW_IGA_SOLVER_H
 
 #include "core/checkpoint.h"
+#include "core/comm.h"
 #include "core/shape.h"
+#include "flow/iga/decomp.h"
 #include "flow/iga/kernel.h"
 #include "flow/iga/limiter.h"
 #include "flow/iga/space.h"
@@ -60,6 +62,11 @@ typedef struct {
     double tau_dt;          /* s: tau's time step; 0: the step taken */
     double cfl;             /* (|u| + c) dt / h of the stable step (0.3) */
     IgaLimiterKind limiter; /* convex limiting of each step (limiter.h) */
+    /* the processes that share the flow (NULL or one: this one alone;
+     * borrowed during create) and the process grid asked for ({0, 0}: the
+     * fewest halo points), decomp.h */
+    const NspdComm *comm;
+    int processes[2];
 } IgaConfig;
 
 typedef struct IgaSolver IgaSolver;
@@ -92,15 +99,25 @@ int64_t iga_solver_steps(const IgaSolver *s);
 const IgaAxis *iga_solver_axis(const IgaSolver *s, int axis);
 const IgaConfig *iga_solver_config(const IgaSolver *s);
 
-/* The control values (ncp x 4, point k = i + nx j) and their rates. */
+/* The control values (4 a point) and their rates: on one process the
+ * whole's, point k = i + nx j; on several this process's window
+ * (decomp.h). */
 double *iga_solver_values(IgaSolver *s);
 double *iga_solver_rates(IgaSolver *s);
+/* The whole's control points. */
 int64_t iga_solver_control_count(const IgaSolver *s);
+/* This process's share (decomp.h). */
+const IgaDecomp *iga_solver_decomp(const IgaSolver *s);
 
-/* The field at (x, y): Y into out[4] (p, u, v, T). */
-void iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]);
+/* The field at (x, y): Y into out[4] (p, u, v, T); false (and NaN) where
+ * the element that holds (x, y) is not in this process's window. */
+bool iga_solver_eval(const IgaSolver *s, double x, double y, double out[4]);
 
-/* Integrals of rho, rho u, rho v, rho E over the rectangle (Gauss). */
+/* The process that owns the element holding (x, y) (0 on one). */
+int iga_solver_point_owner(const IgaSolver *s, double x, double y);
+
+/* Integrals of rho, rho u, rho v, rho E over the rectangle (Gauss, exact
+ * sums; collective). */
 void iga_solver_totals(const IgaSolver *s, double totals[4]);
 
 /* The area-mean of the pressure field, Pa (a closed box's late mean
@@ -112,13 +129,13 @@ double iga_solver_nu_max(const IgaSolver *s);
 
 /* The last step's limiting: control points blended below the high-order
  * state, their smallest blending factor (1: none) and the substeps it
- * took. */
+ * took (collective). */
 void iga_solver_limiting(const IgaSolver *s, int64_t *limited, double *alpha_min, int *substeps);
 
 /* Writes or reads what a step changes (values, rates, clock). */
 int iga_solver_checkpoint(IgaSolver *s, Checkpoint *ck);
 
-/* The control points (k = i + nx j) and basis values N_A(x, y) of the
+/* The control points (global, k = i + nx j) and basis values N_A(x, y) of the
  * element that holds (x, y): (p + 1)^2 of each, their number returned; 0
  * off the rectangle. */
 int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, double *w);
@@ -130,23 +147,26 @@ int iga_solver_point_basis(const IgaSolver *s, double x, double y, int64_t *cp, 
  * R_A -= N_A(x_q) f_q, so the partition of unity hands over exactly f_q
  * (notes T12; the strong residual of SUPG and DC sees no delta). Points
  * off the rectangle are dropped and counted in *outside; n = 0 clears the
- * sources. */
+ * sources. On several processes every one passes every point. */
 int iga_solver_set_sources(IgaSolver *s, int64_t n, const double *x, const double *y,
                            const double *fx, const double *fy, const double *power,
                            int64_t *outside);
 
 /* The lumped mass int N_A rho^h (kg per metre of depth) of control points
- * cps[q] and their momentum (the mass times the control velocity). */
+ * cps[q] (global indices) and their momentum (the mass times the control
+ * velocity); NaN for the points another process owns. */
 void iga_solver_lumped(const IgaSolver *s, int64_t n, const int64_t *cps, double *mass, double *mx,
                        double *my);
 
-/* int N_A (m^2 per metre of depth) of control points cps[q]. */
+/* int N_A (m^2 per metre of depth) of control points cps[q] (as lumped). */
 void iga_solver_lumped_volume(const IgaSolver *s, int64_t n, const int64_t *cps, double *volume);
 
 /* Adds momentum (dmx, dmy) and total energy de (per metre of depth; NULL:
  * none) to the distinct control points cps[q], between steps: the control
  * velocity by the momentum over the lumped mass, the temperature by the
- * energy, the density at the control point kept (p follows T). */
+ * energy, the density at the control point kept (p follows T); on
+ * several processes each adds to its own points and drops the others,
+ * then the halo is exchanged (collective). */
 void iga_solver_add_lumped(IgaSolver *s, int64_t n, const int64_t *cps, const double *dmx,
                            const double *dmy, const double *de);
 
