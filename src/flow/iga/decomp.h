@@ -23,6 +23,7 @@
 #ifndef NSPD_FLOW_IGA_DECOMP_H
 #define NSPD_FLOW_IGA_DECOMP_H
 
+#include "core/blocks.h"
 #include "core/comm.h"
 #include "flow/iga/space.h"
 
@@ -78,6 +79,12 @@ void iga_decomp_destroy(IgaDecomp *d);
 
 static inline bool iga_decomp_divided(const IgaDecomp *d) {
     return comm_distributed(&d->comm);
+}
+
+/* This block's own elements along the axis: global [*lo, *hi). */
+static inline void iga_window_own_elements(const IgaWindowAxis *w, int *lo, int *hi) {
+    *lo = blocks_cut(w->elements, w->parts, w->part);
+    *hi = blocks_cut(w->elements, w->parts, w->part + 1);
 }
 
 /* The local element's function a: its local point along the axis. */

@@ -10,7 +10,6 @@
  * rank 0 (the writer), which writes the file one process writes. */
 #include "flow/iga/model.h"
 
-#include "core/blocks.h"
 #include "core/mem.h"
 #include "core/status.h"
 
@@ -327,7 +326,8 @@ static bool iga_point_near(const void *impl, double x, double y, int margin) {
         const IgaAxis *ax = iga_solver_axis(s, a);
         const IgaWindowAxis *w = &dc->ax[a];
         const int n = ax->elements, e = iga_axis_element(ax, at[a]);
-        const int lo = blocks_cut(n, w->parts, w->part), hi = blocks_cut(n, w->parts, w->part + 1);
+        int lo, hi;
+        iga_window_own_elements(w, &lo, &hi);
         int d = e < lo ? lo - e : e >= hi ? e - hi + 1 : 0;
         if (ax->periodic && d > 0) { /* the other way round */
             const int around = e < lo ? e + n - hi + 1 : lo + n - e;

@@ -1,6 +1,5 @@
 #include "flow/iga/solver.h"
 
-#include "core/blocks.h"
 #include "core/exact_sum.h"
 #include "core/mem.h"
 #include "core/parallel.h"
@@ -935,10 +934,9 @@ static void quadrature_sums(const IgaSolver *s, double sums[5]) {
     const IgaWindowAxis *wx = &s->dc.ax[0], *wy = &s->dc.ax[1];
     ExactSum sum[5];
     for (int v = 0; v < 5; v++) exact_sum_clear(&sum[v]);
-    const int ex0 = blocks_cut(ax->elements, wx->parts, wx->part),
-              ex1 = blocks_cut(ax->elements, wx->parts, wx->part + 1),
-              ey0 = blocks_cut(ay->elements, wy->parts, wy->part),
-              ey1 = blocks_cut(ay->elements, wy->parts, wy->part + 1);
+    int ex0, ex1, ey0, ey1;
+    iga_window_own_elements(wx, &ex0, &ex1);
+    iga_window_own_elements(wy, &ey0, &ey1);
     for (int ey = ey0; ey < ey1; ey++)
         for (int ex = ex0; ex < ex1; ex++) {
             const int lx = wx->local_element[ex], ly = wy->local_element[ey];
