@@ -179,6 +179,13 @@ if(NSPD_MPI)
             ${PROJECT_SOURCE_DIR} ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:vtk_same>
         WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
     set_tests_properties(mpi.iga PROPERTIES LABELS "mpi;release" COST 900)
+    # the PDDO flow on 1-4 ranks, a resume 3 -> 2, the refusal (tests/mpi/
+    # pddo.sh, issue 58)
+    add_test(NAME mpi.pddo
+        COMMAND sh ${PROJECT_SOURCE_DIR}/tests/mpi/pddo.sh $<TARGET_FILE:nspd>
+            ${PROJECT_SOURCE_DIR} ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:vtk_same>
+        WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    set_tests_properties(mpi.pddo PROPERTIES LABELS "mpi;release")
     # the sanitized build: a few of those cases under ASan and UBSan
     # (tests/mpi/sanitized.sh), in make test-asan's selection ("cli")
     if(NSPD_SANITIZE)

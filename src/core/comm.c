@@ -122,6 +122,19 @@ int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *
     return status;
 }
 
+int comm_share_ranges(const NspdComm *c, double *whole, const int *count, const int *at,
+                      bool to_root) {
+    if (!comm_distributed(c)) return NSPD_OK;
+    if (!to_root)
+        MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, whole, count, at, MPI_DOUBLE, mpi_of(c));
+    else if (c->rank == 0)
+        MPI_Gatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, whole, count, at, MPI_DOUBLE, 0, mpi_of(c));
+    else
+        MPI_Gatherv(whole + at[c->rank], count[c->rank], MPI_DOUBLE, NULL, NULL, NULL, MPI_DOUBLE,
+                    0, mpi_of(c));
+    return NSPD_OK;
+}
+
 int comm_gatherv(const NspdComm *c, const double *mine, int count, double *all) {
     if (!comm_distributed(c)) return gather_alone(mine, count * (int)sizeof(double), all);
     int *counts = NULL, *offsets = NULL;
@@ -246,6 +259,12 @@ int comm_sum_i64_array(const NspdComm *c, int64_t *values, int n) {
 int comm_allgatherv_bytes(const NspdComm *c, const void *mine, int bytes, void *all) {
     (void)c;
     return gather_alone(mine, bytes, all);
+}
+
+int comm_share_ranges(const NspdComm *c, double *whole, const int *count, const int *at,
+                      bool to_root) {
+    (void)c, (void)whole, (void)count, (void)at, (void)to_root;
+    return NSPD_OK; /* one process holds every range */
 }
 
 int comm_gatherv(const NspdComm *c, const double *mine, int count, double *all) {

@@ -52,6 +52,15 @@ int comm_sum_i64_array(const NspdComm *c, int64_t *values, int n);
  * every rank (counts may differ between ranks; all holds their sum). */
 int comm_allgatherv(const NspdComm *c, const double *mine, int count, double *all);
 
+/* whole[] laid out in ranges, rank r's at[r] .. at[r] + count[r] (arrays
+ * of `size` entries, the same on every rank): each rank's range copied
+ * from that rank into whole[] on every rank (to_root: on rank 0 only), in
+ * place; one collective, no allocation. What a model whose every rank
+ * keeps the whole array and updates its own range calls after each
+ * update (the PDDO flow, flow/pddo/share.h). */
+int comm_share_ranges(const NspdComm *c, double *whole, const int *count, const int *at,
+                      bool to_root);
+
 /* Every rank's `count` doubles, concatenated in rank order into all[] on
  * rank 0 only (all is not read elsewhere and may be NULL there): what a
  * writer on rank 0 gathers without the whole on every rank. */

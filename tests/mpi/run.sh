@@ -21,7 +21,7 @@
 # cylinder, the plate, the hollow cylinder), and a field written on 3
 # ranks starts a run on 1 (and one written by 1 a run on 3), all with the
 # same bits. Then the refusals: a bad case, more
-# ranks than rows and the PDDO flow, each exit status 2 with its message
+# ranks than rows, each exit status 2 with its message
 # printed once; and runs that blow up (the flow, the solid), stopped on
 # every rank with the message of one process.
 # A grid that several processes write in pieces (.pvtr) is held against
@@ -279,8 +279,6 @@ refused "a grid of 3 blocks on 2 ranks" "processes 3x1 makes 3 blocks for 2 proc
     -o "$work/bad" --processes 3x1
 refused "a grid of 3 blocks for a solid alone on 2 ranks" "processes 3x1 makes 3 blocks for 2 processes" 2 \
     "$src/cases/plate_crack.yaml" -o "$work/bad" --processes 3x1
-refused "the PDDO flow on 2 ranks" "the 'pddo' flow runs on one process, not on 2" 2 \
-    "$src/cases/cavity_re1.yaml" -o "$work/bad"
 [ -e "$work/bad" ] && fail "a refused run wrote $work/bad"
 
 # A run that fails (the gas leaves the physical range: a given time step

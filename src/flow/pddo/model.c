@@ -1,6 +1,7 @@
 /* The PDDO flow behind the flow interface (model.h). */
 #include "flow/pddo/model.h"
 
+#include "core/comm.h"
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/reduce.h"
@@ -11,6 +12,7 @@
 #include "flow/pddo/operators.h"
 #include "flow/pddo/ppe.h"
 #include "flow/pddo/sample.h"
+#include "flow/pddo/share.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -42,6 +44,8 @@ typedef struct {
     PddoOps ops;
     PddoPpe ppe;
     PddoStep step;
+    NspdComm comm;      /* the processes that share the flow (one: comm_self) */
+    PddoShare share;    /* several processes: each one's range of nodes (share.h) */
     bool validate_only; /* `nspd check`: conditioning only, no weights or pressure matrix */
     double setup_s;     /* wall time of the cloud, operators and factorisation (log and info) */
     int64_t physical;   /* fluid and side nodes */
@@ -175,6 +179,7 @@ static void pddo_destroy(void *impl) {
     pddo_sample_free(&f->probes);
     pddo_step_free(&f->step);
     pddo_ppe_free(&f->ppe);
+    pddo_share_free(&f->share);
     pddo_ops_free(&f->ops);
     pddo_cloud_free(&f->cloud);
     nspd_free(&f->phys);
@@ -262,10 +267,12 @@ static int build(PddoFlow *f) {
         TRY(pddo_ops_build(&f->ops, c->n, c->x, c->y, c->area, c->first, c->nbr, c->delta,
                            c->node_delta,
                            &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
-        TRY(pddo_ppe_build(&f->ppe, c, &f->ops));
+        if (comm_distributed(&f->comm)) TRY(pddo_share_init(&f->share, &f->ops, &f->comm));
+        TRY(pddo_ppe_build_shared(&f->ppe, c, &f->ops, &f->share));
         if (f->cfg.pressure_runs) TRY(pddo_ppe_use_runs(&f->ppe));
     }
     TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
+    pddo_step_share(&f->step, &f->share);
     for (int b = 0; b < c->npatches; b++) {
         TRY(pddo_forces_build(&f->forces[b], c, b));
         for (int k = 0; k < WALL_COLS; k++)
@@ -311,7 +318,14 @@ static int pddo_create(void **impl, FlowConfig *fc) {
     f->cfg.average_from = fc->average_from; /* the driver's, as a coupling's */
     f->validate_only = fc->validate_only;
     f->steady_step = -1;
-    const int status = build(f);
+    f->comm = fc->comm && fc->comm->size > 0 ? *fc->comm : comm_self(); /* borrowed during create */
+    int status = NSPD_OK;
+    if (comm_distributed(&f->comm) && fc->processes[0] > 0 && fc->processes[1] != 1)
+        status = NSPD_FAIL(NSPD_ERR_INPUT,
+                           "--processes %dx%d: the PDDO flow divides its node list into ranges "
+                           "of equal work, not a grid; expected --processes %d (or %dx1)",
+                           fc->processes[0], fc->processes[1], f->comm.size, f->comm.size);
+    if (status == NSPD_OK) status = build(f);
     if (status != NSPD_OK) {
         pddo_destroy(f);
         return status;
@@ -455,18 +469,24 @@ static void pddo_totals(const void *impl, double totals[4]) {
 }
 
 /* max |div u| over the fluid nodes (the sides' nodes hold prescribed
- * velocities) of the current state; the velocity gradients into node[]. */
-static double max_divergence(const PddoFlow *f) {
+ * velocities) of the current state; the velocity gradients into node[]
+ * (on several processes each rank's own nodes', and to every rank with
+ * `whole`). Collective there. */
+static double max_divergence(const PddoFlow *f, bool whole) {
     const PddoCloud *c = &f->cloud;
     double *const *g = f->node;
     pddo_ops_apply(&f->ops, PDDO_D_X, f->step.u, g[GUX]);
     pddo_ops_apply(&f->ops, PDDO_D_Y, f->step.u, g[GUY]);
     pddo_ops_apply(&f->ops, PDDO_D_X, f->step.v, g[GVX]);
     pddo_ops_apply(&f->ops, PDDO_D_Y, f->step.v, g[GVY]);
+    const bool divided = pddo_share_divided(&f->share);
+    const int64_t lo = divided ? f->share.lo : 0, hi = divided ? f->share.hi : c->n;
     double m = 0.0;
-    for (int64_t k = 0; k < c->n; k++)
+    for (int64_t k = lo; k < hi; k++)
         if (c->kind[k] == PDDO_NODE_FLUID) m = fmax(m, fabs(g[GUX][k] + g[GVY][k]));
-    return m;
+    if (!divided) return m;
+    for (int a = GUX; whole && a <= GVY; a++) (void)pddo_share(&f->share, g[a], false);
+    return comm_max(&f->comm, m); /* a max is exact */
 }
 
 static double dynamic_pressure(const PddoFlow *f) {
@@ -518,7 +538,7 @@ static void pddo_history(const void *impl, Report *row) {
     report_precise(row, "kinetic_energy_J_per_m", totals[3]);
     report_precise(row, "momentum_x_kg_per_s", totals[1]);
     report_precise(row, "momentum_y_kg_per_s", totals[2]);
-    report_real(row, "div_max_per_s", max_divergence(f));
+    report_real(row, "div_max_per_s", max_divergence(f, false));
     report_real(row, "ppe_shift", f->ppe.shift);
     /* the inlet's and the outlets' flow rates: the scheme's mass balance */
     double in = 0.0, out = 0.0;
@@ -583,6 +603,8 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     report_real(out, "factor_nonzeros", f->ppe.factor_nnz);
     report_real(out, "factor_mb", f->ppe.factor_bytes / 1e6);
     report_real(out, "pressure_solve_s", f->ppe.solve_s);
+    if (pddo_share_divided(&f->share)) /* the shares of each step and of the solve */
+        report_real(out, "exchange_s", f->step.share_s + f->ppe.share_s);
     report_real(out, "dt_s", f->step.par.dt);
     report_real(out, "dt_limit_s", pddo_flow_dt_limit(&f->cfg));
     report_real(out, "reynolds",
@@ -592,7 +614,7 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     report_int(out, "steady_step", f->steady_step);
     report_real(out, "dudt_max_m_per_s2", f->step.dudt_max);
     report_real(out, "kinetic_energy_J_per_m", totals[3]);
-    report_real(out, "div_max_per_s", max_divergence(f));
+    report_real(out, "div_max_per_s", max_divergence(f, false));
     const int nb = f->cloud.npatches;
     if (nb > 0) {
         report_real(out, "average_from_s", f->cfg.average_from);
@@ -733,7 +755,7 @@ static void pddo_fields(void *impl, FieldSet *out) {
     const PddoCloud *c = &f->cloud;
     double *const *o = f->out;
     double *const *g = f->node;
-    max_divergence(f); /* the velocity gradients into node[] */
+    max_divergence(f, true); /* the velocity gradients into node[] */
     for (int64_t q = 0; q < f->physical; q++) {
         const int64_t k = f->phys[q];
         const double u = f->step.u[k], v = f->step.v[k];
@@ -849,6 +871,7 @@ static int pddo_checkpoint(void *impl, Checkpoint *ck) {
 
 const FlowOps PDDO_FLOW_OPS = {
     .name = "pddo",
+    .distributed = true,
     .config_free = pddo_config_free,
     .estimate = pddo_estimate,
     .validate = pddo_validate,

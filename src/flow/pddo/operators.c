@@ -406,14 +406,24 @@ static int templates_build(PddoOps *ops) {
                    : PDDO_OWN_ROW_COST * (ops->slice_first[s + 1] - ops->slice_first[s]) / L;
         ops->cost_before[s + 1] = ops->cost_before[s] + cost + 1;
     }
+    ops->own_lo = 0, ops->own_hi = slices;
     return NSPD_OK;
 }
 
+/* Part t of nt of slices [from, to) by cost. */
+static void cut_range(const PddoOps *ops, int64_t from, int64_t to, int t, int nt, int64_t *lo,
+                      int64_t *hi) {
+    const int64_t *c = ops->cost_before + from, count = to - from, total = c[count] - c[0];
+    *lo = t == 0 ? from : from + search_first_at_least(c, count, c[0] + total * t / nt);
+    *hi = t == nt - 1 ? to : from + search_first_at_least(c, count, c[0] + total * (t + 1) / nt);
+}
+
 void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi) {
-    const int64_t slices = pddo_ops_slices(ops), total = ops->cost_before[slices];
-    *lo = t == 0 ? 0 : search_first_at_least(ops->cost_before, slices, total * t / nt);
-    *hi = t == nt - 1 ? slices
-                      : search_first_at_least(ops->cost_before, slices, total * (t + 1) / nt);
+    cut_range(ops, ops->own_lo, ops->own_hi, t, nt, lo, hi);
+}
+
+void pddo_ops_cut(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi) {
+    cut_range(ops, 0, pddo_ops_slices(ops), t, nt, lo, hi);
 }
 
 static int build(PddoOps *ops, int64_t n, const double *x, const double *y, const double *area,

@@ -102,6 +102,8 @@ typedef struct {
     double *dif;             /* while building: per slot, g^20 - g^02 of a turned node */
     int64_t templated;       /* slices that use a template */
     int64_t *cost_before;    /* per slice, the cost of the slices before it; the total last */
+    int64_t own_lo, own_hi;  /* the slices this process computes (pddo_ops_share's range):
+                                all of them, or its part on several processes (share.h) */
     double cond_max;         /* largest condition number met (the rule above) */
     int64_t cond_node;       /* where */
 } PddoOps;
@@ -157,14 +159,19 @@ static inline int64_t pddo_ops_slices(const PddoOps *ops) {
  * operator, where a template's row reads its weights from cache). */
 enum { PDDO_OWN_ROW_COST = 3 };
 
-/* Slices [*lo, *hi) of thread t of nt: contiguous ranges of about equal
- * cost (cost_before), so that the threads of a loop over slices finish
+/* Slices [*lo, *hi) of thread t of nt within the process's own slices
+ * (own_lo .. own_hi, all of them on one process): contiguous ranges of
+ * about equal cost (cost_before), so that the threads of a loop over slices finish
  * together: on the paper's cylinder the polar patch's slices, the last
  * third, kept their own slots before the turned templates, and equal
  * counts of slices left one thread waiting for the other (docs/
  * PERFORMANCE.md). Each slice is computed alone, so the bits do not
  * depend on the split. */
 void pddo_ops_share(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi);
+
+/* Slices [*lo, *hi) of part t of nt of all the slices, by the same rule:
+ * the processes' own ranges (share.h), which their threads then share. */
+void pddo_ops_cut(const PddoOps *ops, int t, int nt, int64_t *lo, int64_t *hi);
 
 /* Builds the weights of the n nodes at (x, y) with areas `area` (only their
  * ratios matter) and families first/nbr (each node's neighbours, itself

@@ -164,6 +164,7 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
         memcpy(p->pin_val, p->ax + lo, (size_t)len * sizeof(double));
         for (int32_t m = lo; m < lo + len; m++) p->ax[m] = p->ai[m] == k0 ? 1.0 : 0.0;
     }
+    if (pddo_share_divided(p->share) && p->share->comm.rank != 0) return NSPD_OK; /* rank 0's */
     TRY(factorise(p));
     if (p->pinned >= 0) {
         const int64_t k0 = p->pinned;
@@ -180,11 +181,18 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
     return NSPD_OK;
 }
 
-int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops) {
+int pddo_ppe_build_shared(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops,
+                          const PddoShare *share) {
     pddo_ppe_free(ppe);
-    const int status = build(ppe, cloud, ops);
+    ppe->share = pddo_share_divided(share) ? share : NULL;
+    int status = build(ppe, cloud, ops);
+    if (ppe->share) status = comm_agree(&ppe->share->comm, status, NULL, 0);
     if (status != NSPD_OK) pddo_ppe_free(ppe);
     return status;
+}
+
+int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops) {
+    return pddo_ppe_build_shared(ppe, cloud, ops, NULL);
 }
 
 /* The most pivots a run holds: measured on the paper's cylinder (solve
@@ -288,7 +296,7 @@ static int runs_of_l(PddoPpe *p, int lnz) {
 }
 
 int pddo_ppe_use_runs(PddoPpe *ppe) {
-    if (ppe->runs || !ppe->numeric) return NSPD_OK;
+    if (ppe->runs || !ppe->numeric) return NSPD_OK; /* done, or another rank's factor */
     int lnz, unz, rows, cols, udiag;
     const int s = umfpack_di_get_lunz(&lnz, &unz, &rows, &cols, &udiag, ppe->numeric);
     if (s != UMFPACK_OK) return umf_fail(s, "get_lunz");
@@ -328,10 +336,9 @@ static void runs_solve(const PddoPpe *ppe, const double *b, double *x) {
     }
 }
 
-int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p) {
+/* The solve of the whole right-hand side b (modified) on this process. */
+static int solve_whole(PddoPpe *ppe, double *b, double *p) {
     const int64_t n = ppe->n;
-    double *b = ppe->work;
-    memcpy(b, rhs, (size_t)n * sizeof(double));
     ppe->shift = 0.0;
     if (ppe->pinned >= 0) {
         /* serial sums: the same order, hence bits, at any thread count */
@@ -349,6 +356,24 @@ int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p) {
     else
         status = umf_solve(ppe, UMFPACK_At, p, b);
     ppe->solve_s += nspd_wall_time() - t0;
+    return status;
+}
+
+int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p) {
+    const int64_t n = ppe->n;
+    double *b = ppe->work;
+    memcpy(b, rhs, (size_t)n * sizeof(double));
+    if (!ppe->share) return solve_whole(ppe, b, p);
+    const NspdComm *comm = &ppe->share->comm;
+    double t0 = nspd_wall_time();
+    TRY(pddo_share(ppe->share, b, true)); /* the rows to rank 0 */
+    ppe->share_s += nspd_wall_time() - t0;
+    int status = comm->rank == 0 ? solve_whole(ppe, b, p) : NSPD_OK;
+    TRY(comm_agree(comm, status, NULL, 0));
+    t0 = nspd_wall_time();
+    status = comm_bcast(comm, p, (int)(n * (int64_t)sizeof(double)), 0);
+    if (status == NSPD_OK) status = comm_bcast(comm, &ppe->shift, (int)sizeof ppe->shift, 0);
+    ppe->share_s += nspd_wall_time() - t0;
     return status;
 }
 

@@ -36,6 +36,7 @@
 #include "flow/pddo/cloud.h"
 #include "flow/pddo/lu_runs.h"
 #include "flow/pddo/operators.h"
+#include "flow/pddo/share.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -76,6 +77,11 @@ typedef struct {
     double factor_bytes;
     double rcond;   /* UMFPACK's reciprocal condition estimate */
     double solve_s; /* wall time in the triangular solves so far */
+    /* several processes (share.h; NULL: one): rank 0 alone factorises and
+     * solves, the right-hand side's rows gathered to it and the pressure
+     * sent back to every rank */
+    const PddoShare *share;
+    double share_s; /* wall time in that gather and broadcast */
 } PddoPpe;
 
 /* Assembles K_L for the cloud with the operators built on its families,
@@ -84,6 +90,14 @@ typedef struct {
  * outlet should fix the level; NSPD_ERR_NOMEM; NSPD_ERR_INPUT for more than
  * 2^31 - 1 nonzeros. */
 int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops);
+
+/* The same on share's processes (borrowed; NULL or one process: as
+ * pddo_ppe_build): rank 0 factorises, the others keep the rows' kinds
+ * only. pddo_ppe_solve is then collective: each rank passes the rows of
+ * its own range (the others are not read), every rank gets the whole
+ * pressure, the same bits as one process. */
+int pddo_ppe_build_shared(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops,
+                          const PddoShare *share);
 
 /* Solves with UMFPACK's factor stored by runs of pivots from now on
  * (flow.pressure_solve: runs; lu_runs.h): U by rows and then L by columns

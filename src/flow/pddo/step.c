@@ -9,6 +9,7 @@
 #include "core/mem.h"
 #include "core/parallel.h"
 #include "core/status.h"
+#include "core/timer.h"
 
 #include <math.h>
 #include <omp.h>
@@ -182,11 +183,12 @@ static void body_pressure_rows(PddoStep *ps) {
  * data make small, instead of carrying the mismatch of rho F and G p at the
  * walls. The prescribed nodes are not updated, so nothing else reads these
  * values. */
-static void held_source(const PddoStep *ps, double *const *w) {
+static void held_source(const PddoStep *ps, double *const *w, int64_t lo, int64_t hi) {
     const int64_t n = ps->nheld;
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t h = 0; h < n; h++) {
         const int64_t k = ps->held[h];
+        if (k < lo || k >= hi) continue; /* another process's */
         const PddoOp op[] = {PDDO_D_X, PDDO_D_Y};
         const double *const f[] = {ps->p, ps->p};
         double grad_p[2];
@@ -246,6 +248,19 @@ int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, Pdd
     }
     update_spin(ps);
     pddo_step_apply_bc(ps);
+    return NSPD_OK;
+}
+
+void pddo_step_share(PddoStep *ps, const PddoShare *share) {
+    ps->share = pddo_share_divided(share) ? share : NULL;
+}
+
+/* The arrays' own ranges to every rank (several processes). */
+static int share_arrays(PddoStep *ps, int count, double *const *arrays) {
+    if (!ps->share) return NSPD_OK;
+    const double t0 = nspd_wall_time();
+    for (int a = 0; a < count; a++) TRY(pddo_share(ps->share, arrays[a], false));
+    ps->share_s += nspd_wall_time() - t0;
     return NSPD_OK;
 }
 
@@ -322,16 +337,19 @@ int pddo_step_advance(PddoStep *ps) {
         double *const out[] = {w[UX], w[UY], w[VX], w[VY], w[LU], w[LV]};
         pddo_ops_apply_many(ops, 6, op, f, out);
     }
-    /* d = u.grad u (Eq. 23) pointwise at every node */
+    /* d = u.grad u (Eq. 23) pointwise at every node (this process's) */
+    const int64_t own_lo = ps->share ? ps->share->lo : 0, own_hi = ps->share ? ps->share->hi : n;
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
-    for (int64_t k = 0; k < n; k++) {
+    for (int64_t k = own_lo; k < own_hi; k++) {
         w[D1][k] = u[k] * w[UX][k] + v[k] * w[UY][k];
         w[D2][k] = u[k] * w[VX][k] + v[k] * w[VY][k];
     }
     if (ps->par.wall_pressure == PDDO_WALL_PRESSURE_MOMENTUM) {
-        body_pressure_rows(ps);
-        held_source(ps, w);
+        body_pressure_rows(ps); /* from the whole u, v: every process alike */
+        held_source(ps, w, own_lo, own_hi);
     }
+    /* the divergences below read d and L at the families' members */
+    TRY(share_arrays(ps, 4, (double *const[]){w[D1], w[D2], w[LU], w[LV]}));
     copy_periodic(ps, w[D1]);
     copy_periodic(ps, w[D2]);
     copy_periodic(ps, w[LU]);
@@ -391,6 +409,11 @@ int pddo_step_advance(PddoStep *ps) {
             }
         }
     }
+    if (ps->share) { /* a min and a max are exact: the same on every process */
+        bad = comm_min_i64(&ps->share->comm, bad);
+        rate = comm_max(&ps->share->comm, rate);
+    }
+    TRY(share_arrays(ps, 2, (double *const[]){u, v}));
     ps->dudt_max = rate;
     ps->time += dt;
     ps->steps++;

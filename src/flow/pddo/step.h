@@ -38,6 +38,7 @@
 #include "flow/pddo/forces.h"
 #include "flow/pddo/operators.h"
 #include "flow/pddo/ppe.h"
+#include "flow/pddo/share.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -155,6 +156,10 @@ typedef struct {
     int64_t steps;
     double dudt_max; /* the last step's max |du/dt|, |dv/dt| over updated nodes (m/s^2): the
                         steady-state criterion */
+    /* several processes (share.h): this rank's range of nodes, shared
+     * after each update; NULL: one process */
+    const PddoShare *share;
+    double share_s; /* wall time in those shares so far */
 } PddoStep;
 
 /* Sets up the step on a cloud with its operators and PPE (borrowed: they
@@ -163,6 +168,10 @@ typedef struct {
  * a spin without polar bodies; NSPD_ERR_NOMEM. */
 int pddo_step_init(PddoStep *ps, const PddoCloud *cloud, const PddoOps *ops, PddoPpe *ppe,
                    const PddoStepParams *par);
+
+/* Divides the step's work among share's ranks (borrowed; NULL or one
+ * process: nothing): each computes its own nodes and shares them. */
+void pddo_step_share(PddoStep *ps, const PddoShare *share);
 
 /* Imposes the velocity conditions (Sec. 3.4 step 7.1) on u and v; call
  * after setting an initial field. */
