@@ -479,12 +479,12 @@ static double max_divergence(const PddoFlow *f, bool whole) {
     pddo_ops_apply(&f->ops, PDDO_D_Y, f->step.u, g[GUY]);
     pddo_ops_apply(&f->ops, PDDO_D_X, f->step.v, g[GVX]);
     pddo_ops_apply(&f->ops, PDDO_D_Y, f->step.v, g[GVY]);
-    const bool divided = pddo_share_divided(&f->share);
-    const int64_t lo = divided ? f->share.lo : 0, hi = divided ? f->share.hi : c->n;
+    int64_t lo, hi;
+    pddo_share_nodes(&f->share, c->n, &lo, &hi);
     double m = 0.0;
     for (int64_t k = lo; k < hi; k++)
         if (c->kind[k] == PDDO_NODE_FLUID) m = fmax(m, fabs(g[GUX][k] + g[GVY][k]));
-    if (!divided) return m;
+    if (!pddo_share_divided(&f->share)) return m;
     for (int a = GUX; whole && a <= GVY; a++) (void)pddo_share(&f->share, g[a], false);
     return comm_max(&f->comm, m); /* a max is exact */
 }

@@ -39,6 +39,13 @@ static inline bool pddo_share_divided(const PddoShare *share) {
     return share && comm_distributed(&share->comm);
 }
 
+/* This rank's nodes [*lo, *hi) of n: its range, or all of them on one
+ * process (share NULL or not divided). */
+static inline void pddo_share_nodes(const PddoShare *share, int64_t n, int64_t *lo, int64_t *hi) {
+    const bool divided = pddo_share_divided(share);
+    *lo = divided ? share->lo : 0, *hi = divided ? share->hi : n;
+}
+
 /* Each rank's range of whole[] (n doubles) to every rank (to_root: to
  * rank 0 only). Nothing on one process. */
 int pddo_share(const PddoShare *share, double *whole, bool to_root);

@@ -338,7 +338,8 @@ int pddo_step_advance(PddoStep *ps) {
         pddo_ops_apply_many(ops, 6, op, f, out);
     }
     /* d = u.grad u (Eq. 23) pointwise at every node (this process's) */
-    const int64_t own_lo = ps->share ? ps->share->lo : 0, own_hi = ps->share ? ps->share->hi : n;
+    int64_t own_lo, own_hi;
+    pddo_share_nodes(ps->share, n, &own_lo, &own_hi);
 #pragma omp parallel for schedule(static) if (n >= PARALLEL_MIN_ITEMS)
     for (int64_t k = own_lo; k < own_hi; k++) {
         w[D1][k] = u[k] * w[UX][k] + v[k] * w[UY][k];
