@@ -7,7 +7,10 @@
 #                              Chromium (tests/cli/test_report.sh opens report.html in it),
 #                              SuiteSparse (UMFPACK: the PDDO flow's sparse LU of its
 #                              pressure matrix, which is not symmetric), Open MPI (the
-#                              distributed engine, core/comm.h; tests/mpi)
+#                              distributed engine, core/comm.h; tests/mpi), PETSc with
+#                              MUMPS and hypre (petsc-dev: the PDDO pressure solved on
+#                              every process, flow/pddo/ppe_petsc.h; it leaves the BLAS
+#                              alternative as it is, so UMFPACK's bits do not move)
 #   scripts/deps.sh validate   + gnuplot (plots for docs/VALIDATION.md)
 #   scripts/deps.sh bench      + LAMMPS (reference PD code), hyperfine, OpenFOAM (reference
 #                              flow code), gnuplot and GNU time (bench/pddo_vs_openfoam.sh
@@ -21,7 +24,7 @@
 # command is printed and the script fails, so nothing runs half set up.
 set -eu
 
-want="gcc make cmake ninja-build pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev libopenmpi-dev openmpi-bin"
+want="gcc make cmake ninja-build pkg-config libyaml-dev libpng-dev libcairo2-dev fonts-dejavu-core libcmocka-dev python3-vtk9 python3-yaml ffmpeg chromium libsuitesparse-dev libopenmpi-dev openmpi-bin petsc-dev"
 for group in "$@"; do
     case "$group" in
     build) ;;

@@ -16,7 +16,7 @@ static const char *const INLET_CORNERS[] = {"wall", "inlet", NULL};
 static const char *const WALL_GHOSTS[] = {"paper", "antisymmetric", NULL};
 static const char *const DIVERGENCE_TERM[] = {"paper", "updated", NULL};
 static const char *const WALL_PRESSURE[] = {"zero_gradient", "momentum", NULL};
-static const char *const PRESSURE_SOLVES[] = {"umfpack", "runs", NULL};
+static const char *const PRESSURE_SOLVES[] = {"umfpack", "runs", "mumps", "boomeramg", NULL};
 static const char *const AXES[] = {"x", "y", NULL};
 static const char *const BODY_SHAPES[] = {"circle", NULL};
 /* a patch's horizon: the cloud's one (the paper), or its rings' own
@@ -350,6 +350,17 @@ int case_read_pddo(CfgNode *flow, CfgNode *time_map, bool dt_given, double dt, P
     int solve;
     TRY(cfg_opt_enum(flow, "pressure_solve", PRESSURE_SOLVES, 1, &solve)); /* runs */
     c->pressure_runs = solve == 1;
+    c->pressure.petsc = solve >= 2;
+    c->pressure.method = solve == 3 ? PPE_PETSC_BOOMERAMG : PPE_PETSC_MUMPS;
+    if (c->pressure.petsc && !ppe_petsc_built())
+        return cfg_fail_at(flow, "pressure_solve",
+                           "this nspd was built without PETSc; expected runs or umfpack, or a "
+                           "build with MPI and petsc-dev (scripts/deps.sh installs it)");
+    /* 1e-8: drag and lift of the Re 100 cylinder within 1e-6 of the
+     * direct solve's (docs/VALIDATION.md) */
+    TRY(cfg_opt_double(flow, "pressure_tolerance", 1e-8, &c->pressure.tolerance));
+    TRY(cfg_check_range(flow, "pressure_tolerance", c->pressure.tolerance, 1e-15, 1e-2,
+                        "boomeramg's relative residual ||R - K p|| / ||R||"));
     const double zero[2] = {0, 0};
     double force[2];
     TRY(cfg_opt_vec(flow, "body_force", 2, zero, force));

@@ -11,6 +11,21 @@
 
 static NspdComm world_group = {0, 1, 0};
 
+/* comm_at_finalize's hooks; registered from the main thread only (a run's
+ * setup), so no lock */
+static void (*finalize_hooks[COMM_FINALIZE_HOOKS])(void);
+static int finalize_hook_count = 0;
+
+void comm_at_finalize(void (*fn)(void)) {
+    for (int k = 0; k < finalize_hook_count; k++)
+        if (finalize_hooks[k] == fn) return;
+    if (finalize_hook_count < COMM_FINALIZE_HOOKS) finalize_hooks[finalize_hook_count++] = fn;
+}
+
+static void run_finalize_hooks(void) {
+    while (finalize_hook_count > 0) finalize_hooks[--finalize_hook_count]();
+}
+
 NspdComm comm_world(void) {
     return world_group;
 }
@@ -65,6 +80,7 @@ NspdComm comm_init(int *argc, char ***argv) {
 }
 
 void comm_finalize(void) {
+    run_finalize_hooks();
     int done = 0;
     MPI_Finalized(&done);
     if (initialised_here && !done) MPI_Finalize();
@@ -238,7 +254,9 @@ NspdComm comm_init(int *argc, char ***argv) {
     return comm_self();
 }
 
-void comm_finalize(void) {}
+void comm_finalize(void) {
+    run_finalize_hooks();
+}
 
 double comm_max(const NspdComm *c, double value) {
     return (void)c, value;

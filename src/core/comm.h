@@ -29,8 +29,14 @@ typedef struct {
 NspdComm comm_init(int *argc, char ***argv);
 /* The group comm_init returned; comm_self() before it or without MPI. */
 NspdComm comm_world(void);
-/* MPI_Finalize where comm_init initialised MPI. */
+/* Runs the hooks comm_at_finalize registered (last first), then
+ * MPI_Finalize where comm_init initialised MPI. */
 void comm_finalize(void);
+/* fn runs at comm_finalize, before MPI_Finalize: what a library started on
+ * top of MPI (PETSc: flow/pddo/ppe_petsc.h) must end first. At most
+ * COMM_FINALIZE_HOOKS; registering the same fn twice keeps one. */
+enum { COMM_FINALIZE_HOOKS = 4 };
+void comm_at_finalize(void (*fn)(void));
 /* Whether this build has MPI. */
 bool comm_enabled(void);
 

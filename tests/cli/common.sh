@@ -35,7 +35,7 @@ same_results() {
         [ "$f" = case.yaml ] && [ "$skip" = paths ] && continue
         if [ "$f" = summary.json ]; then
             for d in "$a" "$b"; do
-                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|pressure_solve_s|threads|processes|process_grid|exchange_s|solid_exchange_s|agree_s|peak_rss_mb|[a-z_]+_per_s)":' \
+                grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|setup_s|pressure_solve_s|threads|processes|process_grid|exchange_s|solid_exchange_s|agree_s|peak_rss_mb|[a-z_]+_per_s)":' \
                     "$d/summary.json" >"$d.summary"
             done
             cmp -s "$a.summary" "$b.summary" || bad="$bad $f"

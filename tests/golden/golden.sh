@@ -77,7 +77,7 @@ keep_comparable() {
     # the path as a literal (a '.' in it is not "any character")
     src_re=$(printf '%s\n' "$src" | sed 's/[][\.*^$|]/\\&/g')
     sed "s|$src_re|SRC|g" "$dir/case.yaml" >"$dir/case.tmp" && mv "$dir/case.tmp" "$dir/case.yaml"
-    grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|pressure_solve_s|threads|peak_rss_mb|[a-z_]+_per_s)":' \
+    grep -v -E '"(wall_s|flow_s|solid_s|coupling_s|setup_s|pressure_solve_s|threads|peak_rss_mb|[a-z_]+_per_s)":' \
         "$dir/summary.json" >"$dir/summary.tmp" && mv "$dir/summary.tmp" "$dir/summary.json"
 }
 

@@ -151,7 +151,12 @@ static FlowEstimate pddo_estimate(const FlowConfig *fc) {
      * set 1,623 MB against 1,105 MB at the paper's cylinder, 6.67e7
      * nonzeros: 7.8 bytes each) */
     const double runs = c->pressure_runs ? 8.0 * factor : 0.0;
-    e.bytes = 52.0 * n + 4.0 * m + (4.0 * 8.0 + 4.0) * m + 12.0 * (m + n) + 12.0 * factor + runs +
+    /* boomeramg: no factor, PETSc's copy of the matrix and a hierarchy
+     * about as large (operator complexity 1.14, bench/ppe_solvers) */
+    const double lu = c->pressure.petsc && c->pressure.method == PPE_PETSC_BOOMERAMG
+                          ? 2.0 * 12.0 * (m + n)
+                          : 12.0 * factor;
+    e.bytes = 52.0 * n + 4.0 * m + (4.0 * 8.0 + 4.0) * m + 12.0 * (m + n) + lu + runs +
               14.0 * 8.0 * n + (OUT_ARRAYS + NODE_ARRAYS + 1) * 8.0 * n;
     e.check_s = PDDO_CHECK_S_PER_NODE * n;
     e.stable_dt = c->step.dt; /* fixed by the reader */
@@ -268,7 +273,7 @@ static int build(PddoFlow *f) {
                            c->node_delta,
                            &(PddoLattice){c->i, c->j, c->dx, c->patch, c->npatches}));
         if (comm_distributed(&f->comm)) TRY(pddo_share_init(&f->share, &f->ops, &f->comm));
-        TRY(pddo_ppe_build_shared(&f->ppe, c, &f->ops, &f->share));
+        TRY(pddo_ppe_build_shared(&f->ppe, c, &f->ops, &f->share, &f->cfg.pressure));
         if (f->cfg.pressure_runs) TRY(pddo_ppe_use_runs(&f->ppe));
     }
     TRY(pddo_step_init(&f->step, c, &f->ops, &f->ppe, &f->cfg.step));
@@ -602,7 +607,10 @@ static void pddo_summary(const void *impl, const RunStats *run, Report *out) {
     report_int(out, "ppe_nonzeros", f->ppe.nnz);
     report_real(out, "factor_nonzeros", f->ppe.factor_nnz);
     report_real(out, "factor_mb", f->ppe.factor_bytes / 1e6);
+    report_real(out, "setup_s", f->setup_s); /* the cloud, operators and the solver's setup */
     report_real(out, "pressure_solve_s", f->ppe.solve_s);
+    if (f->cfg.pressure.petsc) /* Krylov iterations over the run's solves (1 each: mumps) */
+        report_int(out, "pressure_iterations", f->ppe.petsc.iterations_total);
     if (pddo_share_divided(&f->share)) /* the shares of each step and of the solve */
         report_real(out, "exchange_s", f->step.share_s + f->ppe.share_s);
     report_real(out, "dt_s", f->step.par.dt);

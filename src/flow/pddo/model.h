@@ -47,6 +47,8 @@ typedef struct {
                                   Poiseuille maximum; sets the stable step and pictures */
     double steady_tolerance;   /* m/s^2: the run ends once max |du/dt| falls below; 0: never */
     bool pressure_runs;        /* flow.pressure_solve: runs (pddo_ppe_use_runs), else umfpack */
+    PddoPpeSolver pressure;    /* flow.pressure_solve: mumps or boomeramg (PETSc), with
+                                  flow.pressure_tolerance; else UMFPACK */
     double reference_length;   /* m: `reference.length`, else the body's diameter, else the
                                   rectangle's shorter side (Reynolds number, coefficients) */
     double reference_velocity; /* m/s: the lid, the inlet's mean, or a body force's

@@ -80,8 +80,17 @@ static int32_t assemble_row(const PddoCloud *c, const PddoOps *ops, int row, int
 }
 
 static int umf_fail(int status, const char *what) {
-    return NSPD_FAIL(status == UMFPACK_ERROR_out_of_memory ? NSPD_ERR_NOMEM : NSPD_ERR_NUMERIC,
-                     "PDDO pressure matrix: UMFPACK %s returned %d", what, status);
+    /* met on the Re 100 cylinder at 4x the paper's nodes (478,999) with
+     * 22 GB free (docs/PERFORMANCE.md): the 32-bit version's int-sized
+     * workspace, most likely, rather than the machine's memory */
+    if (status == UMFPACK_ERROR_out_of_memory)
+        return NSPD_FAIL(NSPD_ERR_NOMEM,
+                         "PDDO pressure matrix: UMFPACK %s ran out of memory (or of its 32-bit "
+                         "sizes); expected fewer nodes, or flow.pressure_solve: mumps or "
+                         "boomeramg (PETSc, on every process)",
+                         what);
+    return NSPD_FAIL(NSPD_ERR_NUMERIC, "PDDO pressure matrix: UMFPACK %s returned %d", what,
+                     status);
 }
 
 static int factorise(PddoPpe *p) {
@@ -124,6 +133,47 @@ static int umf_solve(const PddoPpe *p, int sys, double *x, const double *b) {
     return s == UMFPACK_OK ? NSPD_OK : umf_fail(s, "solve");
 }
 
+/* The group the matrix is shared by (one process: the self group). */
+static NspdComm ppe_comm(const PddoPpe *p) {
+    return p->share ? p->share->comm : comm_self();
+}
+
+/* PETSc's solver of K_L on this rank's rows and, in the singular case, y
+ * by one solve with K'^T (a solver of the transpose, freed after). */
+static int build_petsc(PddoPpe *p) {
+    const int64_t n = p->n;
+    int64_t lo, hi;
+    pddo_share_nodes(p->share, n, &lo, &hi);
+    const NspdComm comm = ppe_comm(p);
+    const PddoPpeSolver *s = &p->solver;
+    TRY(ppe_petsc_create(&p->petsc, &comm, s->method, s->tolerance, false, lo, hi, n, p->ap, p->ai,
+                         p->ax));
+    p->factor_nnz = p->petsc.factor_nnz;
+    p->factor_bytes = 1e6 * p->petsc.factor_mb;
+    if (p->pinned < 0) return NSPD_OK;
+    const int64_t k0 = p->pinned;
+    double *b = p->work;
+    memset(b, 0, (size_t)n * sizeof(double));
+    for (int32_t m = 0; m < p->pin_len; m++) b[p->pin_col[m]] = -p->pin_val[m];
+    b[k0] += 1.0;
+    TRY(nspd_alloc(&p->null_left, (size_t)n, sizeof(double)));
+    PpePetsc t = {0};
+    /* by MUMPS, whichever solves the steps: BoomerAMG does not converge on
+     * the transpose (500 BiCGStab iterations on the 729-node cavity: AMG
+     * reads strength from rows, and K'^T's rows are K's columns); one
+     * distributed factorisation, freed at once */
+    int status = ppe_petsc_create(&t, &comm, PPE_PETSC_MUMPS, s->tolerance, true, lo, hi, n, p->ap,
+                                  p->ai, p->ax);
+    if (status == NSPD_OK) status = ppe_petsc_solve(&t, b + lo, p->null_left + lo);
+    ppe_petsc_free(&t);
+    TRY(status);
+    TRY(pddo_share(p->share, p->null_left, false));
+    p->null_ppe = 0.0;
+    for (int64_t k = 0; k < n; k++)
+        if (p->row[k] == PDDO_ROW_PPE) p->null_ppe += p->null_left[k];
+    return NSPD_OK;
+}
+
 static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
     const int64_t n = c->n;
     p->n = n;
@@ -164,6 +214,7 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
         memcpy(p->pin_val, p->ax + lo, (size_t)len * sizeof(double));
         for (int32_t m = lo; m < lo + len; m++) p->ax[m] = p->ai[m] == k0 ? 1.0 : 0.0;
     }
+    if (p->solver.petsc) return build_petsc(p);
     if (pddo_share_divided(p->share) && p->share->comm.rank != 0) return NSPD_OK; /* rank 0's */
     TRY(factorise(p));
     if (p->pinned >= 0) {
@@ -182,9 +233,10 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
 }
 
 int pddo_ppe_build_shared(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops,
-                          const PddoShare *share) {
+                          const PddoShare *share, const PddoPpeSolver *solver) {
     pddo_ppe_free(ppe);
     ppe->share = pddo_share_divided(share) ? share : NULL;
+    if (solver) ppe->solver = *solver;
     int status = build(ppe, cloud, ops);
     if (ppe->share) status = comm_agree(&ppe->share->comm, status, NULL, 0);
     if (status != NSPD_OK) pddo_ppe_free(ppe);
@@ -192,7 +244,7 @@ int pddo_ppe_build_shared(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *o
 }
 
 int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops) {
-    return pddo_ppe_build_shared(ppe, cloud, ops, NULL);
+    return pddo_ppe_build_shared(ppe, cloud, ops, NULL, NULL);
 }
 
 /* The most pivots a run holds: measured on the paper's cylinder (solve
@@ -336,19 +388,24 @@ static void runs_solve(const PddoPpe *ppe, const double *b, double *x) {
     }
 }
 
-/* The solve of the whole right-hand side b (modified) on this process. */
-static int solve_whole(PddoPpe *ppe, double *b, double *p) {
+/* The singular case's consistency shift and pinned row (the header's
+ * R <- R - (y . R / y . m) m), from the whole b: on every rank alike. */
+static void make_consistent(PddoPpe *ppe, double *b) {
     const int64_t n = ppe->n;
     ppe->shift = 0.0;
-    if (ppe->pinned >= 0) {
-        /* serial sums: the same order, hence bits, at any thread count */
-        double yr = 0.0;
-        for (int64_t k = 0; k < n; k++) yr += ppe->null_left[k] * b[k];
-        ppe->shift = yr / ppe->null_ppe;
-        for (int64_t k = 0; k < n; k++)
-            if (ppe->row[k] == PDDO_ROW_PPE) b[k] -= ppe->shift;
-        b[ppe->pinned] = 0.0;
-    }
+    if (ppe->pinned < 0) return;
+    /* serial sums: the same order, hence bits, at any thread count */
+    double yr = 0.0;
+    for (int64_t k = 0; k < n; k++) yr += ppe->null_left[k] * b[k];
+    ppe->shift = yr / ppe->null_ppe;
+    for (int64_t k = 0; k < n; k++)
+        if (ppe->row[k] == PDDO_ROW_PPE) b[k] -= ppe->shift;
+    b[ppe->pinned] = 0.0;
+}
+
+/* The solve of the whole right-hand side b (modified) on this process. */
+static int solve_whole(PddoPpe *ppe, double *b, double *p) {
+    make_consistent(ppe, b);
     const double t0 = nspd_wall_time();
     int status = NSPD_OK;
     if (ppe->runs)
@@ -359,10 +416,31 @@ static int solve_whole(PddoPpe *ppe, double *b, double *p) {
     return status;
 }
 
+/* PETSc's solve: p's own rows are the first guess and the answer, then
+ * shared with every rank. */
+static int solve_petsc(PddoPpe *ppe, double *b, double *p) {
+    int64_t lo, hi;
+    pddo_share_nodes(ppe->share, ppe->n, &lo, &hi);
+    double t0 = nspd_wall_time();
+    if (ppe->pinned >= 0) TRY(pddo_share(ppe->share, b, false)); /* y . b reads every row */
+    ppe->share_s += nspd_wall_time() - t0;
+    make_consistent(ppe, b);
+    t0 = nspd_wall_time();
+    int status = ppe_petsc_solve(&ppe->petsc, b + lo, p + lo);
+    ppe->solve_s += nspd_wall_time() - t0;
+    if (ppe->share) TRY(comm_agree(&ppe->share->comm, status, NULL, 0));
+    TRY(status);
+    t0 = nspd_wall_time();
+    status = pddo_share(ppe->share, p, false);
+    ppe->share_s += nspd_wall_time() - t0;
+    return status;
+}
+
 int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p) {
     const int64_t n = ppe->n;
     double *b = ppe->work;
     memcpy(b, rhs, (size_t)n * sizeof(double));
+    if (ppe->solver.petsc) return solve_petsc(ppe, b, p);
     if (!ppe->share) return solve_whole(ppe, b, p);
     const NspdComm *comm = &ppe->share->comm;
     double t0 = nspd_wall_time();
@@ -392,6 +470,7 @@ void pddo_ppe_apply(const PddoPpe *ppe, const double *p, double *out) {
 }
 
 void pddo_ppe_free(PddoPpe *ppe) {
+    ppe_petsc_free(&ppe->petsc);
     if (ppe->numeric) umfpack_di_free_numeric(&ppe->numeric);
     lu_runs_free(&ppe->runs_u);
     lu_runs_free(&ppe->runs_l);

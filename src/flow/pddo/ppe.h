@@ -36,6 +36,7 @@
 #include "flow/pddo/cloud.h"
 #include "flow/pddo/lu_runs.h"
 #include "flow/pddo/operators.h"
+#include "flow/pddo/ppe_petsc.h"
 #include "flow/pddo/share.h"
 
 #include <stdbool.h>
@@ -46,6 +47,14 @@ typedef enum {
     PDDO_ROW_IMAGE,
     PDDO_ROW_DIRICHLET,
 } PddoRow;
+
+/* How K_L is solved: UMFPACK's LU on rank 0 (the default), or PETSc on
+ * every rank (flow.pressure_solve: mumps or boomeramg; ppe_petsc.h). */
+typedef struct {
+    bool petsc;
+    PpePetscMethod method;
+    double tolerance; /* boomeramg: the relative residual to reach */
+} PddoPpeSolver;
 
 typedef struct {
     int64_t n;
@@ -82,6 +91,11 @@ typedef struct {
      * sent back to every rank */
     const PddoShare *share;
     double share_s; /* wall time in that gather and broadcast */
+    /* PETSc (solver.petsc): each rank's rows of K_L in PETSc, solved by
+     * all; the right-hand side shared before the singular case's shift
+     * and the pressure after */
+    PddoPpeSolver solver;
+    PpePetsc petsc;
 } PddoPpe;
 
 /* Assembles K_L for the cloud with the operators built on its families,
@@ -92,12 +106,18 @@ typedef struct {
 int pddo_ppe_build(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops);
 
 /* The same on share's processes (borrowed; NULL or one process: as
- * pddo_ppe_build): rank 0 factorises, the others keep the rows' kinds
- * only. pddo_ppe_solve is then collective: each rank passes the rows of
- * its own range (the others are not read), every rank gets the whole
- * pressure, the same bits as one process. */
+ * pddo_ppe_build) with solver (NULL: UMFPACK). UMFPACK: rank 0
+ * factorises, the others keep the rows' kinds only; PETSc: each rank
+ * hands its own range's rows to PETSc, which factorises (mumps) or builds
+ * its hierarchy (boomeramg) on all ranks, and the singular case's y comes
+ * from a solve with the transpose. pddo_ppe_solve is then collective:
+ * each rank passes the rows of its own range (the others are not read)
+ * and every rank gets the whole pressure: with UMFPACK the same bits as
+ * one process; with PETSc the solver's own rounding, which depends on
+ * the rank count (mumps: the factor's distribution; boomeramg: its
+ * tolerance and the hierarchy's partition). */
 int pddo_ppe_build_shared(PddoPpe *ppe, const PddoCloud *cloud, const PddoOps *ops,
-                          const PddoShare *share);
+                          const PddoShare *share, const PddoPpeSolver *solver);
 
 /* Solves with UMFPACK's factor stored by runs of pivots from now on
  * (flow.pressure_solve: runs; lu_runs.h): U by rows and then L by columns
