@@ -68,7 +68,9 @@ petsc_runs() {
 if "$nspd" check "$src/cases/cavity_re1.yaml" --set flow.pressure_solve=mumps >/dev/null 2>&1 &&
     /usr/bin/python3 -c "import vtk" 2>/dev/null; then
     petsc_runs pddo_cylinder cylinder_confined_re100 mumps 1e-10 "1 2 3 4"
-    petsc_runs pddo_cylinder cylinder_confined_re100 boomeramg 1e-4 "1 2 3 4"
+    # BoomerAMG on one process and on an uneven three (4 ranks measured
+    # once, 2026-12-08: 6.7e-6; cut for make test's budget)
+    petsc_runs pddo_cylinder cylinder_confined_re100 boomeramg 1e-4 "1 3"
     # the singular cavity: y by MUMPS's transposed solve, the shift from it
     petsc_runs pddo_cavity cavity_re200 boomeramg 1e-4 "3"
     # a BoomerAMG checkpoint of 3 ranks resumed on 2, against the 3 ranks'
