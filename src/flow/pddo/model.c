@@ -688,11 +688,27 @@ static void pddo_info(const void *impl, size_t memory, char *buf, size_t size) {
         APPEND("seed                 the bodies' walls turn at %.4g m/s (counterclockwise "
                "positive) until t = %.4g s\n",
                cfg->step.spin_speed, cfg->step.spin_until);
-    APPEND("pressure equation    %lld nonzeros, L+U %.4g nonzeros (%.1f MB), rcond %.2g, %s, "
-           "set up in %.2f s\n",
-           (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, f->ppe.rcond,
-           f->ppe.pinned >= 0 ? "level pinned" : "level fixed by the outlet", f->setup_s);
-    if (f->ppe.runs) {
+    const char *level = f->ppe.pinned >= 0 ? "level pinned" : "level fixed by the outlet";
+    const PddoPpeSolver *solver = &f->ppe.solver;
+    if (solver->petsc && solver->method == PPE_PETSC_MUMPS)
+        APPEND("pressure equation    %lld nonzeros, MUMPS on PETSc: L+U %.4g nonzeros, %.1f MB "
+               "over every process, %s, set up in %.2f s\n",
+               (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, level,
+               f->setup_s);
+    else if (solver->petsc)
+        APPEND("pressure equation    %lld nonzeros, BiCGStab with BoomerAMG on PETSc to a "
+               "relative residual of %.3g, %s, set up in %.2f s\n",
+               (long long)f->ppe.nnz, solver->tolerance, level, f->setup_s);
+    else
+        APPEND("pressure equation    %lld nonzeros, L+U %.4g nonzeros (%.1f MB), rcond %.2g, %s, "
+               "set up in %.2f s\n",
+               (long long)f->ppe.nnz, f->ppe.factor_nnz, f->ppe.factor_bytes / 1e6, f->ppe.rcond,
+               level, f->setup_s);
+    if (solver->petsc) {
+        APPEND("memory               %.1f MB in arrays (%.0f bytes per node); PETSc's matrix "
+               "and solver beside them\n",
+               (double)memory / 1e6, (double)memory / (double)c->n);
+    } else if (f->ppe.runs) {
         APPEND("memory               %.1f MB in arrays (%.0f bytes per node), the LU factors by "
                "runs (%.1f MB) among them\n",
                (double)memory / 1e6, (double)memory / (double)c->n,
