@@ -178,16 +178,23 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
     const int64_t n = c->n;
     p->n = n;
     p->pinned = -1;
+    /* the rows held: all (UMFPACK factorises the whole matrix), or this
+     * rank's own for PETSc, which needs no other */
+    int64_t lo = 0, hi = n;
+    if (p->solver.petsc) pddo_share_nodes(p->share, n, &lo, &hi);
+    p->row_lo = lo, p->row_hi = hi;
     TRY(nspd_alloc(&p->row, (size_t)n, 1));
     TRY(nspd_alloc(&p->work, (size_t)n, sizeof(double)));
-    TRY(nspd_alloc(&p->ap, (size_t)n + 1, sizeof(int32_t)));
+    TRY(nspd_alloc(&p->ap, (size_t)(hi - lo) + 1, sizeof(int32_t)));
     bool outlet = false;
-    int64_t nnz = 0;
+    int64_t nnz = 0, held = 0;
     for (int64_t k = 0; k < n; k++) {
         p->row[k] = (uint8_t)row_kind(c, k);
         outlet = outlet || p->row[k] == PDDO_ROW_DIRICHLET;
-        nnz += p->row[k] == PDDO_ROW_PPE ? ops->first[k + 1] - ops->first[k] + 1
-                                         : (p->row[k] == PDDO_ROW_IMAGE ? 2 : 1);
+        const int64_t len = p->row[k] == PDDO_ROW_PPE ? ops->first[k + 1] - ops->first[k] + 1
+                                                      : (p->row[k] == PDDO_ROW_IMAGE ? 2 : 1);
+        nnz += len;
+        if (k >= lo && k < hi) held += len;
     }
     if (nnz > INT32_MAX || n > INT32_MAX)
         return NSPD_FAIL(NSPD_ERR_INPUT,
@@ -195,24 +202,26 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
                          "fewer nodes",
                          (long long)nnz);
     p->nnz = nnz;
-    TRY(nspd_alloc(&p->ai, (size_t)nnz, sizeof(int32_t)));
-    TRY(nspd_alloc(&p->ax, (size_t)nnz, sizeof(double)));
-    for (int64_t k = 0; k < n; k++) {
-        const int32_t at = p->ap[k];
-        p->ap[k + 1] = at + assemble_row(c, ops, p->row[k], k, p->ai + at, p->ax + at);
+    TRY(nspd_alloc(&p->ai, (size_t)held, sizeof(int32_t)));
+    TRY(nspd_alloc(&p->ax, (size_t)held, sizeof(double)));
+    for (int64_t k = lo; k < hi; k++) {
+        const int32_t at = p->ap[k - lo];
+        p->ap[k - lo + 1] = at + assemble_row(c, ops, p->row[k], k, p->ai + at, p->ax + at);
     }
     if (!outlet) {
         p->pinned = middle_node(c);
         if (p->pinned < 0)
             return NSPD_FAIL(NSPD_ERR_INPUT, "PDDO pressure matrix: no fluid node to pin");
+        /* its PPE row as assembled, on every rank (y's right-hand side),
+         * and p = 0 in its place where the row is held */
         const int64_t k0 = p->pinned;
-        const int32_t lo = p->ap[k0], len = p->ap[k0 + 1] - lo;
+        const int32_t len = (int32_t)(ops->first[k0 + 1] - ops->first[k0] + 1);
         TRY(nspd_alloc(&p->pin_col, (size_t)len, sizeof(int32_t)));
         TRY(nspd_alloc(&p->pin_val, (size_t)len, sizeof(double)));
-        p->pin_len = len;
-        memcpy(p->pin_col, p->ai + lo, (size_t)len * sizeof(int32_t));
-        memcpy(p->pin_val, p->ax + lo, (size_t)len * sizeof(double));
-        for (int32_t m = lo; m < lo + len; m++) p->ax[m] = p->ai[m] == k0 ? 1.0 : 0.0;
+        p->pin_len = assemble_row(c, ops, p->row[k0], k0, p->pin_col, p->pin_val);
+        if (k0 >= lo && k0 < hi)
+            for (int32_t m = p->ap[k0 - lo]; m < p->ap[k0 - lo + 1]; m++)
+                p->ax[m] = p->ai[m] == k0 ? 1.0 : 0.0;
     }
     if (p->solver.petsc) return build_petsc(p);
     if (pddo_share_divided(p->share) && p->share->comm.rank != 0) return NSPD_OK; /* rank 0's */

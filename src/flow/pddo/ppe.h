@@ -58,8 +58,12 @@ typedef struct {
 
 typedef struct {
     int64_t n;
-    uint8_t *row;     /* PddoRow of each node */
-    int32_t *ap, *ai; /* the factorised matrix in compressed rows (n + 1, nnz) */
+    uint8_t *row; /* PddoRow of each node */
+    /* the matrix's rows row_lo..row_hi-1 in compressed rows (ap from 0,
+     * global columns): all n with UMFPACK (the factorised matrix), this
+     * rank's own range with PETSc */
+    int64_t row_lo, row_hi;
+    int32_t *ap, *ai;
     double *ax;
     int64_t pinned;  /* the node whose row is p = 0, or -1 (an outlet fixes the level) */
     int32_t pin_len; /* the pinned node's own PPE row (for pddo_ppe_apply) */
@@ -136,7 +140,8 @@ int pddo_ppe_use_runs(PddoPpe *ppe);
  * NSPD_ERR_NUMERIC if UMFPACK fails. */
 int pddo_ppe_solve(PddoPpe *ppe, const double *rhs, double *p);
 
-/* out = K_L p with the unpinned matrix (every PPE row as assembled). */
+/* out = K_L p with the unpinned matrix (every PPE row as assembled);
+ * with the whole matrix held only (not on PETSc's divided rows). */
 void pddo_ppe_apply(const PddoPpe *ppe, const double *p, double *out);
 
 void pddo_ppe_free(PddoPpe *ppe);

@@ -1,7 +1,6 @@
 /* flow/pddo/ppe_petsc.h: PETSc's KSP on the PDDO pressure matrix. */
 #include "flow/pddo/ppe_petsc.h"
 
-#include "core/mem.h"
 #include "core/status.h"
 #include "flow/pddo/petsc_lib.h"
 
@@ -65,22 +64,17 @@ static MPI_Comm mpi_comm(const NspdComm *comm) {
     return comm_distributed(comm) ? MPI_Comm_f2c(comm->handle) : MPI_COMM_SELF;
 }
 
-/* This rank's rows as PETSc's matrix: row pointers from 0, columns as
- * they are (PetscInt is 32-bit in Debian's build, checked below). */
+/* This rank's rows as PETSc's matrix (PetscInt is 32-bit in Debian's
+ * build, checked below, so the arrays go in as they are). */
 static int make_matrix(PpePetsc *s, MPI_Comm comm, bool transpose, int64_t n, const int32_t *ap,
                        const int32_t *ai, const double *ax) {
     _Static_assert(sizeof(PetscInt) == sizeof(int32_t), "PETSc with 32-bit indices");
     _Static_assert(sizeof(PetscScalar) == sizeof(double), "PETSc with real doubles");
     const int64_t rows = s->hi - s->lo;
-    PetscInt *row_at = NULL;
-    TRY(nspd_alloc(&row_at, (size_t)rows + 1, sizeof *row_at));
-    for (int64_t k = 0; k <= rows; k++) row_at[k] = ap[s->lo + k] - ap[s->lo];
     Mat a = NULL;
     /* copies the rows into its own storage */
-    const PetscErrorCode code =
-        MatCreateMPIAIJWithArrays(comm, (PetscInt)rows, (PetscInt)rows, (PetscInt)n, (PetscInt)n,
-                                  row_at, ai + ap[s->lo], ax + ap[s->lo], &a);
-    nspd_free(&row_at);
+    const PetscErrorCode code = MatCreateMPIAIJWithArrays(comm, (PetscInt)rows, (PetscInt)rows,
+                                                          (PetscInt)n, (PetscInt)n, ap, ai, ax, &a);
     if (code) return petsc_fail(code, "MatCreateMPIAIJWithArrays");
     if (transpose) {
         Mat t = NULL;

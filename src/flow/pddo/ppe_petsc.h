@@ -52,8 +52,8 @@ bool ppe_petsc_built(void);
 
 /* Makes the solver of the n x n matrix whose rows lo..hi-1 (this rank's;
  * the group's ranges in rank order cover 0..n-1) are the compressed rows
- * ap[lo..hi], ai, ax (global row pointers and global columns, as
- * flow/pddo/ppe.c assembles the whole matrix), or of its transpose; sets
+ * ap[0..hi-lo], ai, ax (row pointers from 0, global columns: the rows
+ * flow/pddo/ppe.c assembles), or of its transpose; sets
  * up (factorises or builds the hierarchy). Collective over comm (NULL or
  * one process: alone). s is zeroed or freed before. NSPD_ERR_INPUT without
  * PETSc; NSPD_ERR_IO if it cannot be opened; NSPD_ERR_NUMERIC if PETSc
