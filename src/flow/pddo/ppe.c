@@ -80,9 +80,6 @@ static int32_t assemble_row(const PddoCloud *c, const PddoOps *ops, int row, int
 }
 
 static int umf_fail(int status, const char *what) {
-    /* met on the Re 100 cylinder at 4x the paper's nodes (478,999) with
-     * 22 GB free (docs/PERFORMANCE.md): the 32-bit version's int-sized
-     * workspace, most likely, rather than the machine's memory */
     if (status == UMFPACK_ERROR_out_of_memory)
         return NSPD_FAIL(NSPD_ERR_NOMEM,
                          "PDDO pressure matrix: UMFPACK %s ran out of memory (or of its 32-bit "
@@ -106,8 +103,21 @@ static int factorise(PddoPpe *p) {
     const int n = (int)p->n;
     int s = umfpack_di_symbolic(n, n, p->ap, p->ai, p->ax, &symbolic, control, info);
     if (s != UMFPACK_OK) return umf_fail(s, "symbolic analysis");
+    /* what the symbolic analysis expects the factorisation to need: on
+     * the Re 100 cylinder at 4x the paper's nodes (478,999) 32.2 GB, past
+     * this machine's 24 GB and the 16 GB (2^31 units) that UMFPACK's
+     * 32-bit version addresses, and the factorisation stops there
+     * (docs/PERFORMANCE.md) */
+    const double estimate_gb =
+        1e-9 * info[UMFPACK_PEAK_MEMORY_ESTIMATE] * info[UMFPACK_SIZE_OF_UNIT];
     s = umfpack_di_numeric(p->ap, p->ai, p->ax, symbolic, &p->numeric, control, info);
     umfpack_di_free_symbolic(&symbolic);
+    if (s == UMFPACK_ERROR_out_of_memory)
+        return NSPD_FAIL(NSPD_ERR_NOMEM,
+                         "PDDO pressure matrix: UMFPACK's numeric factorisation ran out of memory "
+                         "(its estimate %.3g GB); expected fewer nodes, or flow.pressure_solve: "
+                         "mumps or boomeramg (PETSc, on every process)",
+                         estimate_gb);
     if (s == UMFPACK_WARNING_singular_matrix)
         return NSPD_FAIL(NSPD_ERR_NUMERIC,
                          "PDDO pressure matrix: singular (%s); expected a regular matrix with "
