@@ -148,12 +148,28 @@ static NspdComm ppe_comm(const PddoPpe *p) {
     return p->share ? p->share->comm : comm_self();
 }
 
+/* The singular case's y: the right-hand side -K_k0^T + e_k0 of
+ * K'^T y (the header's derivation) into p->work, y allocated. */
+static int null_rhs(PddoPpe *p) {
+    double *b = p->work;
+    memset(b, 0, (size_t)p->n * sizeof(double));
+    for (int32_t m = 0; m < p->pin_len; m++) b[p->pin_col[m]] = -p->pin_val[m];
+    b[p->pinned] += 1.0;
+    return nspd_alloc(&p->null_left, (size_t)p->n, sizeof(double));
+}
+
+/* y . m, m the indicator of the PPE rows (serial: the same bits anywhere) */
+static void null_ppe_sum(PddoPpe *p) {
+    p->null_ppe = 0.0;
+    for (int64_t k = 0; k < p->n; k++)
+        if (p->row[k] == PDDO_ROW_PPE) p->null_ppe += p->null_left[k];
+}
+
 /* PETSc's solver of K_L on this rank's rows and, in the singular case, y
  * by one solve with K'^T (a solver of the transpose, freed after). */
 static int build_petsc(PddoPpe *p) {
     const int64_t n = p->n;
-    int64_t lo, hi;
-    pddo_share_nodes(p->share, n, &lo, &hi);
+    const int64_t lo = p->row_lo, hi = p->row_hi; /* this rank's range (build) */
     const NspdComm comm = ppe_comm(p);
     const PddoPpeSolver *s = &p->solver;
     TRY(ppe_petsc_create(&p->petsc, &comm, s->method, s->tolerance, false, lo, hi, n, p->ap, p->ai,
@@ -161,12 +177,8 @@ static int build_petsc(PddoPpe *p) {
     p->factor_nnz = p->petsc.factor_nnz;
     p->factor_bytes = 1e6 * p->petsc.factor_mb;
     if (p->pinned < 0) return NSPD_OK;
-    const int64_t k0 = p->pinned;
-    double *b = p->work;
-    memset(b, 0, (size_t)n * sizeof(double));
-    for (int32_t m = 0; m < p->pin_len; m++) b[p->pin_col[m]] = -p->pin_val[m];
-    b[k0] += 1.0;
-    TRY(nspd_alloc(&p->null_left, (size_t)n, sizeof(double)));
+    TRY(null_rhs(p));
+    const double *b = p->work;
     PpePetsc t = {0};
     /* by MUMPS, whichever solves the steps: BoomerAMG does not converge on
      * the transpose (500 BiCGStab iterations on the 729-node cavity: AMG
@@ -178,9 +190,7 @@ static int build_petsc(PddoPpe *p) {
     ppe_petsc_free(&t);
     TRY(status);
     TRY(pddo_share(p->share, p->null_left, false));
-    p->null_ppe = 0.0;
-    for (int64_t k = 0; k < n; k++)
-        if (p->row[k] == PDDO_ROW_PPE) p->null_ppe += p->null_left[k];
+    null_ppe_sum(p);
     return NSPD_OK;
 }
 
@@ -237,16 +247,9 @@ static int build(PddoPpe *p, const PddoCloud *c, const PddoOps *ops) {
     if (pddo_share_divided(p->share) && p->share->comm.rank != 0) return NSPD_OK; /* rank 0's */
     TRY(factorise(p));
     if (p->pinned >= 0) {
-        const int64_t k0 = p->pinned;
-        double *b = p->work;
-        memset(b, 0, (size_t)n * sizeof(double));
-        for (int32_t m = 0; m < p->pin_len; m++) b[p->pin_col[m]] = -p->pin_val[m];
-        b[k0] += 1.0;
-        TRY(nspd_alloc(&p->null_left, (size_t)n, sizeof(double)));
-        TRY(umf_solve(p, UMFPACK_A, p->null_left, b));
-        p->null_ppe = 0.0;
-        for (int64_t k = 0; k < n; k++)
-            if (p->row[k] == PDDO_ROW_PPE) p->null_ppe += p->null_left[k];
+        TRY(null_rhs(p));
+        TRY(umf_solve(p, UMFPACK_A, p->null_left, p->work));
+        null_ppe_sum(p);
     }
     return NSPD_OK;
 }
