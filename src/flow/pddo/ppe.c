@@ -22,6 +22,7 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <string.h>
 
 static int row_kind(const PddoCloud *c, int64_t k) {
@@ -79,15 +80,26 @@ static int32_t assemble_row(const PddoCloud *c, const PddoOps *ops, int row, int
     return len;
 }
 
-static int umf_fail(int status, const char *what) {
-    if (status == UMFPACK_ERROR_out_of_memory)
+/* UMFPACK's failure `status` in `what`; estimate_gb > 0: the symbolic
+ * analysis's estimate of the factorisation's peak, said with running out
+ * of memory. */
+static int umf_fail_sized(int status, const char *what, double estimate_gb) {
+    if (status == UMFPACK_ERROR_out_of_memory) {
+        char estimate[64] = "";
+        if (estimate_gb > 0.0)
+            snprintf(estimate, sizeof estimate, " (its estimate %.3g GB)", estimate_gb);
         return NSPD_FAIL(NSPD_ERR_NOMEM,
-                         "PDDO pressure matrix: UMFPACK %s ran out of memory (or of its 32-bit "
-                         "sizes); expected fewer nodes, or flow.pressure_solve: mumps or "
-                         "boomeramg (PETSc, on every process)",
-                         what);
+                         "PDDO pressure matrix: UMFPACK's %s ran out of memory%s; expected fewer "
+                         "nodes, or flow.pressure_solve: mumps or boomeramg (PETSc, on every "
+                         "process)",
+                         what, estimate);
+    }
     return NSPD_FAIL(NSPD_ERR_NUMERIC, "PDDO pressure matrix: UMFPACK %s returned %d", what,
                      status);
+}
+
+static int umf_fail(int status, const char *what) {
+    return umf_fail_sized(status, what, 0.0);
 }
 
 static int factorise(PddoPpe *p) {
@@ -112,18 +124,12 @@ static int factorise(PddoPpe *p) {
         1e-9 * info[UMFPACK_PEAK_MEMORY_ESTIMATE] * info[UMFPACK_SIZE_OF_UNIT];
     s = umfpack_di_numeric(p->ap, p->ai, p->ax, symbolic, &p->numeric, control, info);
     umfpack_di_free_symbolic(&symbolic);
-    if (s == UMFPACK_ERROR_out_of_memory)
-        return NSPD_FAIL(NSPD_ERR_NOMEM,
-                         "PDDO pressure matrix: UMFPACK's numeric factorisation ran out of memory "
-                         "(its estimate %.3g GB); expected fewer nodes, or flow.pressure_solve: "
-                         "mumps or boomeramg (PETSc, on every process)",
-                         estimate_gb);
     if (s == UMFPACK_WARNING_singular_matrix)
         return NSPD_FAIL(NSPD_ERR_NUMERIC,
                          "PDDO pressure matrix: singular (%s); expected a regular matrix with "
                          "the level %s",
                          "a zero pivot", p->pinned >= 0 ? "pinned" : "fixed by an outlet");
-    if (s != UMFPACK_OK) return umf_fail(s, "numeric factorisation");
+    if (s != UMFPACK_OK) return umf_fail_sized(s, "numeric factorisation", estimate_gb);
     p->factor_nnz = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
     p->factor_bytes = info[UMFPACK_NUMERIC_SIZE] * info[UMFPACK_SIZE_OF_UNIT];
     p->rcond = info[UMFPACK_RCOND];
